@@ -1,0 +1,162 @@
+//! A minimal double-double ("unevaluated sum of two f64") arithmetic.
+//!
+//! Only what the model needs: the slopes take exponentials of arguments up to
+//! ~1400, so a relative error δ in ψ² becomes ~1400·δ in the result. Carrying
+//! ψ² and the exponent arguments as `hi + lo` keeps that error at the level of
+//! the few transcendental calls instead of every rounding on the way.
+
+/// `hi + lo` with |lo| ≤ ulp(hi)/2.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Dd {
+    pub hi: f64,
+    pub lo: f64,
+}
+
+impl Dd {
+    pub const fn new(hi: f64, lo: f64) -> Dd {
+        Dd { hi, lo }
+    }
+
+    pub fn from_f64(x: f64) -> Dd {
+        Dd { hi: x, lo: 0.0 }
+    }
+
+    /// The exact product of two doubles.
+    #[inline]
+    pub fn prod(a: f64, b: f64) -> Dd {
+        let hi = a * b;
+        let lo = a.mul_add(b, -hi);
+        Dd::norm(hi, if hi.is_finite() { lo } else { 0.0 })
+    }
+
+    /// The exact sum of two doubles.
+    #[inline]
+    pub fn sum(a: f64, b: f64) -> Dd {
+        let s = a + b;
+        if !s.is_finite() {
+            return Dd::from_f64(s);
+        }
+        let bb = s - a;
+        let e = (a - (s - bb)) + (b - bb);
+        Dd { hi: s, lo: e }
+    }
+
+    #[inline]
+    fn norm(hi: f64, lo: f64) -> Dd {
+        let s = hi + lo;
+        if !s.is_finite() {
+            return Dd::from_f64(s);
+        }
+        Dd {
+            hi: s,
+            lo: lo - (s - hi),
+        }
+    }
+}
+
+impl std::ops::Mul for Dd {
+    type Output = Dd;
+    #[inline]
+    fn mul(self, o: Dd) -> Dd {
+        let p = Dd::prod(self.hi, o.hi);
+        if !p.hi.is_finite() || p.hi == 0.0 {
+            return Dd::from_f64(p.hi);
+        }
+        Dd::norm(p.hi, p.lo + (self.hi * o.lo + self.lo * o.hi))
+    }
+}
+
+impl std::ops::Add for Dd {
+    type Output = Dd;
+    #[inline]
+    fn add(self, o: Dd) -> Dd {
+        let s = Dd::sum(self.hi, o.hi);
+        if !s.hi.is_finite() {
+            return s;
+        }
+        Dd::norm(s.hi, s.lo + self.lo + o.lo)
+    }
+}
+
+impl std::ops::Div for Dd {
+    type Output = Dd;
+    #[inline]
+    fn div(self, o: Dd) -> Dd {
+        let q = self.hi / o.hi;
+        if !q.is_finite() || q == 0.0 {
+            return Dd::from_f64(q);
+        }
+        // One correction step: r = self - q*o, q += r/o.
+        let p = Dd::prod(q, o.hi);
+        let r = (self.hi - p.hi - p.lo + self.lo - q * o.lo) / o.hi;
+        Dd::norm(q, r)
+    }
+}
+
+impl Dd {
+    #[inline]
+    pub fn mul_f64(self, b: f64) -> Dd {
+        self * Dd::from_f64(b)
+    }
+
+    #[inline]
+    pub fn recip(self) -> Dd {
+        Dd::from_f64(1.0) / self
+    }
+
+    /// √self to about 2^-100 relative (one Newton step on the f64 root).
+    #[inline]
+    pub fn sqrt(self) -> Dd {
+        if self.hi <= 0.0 || !self.hi.is_finite() {
+            return Dd::from_f64(self.hi.sqrt());
+        }
+        let s = self.hi.sqrt();
+        let p = Dd::prod(s, s);
+        let r = (self.hi - p.hi - p.lo + self.lo) / (2.0 * s);
+        Dd::norm(s, r)
+    }
+
+    /// e^(-self) for self ≥ 0, to the accuracy of `f64::exp` however large
+    /// `self.hi` is: exp(-hi-lo) = exp(-hi)·(1 - lo) since |lo| < 1e-13 here.
+    #[inline]
+    pub fn exp_neg(self) -> f64 {
+        let e = (-self.hi).exp();
+        e - e * self.lo
+    }
+
+    pub fn to_f64(self) -> f64 {
+        self.hi + self.lo
+    }
+}
+
+/// π as a double-double.
+pub const PI: Dd = Dd::new(std::f64::consts::PI, 1.2246467991473532e-16);
+
+/// π²/2 as a double-double.
+pub const PI2_HALF: Dd = Dd::new(4.934802200544679, 3.1326477543698557e-16);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn exact_products_and_sums() {
+        // (1 + 2^-30)² = 1 + 2^-29 + 2^-60 exactly.
+        let a = 1.0 + 2f64.powi(-30);
+        let p = Dd::prod(a, a);
+        assert_eq!((p.hi, p.lo), (1.0 + 2f64.powi(-29), 2f64.powi(-60)));
+        let s = Dd::sum(1.0, 1e-20);
+        assert_eq!((s.hi, s.lo), (1.0, 1e-20));
+    }
+
+    #[test]
+    fn division_and_sqrt_round_trip() {
+        let a = Dd::new(2.0, 1e-17);
+        let r = (a / Dd::from_f64(3.0)).mul_f64(3.0);
+        assert!((r.hi - 2.0).abs() == 0.0 && (r.lo - 1e-17).abs() < 1e-31);
+        let q = Dd::from_f64(2.0).sqrt();
+        let back = q * q;
+        assert_eq!(back.hi, 2.0);
+        assert!(back.lo.abs() < 1e-30);
+    }
+}

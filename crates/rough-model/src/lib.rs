@@ -1,0 +1,24 @@
+//! The model behind roughtui: Persson's elasto-plastic rough contact with the
+//! size-dependent hardness of Swadener, George and Pharr, as combined by
+//! Ciavarella (Lubricants 2024, 12(3), 83) into the plasticity index Ψ*.
+//!
+//! Pure and immutable: no I/O, no terminal. Inputs are validated once
+//! ([`Params::new`]); everything else is a function of them. `MODEL.md` in the
+//! project's shared folder states every formula; each public function's doc
+//! gives its domain, units and accuracy.
+
+mod dd;
+pub mod hardness;
+pub mod indices;
+pub mod params;
+pub mod scene;
+pub mod slopes;
+pub mod spectrum;
+
+pub use dd::Dd;
+pub use hardness::hardness_ratio;
+pub use indices::{psi_in_use, Indices, Surface};
+pub use params::{Axis, ParamError, ParamValues, Params};
+pub use scene::{Curves, Scene, SceneSpec, Sweep, SweepError};
+pub use slopes::{closed_form, exact, persson_elastic, slopes, Model, Regime, Slopes};
+pub use spectrum::Spectrum;

@@ -1,0 +1,285 @@
+//! Initial slopes of the area–load curves, H·(1/A0)·dA/dp̄ at p̄ → 0.
+//!
+//! All are functions of the index in use ψ alone (x = 1/ψ). Two models:
+//!
+//! - [`Model::Exact`]: Persson's two-barrier diffusion solved exactly, theta
+//!   functions of x. Each quantity is summed in whichever of its two forms
+//!   (image sum in x, Fourier sum in ψ) converges fast *and* has positive or
+//!   mildly alternating terms on that side of x² = π; at x² = π both forms
+//!   decay like e^(−π k²/2), so five terms reach 1e-24. The elastic slope in
+//!   the plastic regime is the positive Fourier sum 4Σ_{k odd} e^(−π²k²ψ²/2),
+//!   never a difference.
+//! - [`Model::ClosedForm`]: the three-Gaussian form of Xu, Li and Mulvihill
+//!   that the paper uses. Its elastic slope cancels like x⁵ for small x; there
+//!   it is a Taylor series (coefficients exact from sympy, 22 terms).
+//!
+//! ψ enters as a double-double ([`Dd`]): exponents reach ~1400 where slopes
+//! approach 1e-300, and each ulp of ψ there costs ~1400 ulp of the slope.
+//!
+//! Accuracy (against the mpmath reference in `tests/data/slopes.csv`): within
+//! 1e-12 relative for every ψ ≥ 0; results below 1e-300 may be 0. ψ = 0 gives
+//! elastic = total = +∞, plastic = 0; ψ = ∞ gives elastic = 0,
+//! plastic = total = 1. Never NaN.
+
+use std::ops::{Add, Mul};
+
+use crate::dd::{Dd, PI2_HALF};
+use libm::erfc;
+
+/// √(2/π).
+const SQRT_2_OVER_PI: f64 = 0.7978845608028654;
+
+/// Which solution of the elasto-plastic problem.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub enum Model {
+    /// Exact two-barrier diffusion (theta series).
+    Exact,
+    /// The paper's three-Gaussian closed form (Appendix A).
+    ClosedForm,
+}
+
+impl Model {
+    /// The other model.
+    pub fn other(self) -> Model {
+        match self {
+            Model::Exact => Model::ClosedForm,
+            Model::ClosedForm => Model::Exact,
+        }
+    }
+
+    /// A short human name.
+    pub fn label(self) -> &'static str {
+        match self {
+            Model::Exact => "exact",
+            Model::ClosedForm => "closed form",
+        }
+    }
+}
+
+/// Normalized initial slopes H·(1/A0)·dA/dp̄ (dimensionless).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Slopes {
+    pub elastic: f64,
+    pub plastic: f64,
+    pub total: f64,
+}
+
+/// Contact regime from the plastic share of the initial slope.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Regime {
+    /// Plastic share below 10 %.
+    Elastic,
+    /// Plastic share from 10 % to 90 %.
+    ElastoPlastic,
+    /// Plastic share above 90 %.
+    Plastic,
+}
+
+impl Regime {
+    pub fn label(self) -> &'static str {
+        match self {
+            Regime::Elastic => "elastic",
+            Regime::ElastoPlastic => "elasto-plastic",
+            Regime::Plastic => "plastic",
+        }
+    }
+}
+
+impl Slopes {
+    const ZERO_PSI: Slopes = Slopes {
+        elastic: f64::INFINITY,
+        plastic: 0.0,
+        total: f64::INFINITY,
+    };
+    const INFINITE_PSI: Slopes = Slopes {
+        elastic: 0.0,
+        plastic: 1.0,
+        total: 1.0,
+    };
+
+    /// S_pl/S_tot in [0, 1] (0 at ψ = 0).
+    pub fn plastic_share(&self) -> f64 {
+        if self.total.is_infinite() {
+            0.0
+        } else {
+            self.plastic / self.total
+        }
+    }
+
+    /// Below 10 % plastic share elastic, above 90 % plastic.
+    pub fn regime(&self) -> Regime {
+        let s = self.plastic_share();
+        if s < 0.1 {
+            Regime::Elastic
+        } else if s > 0.9 {
+            Regime::Plastic
+        } else {
+            Regime::ElastoPlastic
+        }
+    }
+}
+
+/// The slopes of `model` at index `psi` (≥ 0; f64 or [`Dd`]).
+pub fn slopes(model: Model, psi: impl Into<Dd>) -> Slopes {
+    match model {
+        Model::Exact => exact(psi),
+        Model::ClosedForm => closed_form(psi),
+    }
+}
+
+/// Persson's elastic solution √(2/π)/ψ (∞ at ψ = 0).
+pub fn persson_elastic(psi: impl Into<Dd>) -> f64 {
+    let psi = psi.into();
+    if psi.hi == 0.0 {
+        return f64::INFINITY;
+    }
+    SQRT_2_OVER_PI / psi.hi * (1.0 - psi.lo / psi.hi)
+}
+
+/// e^(−a), e^(−4a), e^(−9a), e^(−16a), e^(−25a) from q = e^(−a). Only q
+/// itself needs full accuracy: the others enter the sums at ≤ q⁴ relative.
+#[inline]
+fn powers(q: f64) -> [f64; 5] {
+    let q2 = q * q;
+    let q4 = q2 * q2;
+    let q8 = q4 * q4;
+    let q9 = q8 * q;
+    let q16 = q8 * q8;
+    [q, q4, q9, q16, q16 * q9]
+}
+
+/// Exact two-barrier slopes; see the module doc for forms, accuracy and limits.
+pub fn exact(psi: impl Into<Dd>) -> Slopes {
+    let psi = psi.into();
+    if psi.hi == 0.0 {
+        return Slopes::ZERO_PSI;
+    }
+    if psi.hi == f64::INFINITY {
+        return Slopes::INFINITE_PSI;
+    }
+    let s = psi.mul(psi);
+    if s.hi * std::f64::consts::PI > 1.0 {
+        // x² < π: Fourier forms in q = e^(−π²ψ²/2) ≤ e^(−π/2).
+        let [q, q4, q9, q16, q25] = powers(PI2_HALF.mul(s).exp_neg());
+        Slopes {
+            elastic: 4.0 * (q + q9 + q25),
+            plastic: 1.0 + 2.0 * ((q4 - q) + (q16 - q9) - q25),
+            total: 1.0 + 2.0 * (q + q4 + q9 + q16 + q25),
+        }
+    } else {
+        // x² ≥ π: image forms in r = e^(−x²/2) ≤ e^(−π/2).
+        let x = psi.recip();
+        let [r, r4, r9, r16, r25] = powers(x.mul(x).mul_f64(0.5).exp_neg());
+        let pref = SQRT_2_OVER_PI * x.hi;
+        let plastic = if r == 0.0 {
+            0.0
+        } else {
+            2.0 * pref * (r + r9 + r25)
+        };
+        Slopes {
+            elastic: pref * (1.0 + 2.0 * ((r4 - r) + (r16 - r9) - r25)),
+            plastic,
+            total: pref * (1.0 + 2.0 * (r4 + r16)),
+        }
+    }
+}
+
+/// Below this x the closed form's elastic slope is taken from its series.
+const CLOSED_SERIES_X: f64 = 0.5;
+
+/// Taylor coefficients of the closed-form S_el in x: x⁵, x⁷, …, x⁴⁷
+/// (sympy, `scripts/closed_series.py`).
+#[allow(clippy::excessive_precision)]
+const CLOSED_EL_SERIES: [f64; 22] = [
+    0.1329807601338108926466487,        // x^5
+    -0.01994711402007163389699730,      // x^7
+    -0.008707073580189998923292473,     // x^9
+    0.001431390126440325580571566,      // x^11
+    0.0008961929384017874236129891,     // x^13
+    -0.0001424920709881617976476462,    // x^15
+    -0.00009023144748662805071076133,   // x^17
+    0.00001430797998228288929668109,    // x^19
+    0.000009132834135876773373286502,   // x^21
+    -0.000001446760113212408223683351,  // x^23
+    -0.0000009250957663849024374213582, // x^25
+    0.0000001465128911267009918430420,  // x^27
+    9.372541998551877630040512e-8,      // x^29
+    -1.484297950165298460331787e-8,     // x^31
+    -9.496209081217271954218982e-9,     // x^33
+    1.503860708177372674896926e-9,      // x^35
+    9.621630578249450735447831e-10,     // x^37
+    -1.523717435872111468892672e-10,    // x^39
+    -9.748739638871183844798191e-11,    // x^41
+    1.543845494151333414854101e-11,     // x^43
+    9.877535771207589702470335e-12,     // x^45
+    -1.564241756521342555485955e-12,    // x^47
+];
+
+/// erfc(z) where z² = `z2` is known to double-double precision: the error of
+/// rounding z, amplified ~2z² by erfc's Gaussian tail, is taken out by
+/// erfc(z) = erfc(z_f)·e^(−(z² − z_f²)) (erfcx is well-conditioned).
+#[inline]
+fn erfc_of_sq(z2: Dd) -> f64 {
+    let zf = z2.hi.sqrt();
+    let d = z2.add(Dd::prod(-zf, zf)).to_f64();
+    erfc(zf) * (-d).exp()
+}
+
+/// The paper's closed-form slopes; see the module doc.
+pub fn closed_form(psi: impl Into<Dd>) -> Slopes {
+    let psi = psi.into();
+    if psi.hi == 0.0 {
+        return Slopes::ZERO_PSI;
+    }
+    if psi.hi == f64::INFINITY {
+        return Slopes::INFINITE_PSI;
+    }
+    let xd = psi.recip();
+    let u = xd.mul(xd);
+    let (x, uf) = (xd.hi, u.hi);
+    // S_pl = √(2/π) x e^(−u/2) + u erfc(x/√2) coth u
+    let d_term = SQRT_2_OVER_PI * x * u.mul_f64(0.5).exp_neg();
+    let u_coth = if uf < 1e-8 {
+        1.0 + uf * uf / 3.0
+    } else {
+        uf / uf.tanh()
+    };
+    let e_term = if uf.is_finite() {
+        u_coth * erfc_of_sq(u.mul_f64(0.5))
+    } else {
+        0.0
+    };
+    let plastic = d_term + e_term;
+    if x < CLOSED_SERIES_X {
+        let mut acc = 0.0;
+        for c in CLOSED_EL_SERIES.iter().rev() {
+            acc = acc * uf + c;
+        }
+        let elastic = acc * uf * uf * x;
+        return Slopes {
+            elastic,
+            plastic,
+            total: elastic + plastic,
+        };
+    }
+    // S_tot = √(2/π) x + u/(e^(2u) − 1) + u erfc(√2 x)/(1 − e^(−2u))
+    let total = if uf.is_finite() {
+        SQRT_2_OVER_PI * x
+            + uf / (2.0 * uf).exp_m1()
+            + uf * erfc_of_sq(u.mul_f64(2.0)) / -(-2.0 * uf).exp_m1()
+    } else {
+        f64::INFINITY
+    };
+    Slopes {
+        elastic: total - plastic,
+        plastic,
+        total,
+    }
+}
+
+impl From<f64> for Dd {
+    fn from(x: f64) -> Dd {
+        Dd::from_f64(x)
+    }
+}

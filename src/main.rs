@@ -1,0 +1,55 @@
+//! roughtui: a terminal explorer of elasto-plastic rough contact with
+//! size-dependent hardness. Thin: parse, dispatch, map errors to exit codes.
+
+use std::io::BufWriter;
+use std::process::ExitCode;
+
+use anyhow::Context;
+use clap::Parser;
+
+mod cli;
+mod export;
+mod presets;
+mod snapshot;
+mod tui;
+
+use cli::{Cli, Command, Source};
+use snapshot::State;
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match run(cli) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("roughtui: {e:#}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn run(cli: Cli) -> anyhow::Result<()> {
+    match cli.command {
+        Some(Command::Export(a)) => {
+            let state = load_source(&a.source.into())?;
+            let stdout = std::io::stdout();
+            let mut out = BufWriter::with_capacity(1 << 16, stdout.lock());
+            export::write_csv(&mut out, &state, a.points as usize, a.model.map(Into::into))
+        }
+        Some(Command::Bench(_)) => anyhow::bail!("bench is not built yet"),
+        None => {
+            let state = load_source(&cli.source)?;
+            tui::run(state)
+        }
+    }
+}
+
+/// The state named by `--preset` or `--load`, fig2 when neither is given.
+fn load_source(src: &Source) -> anyhow::Result<State> {
+    if let Some(path) = &src.load {
+        let text = std::fs::read_to_string(path)
+            .with_context(|| format!("cannot read snapshot {}", path.display()))?;
+        return State::from_ron(&text)
+            .map_err(|e| anyhow::anyhow!("snapshot {}: {e}", path.display()));
+    }
+    presets::load(src.preset.as_deref().unwrap_or("fig2"))
+}
