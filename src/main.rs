@@ -4,17 +4,9 @@
 use std::io::BufWriter;
 use std::process::ExitCode;
 
-use anyhow::Context;
 use clap::Parser;
-
-mod cli;
-mod export;
-mod presets;
-mod snapshot;
-mod tui;
-
-use cli::{Cli, Command, Source};
-use snapshot::State;
+use roughtui::cli::{Cli, Command};
+use roughtui::{export, load_source, tui};
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
@@ -41,15 +33,4 @@ fn run(cli: Cli) -> anyhow::Result<()> {
             tui::run(state)
         }
     }
-}
-
-/// The state named by `--preset` or `--load`, fig2 when neither is given.
-fn load_source(src: &Source) -> anyhow::Result<State> {
-    if let Some(path) = &src.load {
-        let text = std::fs::read_to_string(path)
-            .with_context(|| format!("cannot read snapshot {}", path.display()))?;
-        return State::from_ron(&text)
-            .map_err(|e| anyhow::anyhow!("snapshot {}: {e}", path.display()));
-    }
-    presets::load(src.preset.as_deref().unwrap_or("fig2"))
 }

@@ -15,6 +15,11 @@
 //! defaults. The swept parameter's value in `params` is where the marker stands.
 
 use std::fmt;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::time::{SystemTime, UNIX_EPOCH};
+
+use anyhow::Context;
 
 use rough_model::{Axis, Model, ParamValues, Params, Sweep};
 use serde::{Deserialize, Serialize};
@@ -86,8 +91,6 @@ impl fmt::Display for SnapshotError {
 
 impl std::error::Error for SnapshotError {}
 
-// Saving is wired up by the TUI's `s` key.
-#[allow(dead_code)]
 impl State {
     /// Parses and validates a snapshot text.
     pub fn from_ron(text: &str) -> Result<State, SnapshotError> {
@@ -158,6 +161,78 @@ impl State {
     }
 }
 
+/// Reads and validates the snapshot at `path`; errors name the file.
+pub fn load_file(path: &Path) -> anyhow::Result<State> {
+    let text = std::fs::read_to_string(path)
+        .with_context(|| format!("cannot read snapshot {}", path.display()))?;
+    State::from_ron(&text).map_err(|e| anyhow::anyhow!("snapshot {}: {e}", path.display()))
+}
+
+/// `{name}-{YYYYMMDD-HHMMSS}` (UTC) for a save at `time`.
+pub fn default_stem(name: &str, time: SystemTime) -> String {
+    let secs = time.duration_since(UNIX_EPOCH).map_or(0, |d| d.as_secs());
+    let (days, rem) = (secs / 86_400, secs % 86_400);
+    // Civil date from days since 1970-01-01 (Howard Hinnant's algorithm).
+    let z = days as i64 + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z.rem_euclid(146_097);
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let d = doy - (153 * mp + 2) / 5 + 1;
+    let m = if mp < 10 { mp + 3 } else { mp - 9 };
+    let y = yoe + era * 400 + i64::from(m <= 2);
+    format!(
+        "{name}-{y:04}{m:02}{d:02}-{:02}{:02}{:02}",
+        rem / 3600,
+        rem / 60 % 60,
+        rem % 60
+    )
+}
+
+/// Writes `state` to `dir/{stem}.ron`, never overwriting: if that name is
+/// taken, `{stem}-2.ron`, `{stem}-3.ron`, …. The text goes to a temporary
+/// file in `dir` first and is renamed into place without replacing anything.
+/// Returns the path written.
+pub fn save_new(dir: &Path, stem: &str, state: &State) -> anyhow::Result<PathBuf> {
+    let text = state.to_ron();
+    let tmp = dir.join(format!(".{stem}.ron.tmp{}", std::process::id()));
+    {
+        let mut f = std::fs::File::create(&tmp)
+            .with_context(|| format!("cannot write in {}", dir.display()))?;
+        let written = f.write_all(text.as_bytes()).and_then(|()| f.sync_all());
+        if let Err(e) = written {
+            let _ = std::fs::remove_file(&tmp);
+            return Err(e).with_context(|| format!("cannot write {}", tmp.display()));
+        }
+    }
+    for n in 1..10_000u32 {
+        let name = if n == 1 {
+            format!("{stem}.ron")
+        } else {
+            format!("{stem}-{n}.ron")
+        };
+        let target = dir.join(name);
+        // hard_link fails if the target exists: an atomic no-clobber rename.
+        match std::fs::hard_link(&tmp, &target) {
+            Ok(()) => {
+                let _ = std::fs::remove_file(&tmp);
+                return Ok(target);
+            }
+            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
+            Err(e) => {
+                let _ = std::fs::remove_file(&tmp);
+                return Err(e).with_context(|| format!("cannot save {}", target.display()));
+            }
+        }
+    }
+    let _ = std::fs::remove_file(&tmp);
+    anyhow::bail!(
+        "cannot save: too many snapshots named {stem} in {}",
+        dir.display()
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -167,5 +242,11 @@ mod tests {
         let s = crate::presets::load("fig4").unwrap();
         let back = State::from_ron(&s.to_ron()).unwrap();
         assert_eq!(back, s);
+    }
+
+    #[test]
+    fn stems_carry_utc_date_and_time() {
+        let t = UNIX_EPOCH + std::time::Duration::from_secs(1_795_275_012);
+        assert_eq!(default_stem("fig2", t), "fig2-20261121-153012");
     }
 }
