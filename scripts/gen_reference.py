@@ -51,6 +51,7 @@ ZERO_BELOW = "1e-320"  # magnitudes below this print as 0
 NEGLIGIBLE = "1e-330"  # two evaluations both below this agree (they both print 0)
 
 INF = mpmath.inf
+INNER_MAX_DPS = 0  # highest precision used inside a row (closed-form S_el difference)
 
 
 # ---------------------------------------------------------------------------
@@ -276,9 +277,11 @@ def closed_slopes(psi):
     digits that the difference loses (about 5 log10(psi)) added first."""
     if psi == 0:
         return INF, mpf(0), INF
+    global INNER_MAX_DPS
     extra = 10
     if psi > 1:
         extra += int(5 * mpmath.log10(psi)) + 5
+    INNER_MAX_DPS = max(INNER_MAX_DPS, mp.dps + extra)
     with mp.workdps(mp.dps + extra):
         tot, pl = _closed_tot_pl(psi)
         el = tot - pl
@@ -757,7 +760,8 @@ def header_common(adaptive):
         % STEP_DPS,
         "#   of the row agrees to %d significant digits; printed values come from the D+%d run."
         % (AGREE_DIGITS, STEP_DPS),
-        "#   highest working precision reached in this file: %d digits" % adaptive.max_dps,
+        "#   highest working precision reached in this file: %d digits"
+        % max(adaptive.max_dps, INNER_MAX_DPS),
         "# inputs: IEEE doubles printed with Python repr (shortest round trip), converted exactly.",
         "# outputs: %d significant digits; 'inf' = +infinity; '0' = exactly zero or |value| < %s"
         % (PRINT_DIGITS, ZERO_BELOW),
@@ -777,6 +781,8 @@ def write_file(name, header_lines, csv_header, rows):
 
 
 def gen_slopes():
+    global INNER_MAX_DPS
+    INNER_MAX_DPS = 0
     ad = Adaptive()
     rows = []
     for psi in slope_grid():
@@ -803,6 +809,8 @@ def gen_slopes():
 
 
 def gen_areas():
+    global INNER_MAX_DPS
+    INNER_MAX_DPS = 0
     ad = Adaptive()
     rows = []
     for psi in AREA_PSI:
@@ -830,6 +838,8 @@ def gen_areas():
 
 
 def gen_params():
+    global INNER_MAX_DPS
+    INNER_MAX_DPS = 0
     ad = Adaptive()
     rows = []
     for inp in params_grid():
