@@ -2,6 +2,7 @@
 //! commands and the TUI, so that tests and benchmarks reach them. The binary
 //! (`src/main.rs`) only parses and dispatches.
 
+pub mod bench;
 pub mod cli;
 pub mod export;
 pub mod presets;

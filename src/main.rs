@@ -27,7 +27,7 @@ fn run(cli: Cli) -> anyhow::Result<()> {
             let mut out = BufWriter::with_capacity(1 << 16, stdout.lock());
             export::write_csv(&mut out, &state, a.points as usize, a.model.map(Into::into))
         }
-        Some(Command::Bench(_)) => anyhow::bail!("bench is not built yet"),
+        Some(Command::Bench(a)) => roughtui::bench::run(&a),
         None => {
             let state = load_source(&cli.source)?;
             tui::run(state)
