@@ -106,6 +106,9 @@ impl Spectrum {
     }
 
     pub(crate) fn from_core(p: &Params, c: &Core) -> Spectrum {
+        if !in_range(p, c) {
+            return Spectrum::from_logs(p, &Logs::of(p, c));
+        }
         let (h, hu, q0) = (p.h_rms(), p.hurst(), p.q0());
         let g2 = c.g2.to_f64();
         let g4 = c.g4.to_f64();
@@ -125,4 +128,67 @@ impl Spectrum {
             rms_curvature: std::f64::consts::SQRT_2 * hq2 * (hu * g4).sqrt(),
         }
     }
+}
+
+impl Spectrum {
+    fn from_logs(p: &Params, l: &Logs) -> Spectrum {
+        let e = f64::exp;
+        Spectrum {
+            z: e(l.z),
+            m0: e(l.m0),
+            m2: e(l.m2),
+            m4: e(l.m4),
+            r_s: e(l.r_s()),
+            lambda1: std::f64::consts::TAU / (p.zeta() * p.q0()),
+            h_rms_actual: e(0.5 * l.m0),
+            rms_slope: e(0.5 * (2f64.ln() + l.m2)),
+            rms_curvature: e(0.5 * ((8.0f64 / 3.0).ln() + l.m4)),
+        }
+    }
+}
+
+/// Natural logarithms of the spectrum's quantities, from the inputs directly:
+/// the path for parameter sets whose intermediate factors (h q0, g(ζ, e), …)
+/// leave the f64 range although the results may not. Relative accuracy
+/// ~|ln value|·1e-16, i.e. ~1e-13 at the ends of the range.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Logs {
+    pub z: f64,
+    pub m0: f64,
+    pub m2: f64,
+    pub m4: f64,
+}
+
+impl Logs {
+    pub fn of(p: &Params, c: &Core) -> Logs {
+        let (lh, lq, hu) = (p.h_rms().ln(), p.q0().ln(), p.hurst());
+        let frac0 = -(-2.0 * hu * c.ln_zeta).exp_m1();
+        Logs {
+            z: 2.0 * lh + hu.ln() + 2.0 * hu * lq - std::f64::consts::PI.ln(),
+            m0: 2.0 * lh + frac0.ln(),
+            m2: 2.0 * lh + 2.0 * lq + hu.ln() + ln_g(c.ln_zeta, 2, hu),
+            m4: 0.75f64.ln() + 2.0 * lh + 4.0 * lq + hu.ln() + ln_g(c.ln_zeta, 4, hu),
+        }
+    }
+
+    /// ln R_s = ln(3/8) + ½(ln π − ln m4).
+    pub fn r_s(&self) -> f64 {
+        0.375f64.ln() + 0.5 * (std::f64::consts::PI.ln() - self.m4)
+    }
+}
+
+/// Whether every intermediate factor of the direct path is a normal double.
+pub(crate) fn in_range(p: &Params, c: &Core) -> bool {
+    let hq = p.h_rms() * p.q0();
+    let hq2 = hq * p.q0();
+    let ok = |v: f64| v.is_normal();
+    let g_ok = |g: Dd| ok(g.hi) || (g.hi == 0.0 && c.ln_zeta == 0.0);
+    ok(hq)
+        && ok(hq2)
+        && ok(hq2 * hq2)
+        && ok(p.h_rms() * p.h_rms())
+        && ok(hq / p.h0_over_e())
+        && ok(p.h_rms() * p.q0().powf(p.hurst()))
+        && g_ok(c.g2)
+        && g_ok(c.g4)
 }
