@@ -39,7 +39,7 @@ impl Indices {
     }
 
     pub(crate) fn from_core(p: &Params, c: &Core) -> Indices {
-        if !in_range(p, c) {
+        if !in_range(p, c, true, false) {
             return Indices::from_logs(p, c);
         }
         let (psi_p, hy) = psi_p_and_hardness(p, c);
@@ -125,6 +125,7 @@ impl Indices {
 }
 
 /// Ψ_P and H_y/H0, both in double-double.
+#[inline(always)]
 fn psi_p_and_hardness(p: &Params, c: &Core) -> (Dd, Dd) {
     let hu = Dd::from_f64(p.hurst());
     let hq = Dd::prod(p.h_rms(), p.q0());
@@ -148,6 +149,7 @@ fn psi_p_and_hardness(p: &Params, c: &Core) -> (Dd, Dd) {
 }
 
 /// Ψ* = Ψ_P/(H_y/H0); in logarithms where either overflows (ζ ≳ 1e77).
+#[inline(always)]
 fn psi_star(p: &Params, c: &Core, psi_p: Dd, hy: Dd) -> Dd {
     if hy.hi.is_finite() {
         return psi_p.div(hy);
@@ -204,9 +206,15 @@ impl Surface {
 /// The index in use and the hardness ratio in use, without the rest of the
 /// indices: the per-point work of a sweep.
 pub fn psi_in_use(p: &Params, size_effect: bool) -> (Dd, f64) {
-    let c = Core::of(p);
-    if !in_range(p, &c) {
-        let ix = Indices::from_logs(p, &c);
+    psi_from_core(p, &Core::new(p, size_effect), size_effect)
+}
+
+/// [`psi_in_use`] from a `Core` computed with `with_g4 = size_effect`.
+#[inline(always)]
+pub(crate) fn psi_from_core(p: &Params, c: &Core, size_effect: bool) -> (Dd, f64) {
+    let c = *c;
+    if !in_range(p, &c, size_effect, false) {
+        let ix = Indices::from_logs(p, &Core::of(p));
         return (ix.psi_in_use(size_effect), ix.hardness_in_use(size_effect));
     }
     let (psi_p, hy) = if size_effect {

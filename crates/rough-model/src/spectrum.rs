@@ -42,11 +42,15 @@ pub struct Spectrum {
 
 /// g(ζ, e) = (ζ^e − 1)/e for e = n − 2H (n = 2 or 4), in double-double.
 ///
+/// `zeta_pow_m2h` is ζ^(−2H), shared by both moments (only read where
+/// e·ln ζ > ½).
+///
 /// Accuracy ~1–2 ulp for every ζ ≥ 1, 0 < H ≤ 1: below e·ln ζ = ½ through
 /// `expm1` (well conditioned there); above through ζ^n·ζ^(−2H), where ζ^n is
 /// an exact double-double product and `powf` is within an ulp, so the error
 /// of ln ζ is never multiplied by a large exponent.
-pub(crate) fn g(zeta: f64, ln_zeta: f64, n: u32, hurst: f64) -> Dd {
+#[inline(always)]
+pub(crate) fn g(zeta: f64, ln_zeta: f64, n: u32, hurst: f64, zeta_pow_m2h: f64) -> Dd {
     let e = Dd::sum(n as f64, -2.0 * hurst);
     if e.hi == 0.0 {
         return Dd::from_f64(ln_zeta);
@@ -57,7 +61,7 @@ pub(crate) fn g(zeta: f64, ln_zeta: f64, n: u32, hurst: f64) -> Dd {
     }
     let z2 = Dd::prod(zeta, zeta);
     let zn = if n == 2 { z2 } else { z2.mul(z2) };
-    let mut ze = zn.mul_f64(zeta.powf(-2.0 * hurst));
+    let mut ze = zn.mul_f64(zeta_pow_m2h);
     if !ze.hi.is_finite() || ze.hi == 0.0 {
         // ζ^n overflowed on its own; ζ^e itself may still be finite.
         ze = Dd::from_f64(zeta.powf(e.hi));
@@ -89,11 +93,28 @@ pub(crate) struct Core {
 
 impl Core {
     pub fn of(p: &Params) -> Core {
-        let ln_zeta = p.zeta().ln();
+        Core::new(p, true)
+    }
+
+    /// Without `with_g4`, g4 is left 0: for callers that need only m2.
+    #[inline(always)]
+    pub fn new(p: &Params, with_g4: bool) -> Core {
+        let (zeta, hu) = (p.zeta(), p.hurst());
+        let ln_zeta = zeta.ln();
+        // e·ln ζ > ½ for either moment iff it is for m4 (the larger exponent).
+        let pw = if (4.0 - 2.0 * hu) * ln_zeta > 0.5 {
+            zeta.powf(-2.0 * hu)
+        } else {
+            f64::NAN
+        };
         Core {
             ln_zeta,
-            g2: g(p.zeta(), ln_zeta, 2, p.hurst()),
-            g4: g(p.zeta(), ln_zeta, 4, p.hurst()),
+            g2: g(zeta, ln_zeta, 2, hu, pw),
+            g4: if with_g4 {
+                g(zeta, ln_zeta, 4, hu, pw)
+            } else {
+                Dd::from_f64(0.0)
+            },
         }
     }
 }
@@ -106,7 +127,7 @@ impl Spectrum {
     }
 
     pub(crate) fn from_core(p: &Params, c: &Core) -> Spectrum {
-        if !in_range(p, c) {
+        if !in_range(p, c, true, true) {
             return Spectrum::from_logs(p, &Logs::of(p, c));
         }
         let (h, hu, q0) = (p.h_rms(), p.hurst(), p.q0());
@@ -177,18 +198,20 @@ impl Logs {
     }
 }
 
-/// Whether every intermediate factor of the direct path is a normal double.
-pub(crate) fn in_range(p: &Params, c: &Core) -> bool {
+/// Whether every intermediate factor of the direct path is a normal double:
+/// those of Ψ_P, with `with_g4` also those of m4 and H_y, with `full` also
+/// those of Z and m0.
+#[inline(always)]
+pub(crate) fn in_range(p: &Params, c: &Core, with_g4: bool, full: bool) -> bool {
     let hq = p.h_rms() * p.q0();
-    let hq2 = hq * p.q0();
     let ok = |v: f64| v.is_normal();
     let g_ok = |g: Dd| ok(g.hi) || (g.hi == 0.0 && c.ln_zeta == 0.0);
-    ok(hq)
-        && ok(hq2)
-        && ok(hq2 * hq2)
-        && ok(p.h_rms() * p.h_rms())
-        && ok(hq / p.h0_over_e())
-        && ok(p.h_rms() * p.q0().powf(p.hurst()))
-        && g_ok(c.g2)
-        && g_ok(c.g4)
+    if !(ok(hq) && ok(hq / p.h0_over_e()) && g_ok(c.g2)) {
+        return false;
+    }
+    let hq2 = hq * p.q0();
+    if with_g4 && !(ok(hq2) && ok(hq2 * hq2) && g_ok(c.g4)) {
+        return false;
+    }
+    !full || (ok(p.h_rms() * p.h_rms()) && ok(p.h_rms() * p.q0().powf(p.hurst())))
 }

@@ -201,3 +201,79 @@ fn figures_show_the_papers_claims() {
     let max = (1..n).map(|i| share(&s, i)).fold(0.0, f64::max);
     assert!(max > 0.9 && share(&s, n - 1) < 0.1);
 }
+
+fn axis() -> impl Strategy<Value = (Axis, f64, f64)> {
+    prop_oneof![
+        (-6.0f64..0.0, 0.1f64..4.0).prop_map(|(a, d)| (
+            Axis::H0OverE,
+            10f64.powf(a),
+            10f64.powf(a + d)
+        )),
+        (-10.0f64..-4.0, 0.1f64..4.0).prop_map(|(a, d)| (
+            Axis::HRms,
+            10f64.powf(a),
+            10f64.powf(a + d)
+        )),
+        (0.0f64..6.0, 0.1f64..6.0).prop_map(|(a, d)| (
+            Axis::Zeta,
+            10f64.powf(a),
+            10f64.powf(a + d)
+        )),
+        (Just(0.0), Just(0.0)).prop_map(|_| (Axis::Zeta, 1.0, 1e10)),
+        (0.01f64..0.5, 0.05f64..0.5).prop_map(|(a, d)| (Axis::Hurst, a, (a + d).min(1.0))),
+        (-8.0f64..-1.0, 0.1f64..4.0).prop_map(|(a, d)| (
+            Axis::RStar,
+            10f64.powf(a),
+            10f64.powf(a + d)
+        )),
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(cases() / 10))]
+
+    /// A scene's precomputed sweep gives the values of the pointwise API
+    /// (which the reference tests check) at every point.
+    #[test]
+    fn scenes_agree_with_pointwise_values(
+        (ax, from, to) in axis(),
+        h0 in -5.0f64..-1.0,
+        h in -9.0f64..-6.0,
+        z in 0.0f64..5.0,
+        hu in 0.05f64..=1.0,
+        rs in -6.0f64..-2.0,
+        se in any::<bool>(),
+        closed in any::<bool>(),
+    ) {
+        let base = Params::new(ParamValues {
+            h0_over_e: 10f64.powf(h0),
+            h_rms: 10f64.powf(h),
+            zeta: 10f64.powf(z),
+            hurst: hu,
+            r_star: 10f64.powf(rs),
+            q0: 1e5,
+        }).unwrap();
+        let model = if closed { Model::ClosedForm } else { Model::Exact };
+        let spec = SceneSpec {
+            base,
+            sweep: Sweep::new(ax, from, to).unwrap(),
+            size_effect: se,
+            model,
+            curves: Curves::ALL,
+            points: 37,
+        };
+        let s = Scene::compute(&spec).unwrap();
+        for i in 0..spec.points {
+            let p = base.with(ax, s.x[i]).unwrap();
+            let (psi, hr) = rough_model::psi_in_use(&p, se);
+            let sl = rough_model::slopes(model, psi);
+            let close = |a: f64, b: f64| rel(a, b) < 1e-13 || (a.abs() < 1e-300 && b.abs() < 1e-300);
+            prop_assert!(close(s.psi[i], psi.to_f64()), "psi at {p:?}: {} vs {:?}", s.psi[i], psi);
+            prop_assert!(close(s.hardness_ratio[i], hr), "hr at {p:?}");
+            prop_assert!(close(s.elastic[i], sl.elastic), "el at {p:?}: {} vs {}", s.elastic[i], sl.elastic);
+            prop_assert!(close(s.plastic[i], sl.plastic), "pl at {p:?}: {} vs {}", s.plastic[i], sl.plastic);
+            prop_assert!(close(s.total[i], sl.total), "tot at {p:?}");
+            prop_assert!(close(s.persson_elastic[i], persson_elastic(psi)), "persson at {p:?}");
+        }
+    }
+}
