@@ -21,16 +21,19 @@ impl Dd {
         Dd { hi: x, lo: 0.0 }
     }
 
-    /// The exact product of two doubles.
-    #[inline]
+    /// The exact product of two doubles (error-free while it neither
+    /// overflows nor underflows).
+    #[inline(always)]
     pub fn prod(a: f64, b: f64) -> Dd {
         let hi = a * b;
-        let lo = a.mul_add(b, -hi);
-        Dd::norm(hi, if hi.is_finite() { lo } else { 0.0 })
+        if !hi.is_finite() {
+            return Dd::from_f64(hi);
+        }
+        Dd::norm(hi, prod_err(a, b, hi))
     }
 
     /// The exact sum of two doubles.
-    #[inline]
+    #[inline(always)]
     pub fn sum(a: f64, b: f64) -> Dd {
         let s = a + b;
         if !s.is_finite() {
@@ -41,7 +44,7 @@ impl Dd {
         Dd { hi: s, lo: e }
     }
 
-    #[inline]
+    #[inline(always)]
     fn norm(hi: f64, lo: f64) -> Dd {
         let s = hi + lo;
         if !s.is_finite() {
@@ -56,7 +59,7 @@ impl Dd {
 
 impl std::ops::Mul for Dd {
     type Output = Dd;
-    #[inline]
+    #[inline(always)]
     fn mul(self, o: Dd) -> Dd {
         let p = Dd::prod(self.hi, o.hi);
         if !p.hi.is_finite() || p.hi == 0.0 {
@@ -68,7 +71,7 @@ impl std::ops::Mul for Dd {
 
 impl std::ops::Add for Dd {
     type Output = Dd;
-    #[inline]
+    #[inline(always)]
     fn add(self, o: Dd) -> Dd {
         let s = Dd::sum(self.hi, o.hi);
         if !s.hi.is_finite() {
@@ -80,7 +83,7 @@ impl std::ops::Add for Dd {
 
 impl std::ops::Div for Dd {
     type Output = Dd;
-    #[inline]
+    #[inline(always)]
     fn div(self, o: Dd) -> Dd {
         let q = self.hi / o.hi;
         if !q.is_finite() || q == 0.0 {
@@ -94,18 +97,18 @@ impl std::ops::Div for Dd {
 }
 
 impl Dd {
-    #[inline]
+    #[inline(always)]
     pub fn mul_f64(self, b: f64) -> Dd {
         self * Dd::from_f64(b)
     }
 
-    #[inline]
+    #[inline(always)]
     pub fn recip(self) -> Dd {
         Dd::from_f64(1.0) / self
     }
 
     /// √self to about 2^-100 relative (one Newton step on the f64 root).
-    #[inline]
+    #[inline(always)]
     pub fn sqrt(self) -> Dd {
         if self.hi <= 0.0 || !self.hi.is_finite() {
             return Dd::from_f64(self.hi.sqrt());
@@ -118,7 +121,7 @@ impl Dd {
 
     /// e^(-self) for self ≥ 0, to the accuracy of `f64::exp` however large
     /// `self.hi` is: exp(-hi-lo) = exp(-hi)·(1 - lo) since |lo| < 1e-13 here.
-    #[inline]
+    #[inline(always)]
     pub fn exp_neg(self) -> f64 {
         let e = (-self.hi).exp();
         e - e * self.lo
@@ -127,6 +130,14 @@ impl Dd {
     pub fn to_f64(self) -> f64 {
         self.hi + self.lo
     }
+}
+
+/// a·b − p exactly, for p = fl(a·b). A hardware instruction where the
+/// caller is compiled with the `fma` feature (see `scene`), a libm call
+/// otherwise.
+#[inline(always)]
+fn prod_err(a: f64, b: f64, p: f64) -> f64 {
+    a.mul_add(b, -p)
 }
 
 /// π as a double-double.

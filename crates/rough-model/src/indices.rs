@@ -9,7 +9,7 @@ use std::ops::{Add, Div, Mul};
 
 use crate::dd::Dd;
 use crate::params::Params;
-use crate::spectrum::{ln_g, Core, Spectrum};
+use crate::spectrum::{in_range, ln_g, Core, Logs, Spectrum};
 
 /// R_p/R_s of the hardness law times (3/8): R*/(1.2 R_s) = R*·√(m4/π)/0.45.
 const RP_COEF: f64 = 0.45;
@@ -39,6 +39,9 @@ impl Indices {
     }
 
     pub(crate) fn from_core(p: &Params, c: &Core) -> Indices {
+        if !in_range(p, c, true, false) {
+            return Indices::from_logs(p, c);
+        }
         let (psi_p, hy) = psi_p_and_hardness(p, c);
         let psi_star = psi_star(p, c, psi_p, hy);
         let hu = p.hurst();
@@ -89,7 +92,40 @@ impl Indices {
     }
 }
 
+impl Indices {
+    /// The log-domain path for inputs whose intermediate factors leave the
+    /// f64 range (see [`Logs`]).
+    fn from_logs(p: &Params, c: &Core) -> Indices {
+        let l = Logs::of(p, c);
+        let lh0 = p.h0_over_e().ln();
+        let ln_psi_p = 0.5 * (l.m2 - 2f64.ln()) - lh0;
+        let ln_hy = if p.r_star() == 0.0 {
+            0.0
+        } else {
+            // c = R*/(1.2 R_s); H_y/H0 = √(1 + c).
+            let lc = p.r_star().ln() - 1.2f64.ln() - l.r_s();
+            if lc > 0.0 {
+                0.5 * (lc + (-lc).exp().ln_1p())
+            } else {
+                0.5 * lc.exp().ln_1p()
+            }
+        };
+        let psi_p = Dd::from_f64(ln_psi_p.exp());
+        let psi_star = Dd::from_f64((ln_psi_p - ln_hy).exp());
+        Indices {
+            psi_gw: (0.5 * (0.5 * l.m0 - l.r_s()) - lh0).exp(),
+            psi_p: psi_p.hi,
+            psi_star: psi_star.hi,
+            psi_star_asymptotic: asymptotic(p, c.ln_zeta),
+            hardness_ratio: ln_hy.exp(),
+            psi_p_dd: psi_p,
+            psi_star_dd: psi_star,
+        }
+    }
+}
+
 /// Ψ_P and H_y/H0, both in double-double.
+#[inline(always)]
 fn psi_p_and_hardness(p: &Params, c: &Core) -> (Dd, Dd) {
     let hu = Dd::from_f64(p.hurst());
     let hq = Dd::prod(p.h_rms(), p.q0());
@@ -113,8 +149,9 @@ fn psi_p_and_hardness(p: &Params, c: &Core) -> (Dd, Dd) {
 }
 
 /// Ψ* = Ψ_P/(H_y/H0); in logarithms where either overflows (ζ ≳ 1e77).
+#[inline(always)]
 fn psi_star(p: &Params, c: &Core, psi_p: Dd, hy: Dd) -> Dd {
-    if psi_p.hi.is_finite() && hy.hi.is_finite() {
+    if hy.hi.is_finite() {
         return psi_p.div(hy);
     }
     let (h, hu, q0) = (p.h_rms(), p.hurst(), p.q0());
@@ -169,7 +206,17 @@ impl Surface {
 /// The index in use and the hardness ratio in use, without the rest of the
 /// indices: the per-point work of a sweep.
 pub fn psi_in_use(p: &Params, size_effect: bool) -> (Dd, f64) {
-    let c = Core::of(p);
+    psi_from_core(p, &Core::new(p, size_effect), size_effect)
+}
+
+/// [`psi_in_use`] from a `Core` computed with `with_g4 = size_effect`.
+#[inline(always)]
+pub(crate) fn psi_from_core(p: &Params, c: &Core, size_effect: bool) -> (Dd, f64) {
+    let c = *c;
+    if !in_range(p, &c, size_effect, false) {
+        let ix = Indices::from_logs(p, &Core::of(p));
+        return (ix.psi_in_use(size_effect), ix.hardness_in_use(size_effect));
+    }
     let (psi_p, hy) = if size_effect {
         psi_p_and_hardness(p, &c)
     } else {

@@ -215,6 +215,13 @@ impl Params {
 
     /// A copy with `axis` set to `value`, validated.
     pub fn with(&self, axis: Axis, value: f64) -> Result<Params, ParamError> {
+        Params::new(self.with_unchecked(axis, value).0)
+    }
+
+    /// A copy with `axis` set to `value`, which the caller guarantees lies in
+    /// the domain (a point of a validated sweep).
+    #[inline(always)]
+    pub(crate) fn with_unchecked(&self, axis: Axis, value: f64) -> Params {
         let mut v = self.0;
         match axis {
             Axis::H0OverE => v.h0_over_e = value,
@@ -223,7 +230,7 @@ impl Params {
             Axis::Hurst => v.hurst = value,
             Axis::RStar => v.r_star = value,
         }
-        Params::new(v)
+        Params(v)
     }
 
     /// The paper's Figure 2 set: q0 = 1e5 1/m, H = 0.8, h_rms = 20 nm,

@@ -2,9 +2,13 @@
 
 use std::fmt;
 
-use crate::indices::psi_in_use;
+use std::ops::{Add, Div, Mul};
+
+use crate::dd::{Dd, PI};
+use crate::indices::psi_from_core;
 use crate::params::{Axis, Params};
-use crate::slopes::{persson_elastic, slopes, Model};
+use crate::slopes::{slopes_sq, Model};
+use crate::spectrum::Core;
 
 /// A validated range of one parameter: log-spaced for all axes but the
 /// Hurst exponent, which is linear.
@@ -13,6 +17,8 @@ pub struct Sweep {
     axis: Axis,
     from: f64,
     to: f64,
+    /// ln from, ln to for log axes (from, to for linear ones).
+    ends: (f64, f64),
 }
 
 /// Why a sweep or scene request was rejected.
@@ -78,7 +84,17 @@ impl Sweep {
         if from >= to {
             return Err(SweepError::Empty { from, to });
         }
-        Ok(Sweep { axis, from, to })
+        let ends = if axis.is_log() {
+            (from.ln(), to.ln())
+        } else {
+            (from, to)
+        };
+        Ok(Sweep {
+            axis,
+            from,
+            to,
+            ends,
+        })
     }
 
     pub fn axis(&self) -> Axis {
@@ -100,11 +116,11 @@ impl Sweep {
         if t >= 1.0 {
             return self.to;
         }
+        let (a, b) = self.ends;
         let v = if self.axis.is_log() {
-            let (a, b) = (self.from.ln(), self.to.ln());
             (a + (b - a) * t).exp()
         } else {
-            self.from + (self.to - self.from) * t
+            a + (b - a) * t
         };
         v.clamp(self.from, self.to)
     }
@@ -185,7 +201,9 @@ pub struct Scene {
 
 impl Scene {
     /// Computes `spec`: per point only ψ, the hardness in use and the curves
-    /// asked for. Every value is finite or a documented infinity.
+    /// asked for, with what is constant along the sweep computed once. Every
+    /// value is finite or a documented infinity; the values are those of
+    /// [`crate::psi_in_use`] and [`crate::slopes()`] at each point.
     pub fn compute(spec: &SceneSpec) -> Result<Scene, SweepError> {
         if spec.points < 2 {
             return Err(SweepError::TooFewPoints(spec.points));
@@ -208,31 +226,168 @@ impl Scene {
             total: with(c.total),
             persson_elastic: with(c.persson_elastic),
         };
-        let axis = spec.sweep.axis();
-        for x in spec.sweep.points(n) {
-            // Sweep ends are validated and the domains are intervals, so this
-            // cannot fail; the base point stands in should it ever.
-            let p = spec.base.with(axis, x).unwrap_or(spec.base);
-            let (psi, hr) = psi_in_use(&p, spec.size_effect);
-            s.x.push(x);
-            s.psi.push(psi.to_f64());
-            s.hardness_ratio.push(hr);
-            if c.needs_slopes() {
-                let sl = slopes(spec.model, psi);
-                if c.elastic {
-                    s.elastic.push(sl.elastic);
-                }
-                if c.plastic {
-                    s.plastic.push(sl.plastic);
-                }
-                if c.total {
-                    s.total.push(sl.total);
-                }
-            }
-            if c.persson_elastic {
-                s.persson_elastic.push(persson_elastic(psi));
+        let kernel = Kernel::new(spec);
+        #[cfg(target_arch = "x86_64")]
+        {
+            if std::arch::is_x86_feature_detected!("fma") {
+                // SAFETY: the CPU has just been checked to support FMA.
+                unsafe { fill_fma(spec, &kernel, &mut s) };
+                return Ok(s);
             }
         }
+        fill(spec, &kernel, &mut s);
         Ok(s)
+    }
+}
+
+/// The per-point loop compiled with hardware FMA, which the double-double
+/// products inlined into it use (a library call otherwise).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "fma")]
+fn fill_fma(spec: &SceneSpec, k: &Kernel, s: &mut Scene) {
+    fill(spec, k, s)
+}
+
+#[inline(always)]
+fn fill(spec: &SceneSpec, k: &Kernel, s: &mut Scene) {
+    const SQRT_2_OVER_PI: f64 = 0.7978845608028654;
+    let c = spec.curves;
+    for i in 0..spec.points {
+        let x = spec.sweep.at(i as f64 / (spec.points - 1) as f64);
+        let (sq, hr) = k.psi_sq(spec, x);
+        // ψ = √(ψ²) to ~1 ulp; 1/ψ only scales (no exponent).
+        let psi = if sq.hi > 0.0 {
+            sq.hi.sqrt() * (1.0 + 0.5 * sq.lo / sq.hi)
+        } else {
+            0.0
+        };
+        let inv = 1.0 / psi;
+        s.x.push(x);
+        s.psi.push(psi);
+        s.hardness_ratio.push(hr);
+        if c.needs_slopes() {
+            let sl = slopes_sq(spec.model, inv, sq);
+            if c.elastic {
+                s.elastic.push(sl.elastic);
+            }
+            if c.plastic {
+                s.plastic.push(sl.plastic);
+            }
+            if c.total {
+                s.total.push(sl.total);
+            }
+        }
+        if c.persson_elastic {
+            s.persson_elastic.push(SQRT_2_OVER_PI * inv);
+        }
+    }
+}
+
+/// What is constant along a sweep.
+enum Kernel {
+    /// ζ sweep: Ψ_P² = A·g2 = (A/e2)(ζ^e2 − 1) and, with size effect,
+    /// (H_y/H0)² = 1 + B·√(g4 e4) with B = R* h q0² √(¾H/(π e4))/0.45.
+    Zeta {
+        a: Dd,
+        a_e2: Dd,
+        e2: f64,
+        e4: f64,
+        b: Option<Dd>,
+    },
+    /// Axes that leave the moments' g(ζ, e) unchanged: computed once.
+    Fixed(Core),
+    /// The Hurst exponent changes everything.
+    General,
+}
+
+impl Kernel {
+    fn new(spec: &SceneSpec) -> Kernel {
+        let p = &spec.base;
+        match spec.sweep.axis() {
+            Axis::Zeta => {
+                let hu = p.hurst();
+                let t = Dd::prod(p.h_rms(), p.q0()).div(Dd::from_f64(p.h0_over_e()));
+                let a = t.mul(t).mul_f64(hu).mul_f64(0.5);
+                let e2 = Dd::sum(2.0, -2.0 * hu);
+                let e4 = Dd::sum(4.0, -2.0 * hu);
+                let a_e2 = if e2.hi == 0.0 { a } else { a.div(e2) };
+                let b = (spec.size_effect && p.r_star() > 0.0).then(|| {
+                    let root = Dd::from_f64(0.75 * hu).div(PI.mul(e4)).sqrt();
+                    Dd::prod(p.h_rms(), p.q0())
+                        .mul_f64(p.q0())
+                        .mul_f64(p.r_star())
+                        .mul(root)
+                        .div(Dd::from_f64(0.45))
+                });
+                let finite = |d: Dd| d.hi.is_normal();
+                if finite(a) && finite(a_e2) && b.is_none_or(finite) {
+                    Kernel::Zeta {
+                        a,
+                        a_e2,
+                        e2: e2.hi,
+                        e4: e4.hi,
+                        b,
+                    }
+                } else {
+                    Kernel::General
+                }
+            }
+            Axis::Hurst => Kernel::General,
+            _ => Kernel::Fixed(Core::new(p, spec.size_effect)),
+        }
+    }
+
+    /// ψ² in use and the hardness ratio in use at sweep value `x`.
+    #[inline(always)]
+    fn psi_sq(&self, spec: &SceneSpec, x: f64) -> (Dd, f64) {
+        let axis = spec.sweep.axis();
+        // Sweep values lie in the validated range, so in the domain.
+        let p = spec.base.with_unchecked(axis, x);
+        let from_psi = |(psi, hr): (Dd, f64)| (psi.mul(psi), hr);
+        match self {
+            Kernel::Zeta { a, a_e2, e2, e4, b } => {
+                let l = x.ln();
+                let (e2l, e4l) = (e2 * l, e4 * l);
+                // ζ^(−2H), needed once e·ln ζ > ½ for the larger exponent.
+                let pw = if e4l > 0.5 {
+                    x.powf(-2.0 * p.hurst())
+                } else {
+                    0.0
+                };
+                let z2 = Dd::prod(x, x);
+                let minus1 = Dd::from_f64(-1.0);
+                let sp = if *e2 == 0.0 {
+                    a.mul_f64(l)
+                } else if e2l <= 0.5 {
+                    a_e2.mul_f64(e2l.exp_m1())
+                } else {
+                    z2.mul_f64(pw).add(minus1).mul(*a_e2)
+                };
+                let Some(b) = b else {
+                    return if sp.hi.is_finite() {
+                        (sp, 1.0)
+                    } else {
+                        from_psi(psi_from_core(&p, &Core::new(&p, false), false))
+                    };
+                };
+                let gm4 = if e4l <= 0.5 {
+                    Dd::from_f64(e4l.exp_m1())
+                } else {
+                    z2.mul(z2).mul_f64(pw).add(minus1)
+                };
+                let hy2 = b.mul(gm4.sqrt()).add(Dd::from_f64(1.0));
+                if sp.hi.is_finite() && hy2.hi.is_finite() && gm4.hi.is_finite() {
+                    (sp.div(hy2), hy2.hi.sqrt())
+                } else {
+                    from_psi(psi_from_core(&p, &Core::new(&p, true), true))
+                }
+            }
+            Kernel::Fixed(core) => from_psi(psi_from_core(&p, core, spec.size_effect)),
+            Kernel::General => from_psi(psi_from_core(
+                &p,
+                &Core::new(&p, spec.size_effect),
+                spec.size_effect,
+            )),
+        }
     }
 }

@@ -128,6 +128,21 @@ pub fn slopes(model: Model, psi: impl Into<Dd>) -> Slopes {
     }
 }
 
+/// [`slopes`] from x = 1/ψ and ψ² as for [`exact_sq`].
+#[inline(always)]
+pub(crate) fn slopes_sq(model: Model, x: f64, s: Dd) -> Slopes {
+    if s.hi == 0.0 && x == f64::INFINITY {
+        return Slopes::ZERO_PSI;
+    }
+    if x == 0.0 {
+        return Slopes::INFINITE_PSI;
+    }
+    match model {
+        Model::Exact => exact_sq(x, s),
+        Model::ClosedForm => closed_form_sq(x, s),
+    }
+}
+
 /// Persson's elastic solution √(2/π)/ψ (∞ at ψ = 0).
 pub fn persson_elastic(psi: impl Into<Dd>) -> f64 {
     let psi = psi.into();
@@ -139,7 +154,7 @@ pub fn persson_elastic(psi: impl Into<Dd>) -> f64 {
 
 /// e^(−a), e^(−4a), e^(−9a), e^(−16a), e^(−25a) from q = e^(−a). Only q
 /// itself needs full accuracy: the others enter the sums at ≤ q⁴ relative.
-#[inline]
+#[inline(always)]
 fn powers(q: f64) -> [f64; 5] {
     let q2 = q * q;
     let q4 = q2 * q2;
@@ -158,7 +173,13 @@ pub fn exact(psi: impl Into<Dd>) -> Slopes {
     if psi.hi == f64::INFINITY {
         return Slopes::INFINITE_PSI;
     }
-    let s = psi.mul(psi);
+    exact_sq(psi.recip().hi, psi.mul(psi))
+}
+
+/// [`exact`] from x = 1/ψ (f64: only a prefactor) and ψ² (double-double:
+/// the exponents). Either may overflow or underflow; ψ ∈ (0, ∞) assumed.
+#[inline(always)]
+pub(crate) fn exact_sq(x: f64, s: Dd) -> Slopes {
     if s.hi * std::f64::consts::PI > 1.0 {
         // x² < π: Fourier forms in q = e^(−π²ψ²/2) ≤ e^(−π/2).
         let [q, q4, q9, q16, q25] = powers(PI2_HALF.mul(s).exp_neg());
@@ -169,9 +190,8 @@ pub fn exact(psi: impl Into<Dd>) -> Slopes {
         }
     } else {
         // x² ≥ π: image forms in r = e^(−x²/2) ≤ e^(−π/2).
-        let x = psi.recip();
-        let [r, r4, r9, r16, r25] = powers(x.mul(x).mul_f64(0.5).exp_neg());
-        let pref = SQRT_2_OVER_PI * x.hi;
+        let [r, r4, r9, r16, r25] = powers(s.recip().mul_f64(0.5).exp_neg());
+        let pref = SQRT_2_OVER_PI * x;
         let plastic = if r == 0.0 {
             0.0
         } else {
@@ -219,11 +239,15 @@ const CLOSED_EL_SERIES: [f64; 22] = [
 /// erfc(z) where z² = `z2` is known to double-double precision: the error of
 /// rounding z, amplified ~2z² by erfc's Gaussian tail, is taken out by
 /// erfc(z) = erfc(z_f)·e^(−(z² − z_f²)) (erfcx is well-conditioned).
-#[inline]
+#[inline(always)]
 fn erfc_of_sq(z2: Dd) -> f64 {
     let zf = z2.hi.sqrt();
+    let e = erfc(zf);
+    if e == 0.0 {
+        return 0.0;
+    }
     let d = z2.add(Dd::prod(-zf, zf)).to_f64();
-    erfc(zf) * (-d).exp()
+    e * (-d).exp()
 }
 
 /// The paper's closed-form slopes; see the module doc.
@@ -235,9 +259,18 @@ pub fn closed_form(psi: impl Into<Dd>) -> Slopes {
     if psi.hi == f64::INFINITY {
         return Slopes::INFINITE_PSI;
     }
-    let xd = psi.recip();
-    let u = xd.mul(xd);
-    let (x, uf) = (xd.hi, u.hi);
+    closed_form_sq(psi.recip().hi, psi.mul(psi))
+}
+
+/// [`closed_form`] from x = 1/ψ and ψ² as for [`exact_sq`].
+#[inline(always)]
+pub(crate) fn closed_form_sq(x: f64, s: Dd) -> Slopes {
+    if x == f64::INFINITY {
+        // Subnormal ψ: √(2/π)/ψ itself overflows.
+        return Slopes::ZERO_PSI;
+    }
+    let u = s.recip();
+    let uf = u.hi;
     // S_pl = √(2/π) x e^(−u/2) + u erfc(x/√2) coth u
     let d_term = SQRT_2_OVER_PI * x * u.mul_f64(0.5).exp_neg();
     let u_coth = if uf < 1e-8 {
@@ -269,7 +302,8 @@ pub fn closed_form(psi: impl Into<Dd>) -> Slopes {
             + uf / (2.0 * uf).exp_m1()
             + uf * erfc_of_sq(u.mul_f64(2.0)) / -(-2.0 * uf).exp_m1()
     } else {
-        f64::INFINITY
+        // x² overflows (ψ < 1e-154): the Gaussian terms are far below x.
+        SQRT_2_OVER_PI * x
     };
     Slopes {
         elastic: total - plastic,
@@ -281,5 +315,60 @@ pub fn closed_form(psi: impl Into<Dd>) -> Slopes {
 impl From<f64> for Dd {
     fn from(x: f64) -> Dd {
         Dd::from_f64(x)
+    }
+}
+
+/// The two series forms of the exact slopes on their own, with a fixed number
+/// of terms and plain f64 arithmetic: for comparison (tests, `roughtui bench`),
+/// not for use. Each converges only on its own side of x² ≈ π and loses
+/// digits on the other; [`exact`] picks per ψ.
+pub mod forms {
+    use super::{Slopes, SQRT_2_OVER_PI};
+
+    /// Image sums in x = 1/ψ, `terms` terms per sum:
+    /// S_tot = √(2/π)x(1 + 2Σ_{n=1..N} e^(−2n²x²)),
+    /// S_pl = 2√(2/π)x Σ_{j=0..N−1} e^(−(2j+1)²x²/2),
+    /// S_el = √(2/π)x(1 + 2Σ_{m=1..N} (−1)^m e^(−m²x²/2)).
+    pub fn image(psi: f64, terms: u32) -> Slopes {
+        let x = 1.0 / psi;
+        let u = x * x;
+        let (mut tot, mut pl, mut el) = (1.0, 0.0, 1.0);
+        for n in 1..=terms {
+            let n = f64::from(n);
+            tot += 2.0 * (-2.0 * n * n * u).exp();
+            let j = 2.0 * n - 1.0;
+            pl += 2.0 * (-j * j * u / 2.0).exp();
+            let sign = if (n as u64) % 2 == 1 { -1.0 } else { 1.0 };
+            el += sign * 2.0 * (-n * n * u / 2.0).exp();
+        }
+        let pref = SQRT_2_OVER_PI * x;
+        Slopes {
+            elastic: pref * el,
+            plastic: if pl == 0.0 { 0.0 } else { pref * pl },
+            total: pref * tot,
+        }
+    }
+
+    /// Fourier (Poisson-summed) sums in ψ, `terms` terms per sum:
+    /// S_tot = 1 + 2Σ_{k=1..K} e^(−π²k²ψ²/2), S_pl = 1 + 2Σ (−1)^k e^(…),
+    /// S_el = 4Σ_{k odd ≤ K} e^(…).
+    pub fn fourier(psi: f64, terms: u32) -> Slopes {
+        let a = std::f64::consts::PI.powi(2) * psi * psi / 2.0;
+        let (mut tot, mut pl, mut el) = (1.0, 1.0, 0.0);
+        for k in 1..=terms {
+            let t = (-a * f64::from(k * k)).exp();
+            tot += 2.0 * t;
+            if k % 2 == 1 {
+                pl -= 2.0 * t;
+                el += 4.0 * t;
+            } else {
+                pl += 2.0 * t;
+            }
+        }
+        Slopes {
+            elastic: el,
+            plastic: pl,
+            total: tot,
+        }
     }
 }

@@ -42,11 +42,15 @@ pub struct Spectrum {
 
 /// g(ζ, e) = (ζ^e − 1)/e for e = n − 2H (n = 2 or 4), in double-double.
 ///
+/// `zeta_pow_m2h` is ζ^(−2H), shared by both moments (only read where
+/// e·ln ζ > ½).
+///
 /// Accuracy ~1–2 ulp for every ζ ≥ 1, 0 < H ≤ 1: below e·ln ζ = ½ through
 /// `expm1` (well conditioned there); above through ζ^n·ζ^(−2H), where ζ^n is
 /// an exact double-double product and `powf` is within an ulp, so the error
 /// of ln ζ is never multiplied by a large exponent.
-pub(crate) fn g(zeta: f64, ln_zeta: f64, n: u32, hurst: f64) -> Dd {
+#[inline(always)]
+pub(crate) fn g(zeta: f64, ln_zeta: f64, n: u32, hurst: f64, zeta_pow_m2h: f64) -> Dd {
     let e = Dd::sum(n as f64, -2.0 * hurst);
     if e.hi == 0.0 {
         return Dd::from_f64(ln_zeta);
@@ -57,7 +61,7 @@ pub(crate) fn g(zeta: f64, ln_zeta: f64, n: u32, hurst: f64) -> Dd {
     }
     let z2 = Dd::prod(zeta, zeta);
     let zn = if n == 2 { z2 } else { z2.mul(z2) };
-    let mut ze = zn.mul_f64(zeta.powf(-2.0 * hurst));
+    let mut ze = zn.mul_f64(zeta_pow_m2h);
     if !ze.hi.is_finite() || ze.hi == 0.0 {
         // ζ^n overflowed on its own; ζ^e itself may still be finite.
         ze = Dd::from_f64(zeta.powf(e.hi));
@@ -89,11 +93,28 @@ pub(crate) struct Core {
 
 impl Core {
     pub fn of(p: &Params) -> Core {
-        let ln_zeta = p.zeta().ln();
+        Core::new(p, true)
+    }
+
+    /// Without `with_g4`, g4 is left 0: for callers that need only m2.
+    #[inline(always)]
+    pub fn new(p: &Params, with_g4: bool) -> Core {
+        let (zeta, hu) = (p.zeta(), p.hurst());
+        let ln_zeta = zeta.ln();
+        // e·ln ζ > ½ for either moment iff it is for m4 (the larger exponent).
+        let pw = if (4.0 - 2.0 * hu) * ln_zeta > 0.5 {
+            zeta.powf(-2.0 * hu)
+        } else {
+            f64::NAN
+        };
         Core {
             ln_zeta,
-            g2: g(p.zeta(), ln_zeta, 2, p.hurst()),
-            g4: g(p.zeta(), ln_zeta, 4, p.hurst()),
+            g2: g(zeta, ln_zeta, 2, hu, pw),
+            g4: if with_g4 {
+                g(zeta, ln_zeta, 4, hu, pw)
+            } else {
+                Dd::from_f64(0.0)
+            },
         }
     }
 }
@@ -106,6 +127,9 @@ impl Spectrum {
     }
 
     pub(crate) fn from_core(p: &Params, c: &Core) -> Spectrum {
+        if !in_range(p, c, true, true) {
+            return Spectrum::from_logs(p, &Logs::of(p, c));
+        }
         let (h, hu, q0) = (p.h_rms(), p.hurst(), p.q0());
         let g2 = c.g2.to_f64();
         let g4 = c.g4.to_f64();
@@ -125,4 +149,69 @@ impl Spectrum {
             rms_curvature: std::f64::consts::SQRT_2 * hq2 * (hu * g4).sqrt(),
         }
     }
+}
+
+impl Spectrum {
+    fn from_logs(p: &Params, l: &Logs) -> Spectrum {
+        let e = f64::exp;
+        Spectrum {
+            z: e(l.z),
+            m0: e(l.m0),
+            m2: e(l.m2),
+            m4: e(l.m4),
+            r_s: e(l.r_s()),
+            lambda1: std::f64::consts::TAU / (p.zeta() * p.q0()),
+            h_rms_actual: e(0.5 * l.m0),
+            rms_slope: e(0.5 * (2f64.ln() + l.m2)),
+            rms_curvature: e(0.5 * ((8.0f64 / 3.0).ln() + l.m4)),
+        }
+    }
+}
+
+/// Natural logarithms of the spectrum's quantities, from the inputs directly:
+/// the path for parameter sets whose intermediate factors (h q0, g(ζ, e), …)
+/// leave the f64 range although the results may not. Relative accuracy
+/// ~|ln value|·1e-16, i.e. ~1e-13 at the ends of the range.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Logs {
+    pub z: f64,
+    pub m0: f64,
+    pub m2: f64,
+    pub m4: f64,
+}
+
+impl Logs {
+    pub fn of(p: &Params, c: &Core) -> Logs {
+        let (lh, lq, hu) = (p.h_rms().ln(), p.q0().ln(), p.hurst());
+        let frac0 = -(-2.0 * hu * c.ln_zeta).exp_m1();
+        Logs {
+            z: 2.0 * lh + hu.ln() + 2.0 * hu * lq - std::f64::consts::PI.ln(),
+            m0: 2.0 * lh + frac0.ln(),
+            m2: 2.0 * lh + 2.0 * lq + hu.ln() + ln_g(c.ln_zeta, 2, hu),
+            m4: 0.75f64.ln() + 2.0 * lh + 4.0 * lq + hu.ln() + ln_g(c.ln_zeta, 4, hu),
+        }
+    }
+
+    /// ln R_s = ln(3/8) + ½(ln π − ln m4).
+    pub fn r_s(&self) -> f64 {
+        0.375f64.ln() + 0.5 * (std::f64::consts::PI.ln() - self.m4)
+    }
+}
+
+/// Whether every intermediate factor of the direct path is a normal double:
+/// those of Ψ_P, with `with_g4` also those of m4 and H_y, with `full` also
+/// those of Z and m0.
+#[inline(always)]
+pub(crate) fn in_range(p: &Params, c: &Core, with_g4: bool, full: bool) -> bool {
+    let hq = p.h_rms() * p.q0();
+    let ok = |v: f64| v.is_normal();
+    let g_ok = |g: Dd| ok(g.hi) || (g.hi == 0.0 && c.ln_zeta == 0.0);
+    if !(ok(hq) && ok(hq / p.h0_over_e()) && g_ok(c.g2)) {
+        return false;
+    }
+    let hq2 = hq * p.q0();
+    if with_g4 && !(ok(hq2) && ok(hq2 * hq2) && g_ok(c.g4)) {
+        return false;
+    }
+    !full || (ok(p.h_rms() * p.h_rms()) && ok(p.h_rms() * p.q0().powf(p.hurst())))
 }

@@ -1,0 +1,113 @@
+//! Accuracy against the 50-digit mpmath reference (scripts/gen_reference.py):
+//! every output within 1e-12 relative, values below 1e-300 may be 0.
+
+mod common;
+
+use common::{tol, Report, Table};
+use rough_model::{
+    closed_form, exact, persson_elastic, slopes, Model, ParamValues, Params, Surface,
+};
+
+#[test]
+fn slopes_of_both_models_match_reference() {
+    let t = Table::load("slopes.csv");
+    let mut r = Report::default();
+    for row in &t.rows {
+        let psi = t.get(row, "psi").unwrap();
+        let input = format!("psi={psi:e}");
+        let e = exact(psi);
+        let c = closed_form(psi);
+        for (name, got) in [
+            ("exact_elastic", e.elastic),
+            ("exact_plastic", e.plastic),
+            ("exact_total", e.total),
+            ("closed_elastic", c.elastic),
+            ("closed_plastic", c.plastic),
+            ("closed_total", c.total),
+            ("persson_elastic", persson_elastic(psi)),
+        ] {
+            r.check(name, &input, got, t.get(row, name).unwrap(), tol::CONTRACT);
+        }
+    }
+    r.finish("slopes.csv");
+}
+
+#[test]
+fn check_values_of_model_md() {
+    let mut r = Report::default();
+    let e = exact(1.0);
+    let c = closed_form(1.0);
+    for (name, got, want) in [
+        ("exact S_el", e.elastic, 0.0287675334233055),
+        ("exact S_pl", e.plastic, 0.985616238638923),
+        ("exact S_tot", e.total, 1.01438377206223),
+        ("closed S_el", c.elastic, 0.106442719176429),
+        ("closed S_pl", c.plastic, 0.900581342322006),
+        ("closed S_tot", c.total, 1.00702406149844),
+    ] {
+        // MODEL.md prints 15 digits.
+        r.check(name, "psi=1", got, want, 1e-14);
+    }
+    r.finish("MODEL.md check values");
+}
+
+fn params_of(t: &Table, row: &[String]) -> Params {
+    Params::new(ParamValues {
+        h0_over_e: t.get(row, "h0_over_e").unwrap(),
+        h_rms: t.get(row, "h_rms").unwrap(),
+        zeta: t.get(row, "zeta").unwrap(),
+        hurst: t.get(row, "hurst").unwrap(),
+        r_star: t.get(row, "r_star").unwrap(),
+        q0: t.get(row, "q0").unwrap(),
+    })
+    .expect("reference inputs are valid")
+}
+
+#[test]
+fn spectrum_indices_and_slopes_from_parameters_match_reference() {
+    let t = Table::load("params.csv");
+    let mut r = Report::default();
+    for row in &t.rows {
+        let p = params_of(&t, row);
+        let v = p.values();
+        let input = format!(
+            "(h0_over_e={:e}, h_rms={:e}, zeta={:e}, hurst={}, r_star={:e}, q0={:e})",
+            v.h0_over_e, v.h_rms, v.zeta, v.hurst, v.r_star, v.q0
+        );
+        let s = Surface::of(&p);
+        let (sp, ix) = (s.spectrum, s.indices);
+        let mut chk = |name: &str, got: f64| {
+            r.check(name, &input, got, t.get(row, name).unwrap(), tol::CONTRACT)
+        };
+        chk("z", sp.z);
+        chk("m0", sp.m0);
+        chk("m2", sp.m2);
+        chk("m4", sp.m4);
+        chk("r_s", sp.r_s);
+        chk("lambda1", sp.lambda1);
+        chk("h_rms_actual", sp.h_rms_actual);
+        chk("rms_slope", sp.rms_slope);
+        chk("rms_curvature", sp.rms_curvature);
+        chk("hardness_ratio", ix.hardness_ratio);
+        chk("psi_gw", ix.psi_gw);
+        chk("psi_p", ix.psi_p);
+        chk("psi_star", ix.psi_star);
+        for (size_effect, suffix) in [(false, "p"), (true, "star")] {
+            let psi = ix.psi_in_use(size_effect);
+            let e = slopes(Model::Exact, psi);
+            let c = slopes(Model::ClosedForm, psi);
+            chk(&format!("exact_el_{suffix}"), e.elastic);
+            chk(&format!("exact_pl_{suffix}"), e.plastic);
+            chk(&format!("exact_tot_{suffix}"), e.total);
+            chk(&format!("closed_el_{suffix}"), c.elastic);
+            chk(&format!("closed_pl_{suffix}"), c.plastic);
+            chk(&format!("closed_tot_{suffix}"), c.total);
+        }
+        match (t.get(row, "psi_star_asym"), ix.psi_star_asymptotic) {
+            (Some(want), Some(got)) => r.check("psi_star_asym", &input, got, want, tol::CONTRACT),
+            (None, None) => {}
+            (want, got) => panic!("psi_star_asym at {input}: got {got:?}, want {want:?}"),
+        }
+    }
+    r.finish("params.csv");
+}
