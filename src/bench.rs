@@ -18,6 +18,7 @@ use std::time::Instant;
 
 use anyhow::{bail, Context};
 use libm::{erf, erfc};
+use rough_model::slopes::forms;
 use rough_model::{Curves, Scene, SceneSpec, Slopes};
 
 use crate::cli::BenchArgs;
@@ -171,57 +172,14 @@ fn shipped_closed(psi: f64) -> [f64; 3] {
     arr(rough_model::closed_form(psi))
 }
 
-/// Image sums only, `N` exponentials per quantity, in plain f64:
-/// S_tot = √(2/π) x (1 + 2 Σ_{n=1}^{N−1} e^(−2n²x²)),
-/// S_pl = √(2/π) x · 2 Σ_{n=0}^{N−1} e^(−(2n+1)²x²/2), S_el = S_tot − S_pl.
-fn image<const N: usize>(psi: f64) -> [f64; 3] {
-    guarded(psi, |psi| {
-        let x = 1.0 / psi;
-        let u = x * x;
-        let pref = SQRT_2_OVER_PI * x;
-        let mut tot = 1.0;
-        for n in 1..N {
-            let n = n as f64;
-            tot += 2.0 * (-2.0 * n * n * u).exp();
-        }
-        let mut pl = 0.0;
-        for n in 0..N {
-            let m = (2 * n + 1) as f64;
-            pl += 2.0 * (-0.5 * m * m * u).exp();
-        }
-        let (tot, pl) = (pref * tot, pref * pl);
-        [tot - pl, pl, tot]
-    })
+/// Image sums only (`rough_model::slopes::forms::image`), `N` terms per sum.
+fn image<const N: u32>(psi: f64) -> [f64; 3] {
+    guarded(psi, |psi| arr(forms::image(psi, N)))
 }
 
-/// The most terms the Fourier row sums.
-pub const FOURIER_MAX_TERMS: usize = 64;
-
-/// Fourier sums only, each quantity in its own form, with q_k = e^(−π²k²ψ²/2)
-/// for k ≤ 64, stopping once a term falls below 1e-17:
-/// S_tot = 1 + 2Σ q_k, S_pl = 1 + 2Σ (−1)^k q_k, S_el = 4 Σ_{k odd} q_k.
-fn fourier(psi: f64) -> [f64; 3] {
-    guarded(psi, |psi| {
-        let a = 0.5 * std::f64::consts::PI * std::f64::consts::PI * psi * psi;
-        let (mut odd, mut even) = (0.0, 0.0);
-        for k in 1..=FOURIER_MAX_TERMS {
-            let kf = k as f64;
-            let q = (-a * kf * kf).exp();
-            if k % 2 == 1 {
-                odd += q;
-            } else {
-                even += q;
-            }
-            if q < 1e-17 {
-                break;
-            }
-        }
-        [
-            4.0 * odd,
-            1.0 + 2.0 * (even - odd),
-            1.0 + 2.0 * (odd + even),
-        ]
-    })
+/// Fourier sums only (`rough_model::slopes::forms::fourier`), `K` terms per sum.
+fn fourier<const K: u32>(psi: f64) -> [f64; 3] {
+    guarded(psi, |psi| arr(forms::fourier(psi, K)))
 }
 
 /// The closed form exactly as the paper writes it, in plain f64:
@@ -296,30 +254,26 @@ fn finite(psi: f64) -> [f64; 3] {
 
 /// Every method in the table, in order.
 pub fn methods() -> Vec<Method> {
-    let image_row = |name, n: usize, f| Method {
+    let series_row = |name, n: u32, f| Method {
         name,
-        terms: format!("{n} (el = tot − pl)"),
+        terms: format!("{n} per sum"),
         against: Against::Exact,
         f,
     };
     vec![
         Method {
             name: "exact (shipped)",
-            terms: "5 (Fourier x²<π, image x²≥π)".into(),
+            terms: "5 per sum (Fourier x²<π, image x²≥π)".into(),
             against: Against::Exact,
             f: shipped_exact,
         },
-        image_row("image 1", 1, image::<1>),
-        image_row("image 2", 2, image::<2>),
-        image_row("image 4", 4, image::<4>),
-        image_row("image 8", 8, image::<8>),
-        image_row("image 64", 64, image::<64>),
-        Method {
-            name: "fourier",
-            terms: format!("≤{FOURIER_MAX_TERMS} (to 1e-17)"),
-            against: Against::Exact,
-            f: fourier,
-        },
+        series_row("image 1", 1, image::<1>),
+        series_row("image 2", 2, image::<2>),
+        series_row("image 4", 4, image::<4>),
+        series_row("image 8", 8, image::<8>),
+        series_row("image 64", 64, image::<64>),
+        series_row("fourier 8", 8, fourier::<8>),
+        series_row("fourier 64", 64, fourier::<64>),
         Method {
             name: "closed, naive (paper's formula, f64)",
             terms: "closed".into(),
@@ -436,7 +390,9 @@ pub fn accurate_range(m: &Method, reference: &[RefRow], tol: f64) -> String {
     let (a, b) = (rows[best.0].psi, rows[best.0 + best.1 - 1].psi);
     let all = best.1 == rows.len();
     format!(
-        "ψ from {a:e} to {b:e}{}",
+        "ψ from {} to {}{}",
+        fmt_psi(a),
+        fmt_psi(b),
         if all { " (all ψ > 0)" } else { "" }
     )
 }
@@ -461,6 +417,32 @@ pub fn fmt_err(e: f64) -> String {
     }
 }
 
+/// ψ with four significant digits: plain between 1e-3 and 1e4, else `1.5e-8`.
+pub fn fmt_psi(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return format!("{v}");
+    }
+    let a = v.abs();
+    if (1e-3..1e4).contains(&a) {
+        let digits = (3 - a.log10().floor() as i32).max(0) as usize;
+        let t = format!("{v:.digits$}");
+        if t.contains('.') {
+            t.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            t
+        }
+    } else {
+        let t = format!("{v:.3e}");
+        let (m, e) = t.split_once('e').unwrap_or((&t, "0"));
+        let m = if m.contains('.') {
+            m.trim_end_matches('0').trim_end_matches('.')
+        } else {
+            m
+        };
+        format!("{m}e{e}")
+    }
+}
+
 /// The markdown table of `rows`.
 pub fn render_table(rows: &[Row]) -> String {
     let mut s = String::new();
@@ -470,12 +452,12 @@ pub fn render_table(rows: &[Row]) -> String {
     for r in rows {
         let _ = writeln!(
             s,
-            "| {} | {} | {:.1} | {} | {:e} |",
+            "| {} | {} | {:.1} | {} | {} |",
             r.name,
             r.terms,
             r.ns_per_point,
             fmt_err(r.err.max),
-            r.err.worst_psi
+            fmt_psi(r.err.worst_psi)
         );
     }
     s
@@ -527,21 +509,30 @@ pub fn report(passes: u32) -> anyhow::Result<String> {
     let hi = grid.iter().copied().fold(0.0, f64::max);
     let _ = writeln!(
         out,
-        "\n{} reference ψ (mpmath, {:e} … {:e}, and ψ = 0 for errors only); ns/point is the \
+        "\n{} reference ψ (mpmath, {} … {}, and ψ = 0 for errors only); ns/point is the \
          median of {} timed passes; errors are the max over elastic, plastic and total.",
         reference.len(),
-        lo,
-        hi,
+        fmt_psi(lo),
+        fmt_psi(hi),
         passes.max(1)
     );
     let _ = writeln!(
         out,
-        "Every method returns the limits at ψ = 0 and ψ = ∞. Image rows take S_el = S_tot − S_pl; \
-         the Fourier row sums each slope in its own series."
+        "Every method returns the limits at ψ = 0 and ψ = ∞. Image and Fourier rows sum each \
+         slope in its own series (S_el by its alternating image sum or its odd-k Fourier sum), \
+         in plain f64."
     );
-    let _ = writeln!(out, "Where each method is within 1e-12 (longest run of the sorted grid):");
+    let _ = writeln!(
+        out,
+        "Where each method is within 1e-12 (longest run of the sorted grid):"
+    );
     for m in &ms {
-        let _ = writeln!(out, "- {}: {}", m.name, accurate_range(m, &reference, 1e-12));
+        let _ = writeln!(
+            out,
+            "- {}: {}",
+            m.name,
+            accurate_range(m, &reference, 1e-12)
+        );
     }
     if let Some(one) = reference.iter().find(|r| r.psi == 1.0) {
         let c = shipped_closed(1.0);
@@ -614,6 +605,18 @@ mod tests {
     }
 
     #[test]
+    fn psi_format() {
+        assert_eq!(fmt_psi(0.55), "0.55");
+        assert_eq!(fmt_psi(12.090201005025126), "12.09");
+        assert_eq!(fmt_psi(1.998), "1.998");
+        assert_eq!(fmt_psi(1e-308), "1e-308");
+        assert_eq!(fmt_psi(1.7976931348623157e308), "1.798e308");
+        assert_eq!(fmt_psi(2.6023616895101482e-2), "0.02602");
+        assert_eq!(fmt_psi(0.0), "0");
+        assert_eq!(fmt_err(3.2e-15), "3.2e-15");
+    }
+
+    #[test]
     fn rel_error_conventions() {
         assert_eq!(rel_error(f64::INFINITY, f64::INFINITY), 0.0);
         assert_eq!(rel_error(1.0, f64::INFINITY), f64::INFINITY);
@@ -649,37 +652,12 @@ mod tests {
             assert!(t.contains(need), "{need}");
         }
         assert!(t.contains("image 64"));
-        assert!(t.contains("fourier"));
+        assert!(t.contains("fourier 8") && t.contains("fourier 64"));
         assert!(t.contains("naive") && t.contains("model error"));
         assert!(t.contains("finite"));
         assert!(lines[2].contains("| 3.2e-15 |"), "{}", lines[2]);
         for l in &lines[2..] {
             assert_eq!(l.matches('|').count(), 6, "{l}");
-        }
-    }
-
-    #[test]
-    #[ignore]
-    fn dump() {
-        let r = parse_reference(REFERENCE_CSV).unwrap();
-        for m in methods() {
-            let mut worst: Vec<(f64, f64, usize, f64, f64)> = Vec::new();
-            for x in &r {
-                let got = (m.f)(x.psi);
-                let want = if m.against == Against::Exact {
-                    x.exact
-                } else {
-                    x.closed
-                };
-                for i in 0..3 {
-                    worst.push((rel_error(got[i], want[i]), x.psi, i, got[i], want[i]));
-                }
-            }
-            worst.sort_by(|a, b| b.0.total_cmp(&a.0));
-            println!("{}", m.name);
-            for w in &worst[..4] {
-                println!("   {:?}", w);
-            }
         }
     }
 
@@ -693,19 +671,24 @@ mod tests {
         // The closed form is a different model: ~0.106 vs 0.0288 at ψ = 1.
         assert!(err("closed (shipped) model error vs exact") > 1.0);
         // Finite load tends to the slopes where ψ ≫ ρ.
-        let one = r.iter().find(|x| x.psi == 1.0).unwrap();
-        let fin = finite(1.0);
-        for i in 0..3 {
-            assert!(rel_error(fin[i], one.exact[i]) < 1e-6);
+        // Both branches of the private finite-load areas: sine series at
+        // ψ = 1, images at ψ = 0.1.
+        for psi in [1.0, 0.1] {
+            let want = shipped_exact(psi);
+            for (g, w) in finite(psi).iter().zip(want) {
+                assert!(rel_error(*g, w) < 1e-6, "ψ = {psi}: {g} vs {w}");
+            }
         }
         // Fourier and images agree with the exact method on their own sides.
-        let f = fourier(3.0);
+        let f = fourier::<8>(3.0);
         let e = shipped_exact(3.0);
         let i8 = image::<8>(0.1);
         let e2 = shipped_exact(0.1);
         for k in 0..3 {
             assert!(rel_error(f[k], e[k]) < 1e-13);
-            assert!(rel_error(i8[k], e2[k]) < 1e-13);
+        }
+        for (g, w) in i8.iter().zip(e2) {
+            assert!(rel_error(*g, w) < 1e-13);
         }
     }
 }
