@@ -796,6 +796,79 @@ mod tests {
         assert_eq!(back, s);
     }
 
+    fn files_in(dir: &Path) -> Vec<String> {
+        let mut v: Vec<String> = std::fs::read_dir(dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        v.sort();
+        v
+    }
+
+    #[test]
+    fn failed_write_leaves_no_file_behind() {
+        let dir = tempfile::tempdir().unwrap();
+        let err = save_with(dir.path(), "full", b"(version: 1)", |f, b| {
+            f.write_all(&b[..4])?;
+            Err(io::Error::from_raw_os_error(28)) // ENOSPC
+        })
+        .unwrap_err()
+        .to_string();
+        assert!(err.contains("cannot save snapshot in"), "{err}");
+        assert!(err.contains(&dir.path().display().to_string()), "{err}");
+        assert!(err.contains("No space left on device"), "{err}");
+        assert_eq!(files_in(dir.path()), Vec::<String>::new());
+    }
+
+    #[test]
+    fn a_file_created_during_the_save_is_not_replaced() {
+        let dir = tempfile::tempdir().unwrap();
+        let theirs = dir.path().join("race.ron");
+        let path = save_with(dir.path(), "race", b"ours\n", |f, b| {
+            // Someone else takes the name after any check we could have made.
+            std::fs::write(&theirs, "theirs\n")?;
+            f.write_all(b)
+        })
+        .unwrap();
+        assert_eq!(path, dir.path().join("race-2.ron"));
+        assert_eq!(std::fs::read_to_string(&theirs).unwrap(), "theirs\n");
+        assert_eq!(std::fs::read_to_string(&path).unwrap(), "ours\n");
+        assert_eq!(files_in(dir.path()), ["race-2.ron", "race.ron"]);
+    }
+
+    #[test]
+    fn exclusive_fallback_writes_once_and_cleans_up_on_failure() {
+        let dir = tempfile::tempdir().unwrap();
+        let target = dir.path().join("x.ron");
+        let ok = |f: &mut File, b: &[u8]| f.write_all(b);
+        assert!(write_exclusive(&target, b"one", &ok).unwrap());
+        assert!(!write_exclusive(&target, b"two", &ok).unwrap());
+        assert_eq!(std::fs::read(&target).unwrap(), b"one");
+        let fail = |_: &mut File, _: &[u8]| Err(io::Error::from_raw_os_error(28));
+        let other = dir.path().join("y.ron");
+        assert!(write_exclusive(&other, b"three", &fail).is_err());
+        assert!(!other.exists());
+    }
+
+    #[test]
+    fn nesting_guard_skips_strings_and_comments() {
+        let deep = "(".repeat(MAX_DEPTH + 1);
+        assert_eq!(too_deep_at(&deep), Some(MAX_DEPTH));
+        for hidden in [
+            format!("\"{deep}\""),
+            format!("r#\"{deep}\"#"),
+            format!("// {deep}\n"),
+            format!("/* /* {deep} */ */"),
+            format!("'(' {}", "()".repeat(100)),
+        ] {
+            assert_eq!(too_deep_at(&hidden), None, "{hidden}");
+        }
+        assert_eq!(
+            too_deep_at(&format!("\"\\\"\" {deep}")),
+            Some(5 + MAX_DEPTH)
+        );
+    }
+
     #[test]
     fn stems_carry_utc_date_and_time() {
         let t = UNIX_EPOCH + std::time::Duration::from_secs(1_795_275_012);
