@@ -690,8 +690,11 @@ static SAVE_SEQ: AtomicU64 = AtomicU64::new(0);
 /// taken, `{stem}-2.ron`, `{stem}-3.ron`, …. The text goes to a temporary
 /// file in `dir` first and is linked into place without replacing anything;
 /// the temporary file is removed whatever happens. `stem` is checked by
-/// [`check_stem`]. Returns the path written.
+/// [`check_stem`], and the state's name by [`check_name`] (so that whatever
+/// is saved loads back). Returns the path written.
 pub fn save_new(dir: &Path, stem: &str, state: &State) -> anyhow::Result<PathBuf> {
+    // What could not be loaded back is not written.
+    check_name(&state.name).map_err(|e| anyhow::anyhow!("cannot save snapshot: {e}"))?;
     save_with(dir, stem, state.to_ron().as_bytes(), |f, b| f.write_all(b))
 }
 

@@ -212,3 +212,15 @@ fn default_stems_are_safe_file_names() {
         "x-19700101-000000"
     );
 }
+
+#[test]
+fn a_state_that_could_not_be_loaded_back_is_not_saved() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut s = fig("fig2");
+    s.name = "line\nbreak".into();
+    assert_eq!(
+        save_new(dir.path(), "x", &s).unwrap_err().to_string(),
+        "cannot save snapshot: name contains the control character U+000A: it must be printable text"
+    );
+    assert_eq!(files_in(dir.path()), Vec::<String>::new());
+}
