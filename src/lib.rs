@@ -4,7 +4,6 @@
 
 pub mod cli;
 pub mod export;
-pub mod float_fmt;
 pub mod presets;
 pub mod snapshot;
 pub mod tui;
