@@ -1,0 +1,66 @@
+//! The explorer drawn without a terminal: insta snapshots of each preset at
+//! 80×24 and 160×48, and the drawing at sizes down to 1×1.
+
+use ratatui::backend::TestBackend;
+use ratatui::Terminal;
+use roughtui::presets;
+use roughtui::tui::app::{update, App, Message};
+use roughtui::tui::theme::Theme;
+
+fn draw(app: &App) -> Terminal<TestBackend> {
+    let (w, h) = app.size;
+    let mut t = Terminal::new(TestBackend::new(w, h)).unwrap();
+    t.draw(|f| f.render_widget(app, f.area())).unwrap();
+    t
+}
+
+fn text(t: &Terminal<TestBackend>) -> String {
+    let buf = t.backend().buffer();
+    let mut s = String::new();
+    for y in 0..buf.area.height {
+        for x in 0..buf.area.width {
+            s.push_str(buf[(x, y)].symbol());
+        }
+        s.push('\n');
+    }
+    s
+}
+
+fn app(name: &str, size: (u16, u16), theme: Theme) -> App {
+    App::new(presets::load(name).unwrap(), theme, size)
+}
+
+fn braille_cells(s: &str) -> usize {
+    s.chars()
+        .filter(|c| ('\u{2801}'..='\u{28FF}').contains(c))
+        .count()
+}
+
+#[test]
+fn presets_at_80x24() {
+    for name in ["fig1", "fig2", "fig3", "fig4"] {
+        let t = draw(&app(name, (80, 24), Theme::colored()));
+        insta::assert_snapshot!(format!("{name}_80x24"), text(&t));
+    }
+}
+
+#[test]
+fn presets_at_160x48() {
+    for name in ["fig1", "fig2", "fig3", "fig4"] {
+        let t = draw(&app(name, (160, 48), Theme::colored()));
+        insta::assert_snapshot!(format!("{name}_160x48"), text(&t));
+    }
+}
+
+#[test]
+fn help_overlay_at_80x24() {
+    let mut a = app("fig2", (80, 24), Theme::colored());
+    update(&mut a, Message::ToggleHelp);
+    insta::assert_snapshot!("help_80x24", text(&draw(&a)));
+}
+
+#[test]
+fn fig2_plain_at_100x30() {
+    let t = draw(&app("fig2", (100, 30), Theme::plain()));
+    insta::assert_snapshot!("fig2_plain_100x30", text(&t));
+}
