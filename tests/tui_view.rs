@@ -40,7 +40,10 @@ fn braille_cells(s: &str) -> usize {
 fn presets_at_80x24() {
     for name in ["fig1", "fig2", "fig3", "fig4"] {
         let t = draw(&app(name, (80, 24), Theme::colored()));
-        insta::assert_snapshot!(format!("{name}_80x24"), text(&t));
+        let s = text(&t);
+        assert!(braille_cells(&s) > 30, "{name}: {}", braille_cells(&s));
+        assert!(s.contains(&format!("[{name}]")));
+        insta::assert_snapshot!(format!("{name}_80x24"), s);
     }
 }
 
@@ -63,4 +66,39 @@ fn help_overlay_at_80x24() {
 fn fig2_plain_at_100x30() {
     let t = draw(&app("fig2", (100, 30), Theme::plain()));
     insta::assert_snapshot!("fig2_plain_100x30", text(&t));
+}
+
+#[test]
+fn any_size_draws_without_panic() {
+    let mut a = app("fig4", (80, 24), Theme::colored());
+    for (w, h) in [
+        (1, 1),
+        (0, 0),
+        (40, 12),
+        (79, 24),
+        (80, 23),
+        (80, 24),
+        (81, 25),
+        (300, 100),
+    ] {
+        roughtui::tui::app::update(&mut a, Message::Resize(w, h));
+        let t = draw(&a);
+        if w < 80 || h < 24 {
+            if w >= 40 {
+                assert!(text(&t).contains("enlarge the terminal"), "{w}x{h}");
+            }
+        } else {
+            assert!(braille_cells(&text(&t)) > 60, "{w}x{h}");
+        }
+    }
+}
+
+#[test]
+fn plain_theme_tells_curves_apart_by_marker() {
+    let s = text(&draw(&app("fig2", (100, 30), Theme::plain())));
+    for m in ['•', '+', 'o'] {
+        assert!(s.matches(m).count() > 5, "marker {m} in\n{s}");
+    }
+    assert!(braille_cells(&s) > 30);
+    assert!(s.contains("•• elastic") && s.contains("++ plastic") && s.contains("oo Persson"));
 }
