@@ -102,3 +102,21 @@ fn plain_theme_tells_curves_apart_by_marker() {
     assert!(braille_cells(&s) > 30);
     assert!(s.contains("•• elastic") && s.contains("++ plastic") && s.contains("oo Persson"));
 }
+
+#[test]
+fn hurst_and_r_star_sweeps_label_their_axes() {
+    let mut a = app("fig3", (80, 24), Theme::colored());
+    update(&mut a, Message::CycleSweep);
+    let s = text(&draw(&a));
+    assert!(
+        s.contains("0.1") && s.contains("1.0") && s.contains("sweep H 0.05…1"),
+        "{s}"
+    );
+    update(&mut a, Message::CycleSweep);
+    let s = text(&draw(&a));
+    assert!(
+        s.contains("1 µm") && s.contains("10 mm") && s.contains("R* = 1.00 mm"),
+        "{s}"
+    );
+    insta::assert_snapshot!("fig3_sweep_r_star_80x24", s);
+}

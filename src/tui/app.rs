@@ -382,6 +382,9 @@ pub fn update(app: &mut App, msg: Message) {
                 Ok(s) => {
                     app.state.sweep = s;
                     app.modified = true;
+                    if axis == Axis::RStar && !app.state.size_effect {
+                        app.set_status("R* acts only with the size effect: press e", false);
+                    }
                 }
                 Err(e) => app.set_status(e.to_string(), true),
             }

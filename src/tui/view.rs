@@ -337,7 +337,7 @@ fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
     let sp = &r.surface.spectrum;
     let s = &app.state;
     let asym = match (ix.psi_star_asymptotic, ix.asymptotic_deviation()) {
-        (Some(a), Some(d)) => format!("{} ({:+.1}%)", fmt_num(a), d * 100.0),
+        (Some(a), Some(d)) => format!("{} ({:+.1}% vs Ψ*)", fmt_num(a), d * 100.0),
         (Some(a), None) => fmt_num(a),
         (None, _) => "n/a (R* = 0 or H = 1)".into(),
     };
@@ -363,7 +363,7 @@ fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
             "H_y/H0",
             fmt_num(ix.hardness_ratio),
         )),
-        Line::raw(format!("{:<6}{asym}", "Ψ*≈")),
+        Line::raw(format!("{:<6}{asym}", "Ψ*asy")),
         Line::raw(pair("R_s", fmt_len(sp.r_s), "λ1", fmt_len(sp.lambda1))),
         Line::raw(pair(
             "h_rms",
@@ -381,7 +381,7 @@ fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
             Span::raw(format!("plastic {:.1}%  ", sl.plastic_share() * 100.0)),
             Span::styled(regime.label(), t.regime(regime)),
         ]),
-        Line::raw(format!("{} lies at:", s.model.other().label())),
+        Line::raw(format!("{} at the marker:", s.model.other().label())),
         Line::raw(format!(
             " el {}  pl {}  tot {}",
             fmt_rel(o.elastic, sl.elastic),
@@ -422,7 +422,7 @@ fn x_ticks(axis: Axis, b: [f64; 2]) -> Vec<(f64, String)> {
     } else {
         let (lo, hi) = ((b[0] * 10.0).ceil() as i32, (b[1] * 10.0).floor() as i32);
         (lo..=hi)
-            .map(|k| (f64::from(k) / 10.0, fmt_short(axis, f64::from(k) / 10.0)))
+            .map(|k| (f64::from(k) / 10.0, format!("{:.1}", f64::from(k) / 10.0)))
             .collect()
     }
 }
