@@ -452,3 +452,18 @@ proptest! {
         let _ = screen(&a);
     }
 }
+
+#[test]
+fn hostile_names_are_shown_and_prefilled_safely() {
+    let mut state = presets::load("fig2").unwrap();
+    state.name = "a/b\u{1b}[2Jc".into();
+    let mut a = App::new(state, Theme::colored(), (80, 24));
+    let s = screen(&a);
+    assert!(s.contains("[a/b�[2Jc]"), "{s}");
+    assert!(!s.contains('\u{1b}'));
+    ch(&mut a, 's');
+    let Mode::Prompt(stem) = &a.mode else {
+        panic!("no prompt")
+    };
+    assert!(stem.starts_with("a_b_[2Jc-"), "{stem}");
+}

@@ -398,7 +398,20 @@ pub fn update(app: &mut App, msg: Message) {
             app.modified = true;
         }
         Message::StartSave => {
-            let stem = snapshot::default_stem(&app.state.name, SystemTime::now());
+            // The prefill is a file name: no separators or control characters.
+            let name: String = app
+                .state
+                .name
+                .chars()
+                .map(|c| {
+                    if c.is_control() || c == '/' || c == '\\' {
+                        '_'
+                    } else {
+                        c
+                    }
+                })
+                .collect();
+            let stem = snapshot::default_stem(&name, SystemTime::now());
             app.mode = Mode::Prompt(stem);
         }
         Message::ToggleHelp => {

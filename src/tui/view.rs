@@ -244,10 +244,16 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
     let s = &app.state;
     let t = &app.theme;
     let axis = s.sweep.axis();
+    // A snapshot's name is untrusted text: no control characters reach the terminal.
+    let clean: String = s
+        .name
+        .chars()
+        .map(|c| if c.is_control() { '�' } else { c })
+        .collect();
     let name = if app.modified {
-        format!("{}*", s.name)
+        format!("{clean}*")
     } else {
-        s.name.clone()
+        clean
     };
     let psi_name = if s.size_effect { "Ψ*" } else { "Ψ_P" };
     let line = Line::from(vec![
