@@ -1,7 +1,7 @@
 //! roughtui: a terminal explorer of elasto-plastic rough contact with
 //! size-dependent hardness. Thin: parse, dispatch, map errors to exit codes.
 
-use std::io::BufWriter;
+use std::io::{BufWriter, ErrorKind, Write};
 use std::process::ExitCode;
 
 use clap::Parser;
@@ -12,11 +12,22 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
+        // A reader that stops early (`roughtui export … | head -1`) is not
+        // an error: stop quietly.
+        Err(e) if is_broken_pipe(&e) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("roughtui: {e:#}");
+            // Not eprintln!, which panics when stderr itself is a closed pipe.
+            let _ = writeln!(std::io::stderr(), "roughtui: {e:#}");
             ExitCode::from(2)
         }
     }
+}
+
+fn is_broken_pipe(e: &anyhow::Error) -> bool {
+    e.chain().any(|c| {
+        c.downcast_ref::<std::io::Error>()
+            .is_some_and(|io| io.kind() == ErrorKind::BrokenPipe)
+    })
 }
 
 fn run(cli: Cli) -> anyhow::Result<()> {

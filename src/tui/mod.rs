@@ -1,7 +1,69 @@
-//! The full-screen explorer.
+//! The full-screen explorer: an Elm loop over [`app::update`]. It blocks on
+//! the next terminal event and draws only after an event that changed
+//! something, so an idle session writes nothing to the terminal.
+
+pub mod app;
+pub mod keys;
+pub mod term;
+pub mod theme;
+pub mod view;
+
+use std::io::Write;
+use std::time::Instant;
+
+use crossterm::event::{self, Event, KeyCode};
 
 use crate::snapshot::State;
+use app::{update, App};
+use theme::Theme;
 
+/// Runs the explorer on `state` until `q`. The terminal is restored on every
+/// way out.
+///
+/// Two environment variables exist for tests: `ROUGHTUI_FRAME_LOG=FILE`
+/// appends, per handled event, the microseconds from the event's arrival to
+/// the flushed frame; `ROUGHTUI_PANIC_KEY=C` makes key C panic, to test the
+/// restore on panic.
 pub fn run(state: State) -> anyhow::Result<()> {
-    anyhow::bail!("the explorer for {} is not built yet", state.name)
+    let mut frame_log = match std::env::var_os("ROUGHTUI_FRAME_LOG") {
+        Some(p) => Some(
+            std::fs::OpenOptions::new()
+                .create(true)
+                .append(true)
+                .open(p)?,
+        ),
+        None => None,
+    };
+    let panic_key = std::env::var("ROUGHTUI_PANIC_KEY")
+        .ok()
+        .and_then(|s| s.chars().next());
+
+    let mut terminal = term::setup()?;
+    let _guard = term::Guard;
+    let size = terminal.size()?;
+    let mut app = App::new(state, Theme::from_env(), (size.width, size.height));
+    terminal.draw(|f| f.render_widget(&app, f.area()))?;
+    loop {
+        let (msg, arrived) = loop {
+            let ev = event::read()?;
+            let arrived = Instant::now();
+            if let (Some(c), Event::Key(k)) = (panic_key, &ev) {
+                if k.code == KeyCode::Char(c) {
+                    panic!("ROUGHTUI_PANIC_KEY pressed");
+                }
+            }
+            if let Some(m) = keys::message_for_event(&app, &ev) {
+                break (m, arrived);
+            }
+        };
+        update(&mut app, msg);
+        if app.quit {
+            break;
+        }
+        terminal.draw(|f| f.render_widget(&app, f.area()))?;
+        if let Some(log) = frame_log.as_mut() {
+            writeln!(log, "{}", arrived.elapsed().as_micros())?;
+        }
+    }
+    Ok(())
 }

@@ -1,0 +1,112 @@
+//! Colours and markers, from one place. The plain theme (NO_COLOR) uses no
+//! colour at all: the four curves differ by marker instead, and selection and
+//! emphasis use reverse video and bold.
+
+use ratatui::style::{Color, Modifier, Style};
+use ratatui::symbols::Marker;
+
+use rough_model::Regime;
+
+/// How one curve is drawn and named in the legend.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CurveStyle {
+    pub name: &'static str,
+    pub style: Style,
+    pub marker: Marker,
+    /// What the legend shows in front of the name.
+    pub sample: &'static str,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Theme {
+    pub color: bool,
+    pub elastic: CurveStyle,
+    pub plastic: CurveStyle,
+    pub total: CurveStyle,
+    pub persson: CurveStyle,
+    /// The vertical line at the swept parameter's current value.
+    pub marker_line: CurveStyle,
+    pub selected: Style,
+    pub title: Style,
+    pub dim: Style,
+    pub error: Style,
+    pub ok: Style,
+}
+
+impl Theme {
+    /// The paper's colours: elastic in the terminal's own foreground
+    /// (white on dark, black on light), plastic blue, total red, Persson green.
+    pub fn colored() -> Theme {
+        let curve = |name, color: Color| CurveStyle {
+            name,
+            style: Style::new().fg(color),
+            marker: Marker::Braille,
+            sample: "━━",
+        };
+        Theme {
+            color: true,
+            elastic: curve("elastic", Color::Reset),
+            plastic: curve("plastic", Color::Blue),
+            total: curve("total", Color::Red),
+            persson: curve("Persson elastic", Color::Green),
+            marker_line: CurveStyle {
+                name: "marker",
+                style: Style::new().fg(Color::Yellow),
+                marker: Marker::Custom('│'),
+                sample: "│",
+            },
+            selected: Style::new()
+                .add_modifier(Modifier::REVERSED)
+                .add_modifier(Modifier::BOLD),
+            title: Style::new().add_modifier(Modifier::BOLD),
+            dim: Style::new().fg(Color::DarkGray),
+            error: Style::new().fg(Color::Red).add_modifier(Modifier::BOLD),
+            ok: Style::new().fg(Color::Green),
+        }
+    }
+
+    /// No colour codes at all; curves told apart by their markers.
+    pub fn plain() -> Theme {
+        let curve = |name, marker: Marker, sample| CurveStyle {
+            name,
+            style: Style::new(),
+            marker,
+            sample,
+        };
+        Theme {
+            color: false,
+            elastic: curve("elastic", Marker::Custom('•'), "••"),
+            plastic: curve("plastic", Marker::Custom('+'), "++"),
+            total: curve("total", Marker::Braille, "⠒⠒"),
+            persson: curve("Persson elastic", Marker::Custom('o'), "oo"),
+            marker_line: curve("marker", Marker::Custom('│'), "│"),
+            selected: Style::new()
+                .add_modifier(Modifier::REVERSED)
+                .add_modifier(Modifier::BOLD),
+            title: Style::new().add_modifier(Modifier::BOLD),
+            dim: Style::new(),
+            error: Style::new().add_modifier(Modifier::BOLD),
+            ok: Style::new(),
+        }
+    }
+
+    /// Plain when NO_COLOR is set to anything non-empty (no-color.org).
+    pub fn from_env() -> Theme {
+        match std::env::var_os("NO_COLOR") {
+            Some(v) if !v.is_empty() => Theme::plain(),
+            _ => Theme::colored(),
+        }
+    }
+
+    pub fn regime(&self, r: Regime) -> Style {
+        let base = Style::new().add_modifier(Modifier::BOLD);
+        if !self.color {
+            return base;
+        }
+        base.fg(match r {
+            Regime::Elastic => Color::Green,
+            Regime::ElastoPlastic => Color::Yellow,
+            Regime::Plastic => Color::Red,
+        })
+    }
+}

@@ -1,0 +1,388 @@
+//! The explorer in a real terminal: tmux runs the binary, the test reads the
+//! pane, presses keys, resizes, and checks the exit status.
+//!
+//! Skipped (with a note) when tmux is missing, unless ROUGHTUI_REQUIRE_TMUX
+//! is set, as `.ci/run` does after installing tmux.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+use std::time::{Duration, Instant};
+
+const BIN: &str = env!("CARGO_BIN_EXE_roughtui");
+
+fn have_tmux() -> bool {
+    let ok = Command::new("tmux")
+        .arg("-V")
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !ok {
+        assert!(
+            std::env::var_os("ROUGHTUI_REQUIRE_TMUX").is_none(),
+            "tmux is required (ROUGHTUI_REQUIRE_TMUX is set) but missing"
+        );
+        eprintln!("tmux not found: skipping the real-terminal test");
+    }
+    ok
+}
+
+/// One tmux server running one roughtui, torn down on drop.
+struct Pane {
+    socket: String,
+    status: PathBuf,
+    _scratch: tempfile::TempDir,
+}
+
+fn sh_quote(s: &str) -> String {
+    format!("'{}'", s.replace('\'', r"'\''"))
+}
+
+impl Pane {
+    fn start(
+        name: &str,
+        cwd: &Path,
+        size: (u16, u16),
+        env: &[(&str, &str)],
+        args: &[&str],
+    ) -> Pane {
+        let scratch = tempfile::tempdir().unwrap();
+        let status = scratch.path().join("status");
+        let socket = format!("roughtui-test-{name}-{}", std::process::id());
+        let mut cmd = format!("cd {} && env", sh_quote(cwd.to_str().unwrap()));
+        for (k, v) in env {
+            cmd.push_str(&format!(" {k}={}", sh_quote(v)));
+        }
+        cmd.push_str(&format!(" {}", sh_quote(BIN)));
+        for a in args {
+            cmd.push_str(&format!(" {}", sh_quote(a)));
+        }
+        // Keep the pane after exit so its screen can be read.
+        cmd.push_str(&format!(
+            "; echo $? > {}; sleep 600",
+            sh_quote(status.to_str().unwrap())
+        ));
+        let p = Pane {
+            socket,
+            status,
+            _scratch: scratch,
+        };
+        let (w, h) = (size.0.to_string(), size.1.to_string());
+        let out = p.tmux(&["new-session", "-d", "-s", "t", "-x", &w, "-y", &h, &cmd]);
+        assert!(out.status.success(), "tmux: {out:?}");
+        p
+    }
+
+    fn tmux(&self, args: &[&str]) -> Output {
+        Command::new("tmux")
+            .args(["-L", &self.socket, "-f", "/dev/null"])
+            .args(args)
+            .output()
+            .unwrap()
+    }
+
+    fn capture(&self) -> String {
+        let o = self.tmux(&["capture-pane", "-p", "-t", "t"]);
+        String::from_utf8_lossy(&o.stdout).into_owned()
+    }
+
+    fn keys(&self, keys: &[&str]) {
+        let mut args = vec!["send-keys", "-t", "t"];
+        args.extend(keys);
+        assert!(self.tmux(&args).status.success());
+    }
+
+    fn display(&self, format: &str) -> String {
+        let o = self.tmux(&["display-message", "-p", "-t", "t", format]);
+        String::from_utf8_lossy(&o.stdout).trim().to_string()
+    }
+
+    /// Polls the pane until `pred` holds (10 s at most).
+    fn wait_for(&self, what: &str, pred: impl Fn(&str) -> bool) -> String {
+        let start = Instant::now();
+        loop {
+            let s = self.capture();
+            if pred(&s) {
+                return s;
+            }
+            assert!(
+                start.elapsed() < Duration::from_secs(10),
+                "timed out waiting for {what}; the pane shows:\n{s}"
+            );
+            std::thread::sleep(Duration::from_millis(30));
+        }
+    }
+
+    fn wait_text(&self, text: &str) -> String {
+        self.wait_for(text, |s| s.contains(text))
+    }
+
+    fn exit_status(&self) -> i32 {
+        let start = Instant::now();
+        loop {
+            if let Ok(s) = std::fs::read_to_string(&self.status) {
+                if let Ok(n) = s.trim().parse() {
+                    return n;
+                }
+            }
+            assert!(
+                start.elapsed() < Duration::from_secs(10),
+                "roughtui did not exit; the pane shows:\n{}",
+                self.capture()
+            );
+            std::thread::sleep(Duration::from_millis(30));
+        }
+    }
+
+    /// Bytes the program writes to the terminal while `act` runs.
+    fn bytes_written(&self, act: impl FnOnce()) -> u64 {
+        let log = self._scratch.path().join("pipe");
+        let _ = std::fs::remove_file(&log);
+        let cmd = format!("cat >> {}", sh_quote(log.to_str().unwrap()));
+        assert!(self
+            .tmux(&["pipe-pane", "-o", "-t", "t", &cmd])
+            .status
+            .success());
+        std::thread::sleep(Duration::from_millis(200));
+        act();
+        std::thread::sleep(Duration::from_millis(300));
+        self.tmux(&["pipe-pane", "-t", "t"]);
+        std::thread::sleep(Duration::from_millis(100));
+        std::fs::metadata(&log).map_or(0, |m| m.len())
+    }
+}
+
+impl Drop for Pane {
+    fn drop(&mut self) {
+        let _ = self.tmux(&["kill-server"]);
+    }
+}
+
+fn braille(s: &str) -> usize {
+    s.chars()
+        .filter(|c| ('\u{2801}'..='\u{28FF}').contains(c))
+        .count()
+}
+
+#[test]
+fn explorer_under_tmux() {
+    if !have_tmux() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let p = Pane::start("main", dir.path(), (100, 30), &[], &[]);
+    let s = p.wait_text("Readout");
+    assert!(s.contains("[fig2]"), "{s}");
+    assert!(braille(&s) > 100, "{} braille cells:\n{s}", braille(&s));
+
+    // One coarse slider step: ζ 128 → 10^2.25; count the bytes it costs.
+    let bytes = p.bytes_written(|| {
+        p.keys(&["Right"]);
+        p.wait_text("ζ = 178");
+    });
+    eprintln!("bytes written for one slider step at 100x30: {bytes}");
+    assert!(bytes > 0 && bytes < 4000, "{bytes} bytes for one step");
+    // Idle: nothing is written.
+    let idle = p.bytes_written(|| std::thread::sleep(Duration::from_millis(700)));
+    assert_eq!(idle, 0, "the idle explorer wrote {idle} bytes");
+
+    // Fine step, vi keys, selection.
+    p.keys(&["S-Right"]);
+    p.wait_text("ζ = 188");
+    p.keys(&["h", "H"]);
+    p.wait_text("ζ = 168");
+    p.keys(&["k", "l"]); // h_rms up from 20 nm to 10^-7.5 m
+    let s = p.wait_text("31.6 nm");
+    assert!(s.contains("[fig2*]"), "{s}");
+
+    for (key, name) in [
+        ("3", "[fig3]"),
+        ("4", "[fig4]"),
+        ("1", "[fig1]"),
+        ("2", "[fig2]"),
+    ] {
+        p.keys(&[key]);
+        let s = p.wait_text(name);
+        assert!(braille(&s) > 30, "{name}:\n{s}");
+    }
+    p.keys(&["x"]);
+    p.wait_text("sweep H 0.05…1");
+    p.keys(&["m"]);
+    p.wait_text("· closed form ·");
+    p.keys(&["e"]);
+    p.wait_text("size effect on");
+    p.keys(&["?"]);
+    p.wait_text("keys · Esc or ? closes");
+    p.keys(&["Escape"]);
+    p.wait_for("help closed", |s| !s.contains("keys · Esc"));
+
+    // Resize down: a message, not a crash; back up: the explorer again.
+    p.tmux(&["resize-window", "-t", "t", "-x", "40", "-y", "12"]);
+    p.wait_text("enlarge the terminal");
+    p.tmux(&["resize-window", "-t", "t", "-x", "100", "-y", "30"]);
+    let s = p.wait_text("Readout");
+    assert!(braille(&s) > 30, "{s}");
+
+    // Two saves, two files.
+    for n in 1..=2 {
+        p.keys(&["s"]);
+        p.wait_text("save as: fig2-");
+        p.keys(&["Enter"]);
+        let start = Instant::now();
+        while std::fs::read_dir(dir.path()).unwrap().count() < n {
+            assert!(start.elapsed() < Duration::from_secs(10), "save {n}");
+            std::thread::sleep(Duration::from_millis(30));
+        }
+        p.wait_text("saved ");
+    }
+    let files: Vec<_> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
+    assert_eq!(files.len(), 2, "{files:?}");
+    assert!(files
+        .iter()
+        .all(|f| f.starts_with("fig2-") && f.ends_with(".ron")));
+
+    p.keys(&["q"]);
+    assert_eq!(p.exit_status(), 0);
+    assert_eq!(p.display("#{alternate_on}"), "0");
+}
+
+/// A folder where saving fails even for root: without root, a folder made
+/// read-only; as root (whom permissions do not stop), /proc, where no file
+/// can be created.
+fn unwritable_dir() -> (PathBuf, Option<tempfile::TempDir>) {
+    let uid = Command::new("id").arg("-u").output().unwrap();
+    if String::from_utf8_lossy(&uid.stdout).trim() == "0" {
+        return ("/proc".into(), None);
+    }
+    let d = tempfile::tempdir().unwrap();
+    let mut perm = std::fs::metadata(d.path()).unwrap().permissions();
+    std::os::unix::fs::PermissionsExt::set_mode(&mut perm, 0o555);
+    std::fs::set_permissions(d.path(), perm).unwrap();
+    (d.path().to_path_buf(), Some(d))
+}
+
+#[test]
+fn failed_save_shows_an_error_and_q_exits_0() {
+    if !have_tmux() {
+        return;
+    }
+    let (dir, _keep) = unwritable_dir();
+    let p = Pane::start("ro", &dir, (80, 24), &[], &["--preset", "fig3"]);
+    p.wait_text("[fig3]");
+    p.keys(&["s"]);
+    p.wait_text("save as: fig3-");
+    p.keys(&["Enter"]);
+    let s = p.wait_text("cannot");
+    assert!(s.contains(dir.to_str().unwrap()), "{s}");
+    // The session goes on.
+    p.keys(&["l"]);
+    p.wait_text("[fig3*]");
+    p.keys(&["q"]);
+    assert_eq!(p.exit_status(), 0);
+    if let Some(d) = _keep {
+        let mut perm = std::fs::metadata(d.path()).unwrap().permissions();
+        std::os::unix::fs::PermissionsExt::set_mode(&mut perm, 0o755);
+        std::fs::set_permissions(d.path(), perm).unwrap();
+    }
+}
+
+#[test]
+fn panic_restores_the_terminal() {
+    if !have_tmux() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let p = Pane::start(
+        "panic",
+        dir.path(),
+        (80, 24),
+        &[("ROUGHTUI_PANIC_KEY", "!")],
+        &[],
+    );
+    p.wait_text("Readout");
+    assert_eq!(p.display("#{alternate_on}"), "1");
+    p.keys(&["!"]);
+    assert_eq!(p.exit_status(), 101);
+    assert_eq!(p.display("#{alternate_on}"), "0");
+    assert_eq!(p.display("#{cursor_flag}"), "1");
+    let s = p.wait_text("panicked");
+    assert!(s.contains("ROUGHTUI_PANIC_KEY pressed"), "{s}");
+}
+
+/// The SGR parameters of colour (foreground, background, 256 and RGB).
+fn colour_codes(s: &str) -> Vec<String> {
+    let mut found = Vec::new();
+    for seq in s.split('\u{1b}').skip(1) {
+        let Some(body) = seq.strip_prefix('[') else {
+            continue;
+        };
+        let Some(end) = body.find('m') else { continue };
+        let params = &body[..end];
+        if params
+            .split(';')
+            .filter_map(|p| p.parse::<u32>().ok())
+            .any(|n| matches!(n, 30..=38 | 40..=48 | 90..=97 | 100..=107))
+        {
+            found.push(params.to_string());
+        }
+    }
+    found
+}
+
+#[test]
+fn no_color_draws_without_colour_codes() {
+    if !have_tmux() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let plain = Pane::start("nocolor", dir.path(), (100, 30), &[("NO_COLOR", "1")], &[]);
+    let s = plain.wait_text("Readout");
+    assert!(s.contains("•• elastic") && s.contains("++ plastic") && s.contains("oo Persson"));
+    let raw = plain.tmux(&["capture-pane", "-e", "-p", "-t", "t"]);
+    let raw = String::from_utf8_lossy(&raw.stdout);
+    assert_eq!(colour_codes(&raw), Vec::<String>::new());
+    plain.keys(&["q"]);
+    assert_eq!(plain.exit_status(), 0);
+
+    let coloured = Pane::start("color", dir.path(), (100, 30), &[], &[]);
+    coloured.wait_text("Readout");
+    let raw = coloured.tmux(&["capture-pane", "-e", "-p", "-t", "t"]);
+    assert!(!colour_codes(&String::from_utf8_lossy(&raw.stdout)).is_empty());
+}
+
+/// Key → drawn frame at 160×48, from the program's own frame log.
+#[test]
+fn key_to_frame_time_at_160x48() {
+    if !have_tmux() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let log = dir.path().join("frames");
+    let p = Pane::start(
+        "timing",
+        dir.path(),
+        (160, 48),
+        &[("ROUGHTUI_FRAME_LOG", log.to_str().unwrap())],
+        &[],
+    );
+    p.wait_text("Readout");
+    // Alternate a swept step (marker only) with a non-swept one (curves).
+    for i in 0..20 {
+        let key = ["Right", "Left", "Up", "Right", "Left", "Down"][i % 6];
+        p.keys(&[key]);
+        std::thread::sleep(Duration::from_millis(40));
+    }
+    p.keys(&["q"]);
+    assert_eq!(p.exit_status(), 0);
+    let mut us: Vec<u64> = std::fs::read_to_string(&log)
+        .unwrap()
+        .lines()
+        .map(|l| l.parse().unwrap())
+        .collect();
+    assert_eq!(us.len(), 20, "{us:?}");
+    us.sort_unstable();
+    let (median, max) = (us[us.len() / 2], us[us.len() - 1]);
+    eprintln!("key to frame at 160x48: median {median} µs, max {max} µs");
+    assert!(median < 100_000, "median {median} µs");
+}

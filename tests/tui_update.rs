@@ -1,0 +1,474 @@
+//! The explorer's update logic without a terminal: keys, steps, presets,
+//! sweeps, toggles, caching of the curves, saving, and drawing at any size.
+
+use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyEventState, KeyModifiers};
+use proptest::prelude::*;
+use ratatui::backend::TestBackend;
+use ratatui::Terminal;
+use rough_model::{Axis, Model};
+use roughtui::presets;
+use roughtui::tui::app::{check_stem, step_value, update, App, Message, Mode};
+use roughtui::tui::keys::{self, message_for_key};
+use roughtui::tui::theme::Theme;
+use roughtui::tui::view;
+
+fn fig(name: &str) -> App {
+    App::new(presets::load(name).unwrap(), Theme::colored(), (80, 24))
+}
+
+fn key(code: KeyCode, mods: KeyModifiers) -> KeyEvent {
+    KeyEvent {
+        code,
+        modifiers: mods,
+        kind: KeyEventKind::Press,
+        state: KeyEventState::NONE,
+    }
+}
+
+fn press(app: &mut App, code: KeyCode, mods: KeyModifiers) {
+    if let Some(m) = message_for_key(app, &key(code, mods)) {
+        update(app, m);
+    }
+}
+
+fn ch(app: &mut App, c: char) {
+    press(app, KeyCode::Char(c), KeyModifiers::NONE);
+}
+
+fn screen(app: &App) -> String {
+    let (w, h) = app.size;
+    let mut t = Terminal::new(TestBackend::new(w, h)).unwrap();
+    t.draw(|f| f.render_widget(app, f.area())).unwrap();
+    let buf = t.backend().buffer();
+    let mut s = String::new();
+    for y in 0..buf.area.height {
+        for x in 0..buf.area.width {
+            s.push_str(buf[(x, y)].symbol());
+        }
+        s.push('\n');
+    }
+    s
+}
+
+#[test]
+fn opens_on_the_swept_slider_with_one_point_per_braille_column() {
+    let a = fig("fig2");
+    assert_eq!(a.selected_axis(), Axis::Zeta);
+    let g = view::graph_area((80, 24)).unwrap();
+    assert_eq!(a.plot.points, 2 * g.width as usize);
+    assert_eq!(a.recomputes, 1);
+    // ζ = 1 gives ψ = 0: infinite elastic, total and Persson slopes are
+    // dropped, the plastic slope 0 too, but every other point is drawn.
+    assert_eq!(a.plot.total.len(), a.plot.points - 1);
+    assert_eq!(a.plot.x_bounds, [0.0, 4.0]);
+    assert_eq!(a.plot.y_bounds, [-3.0, 2.0]);
+}
+
+#[test]
+fn coarse_and_fine_log_steps_snap_to_the_grid_and_clamp() {
+    let r = (1.0, 1e4);
+    // 128 lies between 10^2 and 10^2.25: up goes to 10^2.25, down to 10^2.
+    let up = step_value(Axis::Zeta, 128.0, r, true, false);
+    assert!((up - 10f64.powf(2.25)).abs() < 1e-9, "{up}");
+    let down = step_value(Axis::Zeta, 128.0, r, false, false);
+    assert!((down - 100.0).abs() < 1e-9, "{down}");
+    let fine = step_value(Axis::Zeta, 100.0, r, true, true);
+    assert!(
+        (fine / 100.0 - 10f64.powf(1.0 / 40.0)).abs() < 1e-12,
+        "{fine}"
+    );
+    assert_eq!(step_value(Axis::Zeta, 1e4, r, true, false), 1e4);
+    assert_eq!(step_value(Axis::Zeta, 1.0, r, false, true), 1.0);
+    // R* = 0 (no size effect) steps onto the range.
+    assert_eq!(
+        step_value(Axis::RStar, 0.0, (1e-6, 1e-2), true, false),
+        1e-6
+    );
+    // Hurst is linear: 0.05 coarse, 0.01 fine, within 0.05 … 1.
+    assert_eq!(step_value(Axis::Hurst, 0.8, (0.05, 1.0), true, false), 0.85);
+    assert_eq!(step_value(Axis::Hurst, 0.8, (0.05, 1.0), false, true), 0.79);
+    assert_eq!(step_value(Axis::Hurst, 1.0, (0.05, 1.0), true, false), 1.0);
+    assert_eq!(
+        step_value(Axis::Hurst, 0.05, (0.05, 1.0), false, false),
+        0.05
+    );
+}
+
+#[test]
+fn twenty_four_coarse_steps_cover_six_decades_of_zeta() {
+    let mut a = fig("fig2");
+    ch(&mut a, 'x'); // Hurst
+    ch(&mut a, 'x'); // R*
+    ch(&mut a, 'x'); // H0/E
+    ch(&mut a, 'x'); // h_rms
+    ch(&mut a, 'x'); // ζ, default range 1 … 1e6
+    assert_eq!(a.state.sweep.axis(), Axis::Zeta);
+    assert_eq!(a.state.sweep.to(), 1e6);
+    for _ in 0..40 {
+        ch(&mut a, 'h');
+    }
+    assert_eq!(a.state.params.zeta(), 1.0);
+    for _ in 0..24 {
+        ch(&mut a, 'l');
+    }
+    assert!((a.state.params.zeta() - 1e6).abs() < 1e-3);
+    ch(&mut a, 'l');
+    assert_eq!(a.state.params.zeta(), 1e6);
+}
+
+#[test]
+fn swept_slider_moves_the_marker_without_recomputing_curves() {
+    let mut a = fig("fig2");
+    let before = a.plot.clone();
+    let psi = a.readout.psi;
+    press(&mut a, KeyCode::Right, KeyModifiers::NONE);
+    assert!((a.state.params.zeta() - 10f64.powf(2.25)).abs() < 1e-9);
+    assert_eq!(a.recomputes, 1, "curves must be cached");
+    assert_eq!(a.plot, before);
+    assert!(a.readout.psi > psi, "ψ grows with ζ");
+    assert!(a.modified);
+}
+
+#[test]
+fn every_other_slider_moves_curves_and_readout() {
+    for (sel, axis) in [
+        (0, Axis::H0OverE),
+        (1, Axis::HRms),
+        (3, Axis::Hurst),
+        (4, Axis::RStar),
+    ] {
+        let mut a = fig("fig3");
+        a.selected = sel;
+        assert_eq!(a.selected_axis(), axis);
+        let (plot, psi) = (a.plot.clone(), a.readout.psi);
+        ch(&mut a, 'l');
+        assert_ne!(a.plot, plot, "{axis:?} must move the curves");
+        assert_ne!(a.readout.psi, psi, "{axis:?} must move ψ");
+        assert_eq!(a.recomputes, 2);
+        press(&mut a, KeyCode::Left, KeyModifiers::SHIFT);
+        assert_eq!(a.recomputes, 3);
+    }
+}
+
+#[test]
+fn selection_wraps_both_ways_with_arrows_and_vi_keys() {
+    let mut a = fig("fig1");
+    assert_eq!(a.selected_axis(), Axis::H0OverE);
+    press(&mut a, KeyCode::Up, KeyModifiers::NONE);
+    assert_eq!(a.selected_axis(), Axis::RStar);
+    ch(&mut a, 'j');
+    assert_eq!(a.selected_axis(), Axis::H0OverE);
+    ch(&mut a, 'j');
+    assert_eq!(a.selected_axis(), Axis::HRms);
+    ch(&mut a, 'k');
+    assert_eq!(a.selected_axis(), Axis::H0OverE);
+}
+
+#[test]
+fn shift_and_capitals_take_the_fine_step() {
+    for (code, mods) in [
+        (KeyCode::Right, KeyModifiers::SHIFT),
+        (KeyCode::Char('L'), KeyModifiers::SHIFT),
+        (KeyCode::Char('L'), KeyModifiers::NONE),
+    ] {
+        let mut a = fig("fig2");
+        a.state.params = a.state.params.with(Axis::Zeta, 100.0).unwrap();
+        press(&mut a, code, mods);
+        let want = 100.0 * 10f64.powf(1.0 / 40.0);
+        assert!((a.state.params.zeta() - want).abs() < 1e-9, "{code:?}");
+    }
+}
+
+#[test]
+fn number_keys_load_the_four_figures() {
+    let mut a = fig("fig2");
+    ch(&mut a, 'l');
+    for (c, name, size_effect, to) in [
+        ('1', "fig1", false, 0.1),
+        ('2', "fig2", false, 1e4),
+        ('3', "fig3", true, 1e4),
+        ('4', "fig4", true, 1e6),
+    ] {
+        ch(&mut a, c);
+        assert_eq!(a.state.name, name);
+        assert_eq!(a.state.size_effect, size_effect);
+        assert_eq!(a.state.sweep.to(), to);
+        assert!(!a.modified);
+        assert!(screen(&a).contains(&format!("[{name}]")));
+    }
+}
+
+#[test]
+fn x_cycles_the_swept_parameter_with_default_ranges() {
+    let mut a = fig("fig2");
+    let want = [
+        (Axis::Hurst, 0.05, 1.0),
+        (Axis::RStar, 1e-6, 1e-2),
+        (Axis::H0OverE, 1e-4, 1e-1),
+        (Axis::HRms, 1e-9, 1e-5),
+        (Axis::Zeta, 1.0, 1e6),
+    ];
+    for (axis, from, to) in want {
+        let before = a.recomputes;
+        ch(&mut a, 'x');
+        assert_eq!(a.state.sweep.axis(), axis);
+        assert_eq!((a.state.sweep.from(), a.state.sweep.to()), (from, to));
+        assert_eq!(a.recomputes, before + 1);
+        // The parameters stay: the marker is where they are.
+        assert_eq!(a.state.params.zeta(), 128.0);
+    }
+    // Hurst is swept on a linear axis.
+    let mut a = fig("fig2");
+    ch(&mut a, 'x');
+    assert_eq!(a.plot.x_bounds, [0.05, 1.0]);
+    assert_eq!(a.marker(), Some(0.8));
+}
+
+#[test]
+fn m_and_e_toggle_model_and_size_effect() {
+    let mut a = fig("fig2");
+    let exact = a.readout.slopes;
+    ch(&mut a, 'm');
+    assert_eq!(a.state.model, Model::ClosedForm);
+    assert_ne!(a.readout.slopes, exact);
+    assert_eq!(a.readout.other, exact);
+    ch(&mut a, 'm');
+    assert_eq!(a.state.model, Model::Exact);
+
+    let psi_p = a.readout.psi;
+    ch(&mut a, 'e');
+    assert!(a.state.size_effect);
+    assert!((a.readout.psi - psi_p / a.readout.surface.indices.hardness_ratio).abs() < 1e-12);
+    assert!((a.readout.psi - 0.0741847261402938).abs() < 1e-12);
+    assert_eq!(a.recomputes, 4);
+}
+
+#[test]
+fn help_opens_and_esc_or_question_mark_closes_it() {
+    let mut a = fig("fig2");
+    ch(&mut a, '?');
+    assert_eq!(a.mode, Mode::Help);
+    let s = screen(&a);
+    for b in keys::BINDINGS {
+        assert!(s.contains(b.help), "help lacks {:?}", b.help);
+    }
+    // Keys of the explorer do nothing under the help.
+    ch(&mut a, 'l');
+    assert!(!a.modified);
+    press(&mut a, KeyCode::Esc, KeyModifiers::NONE);
+    assert_eq!(a.mode, Mode::Main);
+    ch(&mut a, '?');
+    ch(&mut a, '?');
+    assert_eq!(a.mode, Mode::Main);
+}
+
+#[test]
+fn q_and_ctrl_c_quit() {
+    let mut a = fig("fig2");
+    ch(&mut a, 'q');
+    assert!(a.quit);
+    let mut a = fig("fig2");
+    press(&mut a, KeyCode::Char('c'), KeyModifiers::CONTROL);
+    assert!(a.quit);
+    let mut a = fig("fig2");
+    ch(&mut a, '?');
+    ch(&mut a, 'q');
+    assert!(a.quit);
+}
+
+#[test]
+fn unbound_keys_and_releases_send_nothing() {
+    let a = fig("fig2");
+    assert_eq!(
+        message_for_key(&a, &key(KeyCode::Char('z'), KeyModifiers::NONE)),
+        None
+    );
+    let mut release = key(KeyCode::Char('q'), KeyModifiers::NONE);
+    release.kind = KeyEventKind::Release;
+    assert_eq!(message_for_key(&a, &release), None);
+    assert_eq!(
+        message_for_key(&a, &key(KeyCode::Char('q'), KeyModifiers::NONE)),
+        Some(Message::Quit)
+    );
+}
+
+#[test]
+fn two_saves_give_two_files_that_load_back() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut a = fig("fig3");
+    a.save_dir = dir.path().to_path_buf();
+    ch(&mut a, 'l');
+    for _ in 0..2 {
+        ch(&mut a, 's');
+        let Mode::Prompt(stem) = &a.mode else {
+            panic!("s must open the prompt")
+        };
+        assert!(stem.starts_with("fig3-20"), "{stem}");
+        press(&mut a, KeyCode::Enter, KeyModifiers::NONE);
+        assert_eq!(a.mode, Mode::Main);
+        let st = a.status.clone().unwrap();
+        assert!(!st.error && st.text.starts_with("saved "), "{st:?}");
+    }
+    let mut files: Vec<_> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    files.sort();
+    assert_eq!(files.len(), 2, "{files:?}");
+    for f in &files {
+        let back = roughtui::snapshot::load_file(f).unwrap();
+        assert_eq!(back, a.state);
+    }
+}
+
+#[test]
+fn the_prompt_edits_rejects_bad_names_and_cancels() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut a = fig("fig2");
+    a.save_dir = dir.path().to_path_buf();
+    ch(&mut a, 's');
+    for _ in 0..40 {
+        press(&mut a, KeyCode::Backspace, KeyModifiers::NONE);
+    }
+    assert_eq!(a.mode, Mode::Prompt(String::new()));
+    press(&mut a, KeyCode::Enter, KeyModifiers::NONE);
+    assert!(a.status.as_ref().unwrap().error);
+    assert!(
+        matches!(a.mode, Mode::Prompt(_)),
+        "a bad name keeps the prompt"
+    );
+    // Keys that are commands elsewhere are text here.
+    for c in "a/b".chars() {
+        ch(&mut a, c);
+    }
+    assert_eq!(a.mode, Mode::Prompt("a/b".into()));
+    press(&mut a, KeyCode::Enter, KeyModifiers::NONE);
+    let st = a.status.clone().unwrap();
+    assert!(st.error && st.text.contains('/'), "{st:?}");
+    press(&mut a, KeyCode::Backspace, KeyModifiers::NONE);
+    press(&mut a, KeyCode::Backspace, KeyModifiers::NONE);
+    for c in "qx-1".chars() {
+        ch(&mut a, c);
+    }
+    assert!(!a.quit);
+    press(&mut a, KeyCode::Enter, KeyModifiers::NONE);
+    assert!(dir.path().join("aqx-1.ron").exists());
+    ch(&mut a, 's');
+    press(&mut a, KeyCode::Esc, KeyModifiers::NONE);
+    assert_eq!(a.mode, Mode::Main);
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
+    assert_eq!(check_stem(".."), Err("the name must not be . or .."));
+    assert!(check_stem("fig2-20261121-153012").is_ok());
+}
+
+#[test]
+fn a_failed_save_shows_the_error_and_the_session_goes_on() {
+    let mut a = fig("fig2");
+    // Nothing can be created under /proc, not even by root.
+    a.save_dir = "/proc".into();
+    ch(&mut a, 's');
+    press(&mut a, KeyCode::Enter, KeyModifiers::NONE);
+    let st = a.status.clone().unwrap();
+    assert!(st.error && st.text.contains("/proc"), "{st:?}");
+    assert!(screen(&a).contains("cannot"));
+    ch(&mut a, 'l');
+    assert!(a.modified);
+    ch(&mut a, 'q');
+    assert!(a.quit);
+}
+
+#[test]
+fn small_terminals_get_a_message_and_resizing_back_restores() {
+    let mut a = fig("fig2");
+    update(&mut a, Message::Resize(40, 12));
+    let s = screen(&a);
+    assert!(s.contains("enlarge the terminal"), "{s}");
+    ch(&mut a, 'l'); // still works, draws nothing but the message
+    update(&mut a, Message::Resize(80, 24));
+    let s = screen(&a);
+    assert!(s.contains("Readout"));
+    let braille = s
+        .chars()
+        .filter(|c| ('\u{2801}'..='\u{28FF}').contains(c))
+        .count();
+    assert!(braille > 60, "{braille} braille cells");
+    update(&mut a, Message::Resize(160, 48));
+    assert_eq!(
+        a.plot.points,
+        2 * view::graph_area((160, 48)).unwrap().width as usize
+    );
+}
+
+#[test]
+fn numbers_are_formatted_with_units() {
+    assert_eq!(view::fmt_len(2e-8), "20.0 nm");
+    assert_eq!(view::fmt_len(1e-3), "1.00 mm");
+    assert_eq!(view::fmt_len(1.9676875762993e-5), "19.7 µm");
+    assert_eq!(view::fmt_short(Axis::HRms, 1e-5), "10 µm");
+    assert_eq!(view::fmt_short(Axis::RStar, 1e-2), "10 mm");
+    assert_eq!(view::fmt_short(Axis::H0OverE, 1e-4), "1e-4");
+    assert_eq!(view::fmt_short(Axis::Hurst, 0.05), "0.05");
+    assert_eq!(view::fmt_num(128.0), "128");
+    assert_eq!(view::fmt_num(0.0741847), "0.0742");
+    assert_eq!(view::fmt_num(7.5e-39), "7.50e-39");
+    assert_eq!(view::fmt_num(f64::INFINITY), "∞");
+    assert_eq!(view::fmt_rel(1.1, 1.0), "+10.0%");
+    assert_eq!(view::fmt_rel(f64::INFINITY, f64::INFINITY), "±0%");
+    assert_eq!(view::fmt_rel(1.0, 0.0), "n/a");
+}
+
+fn any_message() -> impl Strategy<Value = Message> {
+    prop_oneof![
+        Just(Message::SelectPrev),
+        Just(Message::SelectNext),
+        (any::<bool>(), any::<bool>()).prop_map(|(up, fine)| Message::Step { up, fine }),
+        (0usize..6).prop_map(Message::LoadPreset),
+        Just(Message::CycleSweep),
+        Just(Message::ToggleModel),
+        Just(Message::ToggleSizeEffect),
+        Just(Message::ToggleHelp),
+        Just(Message::CloseHelp),
+        Just(Message::PromptBackspace),
+        Just(Message::PromptCancel),
+        any::<char>().prop_map(Message::PromptInput),
+        (0u16..200, 0u16..70).prop_map(|(w, h)| Message::Resize(w, h)),
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    /// Any sequence of messages leaves a drawable app with finite plot points.
+    #[test]
+    fn no_message_sequence_panics(msgs in prop::collection::vec(any_message(), 1..60)) {
+        let mut a = fig("fig2");
+        for m in msgs {
+            update(&mut a, m);
+        }
+        for c in [&a.plot.elastic, &a.plot.plastic, &a.plot.total, &a.plot.persson] {
+            prop_assert!(c.iter().all(|(x, y)| x.is_finite() && y.is_finite()));
+        }
+        prop_assert!(a.plot.y_bounds[0] < a.plot.y_bounds[1]);
+        let _ = screen(&a);
+    }
+}
+
+#[test]
+fn hostile_names_are_shown_and_prefilled_safely() {
+    let mut state = presets::load("fig2").unwrap();
+    state.name = "a/b\u{1b}[2Jc".into();
+    let mut a = App::new(state, Theme::colored(), (80, 24));
+    let s = screen(&a);
+    assert!(s.contains("[a/b�[2Jc]"), "{s}");
+    assert!(!s.contains('\u{1b}'));
+    ch(&mut a, 's');
+    let Mode::Prompt(stem) = &a.mode else {
+        panic!("no prompt")
+    };
+    // The stem is a plain file name: no path separator, no control character.
+    assert!(stem.starts_with("a_b_"), "{stem}");
+    assert!(
+        !stem.contains('/') && !stem.chars().any(char::is_control),
+        "{stem}"
+    );
+}
