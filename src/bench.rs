@@ -282,13 +282,13 @@ pub fn methods() -> Vec<Method> {
         },
         Method {
             name: "closed (shipped)",
-            terms: "closed; x⁵ series x<0.5".into(),
+            terms: "closed + series at small x".into(),
             against: Against::Closed,
             f: shipped_closed,
         },
         Method {
             name: "closed (shipped) model error vs exact",
-            terms: "closed; x⁵ series x<0.5".into(),
+            terms: "closed + series at small x".into(),
             against: Against::Exact,
             f: shipped_closed,
         },
