@@ -605,6 +605,28 @@ mod tests {
     }
 
     #[test]
+    fn report_measures_every_method() {
+        let out = report(1).unwrap();
+        let lines: Vec<&str> = out.lines().collect();
+        assert_eq!(lines[0], HEADER);
+        let rows: Vec<&str> = lines
+            .iter()
+            .skip(2)
+            .take_while(|l| l.starts_with('|'))
+            .copied()
+            .collect();
+        assert_eq!(rows.len(), methods().len());
+        for (row, m) in rows.iter().zip(methods()) {
+            let cells: Vec<&str> = row.trim_matches('|').split('|').map(str::trim).collect();
+            assert_eq!(cells[0], m.name);
+            let ns: f64 = cells[2].parse().unwrap();
+            assert!(ns > 0.0 && ns.is_finite(), "{row}");
+        }
+        let shipped = rows.iter().find(|r| r.contains("shipped")).unwrap();
+        assert!(shipped.contains("exact"));
+    }
+
+    #[test]
     fn psi_format() {
         assert_eq!(fmt_psi(0.55), "0.55");
         assert_eq!(fmt_psi(12.090201005025126), "12.09");
