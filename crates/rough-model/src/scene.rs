@@ -4,7 +4,7 @@ use std::fmt;
 
 use std::ops::{Add, Div, Mul};
 
-use crate::dd::{Dd, PI};
+use crate::dd::{Dd, PI, PI2_HALF};
 use crate::indices::psi_from_core;
 use crate::params::{Axis, Params};
 use crate::slopes::{slopes_sq, Model};
@@ -123,6 +123,24 @@ impl Sweep {
             a + (b - a) * t
         };
         v.clamp(self.from, self.to)
+    }
+
+    /// [`Sweep::at`] with, on log axes, the exponent y it came from (the
+    /// value is fl(e^y), so |ln value − y| ≤ 2.2e-16); `None` at the ends, on
+    /// linear axes, or where the value was clamped.
+    #[inline(always)]
+    fn at_with_exponent(&self, t: f64) -> (f64, Option<f64>) {
+        if !self.axis.is_log() || t <= 0.0 || t >= 1.0 {
+            return (self.at(t), None);
+        }
+        let (a, b) = self.ends;
+        let y = a + (b - a) * t;
+        let v = y.exp();
+        if v > self.from && v < self.to {
+            (v, Some(y))
+        } else {
+            (v.clamp(self.from, self.to), None)
+        }
     }
 
     /// Where `value` lies in the range as a fraction (log or linear); may be
@@ -253,8 +271,10 @@ fn fill(spec: &SceneSpec, k: &Kernel, s: &mut Scene) {
     const SQRT_2_OVER_PI: f64 = 0.7978845608028654;
     let c = spec.curves;
     for i in 0..spec.points {
-        let x = spec.sweep.at(i as f64 / (spec.points - 1) as f64);
-        let (sq, hr) = k.psi_sq(spec, x);
+        let (x, y) = spec
+            .sweep
+            .at_with_exponent(i as f64 / (spec.points - 1) as f64);
+        let (sq, hr) = k.psi_sq(spec, x, y);
         // ψ = √(ψ²) to ~1 ulp; 1/ψ only scales (no exponent).
         let psi = if sq.hi > 0.0 {
             sq.hi.sqrt() * (1.0 + 0.5 * sq.lo / sq.hi)
@@ -337,50 +357,47 @@ impl Kernel {
         }
     }
 
-    /// ψ² in use and the hardness ratio in use at sweep value `x`.
+    /// ψ² in use and the hardness ratio in use at sweep value `x` (= e^y
+    /// where `y` is given).
     #[inline(always)]
-    fn psi_sq(&self, spec: &SceneSpec, x: f64) -> (Dd, f64) {
+    fn psi_sq(&self, spec: &SceneSpec, x: f64, y: Option<f64>) -> (Dd, f64) {
         let axis = spec.sweep.axis();
         // Sweep values lie in the validated range, so in the domain.
         let p = spec.base.with_unchecked(axis, x);
         let from_psi = |(psi, hr): (Dd, f64)| (psi.mul(psi), hr);
         match self {
             Kernel::Zeta { a, a_e2, e2, e4, b } => {
-                let l = x.ln();
+                // Above ln ζ = 1 the exponent's 2e-16 is below ln's own rounding.
+                let l = match y {
+                    Some(y) if y > 1.0 => y,
+                    _ => x.ln(),
+                };
                 let (e2l, e4l) = (e2 * l, e4 * l);
-                // ζ^(−2H), needed once e·ln ζ > ½ for the larger exponent.
-                let pw = if e4l > 0.5 {
-                    x.powf(-2.0 * p.hurst())
+                let eval = |ze2: Dd, ze4: Dd| zeta_point(*a, *a_e2, *e2, l, e4l, *b, ze2, ze4);
+                let mut out = if e4l <= 0.5 {
+                    eval(Dd::from_f64(0.0), Dd::from_f64(0.0))
                 } else {
-                    0.0
-                };
-                let z2 = Dd::prod(x, x);
-                let minus1 = Dd::from_f64(-1.0);
-                let sp = if *e2 == 0.0 {
-                    a.mul_f64(l)
-                } else if e2l <= 0.5 {
-                    a_e2.mul_f64(e2l.exp_m1())
-                } else {
-                    z2.mul_f64(pw).add(minus1).mul(*a_e2)
-                };
-                let Some(b) = b else {
-                    return if sp.hi.is_finite() {
-                        (sp, 1.0)
+                    // exp(e·ln ζ) carries the rounding of ln ζ times e·ln ζ
+                    // into ψ² ...
+                    let ze4 = if b.is_some() { e4l.exp() } else { 0.0 };
+                    let fast = eval(Dd::from_f64(e2l.exp()), Dd::from_f64(ze4));
+                    // ... which the slopes amplify by about max(π²ψ²/2,
+                    // 1/(2ψ²)). Where that could cost 1e-13, form ζ^e as
+                    // ζ^n·ζ^(−2H) with an exact product instead.
+                    let sq = fast.0.hi;
+                    let amp = 1.0 + (PI2_HALF.hi * sq).max(0.5 / sq);
+                    if amp * (e4l + 1.0) * 4.4e-16 <= 1e-13 {
+                        fast
                     } else {
-                        from_psi(psi_from_core(&p, &Core::new(&p, false), false))
-                    };
+                        let pw = x.powf(-2.0 * p.hurst());
+                        let z2 = Dd::prod(x, x);
+                        eval(z2.mul_f64(pw), z2.mul(z2).mul_f64(pw))
+                    }
                 };
-                let gm4 = if e4l <= 0.5 {
-                    Dd::from_f64(e4l.exp_m1())
-                } else {
-                    z2.mul(z2).mul_f64(pw).add(minus1)
-                };
-                let hy2 = b.mul(gm4.sqrt()).add(Dd::from_f64(1.0));
-                if sp.hi.is_finite() && hy2.hi.is_finite() && gm4.hi.is_finite() {
-                    (sp.div(hy2), hy2.hi.sqrt())
-                } else {
-                    from_psi(psi_from_core(&p, &Core::new(&p, true), true))
+                if !(out.0.hi.is_finite() && out.1.is_finite()) {
+                    out = from_psi(psi_from_core(&p, &Core::new(&p, b.is_some()), b.is_some()));
                 }
+                out
             }
             Kernel::Fixed(core) => from_psi(psi_from_core(&p, core, spec.size_effect)),
             Kernel::General => from_psi(psi_from_core(
@@ -390,4 +407,39 @@ impl Kernel {
             )),
         }
     }
+}
+
+/// (ψ², H_y/H0) at one ζ of a ζ sweep, from ζ^e2 and ζ^e4 (read only where
+/// e·ln ζ > ½; below, expm1 is used).
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn zeta_point(
+    a: Dd,
+    a_e2: Dd,
+    e2: f64,
+    l: f64,
+    e4l: f64,
+    b: Option<Dd>,
+    ze2: Dd,
+    ze4: Dd,
+) -> (Dd, f64) {
+    let minus1 = Dd::from_f64(-1.0);
+    let e2l = e2 * l;
+    let sp = if e2 == 0.0 {
+        a.mul_f64(l)
+    } else if e2l <= 0.5 {
+        a_e2.mul_f64(e2l.exp_m1())
+    } else {
+        ze2.add(minus1).mul(a_e2)
+    };
+    let Some(b) = b else {
+        return (sp, 1.0);
+    };
+    let gm4 = if e4l <= 0.5 {
+        Dd::from_f64(e4l.exp_m1())
+    } else {
+        ze4.add(minus1)
+    };
+    let hy2 = b.mul(gm4.sqrt()).add(Dd::from_f64(1.0));
+    (sp.div(hy2), hy2.hi.sqrt())
 }
