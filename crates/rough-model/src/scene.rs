@@ -125,24 +125,6 @@ impl Sweep {
         v.clamp(self.from, self.to)
     }
 
-    /// [`Sweep::at`] with, on log axes, the exponent y it came from (the
-    /// value is fl(e^y), so |ln value − y| ≤ 2.2e-16); `None` at the ends, on
-    /// linear axes, or where the value was clamped.
-    #[inline(always)]
-    fn at_with_exponent(&self, t: f64) -> (f64, Option<f64>) {
-        if !self.axis.is_log() || t <= 0.0 || t >= 1.0 {
-            return (self.at(t), None);
-        }
-        let (a, b) = self.ends;
-        let y = a + (b - a) * t;
-        let v = y.exp();
-        if v > self.from && v < self.to {
-            (v, Some(y))
-        } else {
-            (v.clamp(self.from, self.to), None)
-        }
-    }
-
     /// Where `value` lies in the range as a fraction (log or linear); may be
     /// outside [0, 1] for values outside the range.
     pub fn fraction(&self, value: f64) -> f64 {
@@ -357,21 +339,16 @@ impl Kernel {
         }
     }
 
-    /// ψ² in use and the hardness ratio in use at sweep value `x` (= e^y
-    /// where `y` is given).
+    /// ψ² in use and the hardness ratio in use at sweep value `x`.
     #[inline(always)]
-    fn psi_sq(&self, spec: &SceneSpec, x: f64, y: Option<f64>) -> (Dd, f64) {
+    fn psi_sq(&self, spec: &SceneSpec, x: f64) -> (Dd, f64) {
         let axis = spec.sweep.axis();
         // Sweep values lie in the validated range, so in the domain.
         let p = spec.base.with_unchecked(axis, x);
         let from_psi = |(psi, hr): (Dd, f64)| (psi.mul(psi), hr);
         match self {
             Kernel::Zeta { a, a_e2, e2, e4, b } => {
-                // Above ln ζ = 1 the exponent's 2e-16 is below ln's own rounding.
-                let l = match y {
-                    Some(y) if y > 1.0 => y,
-                    _ => x.ln(),
-                };
+                let l = x.ln();
                 let (e2l, e4l) = (e2 * l, e4 * l);
                 let eval = |ze2: Dd, ze4: Dd| zeta_point(*a, *a_e2, *e2, l, e4l, *b, ze2, ze4);
                 let mut out = if e4l <= 0.5 {
