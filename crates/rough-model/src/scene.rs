@@ -253,10 +253,8 @@ fn fill(spec: &SceneSpec, k: &Kernel, s: &mut Scene) {
     const SQRT_2_OVER_PI: f64 = 0.7978845608028654;
     let c = spec.curves;
     for i in 0..spec.points {
-        let (x, y) = spec
-            .sweep
-            .at_with_exponent(i as f64 / (spec.points - 1) as f64);
-        let (sq, hr) = k.psi_sq(spec, x, y);
+        let x = spec.sweep.at(i as f64 / (spec.points - 1) as f64);
+        let (sq, hr) = k.psi_sq(spec, x);
         // ψ = √(ψ²) to ~1 ulp; 1/ψ only scales (no exponent).
         let psi = if sq.hi > 0.0 {
             sq.hi.sqrt() * (1.0 + 0.5 * sq.lo / sq.hi)
