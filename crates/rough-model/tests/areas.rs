@@ -54,8 +54,29 @@ const COLUMNS: [&str; 6] = [
     "closed_total",
 ];
 
+/// Reference values found wrong, replaced by a 400-digit mpmath evaluation of the
+/// same definition: (file, psi, rho, column, value). areas.csv's closed_plastic at
+/// (0.01, 0.75) is printed 0, but total − elastic there is 6.11e-138 (equal to the
+/// exact model's plastic area, as it must be at small ψ); the generator's
+/// difference vanished identically at both of its working precisions.
+const ERRATA: &[(&str, f64, f64, usize, f64)] =
+    &[("areas.csv", 0.01, 0.75, 4, 6.1133934127651218328e-138)];
+
 fn check_file(name: &str, tol: f64) {
-    let rows = load(name);
+    let mut rows = load(name);
+    for &(file, psi, rho, col, v) in ERRATA {
+        if file == name {
+            let r = rows
+                .iter_mut()
+                .find(|r| r.psi == psi && r.rho == rho)
+                .expect("erratum row");
+            println!(
+                "{name}: {} at psi={psi}, rho={rho}: using {v:e} instead of {:e}",
+                COLUMNS[col], r.want[col]
+            );
+            r.want[col] = v;
+        }
+    }
     let mut worst = [(0.0f64, 0.0f64, 0.0f64); 6];
     let mut failures = Vec::new();
     for r in &rows {
@@ -100,4 +121,203 @@ fn check_file(name: &str, tol: f64) {
 #[test]
 fn reference_areas_csv() {
     check_file("areas.csv", 1e-12);
+}
+
+#[test]
+fn reference_areas_extra_csv() {
+    check_file("areas_extra.csv", 1e-12);
+}
+
+#[test]
+fn limits_and_special_points() {
+    for model in [Model::Exact, Model::ClosedForm] {
+        for rho in [1e-300, 1e-9, 0.5, 0.999] {
+            let z = areas(model, 0.0, rho).unwrap();
+            assert_eq!(
+                (z.elastic, z.plastic, z.total),
+                (1.0, 0.0, 1.0),
+                "{model:?} psi=0 rho={rho}"
+            );
+            let i = areas(model, f64::INFINITY, rho).unwrap();
+            assert_eq!(
+                (i.elastic, i.plastic, i.total),
+                (0.0, rho, rho),
+                "{model:?} psi=inf rho={rho}"
+            );
+        }
+        for psi in [0.0, 1e-300, 0.3, 1.0, 1e300, f64::INFINITY] {
+            let a = areas(model, psi, 1.0).unwrap();
+            assert_eq!(
+                (a.elastic, a.plastic, a.total),
+                (0.0, 1.0, 1.0),
+                "{model:?} rho=1 psi={psi}"
+            );
+        }
+    }
+}
+
+#[test]
+fn invalid_inputs_are_typed_errors() {
+    for rho in [
+        0.0,
+        -0.0,
+        -1e-300,
+        1.0 + f64::EPSILON,
+        2.0,
+        f64::NAN,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+    ] {
+        for model in [Model::Exact, Model::ClosedForm] {
+            let e = areas(model, 0.5, rho).unwrap_err();
+            assert!(matches!(e, AreaError::Rho(_)), "{e:?}");
+            let msg = e.to_string();
+            assert!(msg.contains("rho") && msg.contains("(0, 1]"), "{msg}");
+        }
+    }
+    for psi in [-1e-300, -1.0, f64::NAN, f64::NEG_INFINITY] {
+        let e = exact_areas(psi, 0.5).unwrap_err();
+        assert!(matches!(e, AreaError::Psi(_)), "{e:?}");
+        assert!(e.to_string().contains("psi"), "{e}");
+        assert!(closed_form_areas(psi, 0.5).is_err());
+    }
+}
+
+fn both(psi: f64, rho: f64) -> [(Model, Areas); 2] {
+    [
+        (Model::Exact, exact_areas(psi, rho).unwrap()),
+        (Model::ClosedForm, closed_form_areas(psi, rho).unwrap()),
+    ]
+}
+
+/// ψ log-uniform over [1e-4, 1e4].
+fn psi_strategy() -> impl Strategy<Value = f64> {
+    (-4.0f64..4.0).prop_map(|e| 10f64.powf(e))
+}
+
+/// ρ in (0, 1], dense near both ends.
+fn rho_strategy() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        (-15.0f64..0.0).prop_map(|e| 10f64.powf(e)),
+        (-15.0f64..-0.3).prop_map(|e| 1.0 - 10f64.powf(e)),
+        (1e-9f64..1.0),
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2000))]
+
+    #[test]
+    fn parts_add_up_and_stay_in_unit_interval(psi in psi_strategy(), rho in rho_strategy()) {
+        for (model, a) in both(psi, rho) {
+            for v in [a.elastic, a.plastic, a.total] {
+                prop_assert!((0.0..=1.0).contains(&v), "{model:?} psi={psi:e} rho={rho:e}: {a:?}");
+            }
+            let sum = a.elastic + a.plastic;
+            prop_assert!(
+                (sum - a.total).abs() <= 4.0 * f64::EPSILON * a.total,
+                "{model:?} psi={psi:e} rho={rho:e}: {a:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn total_is_monotone_in_load(psi in psi_strategy(), r1 in rho_strategy(), r2 in rho_strategy()) {
+        let (lo, hi) = if r1 <= r2 { (r1, r2) } else { (r2, r1) };
+        let (a, b) = (both(psi, lo), both(psi, hi));
+        for i in 0..2 {
+            prop_assert!(
+                b[i].1.total >= a[i].1.total * (1.0 - 1e-14),
+                "{:?} psi={psi:e}: total({lo:e}) = {:e} > total({hi:e}) = {:e}",
+                a[i].0, a[i].1.total, b[i].1.total
+            );
+        }
+    }
+
+    #[test]
+    fn small_loads_follow_the_initial_slopes(psi in (-3.0f64..3.0).prop_map(|e| 10f64.powf(e))) {
+        let rho = 1e-9;
+        for (model, a) in both(psi, rho) {
+            let s = slopes(model, psi);
+            for (name, got, want) in [
+                ("elastic", a.elastic / rho, s.elastic),
+                ("plastic", a.plastic / rho, s.plastic),
+                ("total", a.total / rho, s.total),
+            ] {
+                if want < 1e-280 {
+                    prop_assert!(got < 1e-270, "{model:?} {name} psi={psi:e}: {got:e} vs {want:e}");
+                    continue;
+                }
+                let err = rel_err(got, want);
+                prop_assert!(err < 1e-6, "{model:?} {name} psi={psi:e}: A/rho {got:e}, slope {want:e}, rel {err:e}");
+            }
+        }
+    }
+
+    #[test]
+    fn elastic_area_is_symmetric_in_load(psi in psi_strategy(), e in -15.0f64..-0.31) {
+        // 1 - rho is exact for rho >= 1/2.
+        let rho = 1.0 - 10f64.powf(e);
+        let r = 1.0 - rho;
+        for (i, (model, a)) in both(psi, rho).into_iter().enumerate() {
+            let b = both(psi, r)[i].1;
+            let err = rel_err(a.elastic, b.elastic);
+            prop_assert!(err < 1e-14, "{model:?} psi={psi:e}: A_el({rho}) = {:e}, A_el({r:e}) = {:e}", a.elastic, b.elastic);
+        }
+    }
+
+    #[test]
+    fn image_and_sine_forms_agree(psi in 0.35f64..0.9, rho in rho_strategy()) {
+        prop_assume!(rho < 1.0);
+        let (ie, ip) = forms::exact_images(psi, rho);
+        let (fe, fp) = forms::exact_fourier(psi, rho);
+        prop_assert!(rel_err(ie, fe) < 1e-13, "elastic psi={psi} rho={rho:e}: images {ie:e}, sine {fe:e}");
+        prop_assert!(rel_err(ip, fp) < 1e-13, "plastic psi={psi} rho={rho:e}: images {ip:e}, sine {fp:e}");
+    }
+
+    #[test]
+    fn closed_series_and_direct_agree(psi in 1.18f64..1.8, rho in rho_strategy()) {
+        prop_assume!(rho < 1.0);
+        let s = forms::closed_elastic_series(psi, rho);
+        let d = forms::closed_elastic_direct(psi, rho);
+        prop_assert!(rel_err(s, d) < 1e-12, "psi={psi} rho={rho:e}: series {s:e}, direct {d:e}");
+    }
+
+    #[test]
+    fn every_output_is_finite(
+        psi in prop_oneof![Just(0.0), Just(f64::INFINITY), Just(f64::MIN_POSITIVE), Just(5e-324), Just(f64::MAX), prop::num::f64::POSITIVE],
+        rho in prop_oneof![Just(1.0), Just(5e-324), Just(1.0 - f64::EPSILON / 2.0), prop::num::f64::POSITIVE.prop_filter("<= 1", |r| *r <= 1.0)],
+    ) {
+        for (model, a) in both(psi, rho) {
+            for v in [a.elastic, a.plastic, a.total] {
+                prop_assert!(v.is_finite() && (0.0..=1.0).contains(&v), "{model:?} psi={psi:e} rho={rho:e}: {a:?}");
+            }
+        }
+    }
+}
+
+/// Rough cost per call; `cargo test --release -p rough-model --test areas -- --ignored --nocapture`.
+#[test]
+#[ignore]
+fn timing() {
+    use std::hint::black_box;
+    use std::time::Instant;
+    let psis: Vec<f64> = (0..64)
+        .map(|i| 10f64.powf(-2.0 + 4.0 * i as f64 / 63.0))
+        .collect();
+    let rhos = [1e-6, 0.01, 0.2, 0.45, 0.6, 0.95];
+    for model in [Model::Exact, Model::ClosedForm] {
+        let n = 200;
+        let t = Instant::now();
+        let mut s = 0.0;
+        for _ in 0..n {
+            for &p in &psis {
+                for &r in &rhos {
+                    s += areas(model, black_box(p), black_box(r)).unwrap().total;
+                }
+            }
+        }
+        let ns = t.elapsed().as_nanos() as f64 / (n * psis.len() * rhos.len()) as f64;
+        println!("{model:?}: {ns:.0} ns/call ({s})");
+    }
 }
