@@ -141,9 +141,21 @@ fn erfc_sq(z2: Dd) -> f64 {
         return 0.0;
     }
     let zf = z2.hi.sqrt();
+    // |d| ≤ ulp(z²) < 2e-13 here, so e^(−d) = 1 − d to 1e-26.
     let d = (z2 + Dd::prod(-zf, zf)).to_f64();
-    erfc(zf) * (-d).exp()
+    erfc(zf) * (1.0 - d)
 }
+
+/// 1/n for n < 64 (the Hermite recurrence divides by n every step).
+const INV_N: [f64; 64] = {
+    let mut t = [0.0; 64];
+    let mut n = 1;
+    while n < 64 {
+        t[n] = 1.0 / n as f64;
+        n += 1;
+    }
+    t
+};
 
 /// E_k = erfc((k−ρ)/r) − erfc((k+ρ)/r) for integer k ≥ 1, 0 < ρ ≤ 1 ≤ k, where
 /// `w` = 1/r² (double-double). Never negative.
@@ -153,8 +165,12 @@ fn interval(k: f64, rho: f64, w: Dd) -> f64 {
     let delta = 4.0 * k * rho * w.hi;
     if delta >= 1.0 {
         let a = Dd::sum(k, -rho);
+        let ea = erfc_sq(a * a * w);
+        if delta > 45.0 {
+            return ea; // erfc(b) < e^(−45) erfc(a)
+        }
         let b = Dd::sum(k, rho);
-        return (erfc_sq(a * a * w) - erfc_sq(b * b * w)).max(0.0);
+        return (ea - erfc_sq(b * b * w)).max(0.0);
     }
     // Midpoint m = k/r, half-width h = ρ/r, 2mh = δ/2 < 1/2, h² ≤ mh < 1/4:
     // E = (2/√π) e^(−m²) ∫_{−h}^{h} e^(−2mu − u²) du
@@ -165,17 +181,17 @@ fn interval(k: f64, rho: f64, w: Dd) -> f64 {
     let (u, h2) = (2.0 * m * h, 2.0 * h * h);
     let (mut prev, mut cur) = (1.0, u); // t_{n−1}, t_n with n = 1
     let mut s = 1.0;
-    let mut n = 1.0;
-    while n < 60.0 {
-        let next = (u * cur - h2 * prev) / (n + 1.0); // t_{n+1}, n+1 even
-        s += next / (n + 2.0);
-        let after = (u * next - h2 * cur) / (n + 2.0); // t_{n+2}, odd
+    let mut n = 1;
+    while n + 2 < INV_N.len() {
+        let next = (u * cur - h2 * prev) * INV_N[n + 1]; // t_{n+1}, n+1 even
+        s += next * INV_N[n + 2];
+        let after = (u * next - h2 * cur) * INV_N[n + 2]; // t_{n+2}, odd
         if next.abs() < 1e-18 && after.abs() < 1e-18 {
             break;
         }
         prev = next;
         cur = after;
-        n += 2.0;
+        n += 2;
     }
     FRAC_2_SQRT_PI * 2.0 * h * w.mul_f64(k * k).exp_neg() * s
 }
@@ -203,10 +219,19 @@ pub fn exact_areas(psi: impl Into<Dd>, rho: f64) -> Result<Areas, AreaError> {
         return Ok(a);
     }
     let s2 = psi * psi;
-    let (elastic, plastic) = if s2.hi * PI > 1.0 {
+    let (elastic, plastic) = if s2.hi > PL_FOURIER_PSI2 {
         exact_fourier(s2, rho)
     } else {
-        exact_images(psi, rho)
+        let w = half_inv_sq(psi);
+        let pl = images_plastic(w, rho);
+        let el = if s2.hi > EL_FOURIER_PSI2 {
+            exact_fourier(s2, rho).0
+        } else if reflect(rho) == rho {
+            images_elastic(w, rho, Some(pl))
+        } else {
+            images_elastic(w, 1.0 - rho, None)
+        };
+        (el, pl)
     };
     Ok(Areas {
         elastic,
@@ -225,44 +250,93 @@ fn reflect(rho: f64) -> f64 {
     }
 }
 
+/// Above this ψ² the elastic area is taken from the sine series (q ≤ e^(−0.44),
+/// at most ten terms), below it from images (at most three intervals).
+const EL_FOURIER_PSI2: f64 = 0.09;
+
+/// Above this ψ² the plastic area is taken from the sine series as
+/// ρ − (2/π)Σ…, which there cancels by at most 1/S_pl(0.4) ≈ 6; below it from
+/// the positive image sum (at most two intervals).
+const PL_FOURIER_PSI2: f64 = 0.16;
+
 /// Image sums (elastic, plastic) for 0 < ρ < 1, 0 < ψ < ∞.
 fn exact_images(psi: Dd, rho: f64) -> (f64, f64) {
-    const KMAX: u32 = 40;
     let w = half_inv_sq(psi);
-    let rp = reflect(rho);
-    let mut el = erf(rp * w.hi.sqrt());
-    let mut pl = 0.0;
-    if rp == rho {
-        // Shared terms: odd k enter both sums.
-        for k in 1..=KMAX {
-            let e = interval(k as f64, rho, w);
-            if k % 2 == 1 {
-                el -= e;
-                pl += e;
-            } else {
-                el += e;
-            }
-            if e <= 1e-18 * el.min(pl) {
-                break;
-            }
-        }
+    let pl = images_plastic(w, rho);
+    let el = if reflect(rho) == rho {
+        images_elastic(w, rho, Some(pl))
     } else {
-        for k in 1..=KMAX {
-            let e = interval(k as f64, rp, w);
-            el += if k % 2 == 1 { -e } else { e };
-            if e <= 1e-18 * el {
-                break;
-            }
+        images_elastic(w, 1.0 - rho, None)
+    };
+    (el, pl)
+}
+
+/// A_pl = E_1 + E_3 + … (positive terms), `w` = 1/(2ψ²).
+fn images_plastic(w: Dd, rho: f64) -> f64 {
+    let mut pl = interval(1.0, rho, w);
+    let floor = Floor::new(rho, w, pl);
+    for k in (3..2 * KMAX).step_by(2) {
+        if floor.negligible(k as f64) {
+            break;
         }
-        for k in (1..=2 * KMAX).step_by(2) {
-            let e = interval(k as f64, rho, w);
-            pl += e;
-            if e <= 1e-18 * pl {
-                break;
-            }
+        pl += interval(k as f64, rho, w);
+    }
+    pl
+}
+
+/// A_el = erf(ρ'/r) − E_1 + E_2 − … at ρ' = `rp` ≤ 1/2; `e1_plus` is the
+/// plastic image sum at the same ρ' when known (it starts with E_1).
+fn images_elastic(w: Dd, rp: f64, e1_plus: Option<f64>) -> f64 {
+    let mut el = erf(rp * w.hi.sqrt());
+    // The alternating sum stays above a third of its first term.
+    let floor = Floor::new(rp, w, el / 3.0);
+    for k in 1..KMAX {
+        if floor.negligible(k as f64) {
+            break;
+        }
+        let e = match (k, e1_plus) {
+            // E_1 is the plastic sum less its odd terms from E_3 on, which are
+            // below 1e-18 of it whenever E_2 is negligible here; recompute
+            // otherwise.
+            (1, Some(pl)) if floor.negligible(2.0) => pl,
+            _ => interval(k as f64, rp, w),
+        };
+        el += if k % 2 == 1 { -e } else { e };
+    }
+    el.max(0.0)
+}
+
+/// Highest image index tried (reached only for ψ² near 1/π by the images,
+/// or by the tests through [`forms`]).
+const KMAX: u32 = 40;
+
+/// Decides when image terms E_k (k ≥ 1, decreasing in k) fall below 1e-18 of a
+/// sum of at least `acc`: E_k ≤ min(1, 4h/√π) e^(−(k−ρ)²/r²), h = ρ/r.
+struct Floor {
+    rho: f64,
+    w: f64,
+    /// ln(1e-18 · acc / min(1, 4h/√π)).
+    log_floor: f64,
+}
+
+impl Floor {
+    #[inline]
+    fn new(rho: f64, w: Dd, acc: f64) -> Floor {
+        let width = (2.0 * FRAC_2_SQRT_PI * rho * w.hi.sqrt()).min(1.0);
+        Floor {
+            rho,
+            w: w.hi,
+            log_floor: (acc / width).ln() - 41.45,
         }
     }
-    (el.max(0.0), pl)
+
+    /// True when E_k and every later term are negligible (also for acc = 0).
+    #[inline]
+    fn negligible(&self, k: f64) -> bool {
+        let a = k - self.rho;
+        // Margin 1 for the f64 rounding of the exponent.
+        -(a * a * self.w) < self.log_floor - 1.0
+    }
 }
 
 /// Sine series (elastic, plastic) for 0 < ρ < 1 from ψ² = `s2` > 0.
@@ -376,17 +450,36 @@ impl Closed {
     /// (A_pl, A_tot) from their positive forms, 0 < ρ < 1.
     fn plastic_total(&self, rho: f64) -> (f64, f64) {
         let (a, b) = self.ab(rho);
+        let w = self.w;
         let c = Dd::sum(1.0, -rho);
-        let cp = Dd::sum(1.0, rho);
         let e2c = (c * self.t).mul_f64(2.0).exp_neg(); // e^(−2(1−ρ)x²)
-        let pl = 0.5
-            * (interval(1.0, rho, self.w)
-                + b * erfc_sq(c * c * self.w)
-                + b * e2c * erfc_sq(cp * cp * self.w));
+                                                       // erfc(α), erfc(β) at α = (1−ρ)x/√2, β = (1+ρ)x/√2; β² − α² = 2ρx² = δ
+                                                       // and erfc(β) < e^(−δ) erfc(α).
+        let delta = 4.0 * rho * w.hi;
+        let ea = erfc_sq(c * c * w);
+        let eb = if delta > 45.0 {
+            0.0
+        } else {
+            let cp = Dd::sum(1.0, rho);
+            erfc_sq(cp * cp * w)
+        };
+        let e1 = if delta >= 1.0 {
+            (ea - eb).max(0.0)
+        } else {
+            interval(1.0, rho, w)
+        };
+        let pl = 0.5 * (e1 + b * ea + b * e2c * eb);
+        let first = 0.5 * (1.0 + a) * erf(rho * w.hi.sqrt());
+        // erfc((2−ρ)x/√2) = erfc(z) < e^(−z²) is below 1e-19 of e^(−2(1−ρ)x²)
+        // when ρ²x²/2 > 45, and of the first term when z² > 44 − ln(first).
         let c2 = Dd::sum(2.0, -rho);
-        let tot = 0.5 * (1.0 + a) * erf(rho * self.w.hi.sqrt())
-            + 0.5 * b * (erfc_sq(c2 * c2 * self.w) + e2c);
-        (pl, tot)
+        let z2 = c2 * c2 * w;
+        let tail = if rho * rho * w.hi > 45.0 || (z2.hi > 45.0 && z2.hi > 44.0 - first.ln()) {
+            0.0
+        } else {
+            erfc_sq(z2)
+        };
+        (pl, first + 0.5 * b * (tail + e2c))
     }
 
     /// x⁵/√(2π) · τ · Σ_{j≥2} x^(2(j−2)) R_j(τ), τ = ρ(1−ρ); x < 0.8 (x² < π).

@@ -321,3 +321,66 @@ fn timing() {
         println!("{model:?}: {ns:.0} ns/call ({s})");
     }
 }
+
+#[test]
+#[ignore]
+fn timing_by_case() {
+    use std::hint::black_box;
+    use std::time::Instant;
+    let cases = [
+        ("small psi", 0.05, 0.3),
+        ("small psi, tiny rho", 0.05, 1e-6),
+        ("small psi, rho>1/2", 0.05, 0.8),
+        ("mid psi", 0.4, 0.3),
+        ("mid psi rho>1/2", 0.4, 0.8),
+        ("psi 0.7", 0.7, 0.3),
+        ("psi 1", 1.0, 0.3),
+        ("psi 1, rho > 1/2", 1.0, 0.8),
+        ("psi 3", 3.0, 0.3),
+        ("psi 30", 30.0, 0.3),
+        ("psi 30, rho > 1/2", 30.0, 0.8),
+    ];
+    for model in [Model::Exact, Model::ClosedForm] {
+        for (name, p, r) in cases {
+            // Best of 50 short runs: the machine may be shared.
+            let n = 2000;
+            let mut best = f64::INFINITY;
+            let mut s = 0.0;
+            for _ in 0..50 {
+                let t = Instant::now();
+                for _ in 0..n {
+                    s += areas(model, black_box(p), black_box(r)).unwrap().total;
+                }
+                best = best.min(t.elapsed().as_nanos() as f64 / n as f64);
+            }
+            println!("{model:?} {name}: {best:.0} ns ({s:.3})");
+        }
+    }
+}
+
+#[test]
+#[ignore]
+fn timing_primitives() {
+    use std::hint::black_box;
+    use std::time::Instant;
+    let fs: [(&str, fn(f64) -> f64); 5] = [
+        ("erfc(0.5..)", |x| libm::erfc(x - 2.5)),
+        ("erfc(3..)", libm::erfc),
+        ("erf(0.3..)", |x| libm::erf(x - 2.7)),
+        ("exp", |x| (-x).exp()),
+        ("expm1", |x| (-x).exp_m1()),
+    ];
+    for (name, f) in fs {
+        let n = 2000;
+        let mut best = f64::INFINITY;
+        let mut s = 0.0;
+        for _ in 0..50 {
+            let t = Instant::now();
+            for i in 0..n {
+                s += f(black_box(3.0 + (i % 7) as f64));
+            }
+            best = best.min(t.elapsed().as_nanos() as f64 / n as f64);
+        }
+        println!("{name}: {best:.1} ns ({s})");
+    }
+}
