@@ -13,13 +13,20 @@
 //! With absorption at 0 and 1, by images A_tot = erf(ρ/r) + E_2 + E_4 + …,
 //! A_pl = E_1 + E_3 + … (the probability of absorption at p = H, all terms
 //! positive) and A_el = erf(ρ'/r) − E_1(ρ') + E_2(ρ') − … with ρ' = min(ρ, 1−ρ)
-//! (A_el is symmetric under ρ → 1−ρ; with ρ' ≤ 1/2 the alternating sum loses at
-//! most a factor ~3). For ψ² > 1/π (x² < π, as in the slopes) Persson's sine
-//! series in q = e^(−π²ψ²/2) ≤ e^(−π/2) is used instead:
-//! A_el = (4/π) Σ_{k odd} sin(kπρ') q^(k²)/k (positive-dominated, never a
-//! difference) and A_pl = ρ − (2/π) Σ_k ±sin(kπρ') q^(k²)/k, where the sum is at
-//! most 42 % of ρ. A_tot = A_el + A_pl (both ≥ 0). At the switch both forms
-//! need five or six terms.
+//! (A_el is symmetric under ρ → 1−ρ; with ρ' ≤ 1/2 the alternating sum keeps
+//! more than a third of its first term). Persson's sine series, in
+//! q = e^(−π²ψ²/2), gives A_el = (4/π) Σ_{k odd} sin(kπρ') q^(k²)/k (dominated by
+//! its first term, never a difference) and A_pl = ρ − (2/π) Σ_k ±sin(kπρ') q^(k²)/k.
+//! Each quantity takes the cheaper form where that form is accurate:
+//!
+//! - A_el: images for ψ ≤ 0.3 (at most three intervals), sine series above
+//!   (q ≤ e^(−0.44): at most ten terms, sines by the Chebyshev recurrence);
+//! - A_pl: the positive image sum for ψ ≤ 0.4 (at most two intervals), the sine
+//!   series above, where ρ − (2/π)Σ keeps at least S_pl(0.4)·ρ ≈ 0.175 ρ;
+//! - A_tot = A_el + A_pl (both ≥ 0).
+//!
+//! Image terms are dropped once their bound min(1, 4h/√π) e^(−(k−ρ)²/r²) falls
+//! below 1e-18 of the sum.
 //!
 //! # The paper's closed form ([`closed_form_areas`])
 //!
@@ -97,7 +104,7 @@ fn check(psi: Dd, rho: f64) -> Result<Option<Areas>, AreaError> {
     if !(rho > 0.0 && rho <= 1.0) {
         return Err(AreaError::Rho(rho));
     }
-    if !(psi.hi >= 0.0) {
+    if psi.hi.is_nan() || psi.hi < 0.0 {
         return Err(AreaError::Psi(psi.hi));
     }
     Ok(if psi.hi == f64::INFINITY {
@@ -137,7 +144,7 @@ pub fn areas(model: Model, psi: impl Into<Dd>, rho: f64) -> Result<Areas, AreaEr
 /// erfc(z) = erfc(z_f)·e^(−(z² − z_f²)). 0 beyond z² = 760 (underflow).
 #[inline]
 fn erfc_sq(z2: Dd) -> f64 {
-    if !(z2.hi < 760.0) {
+    if z2.hi.is_nan() || z2.hi >= 760.0 {
         return 0.0;
     }
     let zf = z2.hi.sqrt();
