@@ -28,13 +28,27 @@ from mpmath import mp, mpf
 OUT = "crates/rough-model/tests/data/areas_extra.csv"
 
 
+BIG = mpf(10) ** 6   # erf(z) = +-1 and e^(-z^2/2) = 0 far beyond any working precision
+
+
+def erf(z):
+    if abs(z) > BIG:
+        return mpf(1) if z > 0 else mpf(-1)
+    return mpmath.erf(z)
+
+
+def phi(u):
+    if abs(u) > BIG:
+        return mpf(0)
+    return mpmath.exp(-u * u / 2) / mpmath.sqrt(2 * mpmath.pi)
+
+
 def M(c, s):
     r = mpmath.sqrt(2) * s
-    return (mpmath.erf((1 - c) / r) + mpmath.erf(c / r)) / 2
+    return (erf((1 - c) / r) + erf(c / r)) / 2
 
 
 def first_moment(c, s):  # int_0^1 p N(c, s^2)(p) dp
-    phi = lambda u: mpmath.exp(-u * u / 2) / mpmath.sqrt(2 * mpmath.pi)
     return c * M(c, s) + s * (phi(c / s) - phi((1 - c) / s))
 
 
@@ -77,7 +91,7 @@ def closed(psi, rho):
     a = -mpmath.expm1(-2 * (1 - rho) * x2) / d
     b = -mpmath.expm1(-2 * rho * x2) / d
     r = mpmath.sqrt(2) * psi
-    tot = (1 + a) / 2 * mpmath.erf(rho / r) + b / 2 * mpmath.erf((rho - 2) / r) + (1 - a + b) / 2
+    tot = (1 + a) / 2 * erf(rho / r) + b / 2 * erf((rho - 2) / r) + (1 - a + b) / 2
     el = M(rho, psi) - a * M(-rho, psi) - b * M(2 - rho, psi)
     return el, tot - el, tot
 
@@ -175,8 +189,11 @@ def main():
     ]
     body = []
     maxd = 0
-    for psi, rho in points():
+    pts = points()
+    for i, (psi, rho) in enumerate(pts):
         vals, d = row(psi, rho)
+        if i % 50 == 0:
+            print(f"{i}/{len(pts)}", flush=True)
         maxd = max(maxd, d)
         body.append(",".join([fmt_in(psi), fmt_in(rho)] + [fmt_out(v) for v in vals]))
     lines.append(f"#   highest working precision reached in this file: {maxd} digits")

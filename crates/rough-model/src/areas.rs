@@ -56,7 +56,7 @@
 //! 1e-12 relative (values below 1e-300 may be 0); never NaN; A(ρ)/ρ → the
 //! initial slopes of [`crate::slopes`] as ρ → 0.
 
-use std::f64::consts::{FRAC_2_SQRT_PI, PI};
+use std::f64::consts::{FRAC_1_SQRT_2, FRAC_2_SQRT_PI, PI};
 use std::fmt;
 
 use libm::{erf, erfc};
@@ -203,6 +203,13 @@ fn interval(k: f64, rho: f64, w: Dd) -> f64 {
     FRAC_2_SQRT_PI * 2.0 * h * w.mul_f64(k * k).exp_neg() * s
 }
 
+/// ρ/r = ρ/(√2 ψ), finite whenever it is representable (also where 1/(2ψ²)
+/// overflows, ψ < 1e-154).
+#[inline]
+fn over_r(rho: f64, psi: f64) -> f64 {
+    rho / psi * FRAC_1_SQRT_2
+}
+
 /// 1/(2ψ²) as a double-double (∞ when it overflows).
 #[inline]
 fn half_inv_sq(psi: Dd) -> Dd {
@@ -234,9 +241,9 @@ pub fn exact_areas(psi: impl Into<Dd>, rho: f64) -> Result<Areas, AreaError> {
         let el = if s2.hi > EL_FOURIER_PSI2 {
             exact_fourier(s2, rho).0
         } else if reflect(rho) == rho {
-            images_elastic(w, rho, Some(pl))
+            images_elastic(w, psi.hi, rho, Some(pl))
         } else {
-            images_elastic(w, 1.0 - rho, None)
+            images_elastic(w, psi.hi, 1.0 - rho, None)
         };
         (el, pl)
     };
@@ -271,9 +278,9 @@ fn exact_images(psi: Dd, rho: f64) -> (f64, f64) {
     let w = half_inv_sq(psi);
     let pl = images_plastic(w, rho);
     let el = if reflect(rho) == rho {
-        images_elastic(w, rho, Some(pl))
+        images_elastic(w, psi.hi, rho, Some(pl))
     } else {
-        images_elastic(w, 1.0 - rho, None)
+        images_elastic(w, psi.hi, 1.0 - rho, None)
     };
     (el, pl)
 }
@@ -293,8 +300,8 @@ fn images_plastic(w: Dd, rho: f64) -> f64 {
 
 /// A_el = erf(ρ'/r) − E_1 + E_2 − … at ρ' = `rp` ≤ 1/2; `e1_plus` is the
 /// plastic image sum at the same ρ' when known (it starts with E_1).
-fn images_elastic(w: Dd, rp: f64, e1_plus: Option<f64>) -> f64 {
-    let mut el = erf(rp * w.hi.sqrt());
+fn images_elastic(w: Dd, psi: f64, rp: f64, e1_plus: Option<f64>) -> f64 {
+    let mut el = erf(over_r(rp, psi));
     // The alternating sum stays above a third of its first term.
     let floor = Floor::new(rp, w, el / 3.0);
     for k in 1..KMAX {
@@ -333,7 +340,12 @@ impl Floor {
         Floor {
             rho,
             w: w.hi,
-            log_floor: (acc / width).ln() - 41.45,
+            // A zero sum (underflow) makes every term negligible.
+            log_floor: if acc > 0.0 {
+                (acc / width).ln() - 41.45
+            } else {
+                f64::INFINITY
+            },
         }
     }
 
@@ -422,6 +434,8 @@ pub fn closed_form_areas(psi: impl Into<Dd>, rho: f64) -> Result<Areas, AreaErro
 
 /// The closed form at one ψ (0 < ψ < ∞).
 struct Closed {
+    /// ψ (leading part).
+    psi: f64,
     /// x = 1/ψ.
     x: f64,
     /// x² (double-double).
@@ -435,6 +449,7 @@ impl Closed {
         let xd = psi.recip();
         let t = xd * xd;
         Closed {
+            psi: psi.hi,
             x: xd.hi,
             t,
             w: t.mul_f64(0.5),
@@ -476,7 +491,7 @@ impl Closed {
             interval(1.0, rho, w)
         };
         let pl = 0.5 * (e1 + b * ea + b * e2c * eb);
-        let first = 0.5 * (1.0 + a) * erf(rho * w.hi.sqrt());
+        let first = 0.5 * (1.0 + a) * erf(over_r(rho, self.psi));
         // erfc((2−ρ)x/√2) = erfc(z) < e^(−z²) is below 1e-19 of e^(−2(1−ρ)x²)
         // when ρ²x²/2 > 45, and of the first term when z² > 44 − ln(first).
         let c2 = Dd::sum(2.0, -rho);
