@@ -130,6 +130,20 @@ fn reference_areas_extra_csv() {
 }
 
 #[test]
+fn dispatch_and_double_double_input() {
+    use rough_model::Dd;
+    for (psi, rho) in [(0.2, 0.3), (0.9, 0.7), (3.0, 1e-5)] {
+        assert_eq!(areas(Model::Exact, psi, rho), exact_areas(psi, rho));
+        assert_eq!(
+            areas(Model::ClosedForm, psi, rho),
+            closed_form_areas(psi, rho)
+        );
+        // A double-double ψ with a zero tail is the same input.
+        assert_eq!(exact_areas(Dd::new(psi, 0.0), rho), exact_areas(psi, rho));
+    }
+}
+
+#[test]
 fn limits_and_special_points() {
     for model in [Model::Exact, Model::ClosedForm] {
         for rho in [1e-300, 1e-9, 0.5, 0.999] {
@@ -356,33 +370,5 @@ fn timing_by_case() {
             }
             println!("{model:?} {name}: {best:.0} ns ({s:.3})");
         }
-    }
-}
-
-#[test]
-#[ignore]
-fn timing_primitives() {
-    use std::hint::black_box;
-    use std::time::Instant;
-    type Case = (&'static str, fn(f64) -> f64);
-    let fs: [Case; 5] = [
-        ("erfc(0.5..)", |x| libm::erfc(x - 2.5)),
-        ("erfc(3..)", libm::erfc),
-        ("erf(0.3..)", |x| libm::erf(x - 2.7)),
-        ("exp", |x| (-x).exp()),
-        ("expm1", |x| (-x).exp_m1()),
-    ];
-    for (name, f) in fs {
-        let n = 2000;
-        let mut best = f64::INFINITY;
-        let mut s = 0.0;
-        for _ in 0..50 {
-            let t = Instant::now();
-            for i in 0..n {
-                s += f(black_box(3.0 + (i % 7) as f64));
-            }
-            best = best.min(t.elapsed().as_nanos() as f64 / n as f64);
-        }
-        println!("{name}: {best:.1} ns ({s})");
     }
 }
