@@ -22,7 +22,11 @@ struct Row {
 }
 
 fn load(name: &str) -> Vec<Row> {
-    let path = format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"));
+    let path = if name.starts_with('/') {
+        name.to_string()
+    } else {
+        format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"))
+    };
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
     let mut rows = Vec::new();
     for line in text.lines() {
@@ -140,6 +144,16 @@ fn dispatch_and_double_double_input() {
         );
         // A double-double ψ with a zero tail is the same input.
         assert_eq!(exact_areas(Dd::new(psi, 0.0), rho), exact_areas(psi, rho));
+    }
+}
+
+/// Any further reference file in the same format, by absolute path:
+/// `AREAS_REFERENCE=/path/file.csv cargo test --test areas -- --ignored reference_from_env`.
+#[test]
+#[ignore]
+fn reference_from_env() {
+    if let Ok(path) = std::env::var("AREAS_REFERENCE") {
+        check_file(&path, 1e-12);
     }
 }
 
