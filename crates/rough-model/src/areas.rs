@@ -57,7 +57,7 @@
 //! (`tests/data/areas.csv`, `tests/data/areas_extra.csv`) every output is within
 //! 1e-12 relative (values below 1e-300 may be 0; measured at most 5e-15, the
 //! worst being the closed-form elastic area next to x = 0.8); never NaN;
-//! A(ρ)/ρ → the initial slopes of [`crate::slopes`] as ρ → 0. The closed-form
+//! A(ρ)/ρ → the initial slopes of [`mod@crate::slopes`] as ρ → 0. The closed-form
 //! elastic area is never negative: P = P0(p−p̄)·N(p)/D' with N concave in p and
 //! zero at p = 0 and p = H.
 
