@@ -7,6 +7,7 @@
 //! project's shared folder states every formula; each public function's doc
 //! gives its domain, units and accuracy.
 
+pub mod areas;
 mod dd;
 pub mod hardness;
 pub mod indices;
@@ -15,6 +16,7 @@ pub mod scene;
 pub mod slopes;
 pub mod spectrum;
 
+pub use areas::{areas, closed_form_areas, exact_areas, AreaError, Areas};
 pub use dd::Dd;
 pub use hardness::hardness_ratio;
 pub use indices::{psi_in_use, Indices, Surface};
