@@ -395,7 +395,16 @@ def closed_areas(psi, rho):
     tot = (1 + a) / 2 * erf_(rho * x / r2) + b / 2 * (
         mpmath.exp(-2 * (1 - rho) * x2) + erfc_((2 - rho) * x / r2))
     el = _mass(rho, psi) - a * _mass(-rho, psi) - b * _mass(2 - rho, psi)
-    return el, tot - el, tot
+    # A_pl = tot - el cancels completely where the plastic area is tiny (both
+    # working precisions can then agree on 0). With a = 1 - b e^{-2(1-rho)x^2}
+    # it is [(1+b) erfc(alpha) - a erfc(beta)]/2, alpha = (1-rho)x/sqrt2,
+    # beta = (1+rho)x/sqrt2, i.e. the positive terms below.
+    al, be = (1 - rho) * x / r2, (1 + rho) * x / r2
+    pl = (erfc_(al) - erfc_(be) + b * erfc_(al)
+          + b * mpmath.exp(-2 * (1 - rho) * x2) * erfc_(be)) / 2
+    diff = tot - el
+    assert abs(diff - pl) <= mpf(10) ** (-mp.dps // 2) * (abs(tot) + abs(el)), (psi, rho)
+    return el, pl, tot
 
 
 def closed_areas_raw(psi, rho):
@@ -826,7 +835,7 @@ def gen_areas():
         "#     exact_elastic = int_0^H P dp, exact_plastic = (pbar - int_0^H p P dp)/H",
         "#     (= probability of absorption at H), exact_total = sum.  Images for psi < 0.6,",
         "#     sine series otherwise (both checked against each other in the script).",
-        "#   closed_*: three-Gaussian closed form (MODEL.md), closed_plastic = total - elastic;",
+        "#   closed_*: three-Gaussian closed form (MODEL.md), closed_plastic = total - elastic, summed as positive terms;",
         "#     with x = 1/psi: D' = -expm1(-2x^2), a = -expm1(-2(1-rho)x^2)/D',",
         "#     b = -expm1(-2 rho x^2)/D'.  closed_elastic may be negative (the closed form is",
         "#     not an exact solution); it is printed as computed.",

@@ -17,7 +17,7 @@ use std::hint::black_box;
 use std::time::Instant;
 
 use anyhow::{bail, Context};
-use libm::{erf, erfc};
+use libm::erfc;
 use rough_model::slopes::forms;
 use rough_model::{Curves, Scene, SceneSpec, Slopes};
 
@@ -198,57 +198,18 @@ fn closed_naive(psi: f64) -> [f64; 3] {
     })
 }
 
-/// Exact areas at a finite load (elastic, plastic), normalized by A0, with
-/// H = 1, p̄ = `rho` and √V = `psi`: Persson's two-barrier diffusion from
-/// δ(p − p̄), absorbed at 0 and 1. For x² ≥ π (x = 1/ψ) by images of
-/// Gaussian masses and of the absorbed flux, with s = ψ√2 and
-/// D_m = erfc((m − ρ)/s) − erfc((m + ρ)/s):
-///   A_el = erf(ρ/s) + Σ_{m≥1} (−1)^m D_m,  A_pl = Σ_{m odd} D_m;
-/// for x² < π by the sine series, q = e^(−π²ψ²/2):
-///   A_el = Σ_{k odd} 4 sin(kπρ)/(kπ) q^{k²},
-///   A_pl = ρ − Σ_k 2 (−1)^{k+1} sin(kπρ)/(kπ) q^{k²}.
-/// Eight terms on either side.
-// TODO: switch to rough_model::areas once the areas branch is merged.
-pub fn finite_areas(psi: f64, rho: f64) -> [f64; 2] {
-    use std::f64::consts::PI;
-    const TERMS: usize = 8;
-    if psi * psi * PI > 1.0 {
-        let a = 0.5 * PI * PI * psi * psi;
-        let (mut el, mut mom) = (0.0, 0.0);
-        for k in 1..=TERMS {
-            let kf = k as f64;
-            let w = 2.0 * (kf * PI * rho).sin() / (kf * PI) * (-a * kf * kf).exp();
-            if k % 2 == 1 {
-                el += 2.0 * w;
-                mom += w;
-            } else {
-                mom -= w;
-            }
-        }
-        [el, rho - mom]
-    } else {
-        let s = psi * std::f64::consts::SQRT_2;
-        let mut el = erf(rho / s);
-        let mut pl = 0.0;
-        for m in 1..=TERMS {
-            let mf = m as f64;
-            let d = erfc((mf - rho) / s) - erfc((mf + rho) / s);
-            if m % 2 == 1 {
-                el -= d;
-                pl += d;
-            } else {
-                el += d;
-            }
-        }
-        [el, pl]
-    }
-}
-
 /// Slopes as A(ρ)/ρ at ρ = [`FINITE_RHO`].
 fn finite(psi: f64) -> [f64; 3] {
     guarded(psi, |psi| {
-        let [el, pl] = finite_areas(psi, FINITE_RHO);
-        [el / FINITE_RHO, pl / FINITE_RHO, (el + pl) / FINITE_RHO]
+        // The shipped exact finite-load areas (`rough_model::areas`).
+        match rough_model::areas::exact_areas(psi, FINITE_RHO) {
+            Ok(a) => [
+                a.elastic / FINITE_RHO,
+                a.plastic / FINITE_RHO,
+                a.total / FINITE_RHO,
+            ],
+            Err(_) => [f64::NAN; 3],
+        }
     })
 }
 
@@ -294,7 +255,7 @@ pub fn methods() -> Vec<Method> {
         },
         Method {
             name: "finite load A(ρ)/ρ, ρ = 1e-6",
-            terms: "8 (image / sine)".into(),
+            terms: "shipped areas".into(),
             against: Against::Exact,
             f: finite,
         },
@@ -693,8 +654,6 @@ mod tests {
         // The closed form is a different model: ~0.106 vs 0.0288 at ψ = 1.
         assert!(err("closed (shipped) model error vs exact") > 1.0);
         // Finite load tends to the slopes where ψ ≫ ρ.
-        // Both branches of the private finite-load areas: sine series at
-        // ψ = 1, images at ψ = 0.1.
         for psi in [1.0, 0.1] {
             let want = shipped_exact(psi);
             for (g, w) in finite(psi).iter().zip(want) {

@@ -58,30 +58,8 @@ const COLUMNS: [&str; 6] = [
     "closed_total",
 ];
 
-/// Reference values found wrong, replaced by a 400-digit mpmath evaluation of the
-/// same definition at the same (f64) inputs: (file, psi, rho, column, value).
-/// areas.csv's closed_plastic at (0.01, 0.75) is printed 0, but total − elastic
-/// there is 6.113393412765201e-138 (equal to the exact model's plastic area, as it
-/// must be at small ψ); the generator's difference vanished identically at both
-/// of its working precisions.
-const ERRATA: &[(&str, f64, f64, usize, f64)] =
-    &[("areas.csv", 0.01, 0.75, 4, 6.113393412765201e-138)];
-
 fn check_file(name: &str, tol: f64) {
-    let mut rows = load(name);
-    for &(file, psi, rho, col, v) in ERRATA {
-        if file == name {
-            let r = rows
-                .iter_mut()
-                .find(|r| r.psi == psi && r.rho == rho)
-                .expect("erratum row");
-            println!(
-                "{name}: {} at psi={psi}, rho={rho}: using {v:e} instead of {:e}",
-                COLUMNS[col], r.want[col]
-            );
-            r.want[col] = v;
-        }
-    }
+    let rows = load(name);
     let mut worst = [(0.0f64, 0.0f64, 0.0f64); 6];
     let mut failures = Vec::new();
     for r in &rows {
