@@ -205,10 +205,21 @@ impl Scene {
     /// value is finite or a documented infinity; the values are those of
     /// [`crate::psi_in_use`] and [`crate::slopes()`] at each point.
     pub fn compute(spec: &SceneSpec) -> Result<Scene, SweepError> {
+        Scene::compute_range(spec, 0..spec.points)
+    }
+
+    /// Points `range` of the `spec.points`-point sweep (the same values as
+    /// [`Scene::compute`] gives there): for long sweeps computed and written
+    /// in blocks, or on several threads. `range` is cut to the sweep.
+    pub fn compute_range(
+        spec: &SceneSpec,
+        range: std::ops::Range<usize>,
+    ) -> Result<Scene, SweepError> {
         if spec.points < 2 {
             return Err(SweepError::TooFewPoints(spec.points));
         }
-        let n = spec.points;
+        let range = range.start.min(spec.points)..range.end.min(spec.points);
+        let n = range.len();
         let c = spec.curves;
         let with = |want: bool| {
             if want {
@@ -231,11 +242,11 @@ impl Scene {
         {
             if std::arch::is_x86_feature_detected!("fma") {
                 // SAFETY: the CPU has just been checked to support FMA.
-                unsafe { fill_fma(spec, &kernel, &mut s) };
+                unsafe { fill_fma(spec, &kernel, range, &mut s) };
                 return Ok(s);
             }
         }
-        fill(spec, &kernel, &mut s);
+        fill(spec, &kernel, range, &mut s);
         Ok(s)
     }
 }
@@ -244,15 +255,15 @@ impl Scene {
 /// products inlined into it use (a library call otherwise).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "fma")]
-fn fill_fma(spec: &SceneSpec, k: &Kernel, s: &mut Scene) {
-    fill(spec, k, s)
+fn fill_fma(spec: &SceneSpec, k: &Kernel, range: std::ops::Range<usize>, s: &mut Scene) {
+    fill(spec, k, range, s)
 }
 
 #[inline(always)]
-fn fill(spec: &SceneSpec, k: &Kernel, s: &mut Scene) {
+fn fill(spec: &SceneSpec, k: &Kernel, range: std::ops::Range<usize>, s: &mut Scene) {
     const SQRT_2_OVER_PI: f64 = 0.7978845608028654;
     let c = spec.curves;
-    for i in 0..spec.points {
+    for i in range {
         let x = spec.sweep.at(i as f64 / (spec.points - 1) as f64);
         let (sq, hr) = k.psi_sq(spec, x);
         // ψ = √(ψ²) to ~1 ulp; 1/ψ only scales (no exponent).
