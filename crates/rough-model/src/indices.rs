@@ -33,7 +33,7 @@ pub struct Indices {
 }
 
 impl Indices {
-    /// All indices of `p`; see [`Surface`](crate::Surface) for everything at once.
+    /// All indices of `p`; see [`Surface`] for everything at once.
     pub fn of(p: &Params) -> Indices {
         Indices::from_core(p, &Core::of(p))
     }

@@ -9,7 +9,7 @@
 //! - m4 = ¾ (h_rms q0²)² H g(ζ, 4 − 2H)
 //!
 //! with g(ζ, e) = (ζ^e − 1)/e (→ ln ζ as e → 0). `g` is evaluated to ~1 ulp
-//! in double-double for every ζ ≥ 1 (see [`g`]), which is what keeps the
+//! in double-double for every ζ ≥ 1 (see `g`), which is what keeps the
 //! plasticity indices, and through them the slopes, within 1e-12.
 
 use std::ops::{Add, Div, Mul};
