@@ -7,7 +7,8 @@ use ratatui::backend::TestBackend;
 use ratatui::Terminal;
 use rough_model::{Axis, Model};
 use roughtui::presets;
-use roughtui::tui::app::{check_stem, step_value, update, App, Message, Mode};
+use roughtui::snapshot::check_stem;
+use roughtui::tui::app::{step_value, update, App, Message, Mode};
 use roughtui::tui::keys::{self, message_for_key};
 use roughtui::tui::theme::Theme;
 use roughtui::tui::view;
@@ -357,7 +358,10 @@ fn the_prompt_edits_rejects_bad_names_and_cancels() {
     press(&mut a, KeyCode::Esc, KeyModifiers::NONE);
     assert_eq!(a.mode, Mode::Main);
     assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
-    assert_eq!(check_stem(".."), Err("the name must not be . or .."));
+    assert_eq!(
+        check_stem(".."),
+        Err("bad file name \"..\": it must not start with '.'".to_string())
+    );
     assert!(check_stem("fig2-20261121-153012").is_ok());
 }
 

@@ -328,19 +328,6 @@ fn compute_plot(spec: &SceneSpec) -> Plot {
     plot
 }
 
-/// Checks a snapshot name typed in the prompt.
-pub fn check_stem(stem: &str) -> Result<(), &'static str> {
-    if stem.trim().is_empty() {
-        Err("the name is empty")
-    } else if stem.contains(['/', '\\', '\0']) {
-        Err("the name must not contain '/' or '\\'")
-    } else if stem == "." || stem == ".." {
-        Err("the name must not be . or ..")
-    } else {
-        Ok(())
-    }
-}
-
 /// The one place that changes an [`App`].
 pub fn update(app: &mut App, msg: Message) {
     let n = Axis::ALL.len();
@@ -444,7 +431,7 @@ pub fn update(app: &mut App, msg: Message) {
                 return;
             };
             let stem = stem.clone();
-            if let Err(why) = check_stem(&stem) {
+            if let Err(why) = snapshot::check_stem(&stem) {
                 // Stay in the prompt so the name can be fixed.
                 app.set_status(format!("cannot save: {why}"), true);
                 return;
