@@ -67,6 +67,7 @@ use std::fmt;
 use libm::{erf, erfc};
 
 use crate::dd::{Dd, PI2_HALF};
+use crate::params::Shown;
 use crate::slopes::Model;
 
 /// 1/√(2π).
@@ -95,9 +96,10 @@ impl fmt::Display for AreaError {
         match self {
             AreaError::Rho(v) => write!(
                 f,
-                "rho = p̄/H must be finite and in (0, 1] (0 < rho ≤ 1), got {v}"
+                "rho = p̄/H must be finite and in (0, 1] (0 < rho ≤ 1), got {}",
+                Shown(*v)
             ),
-            AreaError::Psi(v) => write!(f, "psi = √V/H must be ≥ 0 (0 to +inf), got {v}"),
+            AreaError::Psi(v) => write!(f, "psi = √V/H must be ≥ 0 (0 to +inf), got {}", Shown(*v)),
         }
     }
 }

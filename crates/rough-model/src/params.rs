@@ -91,12 +91,32 @@ impl fmt::Display for ParamError {
                 field,
                 value,
                 valid,
-            } => write!(f, "{field} = {value} is out of range: it must be {valid}"),
+            } => write!(
+                f,
+                "{field} = {} is out of range: it must be {valid}",
+                Shown(*value)
+            ),
         }
     }
 }
 
 impl std::error::Error for ParamError {}
+
+/// A number for a message: as typed for ordinary sizes (0.01, 128), in
+/// exponent form for very small or large ones (-2e-8, 1e300) instead of
+/// hundreds of digits.
+pub(crate) struct Shown(pub f64);
+
+impl fmt::Display for Shown {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let a = self.0.abs();
+        if a != 0.0 && a.is_finite() && !(1e-4..1e15).contains(&a) {
+            write!(f, "{:e}", self.0)
+        } else {
+            write!(f, "{}", self.0)
+        }
+    }
+}
 
 #[derive(Clone, Copy)]
 struct Domain {
@@ -278,6 +298,21 @@ mod tests {
             assert!(msg.starts_with(field), "{msg}");
             assert!(msg.contains("must be"), "{msg}");
         }
+    }
+
+    #[test]
+    fn messages_show_numbers_compactly() {
+        let mut v = Params::paper_fig2().values();
+        v.h_rms = -2e-8;
+        let e = Params::new(v).unwrap_err().to_string();
+        assert_eq!(
+            e,
+            "h_rms = -2e-8 is out of range: it must be finite and > 0"
+        );
+        v.h_rms = 2e-8;
+        v.zeta = 0.5;
+        let e = Params::new(v).unwrap_err().to_string();
+        assert_eq!(e, "zeta = 0.5 is out of range: it must be finite and >= 1");
     }
 
     #[test]

@@ -6,7 +6,7 @@ use std::ops::{Add, Div, Mul};
 
 use crate::dd::{Dd, PI, PI2_HALF};
 use crate::indices::psi_from_core;
-use crate::params::{Axis, Params};
+use crate::params::{Axis, Params, Shown};
 use crate::slopes::{slopes_sq, Model};
 use crate::spectrum::Core;
 
@@ -48,11 +48,14 @@ impl fmt::Display for SweepError {
                 valid,
             } => write!(
                 f,
-                "sweep {end} = {value} is outside the domain of {field}: it must be {valid}"
+                "sweep {end} = {} is outside the domain of {field}: it must be {valid}",
+                Shown(*value)
             ),
             SweepError::Empty { from, to } => write!(
                 f,
-                "sweep range is empty: from = {from} must be below to = {to}"
+                "sweep range is empty: from = {} must be below to = {}",
+                Shown(*from),
+                Shown(*to)
             ),
             SweepError::TooFewPoints(n) => {
                 write!(f, "a sweep needs at least 2 points, got {n}")
