@@ -81,6 +81,19 @@ pub struct Areas {
     pub total: f64,
 }
 
+impl Areas {
+    /// Each fraction kept in [0, 1], where it lies exactly: rounding can
+    /// put a total of 1 − 1e-17 at 1 + 2e-16.
+    fn clamped(self) -> Areas {
+        let c = |v: f64| v.clamp(0.0, 1.0);
+        Areas {
+            elastic: c(self.elastic),
+            plastic: c(self.plastic),
+            total: c(self.total),
+        }
+    }
+}
+
 /// Invalid input to the area functions.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[non_exhaustive]
@@ -240,7 +253,10 @@ fn half_inv_sq(psi: Dd) -> Dd {
 /// the domain (results below 1e-300 may be 0); never NaN. ψ = 0 gives (1, 0, 1)
 /// for ρ < 1, ψ = ∞ gives (0, ρ, ρ), ρ = 1 gives (0, 1, 1).
 pub fn exact_areas(psi: impl Into<Dd>, rho: f64) -> Result<Areas, AreaError> {
-    let psi = psi.into();
+    exact_areas_unclamped(psi.into(), rho).map(Areas::clamped)
+}
+
+fn exact_areas_unclamped(psi: Dd, rho: f64) -> Result<Areas, AreaError> {
     if let Some(a) = check(psi, rho)? {
         return Ok(a);
     }
@@ -418,7 +434,10 @@ const CLOSED_SERIES_X: f64 = 0.8;
 /// be 0); never NaN. Limits as for [`exact_areas`]: ψ = 0 gives (1, 0, 1) for
 /// ρ < 1, ψ = ∞ gives (0, ρ, ρ), ρ = 1 gives (0, 1, 1).
 pub fn closed_form_areas(psi: impl Into<Dd>, rho: f64) -> Result<Areas, AreaError> {
-    let psi = psi.into();
+    closed_form_areas_unclamped(psi.into(), rho).map(Areas::clamped)
+}
+
+fn closed_form_areas_unclamped(psi: Dd, rho: f64) -> Result<Areas, AreaError> {
     if let Some(a) = check(psi, rho)? {
         return Ok(a);
     }

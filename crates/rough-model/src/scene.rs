@@ -267,8 +267,9 @@ fn fill(spec: &SceneSpec, k: &Kernel, range: std::ops::Range<usize>, s: &mut Sce
     const SQRT_2_OVER_PI: f64 = 0.7978845608028654;
     let c = spec.curves;
     for i in range {
-        let x = spec.sweep.at(i as f64 / (spec.points - 1) as f64);
-        let (sq, hr) = k.psi_sq(spec, x);
+        let t = i as f64 / (spec.points - 1) as f64;
+        let x = spec.sweep.at(t);
+        let (sq, hr) = k.psi_sq(spec, x, t);
         // ψ = √(ψ²) to ~1 ulp; 1/ψ only scales (no exponent).
         let psi = if sq.hi > 0.0 {
             sq.hi.sqrt() * (1.0 + 0.5 * sq.lo / sq.hi)
@@ -353,14 +354,22 @@ impl Kernel {
 
     /// ψ² in use and the hardness ratio in use at sweep value `x`.
     #[inline(always)]
-    fn psi_sq(&self, spec: &SceneSpec, x: f64) -> (Dd, f64) {
-        let axis = spec.sweep.axis();
+    fn psi_sq(&self, spec: &SceneSpec, x: f64, t: f64) -> (Dd, f64) {
         // Sweep values lie in the validated range, so in the domain.
-        let p = spec.base.with_unchecked(axis, x);
+        let at = || spec.base.with_unchecked(spec.sweep.axis(), x);
         let from_psi = |(psi, hr): (Dd, f64)| (psi.mul(psi), hr);
         match self {
             Kernel::Zeta { a, a_e2, e2, e4, b } => {
-                let l = x.ln();
+                // Inside a ζ sweep x = fl(e^y), y = ln from + t·(ln to − ln
+                // from), so |ln x − y| ≤ 2.2e-16, below ln's own rounding
+                // once y > 1; the ends are exact values and take the log.
+                let (la, lb) = spec.sweep.ends;
+                let y = la + (lb - la) * t;
+                let l = if y > 1.0 && t > 0.0 && t < 1.0 {
+                    y
+                } else {
+                    ln_apart(x)
+                };
                 let (e2l, e4l) = (e2 * l, e4 * l);
                 let eval = |ze2: Dd, ze4: Dd| zeta_point(*a, *a_e2, *e2, l, e4l, *b, ze2, ze4);
                 let mut out = if e4l <= 0.5 {
@@ -378,20 +387,21 @@ impl Kernel {
                     if amp * (e4l + 1.0) * 4.4e-16 <= 1e-13 {
                         fast
                     } else {
-                        let pw = x.powf(-2.0 * p.hurst());
+                        let pw = x.powf(-2.0 * spec.base.hurst());
                         let z2 = Dd::prod(x, x);
                         eval(z2.mul_f64(pw), z2.mul(z2).mul_f64(pw))
                     }
                 };
                 if !(out.0.hi.is_finite() && out.1.is_finite()) {
+                    let p = at();
                     out = from_psi(psi_from_core(&p, &Core::new(&p, b.is_some()), b.is_some()));
                 }
                 out
             }
-            Kernel::Fixed(core) => from_psi(psi_from_core(&p, core, spec.size_effect)),
+            Kernel::Fixed(core) => from_psi(psi_from_core(&at(), core, spec.size_effect)),
             Kernel::General => from_psi(psi_from_core(
-                &p,
-                &Core::new(&p, spec.size_effect),
+                &at(),
+                &Core::new(&at(), spec.size_effect),
                 spec.size_effect,
             )),
         }
@@ -431,4 +441,12 @@ fn zeta_point(
     };
     let hy2 = b.mul(gm4.sqrt()).add(Dd::from_f64(1.0));
     (sp.div(hy2), hy2.hi.sqrt())
+}
+
+/// ln x out of line: inlined, the optimizer computes it ahead of the branch
+/// that usually makes it unnecessary.
+#[cold]
+#[inline(never)]
+fn ln_apart(x: f64) -> f64 {
+    x.ln()
 }
