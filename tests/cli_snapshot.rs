@@ -2,20 +2,13 @@
 //! from the TUI's `--load`, with exit status 2, one line on stderr that names
 //! the file and the problem, and nothing on stdout (so no terminal setup).
 
+mod common;
+
+use common::GOOD;
 use std::path::Path;
 use std::process::{Command, Output, Stdio};
 
 const BIN: &str = env!("CARGO_BIN_EXE_roughtui");
-
-const GOOD: &str = "(
-    version: 1,
-    name: \"fig2\",
-    params: (h0_over_e: 0.01, h_rms: 2e-8, zeta: 128.0, hurst: 0.8, r_star: 0.001, q0: 100000.0),
-    size_effect: false,
-    sweep: (axis: Zeta, from: 1.0, to: 10000.0),
-    model: Exact,
-)
-";
 
 fn run(args: &[&str]) -> Output {
     Command::new(BIN)

@@ -1,19 +1,12 @@
 //! Every kind of bad snapshot is refused by `load_file` with one message that
 //! names the file and the problem; harmless variations are accepted.
 
+mod common;
+
+use common::GOOD;
 use std::path::{Path, PathBuf};
 
 use roughtui::snapshot::{load_file, read_file, LoadProblem, SnapshotError, State, MAX_BYTES};
-
-const GOOD: &str = "(
-    version: 1,
-    name: \"fig2\",
-    params: (h0_over_e: 0.01, h_rms: 2e-8, zeta: 128.0, hurst: 0.8, r_star: 0.001, q0: 100000.0),
-    size_effect: false,
-    sweep: (axis: Zeta, from: 1.0, to: 10000.0),
-    model: Exact,
-)
-";
 
 fn write(dir: &Path, bytes: &[u8]) -> PathBuf {
     let p = dir.join("case.ron");

@@ -1,20 +1,14 @@
 //! `save_new`: never overwrites, writes atomically, cleans up, and explains
 //! every refusal; what it writes loads back bit for bit.
 
+mod common;
+
+use common::files_in;
 use std::path::Path;
 use std::time::{Duration, UNIX_EPOCH};
 
 use roughtui::presets;
 use roughtui::snapshot::{default_stem, load_file, save_new, State};
-
-fn files_in(dir: &Path) -> Vec<String> {
-    let mut v: Vec<String> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .collect();
-    v.sort();
-    v
-}
 
 fn fig(n: &str) -> State {
     presets::load(n).unwrap()

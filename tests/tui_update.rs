@@ -1,6 +1,8 @@
 //! The explorer's update logic without a terminal: keys, steps, presets,
 //! sweeps, toggles, caching of the curves, saving, and drawing at any size.
 
+mod common;
+
 use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyEventState, KeyModifiers};
 use proptest::prelude::*;
 use ratatui::backend::TestBackend;
@@ -40,15 +42,7 @@ fn screen(app: &App) -> String {
     let (w, h) = app.size;
     let mut t = Terminal::new(TestBackend::new(w, h)).unwrap();
     t.draw(|f| f.render_widget(app, f.area())).unwrap();
-    let buf = t.backend().buffer();
-    let mut s = String::new();
-    for y in 0..buf.area.height {
-        for x in 0..buf.area.width {
-            s.push_str(buf[(x, y)].symbol());
-        }
-        s.push('\n');
-    }
-    s
+    common::buffer_text(&t)
 }
 
 #[test]

@@ -1,6 +1,8 @@
 //! The explorer drawn without a terminal: insta snapshots of each preset at
 //! 80×24 and 160×48, and the drawing at sizes down to 1×1.
 
+mod common;
+
 use ratatui::backend::TestBackend;
 use ratatui::Terminal;
 use roughtui::presets;
@@ -15,15 +17,7 @@ fn draw(app: &App) -> Terminal<TestBackend> {
 }
 
 fn text(t: &Terminal<TestBackend>) -> String {
-    let buf = t.backend().buffer();
-    let mut s = String::new();
-    for y in 0..buf.area.height {
-        for x in 0..buf.area.width {
-            s.push_str(buf[(x, y)].symbol());
-        }
-        s.push('\n');
-    }
-    s
+    common::buffer_text(t)
 }
 
 fn app(name: &str, size: (u16, u16), theme: Theme) -> App {
