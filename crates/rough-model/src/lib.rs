@@ -23,4 +23,4 @@ pub use indices::{psi_in_use, Indices, Surface};
 pub use params::{Axis, ParamError, ParamValues, Params};
 pub use scene::{Curves, Scene, SceneSpec, Sweep, SweepError};
 pub use slopes::{closed_form, exact, persson_elastic, slopes, Model, Regime, Slopes};
-pub use spectrum::Spectrum;
+pub use spectrum::{Moments, Spectrum};

@@ -17,6 +17,39 @@ use std::ops::{Add, Div, Mul};
 use crate::dd::Dd;
 use crate::params::Params;
 
+/// Which profile moments a computation uses (`MODEL.md`, "Spectrum").
+///
+/// - `Truncated`: the band-limited spectrum q0 < q < ζ q0 integrated exactly,
+///   m_n ∝ (ζ^e − 1)/e; at ζ = 1 there is no roughness (ψ = 0).
+/// - `Asymptotic`: the paper's eq. 10 (written with ≃, i.e. ζ ≫ 1),
+///   m_n ∝ ζ^e/e and m0 without its (1 − ζ^(−2H)) factor; what the paper's
+///   figures use. Finite at ζ = 1; m2 is infinite at H = 1.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub enum Moments {
+    #[default]
+    Truncated,
+    Asymptotic,
+}
+
+impl Moments {
+    /// The other convention.
+    pub fn other(self) -> Moments {
+        match self {
+            Moments::Truncated => Moments::Asymptotic,
+            Moments::Asymptotic => Moments::Truncated,
+        }
+    }
+
+    /// A short lower-case name for headers and status lines.
+    pub fn label(self) -> &'static str {
+        match self {
+            Moments::Truncated => "truncated",
+            Moments::Asymptotic => "asymptotic",
+        }
+    }
+}
+
 /// Spectrum moments and derived geometry of one parameter set, SI units.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Spectrum {
