@@ -82,6 +82,9 @@ pub enum ParamError {
         value: f64,
         valid: &'static str,
     },
+    /// H = 1 with [`crate::Moments::Asymptotic`], whose m2 ∝ ζ^(2−2H)/(2−2H)
+    /// is infinite there.
+    HurstOneAsymptotic,
 }
 
 impl fmt::Display for ParamError {
@@ -95,6 +98,11 @@ impl fmt::Display for ParamError {
                 f,
                 "{field} = {} is out of range: it must be {valid}",
                 Shown(*value)
+            ),
+            ParamError::HurstOneAsymptotic => write!(
+                f,
+                "hurst = 1 needs moments: Truncated: the asymptotic moments (eq. 10) \
+                 make m2 = πZq0^(2−2H)ζ^(2−2H)/(2−2H) infinite at H = 1"
             ),
         }
     }

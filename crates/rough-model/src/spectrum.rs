@@ -48,6 +48,15 @@ impl Moments {
             Moments::Asymptotic => "asymptotic",
         }
     }
+
+    /// Whether `p` can be computed with these moments: the asymptotic m2 is
+    /// infinite at H = 1, so that pair is refused with an error naming both.
+    pub fn check(self, p: &Params) -> Result<(), crate::ParamError> {
+        if self == Moments::Asymptotic && p.hurst() == 1.0 {
+            return Err(crate::ParamError::HurstOneAsymptotic);
+        }
+        Ok(())
+    }
 }
 
 /// Spectrum moments and derived geometry of one parameter set, SI units.
