@@ -13,6 +13,7 @@ fn spec(preset: &str, model: Model) -> SceneSpec {
         sweep: s.sweep,
         size_effect: s.size_effect,
         model,
+        moments: rough_model::Moments::Truncated,
         curves: Curves::ALL,
         points: 400,
     }

@@ -432,6 +432,7 @@ fn time_scene(passes: u32) -> anyhow::Result<f64> {
         sweep: state.sweep,
         size_effect: state.size_effect,
         model: rough_model::Model::Exact,
+        moments: rough_model::Moments::Truncated,
         curves: Curves::ALL,
         points: 400,
     };

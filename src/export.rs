@@ -26,6 +26,7 @@ pub fn write_csv(
         sweep: state.sweep,
         size_effect: state.size_effect,
         model: model.unwrap_or(state.model),
+        moments: rough_model::Moments::Truncated,
         curves: Curves::ALL,
         points,
     };

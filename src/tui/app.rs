@@ -86,7 +86,7 @@ pub struct Readout {
 
 impl Readout {
     pub fn of(state: &State) -> Readout {
-        let surface = Surface::of(&state.params);
+        let surface = Surface::of(&state.params, rough_model::Moments::Truncated);
         let psi = surface.indices.psi_in_use(state.size_effect);
         Readout {
             surface,
@@ -234,6 +234,7 @@ impl App {
                 sweep: self.state.sweep,
                 size_effect: self.state.size_effect,
                 model: self.state.model,
+                moments: rough_model::Moments::Truncated,
                 curves: Curves::ALL,
                 points,
             },

@@ -9,7 +9,7 @@ use std::ops::{Add, Div, Mul};
 
 use crate::dd::Dd;
 use crate::params::Params;
-use crate::spectrum::{in_range, ln_g, Core, Logs, Spectrum};
+use crate::spectrum::{in_range, ln_g, Core, Logs, Moments, Spectrum};
 
 /// R_p/R_s of the hardness law times (3/8): R*/(1.2 R_s) = R*·√(m4/π)/0.45.
 const RP_COEF: f64 = 0.45;
@@ -33,9 +33,10 @@ pub struct Indices {
 }
 
 impl Indices {
-    /// All indices of `p`; see [`Surface`] for everything at once.
-    pub fn of(p: &Params) -> Indices {
-        Indices::from_core(p, &Core::of(p))
+    /// All indices of `p` under the `moments` convention; see [`Surface`]
+    /// for everything at once.
+    pub fn of(p: &Params, moments: Moments) -> Indices {
+        Indices::from_core(p, &Core::of(p, moments))
     }
 
     pub(crate) fn from_core(p: &Params, c: &Core) -> Indices {
@@ -45,7 +46,7 @@ impl Indices {
         let (psi_p, hy) = psi_p_and_hardness(p, c);
         let psi_star = psi_star(p, c, psi_p, hy);
         let hu = p.hurst();
-        let frac0 = -(-2.0 * hu * c.ln_zeta).exp_m1();
+        let frac0 = c.f0;
         let g4 = c.g4.to_f64();
         let hq = p.h_rms() * p.q0() / p.h0_over_e();
         // √(√m0/R_s)/(H0/E) with √m0 = h√frac0 and 1/R_s = h q0² √(¾ H g4/π)/0.375.
@@ -155,13 +156,13 @@ fn psi_star(p: &Params, c: &Core, psi_p: Dd, hy: Dd) -> Dd {
         return psi_p.div(hy);
     }
     let (h, hu, q0) = (p.h_rms(), p.hurst(), p.q0());
-    let ln_psi_p = h.ln() + q0.ln() - p.h0_over_e().ln()
-        + 0.5 * (hu.ln() + ln_g(c.ln_zeta, 2, hu) - 2f64.ln());
+    let ln_psi_p =
+        h.ln() + q0.ln() - p.h0_over_e().ln() + 0.5 * (hu.ln() + c.ln_g(2, hu) - 2f64.ln());
     // ln(H_y/H0) = ½ ln(1 + r), r huge here, so ½ ln r.
     let ln_r = p.r_star().ln() - RP_COEF.ln()
         + h.ln()
         + 2.0 * q0.ln()
-        + 0.5 * (0.75f64.ln() + hu.ln() + ln_g(c.ln_zeta, 4, hu) - std::f64::consts::PI.ln());
+        + 0.5 * (0.75f64.ln() + hu.ln() + c.ln_g(4, hu) - std::f64::consts::PI.ln());
     let ln_hy = 0.5 * (ln_r + (-ln_r).exp().ln_1p());
     Dd::from_f64((ln_psi_p - ln_hy).exp())
 }
@@ -173,10 +174,8 @@ fn asymptotic(p: &Params, ln_zeta: f64) -> Option<f64> {
     if rs == 0.0 || hu == 1.0 {
         return None;
     }
-    let e2 = 2.0 - 2.0 * hu;
-    let e4 = 4.0 - 2.0 * hu;
-    let ln_g2 = e2 * ln_zeta - e2.ln();
-    let ln_g4 = e4 * ln_zeta - e4.ln();
+    let ln_g2 = ln_g(Moments::Asymptotic, ln_zeta, 2, hu);
+    let ln_g4 = ln_g(Moments::Asymptotic, ln_zeta, 4, hu);
     let ln_psi_p = h.ln() + q0.ln() - p.h0_over_e().ln() + 0.5 * (hu.ln() + ln_g2 - 2f64.ln());
     let ln_rs = 0.375f64.ln() + 0.5 * (std::f64::consts::PI.ln() - 0.75f64.ln() - hu.ln() - ln_g4)
         - h.ln()
@@ -188,15 +187,18 @@ fn asymptotic(p: &Params, ln_zeta: f64) -> Option<f64> {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Surface {
     pub params: Params,
+    pub moments: Moments,
     pub spectrum: Spectrum,
     pub indices: Indices,
 }
 
 impl Surface {
-    pub fn of(p: &Params) -> Surface {
-        let c = Core::of(p);
+    /// Spectrum and indices of `p` under the `moments` convention.
+    pub fn of(p: &Params, moments: Moments) -> Surface {
+        let c = Core::of(p, moments);
         Surface {
             params: *p,
+            moments,
             spectrum: Spectrum::from_core(p, &c),
             indices: Indices::from_core(p, &c),
         }
@@ -205,8 +207,8 @@ impl Surface {
 
 /// The index in use and the hardness ratio in use, without the rest of the
 /// indices: the per-point work of a sweep.
-pub fn psi_in_use(p: &Params, size_effect: bool) -> (Dd, f64) {
-    psi_from_core(p, &Core::new(p, size_effect), size_effect)
+pub fn psi_in_use(p: &Params, size_effect: bool, moments: Moments) -> (Dd, f64) {
+    psi_from_core(p, &Core::new(p, moments, size_effect), size_effect)
 }
 
 /// [`psi_in_use`] from a `Core` computed with `with_g4 = size_effect`.
@@ -214,7 +216,7 @@ pub fn psi_in_use(p: &Params, size_effect: bool) -> (Dd, f64) {
 pub(crate) fn psi_from_core(p: &Params, c: &Core, size_effect: bool) -> (Dd, f64) {
     let c = *c;
     if !in_range(p, &c, size_effect, false) {
-        let ix = Indices::from_logs(p, &Core::of(p));
+        let ix = Indices::from_logs(p, &Core::of(p, c.moments));
         return (ix.psi_in_use(size_effect), ix.hardness_in_use(size_effect));
     }
     let (psi_p, hy) = if size_effect {

@@ -8,7 +8,7 @@ use crate::dd::{Dd, PI, PI2_HALF};
 use crate::indices::psi_from_core;
 use crate::params::{Axis, Params, Shown};
 use crate::slopes::{slopes_sq, Model};
-use crate::spectrum::Core;
+use crate::spectrum::{Core, Moments};
 
 /// A validated range of one parameter: log-spaced for all axes but the
 /// Hurst exponent, which is linear.
@@ -182,6 +182,8 @@ pub struct SceneSpec {
     /// Index in use Ψ* and normalization by H_y when true; Ψ_P and H0 otherwise.
     pub size_effect: bool,
     pub model: Model,
+    /// Truncated or asymptotic (eq. 10) spectrum moments.
+    pub moments: Moments,
     pub curves: Curves,
     /// Number of points, both ends included (≥ 2).
     pub points: usize,
@@ -300,14 +302,16 @@ fn fill(spec: &SceneSpec, k: &Kernel, range: std::ops::Range<usize>, s: &mut Sce
 
 /// What is constant along a sweep.
 enum Kernel {
-    /// ζ sweep: Ψ_P² = A·g2 = (A/e2)(ζ^e2 − 1) and, with size effect,
-    /// (H_y/H0)² = 1 + B·√(g4 e4) with B = R* h q0² √(¾H/(π e4))/0.45.
+    /// ζ sweep: Ψ_P² = A·g2 and, with size effect, (H_y/H0)² = 1 + B·√(g4 e4)
+    /// with B = R* h q0² √(¾H/(π e4))/0.45; g·e = ζ^e − 1 for truncated
+    /// moments, ζ^e for asymptotic ones.
     Zeta {
         a: Dd,
         a_e2: Dd,
         e2: f64,
         e4: f64,
         b: Option<Dd>,
+        asymptotic: bool,
     },
     /// Axes that leave the moments' g(ζ, e) unchanged: computed once.
     Fixed(Core),
@@ -335,20 +339,27 @@ impl Kernel {
                         .div(Dd::from_f64(0.45))
                 });
                 let finite = |d: Dd| d.hi.is_normal();
-                if finite(a) && finite(a_e2) && b.is_none_or(finite) {
+                let asymptotic = spec.moments == Moments::Asymptotic;
+                // The asymptotic m2 is infinite at H = 1 (e2 = 0): the general path.
+                if finite(a)
+                    && finite(a_e2)
+                    && b.is_none_or(finite)
+                    && !(asymptotic && e2.hi == 0.0)
+                {
                     Kernel::Zeta {
                         a,
                         a_e2,
                         e2: e2.hi,
                         e4: e4.hi,
                         b,
+                        asymptotic,
                     }
                 } else {
                     Kernel::General
                 }
             }
             Axis::Hurst => Kernel::General,
-            _ => Kernel::Fixed(Core::new(p, spec.size_effect)),
+            _ => Kernel::Fixed(Core::new(p, spec.moments, spec.size_effect)),
         }
     }
 
@@ -359,7 +370,14 @@ impl Kernel {
         let at = || spec.base.with_unchecked(spec.sweep.axis(), x);
         let from_psi = |(psi, hr): (Dd, f64)| (psi.mul(psi), hr);
         match self {
-            Kernel::Zeta { a, a_e2, e2, e4, b } => {
+            Kernel::Zeta {
+                a,
+                a_e2,
+                e2,
+                e4,
+                b,
+                asymptotic,
+            } => {
                 // Inside a ζ sweep x = fl(e^y), y = ln from + t·(ln to − ln
                 // from), so |ln x − y| ≤ 2.2e-16, below ln's own rounding
                 // once y > 1; the ends are exact values and take the log.
@@ -371,8 +389,19 @@ impl Kernel {
                     ln_apart(x)
                 };
                 let (e2l, e4l) = (e2 * l, e4 * l);
-                let eval = |ze2: Dd, ze4: Dd| zeta_point(*a, *a_e2, *e2, l, e4l, *b, ze2, ze4);
-                let mut out = if e4l <= 0.5 {
+                let pointwise = || {
+                    let p = at();
+                    from_psi(psi_from_core(
+                        &p,
+                        &Core::new(&p, spec.moments, b.is_some()),
+                        b.is_some(),
+                    ))
+                };
+                let eval = |ze2: Dd, ze4: Dd| {
+                    zeta_point(*a, *a_e2, *e2, l, e4l, *b, *asymptotic, ze2, ze4)
+                };
+                // Truncated moments below e·ln ζ = ½ take expm1 and need no ζ^e.
+                let mut out = if e4l <= 0.5 && !asymptotic {
                     eval(Dd::from_f64(0.0), Dd::from_f64(0.0))
                 } else {
                     // exp(e·ln ζ) carries the rounding of ln ζ times e·ln ζ
@@ -381,11 +410,15 @@ impl Kernel {
                     let fast = eval(Dd::from_f64(e2l.exp()), Dd::from_f64(ze4));
                     // ... which the slopes amplify by about max(π²ψ²/2,
                     // 1/(2ψ²)). Where that could cost 1e-13, form ζ^e as
-                    // ζ^n·ζ^(−2H) with an exact product instead.
+                    // ζ^n·ζ^(−2H) with an exact product instead; for
+                    // asymptotic moments, whose ζ^e below e·ln ζ = ½ has no
+                    // such form, take the pointwise path, so that both agree.
                     let sq = fast.0.hi;
                     let amp = 1.0 + (PI2_HALF.hi * sq).max(0.5 / sq);
                     if amp * (e4l + 1.0) * 4.4e-16 <= 1e-13 {
                         fast
+                    } else if *asymptotic {
+                        pointwise()
                     } else {
                         let pw = x.powf(-2.0 * spec.base.hurst());
                         let z2 = Dd::prod(x, x);
@@ -393,23 +426,22 @@ impl Kernel {
                     }
                 };
                 if !(out.0.hi.is_finite() && out.1.is_finite()) {
-                    let p = at();
-                    out = from_psi(psi_from_core(&p, &Core::new(&p, b.is_some()), b.is_some()));
+                    out = pointwise();
                 }
                 out
             }
             Kernel::Fixed(core) => from_psi(psi_from_core(&at(), core, spec.size_effect)),
             Kernel::General => from_psi(psi_from_core(
                 &at(),
-                &Core::new(&at(), spec.size_effect),
+                &Core::new(&at(), spec.moments, spec.size_effect),
                 spec.size_effect,
             )),
         }
     }
 }
 
-/// (ψ², H_y/H0) at one ζ of a ζ sweep, from ζ^e2 and ζ^e4 (read only where
-/// e·ln ζ > ½; below, expm1 is used).
+/// (ψ², H_y/H0) at one ζ of a ζ sweep, from ζ^e2 and ζ^e4 (for truncated
+/// moments read only where e·ln ζ > ½; below, expm1 is used).
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
 fn zeta_point(
@@ -419,12 +451,15 @@ fn zeta_point(
     l: f64,
     e4l: f64,
     b: Option<Dd>,
+    asymptotic: bool,
     ze2: Dd,
     ze4: Dd,
 ) -> (Dd, f64) {
     let minus1 = Dd::from_f64(-1.0);
     let e2l = e2 * l;
-    let sp = if e2 == 0.0 {
+    let sp = if asymptotic {
+        ze2.mul(a_e2)
+    } else if e2 == 0.0 {
         a.mul_f64(l)
     } else if e2l <= 0.5 {
         a_e2.mul_f64(e2l.exp_m1())
@@ -434,7 +469,9 @@ fn zeta_point(
     let Some(b) = b else {
         return (sp, 1.0);
     };
-    let gm4 = if e4l <= 0.5 {
+    let gm4 = if asymptotic {
+        ze4
+    } else if e4l <= 0.5 {
         Dd::from_f64(e4l.exp_m1())
     } else {
         ze4.add(minus1)

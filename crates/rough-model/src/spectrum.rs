@@ -4,12 +4,15 @@
 //! the paper's convention (spectrum extended to q → ∞): Z = h_rms² H q0^(2H)/π.
 //! The moments are written so that π and the large powers cancel analytically:
 //!
-//! - m0 = h_rms² (1 − ζ^(−2H))
+//! - m0 = h_rms² f0
 //! - m2 = (h_rms q0)² H g(ζ, 2 − 2H)
 //! - m4 = ¾ (h_rms q0²)² H g(ζ, 4 − 2H)
 //!
-//! with g(ζ, e) = (ζ^e − 1)/e (→ ln ζ as e → 0). `g` is evaluated to ~1 ulp
-//! in double-double for every ζ ≥ 1 (see `g`), which is what keeps the
+//! With [`Moments::Truncated`] (the band q0 … ζ q0 integrated exactly)
+//! f0 = 1 − ζ^(−2H) and g(ζ, e) = (ζ^e − 1)/e (→ ln ζ as e → 0); with
+//! [`Moments::Asymptotic`] (the paper's eq. 10) f0 = 1 and g(ζ, e) = ζ^e/e
+//! (∞ at e = 0, i.e. m2 at H = 1). `g` is evaluated to ~1 ulp in
+//! double-double for every ζ ≥ 1 (see `g`), which is what keeps the
 //! plasticity indices, and through them the slopes, within 1e-12.
 
 use std::ops::{Add, Div, Mul};
@@ -82,24 +85,38 @@ pub struct Spectrum {
     pub rms_curvature: f64,
 }
 
-/// g(ζ, e) = (ζ^e − 1)/e for e = n − 2H (n = 2 or 4), in double-double.
+/// g(ζ, e) for e = n − 2H (n = 2 or 4), in double-double: (ζ^e − 1)/e for
+/// truncated moments, ζ^e/e for asymptotic ones.
 ///
 /// `zeta_pow_m2h` is ζ^(−2H), shared by both moments (only read where
 /// e·ln ζ > ½).
 ///
 /// Accuracy ~1–2 ulp for every ζ ≥ 1, 0 < H ≤ 1: below e·ln ζ = ½ through
-/// `expm1` (well conditioned there); above through ζ^n·ζ^(−2H), where ζ^n is
-/// an exact double-double product and `powf` is within an ulp, so the error
-/// of ln ζ is never multiplied by a large exponent.
+/// `expm1` or `exp` (well conditioned there); above through ζ^n·ζ^(−2H),
+/// where ζ^n is an exact double-double product and `powf` is within an ulp,
+/// so the error of ln ζ is never multiplied by a large exponent.
 #[inline(always)]
-pub(crate) fn g(zeta: f64, ln_zeta: f64, n: u32, hurst: f64, zeta_pow_m2h: f64) -> Dd {
+pub(crate) fn g(
+    moments: Moments,
+    zeta: f64,
+    ln_zeta: f64,
+    n: u32,
+    hurst: f64,
+    zeta_pow_m2h: f64,
+) -> Dd {
     let e = Dd::sum(n as f64, -2.0 * hurst);
+    let truncated = moments == Moments::Truncated;
     if e.hi == 0.0 {
-        return Dd::from_f64(ln_zeta);
+        return Dd::from_f64(if truncated { ln_zeta } else { f64::INFINITY });
     }
     let big_e = e.hi * ln_zeta;
     if big_e <= 0.5 {
-        return Dd::from_f64(big_e.exp_m1()).div(e);
+        let v = if truncated {
+            big_e.exp_m1()
+        } else {
+            big_e.exp()
+        };
+        return Dd::from_f64(v).div(e);
     }
     let z2 = Dd::prod(zeta, zeta);
     let zn = if n == 2 { z2 } else { z2.mul(z2) };
@@ -108,12 +125,23 @@ pub(crate) fn g(zeta: f64, ln_zeta: f64, n: u32, hurst: f64, zeta_pow_m2h: f64) 
         // ζ^n overflowed on its own; ζ^e itself may still be finite.
         ze = Dd::from_f64(zeta.powf(e.hi));
     }
-    ze.add(Dd::from_f64(-1.0)).div(e)
+    if truncated {
+        ze = ze.add(Dd::from_f64(-1.0));
+    }
+    ze.div(e)
 }
 
-/// ln g(ζ, e), finite for every ζ > 1 even where g overflows.
-pub(crate) fn ln_g(ln_zeta: f64, n: u32, hurst: f64) -> f64 {
+/// ln g(ζ, e), finite for every ζ > 1 even where g overflows (+∞ for the
+/// asymptotic g at e = 0).
+pub(crate) fn ln_g(moments: Moments, ln_zeta: f64, n: u32, hurst: f64) -> f64 {
     let e = n as f64 - 2.0 * hurst;
+    if moments == Moments::Asymptotic {
+        return if e == 0.0 {
+            f64::INFINITY
+        } else {
+            e * ln_zeta - e.ln()
+        };
+    }
     if e == 0.0 {
         return ln_zeta.ln();
     }
@@ -128,19 +156,22 @@ pub(crate) fn ln_g(ln_zeta: f64, n: u32, hurst: f64) -> f64 {
 /// The pieces shared by the spectrum and the indices.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Core {
+    pub moments: Moments,
     pub ln_zeta: f64,
+    /// m0/h_rms²: 1 − ζ^(−2H) (truncated) or 1 (asymptotic).
+    pub f0: f64,
     pub g2: Dd,
     pub g4: Dd,
 }
 
 impl Core {
-    pub fn of(p: &Params) -> Core {
-        Core::new(p, true)
+    pub fn of(p: &Params, moments: Moments) -> Core {
+        Core::new(p, moments, true)
     }
 
     /// Without `with_g4`, g4 is left 0: for callers that need only m2.
     #[inline(always)]
-    pub fn new(p: &Params, with_g4: bool) -> Core {
+    pub fn new(p: &Params, moments: Moments, with_g4: bool) -> Core {
         let (zeta, hu) = (p.zeta(), p.hurst());
         let ln_zeta = zeta.ln();
         // e·ln ζ > ½ for either moment iff it is for m4 (the larger exponent).
@@ -150,22 +181,33 @@ impl Core {
             f64::NAN
         };
         Core {
+            moments,
             ln_zeta,
-            g2: g(zeta, ln_zeta, 2, hu, pw),
+            f0: match moments {
+                Moments::Truncated => -(-2.0 * hu * ln_zeta).exp_m1(),
+                Moments::Asymptotic => 1.0,
+            },
+            g2: g(moments, zeta, ln_zeta, 2, hu, pw),
             g4: if with_g4 {
-                g(zeta, ln_zeta, 4, hu, pw)
+                g(moments, zeta, ln_zeta, 4, hu, pw)
             } else {
                 Dd::from_f64(0.0)
             },
         }
     }
+
+    /// ln g for moment n, beyond the f64 range too.
+    pub fn ln_g(&self, n: u32, hurst: f64) -> f64 {
+        ln_g(self.moments, self.ln_zeta, n, hurst)
+    }
 }
 
 impl Spectrum {
-    /// All moments of `p`. Values beyond the f64 range come out as 0 or ∞,
-    /// never NaN; ζ = 1 gives m2 = m4 = 0 and R_s = ∞.
-    pub fn of(p: &Params) -> Spectrum {
-        Spectrum::from_core(p, &Core::of(p))
+    /// All moments of `p` under the `moments` convention. Values beyond the
+    /// f64 range come out as 0 or ∞, never NaN; with truncated moments ζ = 1
+    /// gives m2 = m4 = 0 and R_s = ∞, with asymptotic ones H = 1 gives m2 = ∞.
+    pub fn of(p: &Params, moments: Moments) -> Spectrum {
+        Spectrum::from_core(p, &Core::of(p, moments))
     }
 
     pub(crate) fn from_core(p: &Params, c: &Core) -> Spectrum {
@@ -177,16 +219,15 @@ impl Spectrum {
         let g4 = c.g4.to_f64();
         let hq = h * q0;
         let hq2 = hq * q0;
-        let frac0 = -(-2.0 * hu * c.ln_zeta).exp_m1();
         let m4_unit = 0.75 * hu * g4; // m4 / (h q0²)²
         Spectrum {
             z: (h * q0.powf(hu)).powi(2) * hu / std::f64::consts::PI,
-            m0: h * h * frac0,
+            m0: h * h * c.f0,
             m2: hq * hq * hu * g2,
             m4: hq2 * hq2 * m4_unit,
             r_s: 0.375 * (std::f64::consts::PI / m4_unit).sqrt() / hq2,
             lambda1: std::f64::consts::TAU / (p.zeta() * q0),
-            h_rms_actual: h * frac0.sqrt(),
+            h_rms_actual: h * c.f0.sqrt(),
             rms_slope: hq * (2.0 * hu * g2).sqrt(),
             rms_curvature: std::f64::consts::SQRT_2 * hq2 * (hu * g4).sqrt(),
         }
@@ -225,12 +266,11 @@ pub(crate) struct Logs {
 impl Logs {
     pub fn of(p: &Params, c: &Core) -> Logs {
         let (lh, lq, hu) = (p.h_rms().ln(), p.q0().ln(), p.hurst());
-        let frac0 = -(-2.0 * hu * c.ln_zeta).exp_m1();
         Logs {
             z: 2.0 * lh + hu.ln() + 2.0 * hu * lq - std::f64::consts::PI.ln(),
-            m0: 2.0 * lh + frac0.ln(),
-            m2: 2.0 * lh + 2.0 * lq + hu.ln() + ln_g(c.ln_zeta, 2, hu),
-            m4: 0.75f64.ln() + 2.0 * lh + 4.0 * lq + hu.ln() + ln_g(c.ln_zeta, 4, hu),
+            m0: 2.0 * lh + c.f0.ln(),
+            m2: 2.0 * lh + 2.0 * lq + hu.ln() + c.ln_g(2, hu),
+            m4: 0.75f64.ln() + 2.0 * lh + 4.0 * lq + hu.ln() + c.ln_g(4, hu),
         }
     }
 

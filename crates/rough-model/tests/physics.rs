@@ -4,7 +4,7 @@
 use proptest::prelude::*;
 use rough_model::slopes::forms;
 use rough_model::{
-    closed_form, exact, persson_elastic, Axis, Curves, Model, ParamValues, Params, Scene,
+    closed_form, exact, persson_elastic, Axis, Curves, Model, Moments, ParamValues, Params, Scene,
     SceneSpec, Slopes, Surface, Sweep,
 };
 
@@ -100,7 +100,9 @@ proptest! {
         hu in 1e-6f64..=1.0,
         rs in prop_oneof![Just(0.0), (-300.0f64..300.0).prop_map(|e| 10f64.powf(e))],
         q0 in -300.0f64..300.0,
+        asymptotic in any::<bool>(),
     ) {
+        let moments = if asymptotic { Moments::Asymptotic } else { Moments::Truncated };
         let p = Params::new(ParamValues {
             h0_over_e: 10f64.powf(h0),
             h_rms: 10f64.powf(h),
@@ -109,7 +111,7 @@ proptest! {
             r_star: rs,
             q0: 10f64.powf(q0),
         }).unwrap();
-        let s = Surface::of(&p);
+        let s = Surface::of(&p, moments);
         let sp = s.spectrum;
         let ix = s.indices;
         for (name, v) in [
@@ -181,6 +183,7 @@ fn scene(preset: &str, size_effect: bool, h_rms: f64, h0: f64, to: f64) -> Scene
         sweep: Sweep::new(Axis::Zeta, 1.0, to).unwrap(),
         size_effect,
         model: Model::Exact,
+        moments: Moments::Truncated,
         curves: Curves::ALL,
         points: 400,
     })
@@ -245,7 +248,9 @@ proptest! {
         rs in -6.0f64..-2.0,
         se in any::<bool>(),
         closed in any::<bool>(),
+        asymptotic in any::<bool>(),
     ) {
+        let moments = if asymptotic { Moments::Asymptotic } else { Moments::Truncated };
         let base = Params::new(ParamValues {
             h0_over_e: 10f64.powf(h0),
             h_rms: 10f64.powf(h),
@@ -260,13 +265,14 @@ proptest! {
             sweep: Sweep::new(ax, from, to).unwrap(),
             size_effect: se,
             model,
+            moments,
             curves: Curves::ALL,
             points: 37,
         };
         let s = Scene::compute(&spec).unwrap();
         for i in 0..spec.points {
             let p = base.with(ax, s.x[i]).unwrap();
-            let (psi, hr) = rough_model::psi_in_use(&p, se);
+            let (psi, hr) = rough_model::psi_in_use(&p, se, moments);
             let sl = rough_model::slopes(model, psi);
             let close = |a: f64, b: f64| rel(a, b) < 1e-13 || (a.abs() < 1e-300 && b.abs() < 1e-300);
             prop_assert!(close(s.psi[i], psi.to_f64()), "psi at {p:?}: {} vs {:?}", s.psi[i], psi);
@@ -277,4 +283,68 @@ proptest! {
             prop_assert!(close(s.persson_elastic[i], persson_elastic(psi)), "persson at {p:?}");
         }
     }
+}
+
+/// The asymptotic m2 ∝ ζ^(2−2H)/(2−2H) is infinite at H = 1: a documented
+/// infinity (fully plastic slopes), never NaN, and refused by `Moments::check`.
+#[test]
+fn asymptotic_moments_at_hurst_one() {
+    let p = Params::new(ParamValues {
+        h0_over_e: 1e-2,
+        h_rms: 2e-8,
+        zeta: 128.0,
+        hurst: 1.0,
+        r_star: 1e-3,
+        q0: 1e5,
+    })
+    .unwrap();
+    let s = Surface::of(&p, Moments::Asymptotic);
+    assert_eq!(s.spectrum.m2, f64::INFINITY);
+    assert!(s.spectrum.m4.is_finite() && s.spectrum.m4 > 0.0);
+    assert_eq!(s.indices.psi_p, f64::INFINITY);
+    assert_eq!(s.indices.psi_star, f64::INFINITY);
+    for se in [false, true] {
+        let sl = rough_model::slopes(Model::Exact, s.indices.psi_in_use(se));
+        assert_eq!((sl.elastic, sl.plastic, sl.total), (0.0, 1.0, 1.0));
+    }
+    let msg = Moments::Asymptotic.check(&p).unwrap_err().to_string();
+    assert!(
+        msg.contains("hurst = 1") && msg.contains("moments: Truncated"),
+        "{msg}"
+    );
+    assert!(Moments::Truncated.check(&p).is_ok());
+    // A Hurst sweep ending at 1 ends on the same limit.
+    let scene = Scene::compute(&SceneSpec {
+        base: p,
+        sweep: Sweep::new(Axis::Hurst, 0.5, 1.0).unwrap(),
+        size_effect: false,
+        model: Model::ClosedForm,
+        moments: Moments::Asymptotic,
+        curves: Curves::ALL,
+        points: 11,
+    })
+    .unwrap();
+    assert_eq!(scene.psi[10], f64::INFINITY);
+    assert_eq!((scene.elastic[10], scene.plastic[10]), (0.0, 1.0));
+    assert!(scene.psi[..10].iter().all(|v| v.is_finite()));
+}
+
+/// At ζ = 1 the asymptotic moments stay finite (the paper's curves start at
+/// finite values), while the truncated ones vanish (ψ = 0).
+#[test]
+fn asymptotic_moments_at_zeta_one() {
+    let p = Params::new(ParamValues {
+        h0_over_e: 1e-2,
+        h_rms: 2e-8,
+        zeta: 1.0,
+        hurst: 0.8,
+        r_star: 1e-3,
+        q0: 1e5,
+    })
+    .unwrap();
+    let t = Surface::of(&p, Moments::Truncated);
+    let a = Surface::of(&p, Moments::Asymptotic);
+    assert_eq!((t.indices.psi_p, t.spectrum.r_s), (0.0, f64::INFINITY));
+    assert!(a.indices.psi_p > 0.0 && a.spectrum.r_s.is_finite());
+    assert!(a.indices.hardness_ratio > 1.0);
 }

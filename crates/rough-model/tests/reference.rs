@@ -5,7 +5,7 @@ mod common;
 
 use common::{tol, Report, Table};
 use rough_model::{
-    closed_form, exact, persson_elastic, slopes, Model, ParamValues, Params, Surface,
+    closed_form, exact, persson_elastic, slopes, Model, Moments, ParamValues, Params, Surface,
 };
 
 #[test]
@@ -48,6 +48,23 @@ fn check_values_of_model_md() {
         // MODEL.md prints 15 digits.
         r.check(name, "psi=1", got, want, 1e-14);
     }
+    let fig2 = Params::new(ParamValues {
+        h0_over_e: 1e-2,
+        h_rms: 19.816636488030044e-9,
+        zeta: 128.0,
+        hurst: 0.8,
+        r_star: 1e-3,
+        q0: 1e5,
+    })
+    .unwrap();
+    let psi_p = Surface::of(&fig2, Moments::Asymptotic).indices.psi_p;
+    r.check(
+        "asymptotic Psi_P",
+        "fig2, zeta=128",
+        psi_p,
+        0.522964172217328,
+        1e-14,
+    );
     r.finish("MODEL.md check values");
 }
 
@@ -65,7 +82,18 @@ fn params_of(t: &Table, row: &[String]) -> Params {
 
 #[test]
 fn spectrum_indices_and_slopes_from_parameters_match_reference() {
-    let t = Table::load("params.csv");
+    check_params_table("params.csv", Moments::Truncated);
+}
+
+#[test]
+fn asymptotic_moments_match_reference() {
+    check_params_table("params_asymptotic.csv", Moments::Asymptotic);
+}
+
+/// Every output of `Surface::of` under `moments`, and both models' slopes at
+/// Ψ_P and Ψ*, against one table of the reference.
+fn check_params_table(file: &str, moments: Moments) {
+    let t = Table::load(file);
     let mut r = Report::default();
     for row in &t.rows {
         let p = params_of(&t, row);
@@ -74,7 +102,7 @@ fn spectrum_indices_and_slopes_from_parameters_match_reference() {
             "(h0_over_e={:e}, h_rms={:e}, zeta={:e}, hurst={}, r_star={:e}, q0={:e})",
             v.h0_over_e, v.h_rms, v.zeta, v.hurst, v.r_star, v.q0
         );
-        let s = Surface::of(&p);
+        let s = Surface::of(&p, moments);
         let (sp, ix) = (s.spectrum, s.indices);
         let mut chk = |name: &str, got: f64| {
             r.check(name, &input, got, t.get(row, name).unwrap(), tol::CONTRACT)
@@ -109,5 +137,5 @@ fn spectrum_indices_and_slopes_from_parameters_match_reference() {
             (want, got) => panic!("psi_star_asym at {input}: got {got:?}, want {want:?}"),
         }
     }
-    r.finish("params.csv");
+    r.finish(file);
 }
