@@ -9,13 +9,8 @@ use roughtui::presets;
 fn spec(preset: &str, model: Model) -> SceneSpec {
     let s = presets::load(preset).expect("built-in preset");
     SceneSpec {
-        base: s.params,
-        sweep: s.sweep,
-        size_effect: s.size_effect,
         model,
-        moments: rough_model::Moments::Truncated,
-        curves: Curves::ALL,
-        points: 400,
+        ..s.scene_spec(Curves::ALL, 400)
     }
 }
 

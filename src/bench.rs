@@ -428,13 +428,8 @@ pub fn render_table(rows: &[Row]) -> String {
 fn time_scene(passes: u32) -> anyhow::Result<f64> {
     let state = crate::presets::load("fig2")?;
     let spec = SceneSpec {
-        base: state.params,
-        sweep: state.sweep,
-        size_effect: state.size_effect,
         model: rough_model::Model::Exact,
-        moments: rough_model::Moments::Truncated,
-        curves: Curves::ALL,
-        points: 400,
+        ..state.scene_spec(Curves::ALL, 400)
     };
     Scene::compute(&spec)?;
     let mut samples: Vec<f64> = (0..passes.max(1) * 4)

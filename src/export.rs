@@ -22,13 +22,8 @@ pub fn write_csv(
     model: Option<Model>,
 ) -> anyhow::Result<()> {
     let spec = SceneSpec {
-        base: state.params,
-        sweep: state.sweep,
-        size_effect: state.size_effect,
         model: model.unwrap_or(state.model),
-        moments: rough_model::Moments::Truncated,
-        curves: Curves::ALL,
-        points,
+        ..state.scene_spec(Curves::ALL, points)
     };
     // Fail before the header if the request itself is bad.
     Scene::compute_range(&spec, 0..0)?;

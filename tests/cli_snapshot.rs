@@ -165,7 +165,32 @@ fn too_large() {
 fn deeply_nested() {
     case(
         "(".repeat(1 << 20),
-        &["line 1, column 17", "nested more than 16 deep"],
+        &["line 1, column 2", "expected a field name"],
+    );
+    case(
+        with("false", &"{".repeat(1 << 19)),
+        &["line 5, column 17", "size_effect", "expected true or false"],
+    );
+}
+
+#[test]
+fn bad_moments_and_captions() {
+    let add = |field: &str| with("model: Exact,", &format!("model: Exact, {field},"));
+    case(
+        add("moments: Paper"),
+        &["line 7", "unknown moments `Paper`", "Truncated, Asymptotic"],
+    );
+    case(
+        add("moments: Asymptotic").replace("hurst: 0.8", "hurst: 1.0"),
+        &["hurst = 1 needs moments: Truncated", "infinite at H = 1"],
+    );
+    case(
+        add("caption: \"\\u{1b}]0;pwned\\u{7}\""),
+        &["caption contains the control character U+001B"],
+    );
+    case(
+        add(&format!("caption: \"{}\"", "x".repeat(301))),
+        &["caption is 301 characters long", "at most 300"],
     );
 }
 

@@ -3,7 +3,7 @@
 
 use proptest::prelude::*;
 use proptest::sample::select;
-use rough_model::{Axis, Model, ParamValues, Params, Sweep};
+use rough_model::{Axis, Model, Moments, ParamValues, Params, Sweep};
 use roughtui::snapshot::{load_file, save_new, State};
 
 /// Positive finite values, subnormals and extremes included.
@@ -78,9 +78,20 @@ fn state() -> impl Strategy<Value = State> {
         any::<bool>(),
         sweep(),
         prop_oneof![Just(Model::Exact), Just(Model::ClosedForm)],
+        // Quotes, backslashes and non-ASCII text included.
+        prop::option::of("[^\\p{Cc}]{0,300}"),
+        prop_oneof![Just(Moments::Truncated), Just(Moments::Asymptotic)],
     )
         .prop_map(
-            |(name, (h0_over_e, h_rms, zeta, hurst, r_star, q0), size_effect, sweep, model)| {
+            |(
+                name,
+                (h0_over_e, h_rms, zeta, hurst, r_star, q0),
+                size_effect,
+                sweep,
+                model,
+                caption,
+                moments,
+            )| {
                 let params = Params::new(ParamValues {
                     h0_over_e,
                     h_rms,
@@ -90,19 +101,29 @@ fn state() -> impl Strategy<Value = State> {
                     q0,
                 })
                 .expect("generated in the domain");
+                // H = 1 has no asymptotic moments: such a state is refused.
+                let moments = if hurst == 1.0 {
+                    Moments::Truncated
+                } else {
+                    moments
+                };
                 State {
                     name,
+                    caption,
                     params,
                     size_effect,
                     sweep,
                     model,
+                    moments,
                 }
             },
         )
 }
 
 /// Every float compared by its bits (so -0.0 and 0.0 differ).
-fn bits(s: &State) -> (String, [u64; 8], bool, Axis, Model) {
+type Bits = (String, Option<String>, [u64; 8], bool, Axis, Model, Moments);
+
+fn bits(s: &State) -> Bits {
     let v = s.params.values();
     let f = [
         v.h0_over_e,
@@ -116,10 +137,12 @@ fn bits(s: &State) -> (String, [u64; 8], bool, Axis, Model) {
     ];
     (
         s.name.clone(),
+        s.caption.clone(),
         f.map(f64::to_bits),
         s.size_effect,
         s.sweep.axis(),
         s.model,
+        s.moments,
     )
 }
 
@@ -169,7 +192,7 @@ proptest! {
     }
 }
 
-const TOKENS: [&str; 20] = [
+const TOKENS: [&str; 23] = [
     "(",
     ")",
     "[",
@@ -190,4 +213,7 @@ const TOKENS: [&str; 20] = [
     "\\u{1b}",
     "\u{feff}",
     "version: 2,",
+    "caption: \"",
+    "moments: Asymptotic,",
+    "hurst: 1.0,",
 ];

@@ -85,6 +85,23 @@ fn the_saved_text_is_schema_v1() {
 }
 
 #[test]
+fn optional_fields_are_written_only_when_set() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut s = fig("fig2");
+    s.caption = Some("Figure 2: \"slopes\" against ζ".into());
+    s.moments = rough_model::Moments::Asymptotic;
+    let p = save_new(dir.path(), "fig2", &s).unwrap();
+    assert_eq!(
+        std::fs::read_to_string(&p).unwrap(),
+        "(\n    version: 1,\n    name: \"fig2\",\n    caption: \"Figure 2: \\\"slopes\\\" against ζ\",\n    \
+         params: (h0_over_e: 0.01, h_rms: 2e-8, zeta: 128.0, hurst: 0.8, r_star: 0.001, q0: 100000.0),\n    \
+         size_effect: false,\n    sweep: (axis: Zeta, from: 1.0, to: 10000.0),\n    model: Exact,\n    \
+         moments: Asymptotic,\n)\n"
+    );
+    assert_eq!(load_file(&p).unwrap(), s);
+}
+
+#[test]
 fn read_only_folder_is_an_error_naming_the_folder() {
     use std::os::unix::fs::PermissionsExt;
     let tmp = tempfile::tempdir().unwrap();
@@ -216,5 +233,18 @@ fn a_state_that_could_not_be_loaded_back_is_not_saved() {
         save_new(dir.path(), "x", &s).unwrap_err().to_string(),
         "cannot save snapshot: name contains the control character U+000A: it must be printable text"
     );
+    let mut s = fig("fig2");
+    s.caption = Some("x".repeat(301));
+    assert_eq!(
+        save_new(dir.path(), "x", &s).unwrap_err().to_string(),
+        "cannot save snapshot: caption is 301 characters long: it must be at most 300"
+    );
+    let mut s = fig("fig2");
+    s.params = s.params.with(rough_model::Axis::Hurst, 1.0).unwrap();
+    s.moments = rough_model::Moments::Asymptotic;
+    assert!(save_new(dir.path(), "x", &s)
+        .unwrap_err()
+        .to_string()
+        .starts_with("cannot save snapshot: hurst = 1 needs moments: Truncated"));
     assert_eq!(files_in(dir.path()), Vec::<String>::new());
 }

@@ -221,24 +221,11 @@ impl App {
     }
 
     fn curve_key(&self, points: usize) -> CurveKey {
-        let axis = self.state.sweep.axis();
+        let mut spec = self.state.scene_spec(Curves::ALL, points);
         // The swept value only moves the marker: normalize it out of the key.
-        let base = self
-            .state
-            .params
-            .with(axis, self.state.sweep.from())
-            .unwrap_or(self.state.params);
-        CurveKey {
-            spec: SceneSpec {
-                base,
-                sweep: self.state.sweep,
-                size_effect: self.state.size_effect,
-                model: self.state.model,
-                moments: rough_model::Moments::Truncated,
-                curves: Curves::ALL,
-                points,
-            },
-        }
+        let s = &self.state.sweep;
+        spec.base = spec.base.with(s.axis(), s.from()).unwrap_or(spec.base);
+        CurveKey { spec }
     }
 
     /// Recomputes the readout, and the curves when what they depend on changed.

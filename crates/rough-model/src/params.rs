@@ -9,6 +9,11 @@ use std::fmt;
 
 /// The raw, unvalidated inputs, in SI units. Build a [`Params`] from it.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize),
+    serde(deny_unknown_fields)
+)]
 pub struct ParamValues {
     /// Macroscopic hardness over composite modulus, H0/E (dimensionless).
     pub h0_over_e: f64,
