@@ -19,7 +19,7 @@
 //! # Reading
 //!
 //! [`load_file`] refuses, with one message that names the file and the
-//! problem ([`error`] builds it from ron's typed errors and the field path):
+//! problem (`error.rs` builds it from ron's typed errors and the field path):
 //! a missing, unreadable or non-regular file; more than [`MAX_BYTES`]
 //! (checked before parsing); text that is not UTF-8; RON syntax errors,
 //! unknown, missing or duplicated fields and values of the wrong type (with
@@ -37,7 +37,7 @@
 //!
 //! # Writing
 //!
-//! [`save_new`] never replaces a file (see [`save`]). Optional fields at their
+//! [`save_new`] never replaces a file (see `save.rs`). Optional fields at their
 //! defaults are not written, so a snapshot without a caption and with
 //! truncated moments is byte for byte what earlier builds wrote.
 
@@ -101,7 +101,7 @@ pub struct SweepFile {
 
 /// Reads any integer, so that `version: 2` or `version: -1` is reported as an
 /// unknown version rather than a type or range error. The refusal carries
-/// only the number; [`error`] words it.
+/// only the number; `error.rs` words it.
 fn de_version<'de, D: Deserializer<'de>>(d: D) -> Result<u32, D::Error> {
     match i64::deserialize(d)? {
         v if v == i64::from(VERSION) => Ok(VERSION),
