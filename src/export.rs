@@ -4,6 +4,7 @@ use std::io::Write;
 
 use rough_model::{Curves, Model, Scene, SceneSpec};
 
+use crate::csv_number;
 use crate::snapshot::State;
 
 /// The CSV header, fixed by the command's contract.
@@ -30,7 +31,7 @@ pub fn write_csv(
     writeln!(out, "{HEADER}")?;
     // Formatting floats costs ~5x computing them: spread both over the cores.
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get().min(8));
-    let mut bufs = vec![Vec::new(); threads];
+    let mut bufs = vec![String::new(); threads];
     let mut start = 0;
     while start < points {
         let end = (start + BLOCK).min(points);
@@ -38,7 +39,7 @@ pub fn write_csv(
         if threads == 1 || end - start < 1024 {
             bufs[0].clear();
             format_rows(&spec, start..end, &mut bufs[0])?;
-            out.write_all(&bufs[0])?;
+            out.write_all(bufs[0].as_bytes())?;
         } else {
             std::thread::scope(|scope| -> anyhow::Result<()> {
                 let jobs: Vec<_> = bufs
@@ -61,7 +62,7 @@ pub fn write_csv(
                 Ok(())
             })?;
             for buf in &bufs {
-                out.write_all(buf)?;
+                out.write_all(buf.as_bytes())?;
             }
         }
         start = end;
@@ -70,26 +71,31 @@ pub fn write_csv(
     Ok(())
 }
 
-/// Rows `range` of the scene as CSV lines, numbers printed with `{}`
-/// (shortest round-trip, `inf` for infinity).
+/// Rows `range` of the scene as CSV lines, numbers in the form of
+/// [`csv_number`].
 fn format_rows(
     spec: &SceneSpec,
     range: std::ops::Range<usize>,
-    buf: &mut Vec<u8>,
+    buf: &mut String,
 ) -> anyhow::Result<()> {
     let s = Scene::compute_range(spec, range)?;
     for i in 0..s.x.len() {
-        writeln!(
-            buf,
-            "{},{},{},{},{},{},{}",
+        let row = [
             s.x[i],
             s.psi[i],
             s.hardness_ratio[i],
             s.elastic[i],
             s.plastic[i],
             s.total[i],
-            s.persson_elastic[i]
-        )?;
+            s.persson_elastic[i],
+        ];
+        for (k, v) in row.into_iter().enumerate() {
+            if k > 0 {
+                buf.push(',');
+            }
+            csv_number::push(buf, v);
+        }
+        buf.push('\n');
     }
     Ok(())
 }

@@ -19,6 +19,10 @@ pub struct Sweep {
     to: f64,
     /// ln from, ln to for log axes (from, to for linear ones).
     ends: (f64, f64),
+    /// log10 from, log10 to when both ends are exact powers of ten: the
+    /// grid's whole decades are then returned exactly (10, not
+    /// 10.000000000000002).
+    decades: Option<(f64, f64)>,
 }
 
 /// Why a sweep or scene request was rejected.
@@ -92,11 +96,16 @@ impl Sweep {
         } else {
             (from, to)
         };
+        let decades = match (decade_of(from), decade_of(to)) {
+            (Some(a), Some(b)) if axis.is_log() => Some((f64::from(a), f64::from(b))),
+            _ => None,
+        };
         Ok(Sweep {
             axis,
             from,
             to,
             ends,
+            decades,
         })
     }
 
@@ -111,7 +120,8 @@ impl Sweep {
     }
 
     /// The value at fraction `t` in [0, 1] of the range (log or linear); the
-    /// ends are returned exactly.
+    /// ends are returned exactly, and so are whole decades inside a sweep
+    /// between powers of ten.
     pub fn at(&self, t: f64) -> f64 {
         if t <= 0.0 {
             return self.from;
@@ -121,6 +131,13 @@ impl Sweep {
         }
         let (a, b) = self.ends;
         let v = if self.axis.is_log() {
+            if let Some((da, db)) = self.decades {
+                let d = da + (db - da) * t;
+                // Grid points lie far more than 1e-9 decades apart.
+                if (d - d.round()).abs() < 1e-9 {
+                    return power_of_ten(d.round() as i32);
+                }
+            }
             (a + (b - a) * t).exp()
         } else {
             a + (b - a) * t
@@ -143,6 +160,22 @@ impl Sweep {
         let last = n.saturating_sub(1).max(1) as f64;
         (0..n).map(move |i| self.at(i as f64 / last))
     }
+}
+
+/// 10^k correctly rounded (k within the f64 range); cold: only whole
+/// decades of a sweep come here.
+#[cold]
+fn power_of_ten(k: i32) -> f64 {
+    format!("1e{k}").parse().unwrap_or(f64::NAN)
+}
+
+/// k when `v` is exactly the double nearest 10^k.
+fn decade_of(v: f64) -> Option<i32> {
+    if !(v > 0.0 && v.is_finite()) {
+        return None;
+    }
+    let k = v.log10().round() as i32;
+    (power_of_ten(k) == v).then_some(k)
 }
 
 /// Which curves to compute.

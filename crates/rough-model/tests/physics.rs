@@ -348,3 +348,22 @@ fn asymptotic_moments_at_zeta_one() {
     assert!(a.indices.psi_p > 0.0 && a.spectrum.r_s.is_finite());
     assert!(a.indices.hardness_ratio > 1.0);
 }
+
+/// Sweeps between powers of ten hit the whole decades exactly, so that
+/// exported grids read 10, 100 … rather than 10.000000000000002.
+#[test]
+fn sweeps_between_decades_hit_them_exactly() {
+    let s = Sweep::new(Axis::Zeta, 1.0, 1e4).unwrap();
+    let v: Vec<f64> = s.points(9).collect();
+    assert_eq!(v[0], 1.0);
+    assert_eq!(v[2], 10.0);
+    assert_eq!(v[4], 100.0);
+    assert_eq!(v[6], 1000.0);
+    assert_eq!(v[8], 1e4);
+    let s = Sweep::new(Axis::H0OverE, 1e-4, 1e-1).unwrap();
+    let v: Vec<f64> = s.points(301).collect();
+    assert_eq!((v[100], v[200]), (1e-3, 1e-2));
+    // Off-decade ends keep the plain log grid.
+    let s = Sweep::new(Axis::Zeta, 2.0, 2e4).unwrap();
+    assert!((s.at(0.25) / 20.0 - 1.0).abs() < 1e-15);
+}
