@@ -151,7 +151,7 @@ pub(super) fn dotted(path: &serde_path_to_error::Path) -> String {
 
 fn classify(path: &str, code: ron::Error) -> ParseProblem {
     use ron::Error as E;
-    let within = |p: &str| p.to_string();
+    let at = path.to_string();
     match code {
         E::ExceededRecursionLimit => ParseProblem::TooDeep,
         E::Eof => ParseProblem::Eof,
@@ -166,23 +166,17 @@ fn classify(path: &str, code: ron::Error) -> ParseProblem {
                 _ => path,
             };
             ParseProblem::UnknownField {
-                within: within(parent),
+                within: parent.to_string(),
                 found,
                 expected,
             }
         }
-        E::MissingStructField { field, .. } => ParseProblem::MissingField {
-            within: within(path),
-            field,
-        },
-        E::DuplicateStructField { field, .. } => ParseProblem::DuplicateField {
-            within: within(path),
-            field,
-        },
+        E::MissingStructField { field, .. } => ParseProblem::MissingField { within: at, field },
+        E::DuplicateStructField { field, .. } => ParseProblem::DuplicateField { within: at, field },
         E::NoSuchEnumVariant {
             expected, found, ..
         } => ParseProblem::UnknownVariant {
-            field: within(path),
+            field: at,
             found,
             expected,
         },
@@ -203,19 +197,12 @@ fn classify(path: &str, code: ron::Error) -> ParseProblem {
                     Some(g),
                 ) => g,
                 (E::ExpectedIdentifier, Some(Expected::Group(_))) => {
-                    return ParseProblem::FieldName {
-                        within: within(path),
-                    }
+                    return ParseProblem::FieldName { within: at }
                 }
-                (error, _) => {
-                    return ParseProblem::Syntax {
-                        within: within(path),
-                        error,
-                    }
-                }
+                (error, _) => return ParseProblem::Syntax { within: at, error },
             };
             ParseProblem::WrongType {
-                field: within(path),
+                field: at,
                 expected,
             }
         }
@@ -426,10 +413,7 @@ impl fmt::Display for SnapshotError {
                 column,
                 problem,
             } => write!(f, "line {line}, column {column}: {problem}"),
-            SnapshotError::Version(v) => write!(
-                f,
-                "unknown snapshot version {v}: this build reads version {VERSION}"
-            ),
+            SnapshotError::Version(v) => ParseProblem::Version(Some(i64::from(*v))).fmt(f),
             SnapshotError::Invalid(e) => write!(f, "{e}"),
         }
     }
