@@ -86,7 +86,7 @@ pub struct Readout {
 
 impl Readout {
     pub fn of(state: &State) -> Readout {
-        let surface = Surface::of(&state.params, rough_model::Moments::Truncated);
+        let surface = Surface::of(&state.params, state.moments);
         let psi = surface.indices.psi_in_use(state.size_effect);
         Readout {
             surface,
