@@ -50,6 +50,10 @@ pub struct ExportArgs {
     /// Override the snapshot's model.
     #[arg(long, value_enum)]
     pub model: Option<ModelArg>,
+    /// Override the snapshot's spectrum moments: the truncated spectrum's
+    /// exact moments, or the paper's asymptotic ones (eq. 10).
+    #[arg(long, value_enum)]
+    pub moments: Option<MomentsArg>,
 }
 
 #[derive(Debug, Args, Clone)]
@@ -90,6 +94,21 @@ impl From<ModelArg> for rough_model::Model {
         match m {
             ModelArg::Exact => rough_model::Model::Exact,
             ModelArg::ClosedForm => rough_model::Model::ClosedForm,
+        }
+    }
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+pub enum MomentsArg {
+    Truncated,
+    Asymptotic,
+}
+
+impl From<MomentsArg> for rough_model::Moments {
+    fn from(m: MomentsArg) -> Self {
+        match m {
+            MomentsArg::Truncated => rough_model::Moments::Truncated,
+            MomentsArg::Asymptotic => rough_model::Moments::Asymptotic,
         }
     }
 }

@@ -2,7 +2,7 @@
 
 use std::io::Write;
 
-use rough_model::{Curves, Model, Scene, SceneSpec};
+use rough_model::{Curves, Scene, SceneSpec};
 
 use crate::csv_number;
 use crate::snapshot::State;
@@ -16,16 +16,8 @@ pub const HEADER: &str = "x,psi,hardness_ratio,elastic,plastic,total,persson_ela
 const BLOCK: usize = 1 << 14;
 
 /// Writes the CSV of `state` at `points` points (both ends included).
-pub fn write_csv(
-    out: &mut impl Write,
-    state: &State,
-    points: usize,
-    model: Option<Model>,
-) -> anyhow::Result<()> {
-    let spec = SceneSpec {
-        model: model.unwrap_or(state.model),
-        ..state.scene_spec(Curves::ALL, points)
-    };
+pub fn write_csv(out: &mut impl Write, state: &State, points: usize) -> anyhow::Result<()> {
+    let spec = state.scene_spec(Curves::ALL, points);
     // Fail before the header if the request itself is bad.
     Scene::compute_range(&spec, 0..0)?;
     writeln!(out, "{HEADER}")?;

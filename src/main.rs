@@ -33,10 +33,17 @@ fn is_broken_pipe(e: &anyhow::Error) -> bool {
 fn run(cli: Cli) -> anyhow::Result<()> {
     match cli.command {
         Some(Command::Export(a)) => {
-            let state = load_source(&a.source.into())?;
+            let mut state = load_source(&a.source.into())?;
+            if let Some(m) = a.model {
+                state.model = m.into();
+            }
+            if let Some(m) = a.moments {
+                state.moments = m.into();
+            }
+            state.check()?;
             let stdout = std::io::stdout();
             let mut out = BufWriter::with_capacity(1 << 16, stdout.lock());
-            export::write_csv(&mut out, &state, a.points as usize, a.model.map(Into::into))
+            export::write_csv(&mut out, &state, a.points as usize)
         }
         Some(Command::Bench(a)) => roughtui::bench::run(&a),
         None => {

@@ -189,7 +189,7 @@ fn explorer_under_tmux() {
     p.wait_text("ζ = 188");
     p.keys(&["h", "H"]);
     p.wait_text("ζ = 168");
-    p.keys(&["k", "l"]); // h_rms up from 20 nm to 10^-7.5 m
+    p.keys(&["k", "l"]); // h_rms up from 19.8 nm to 10^-7.5 m
     let s = p.wait_text("31.6 nm");
     assert!(s.contains("[fig2*]"), "{s}");
 
@@ -206,7 +206,7 @@ fn explorer_under_tmux() {
     p.keys(&["x"]);
     p.wait_text("sweep H 0.05…1");
     p.keys(&["m"]);
-    p.wait_text("· closed form ·");
+    p.wait_text("· exact ·"); // the presets use the paper's closed form
     p.keys(&["e"]);
     p.wait_text("size effect on");
     p.keys(&["?"]);
