@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Extra mpmath reference points for the finite-load areas (hard corners).
 
-Writes crates/rough-model/tests/data/areas_extra.csv (same columns as areas.csv):
+Writes crates/rough-study/data/areas_extra.csv (same columns as areas.csv):
 switch points of the Rust forms (exact: psi^2 = 1/pi; closed: x = 1/psi = 0.8;
 interval masses: 2 k rho / psi^2 = 1), loads next to 0 and 1, psi at the
 underflow edges, and a seeded log-uniform sample.
@@ -25,7 +25,7 @@ import struct
 import mpmath
 from mpmath import mp, mpf
 
-OUT = "crates/rough-model/tests/data/areas_extra.csv"
+OUT = "crates/rough-study/data/areas_extra.csv"
 
 
 BIG = mpf(10) ** 6   # erf(z) = +-1 and e^(-z^2/2) = 0 far beyond any working precision

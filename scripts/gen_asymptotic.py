@@ -5,7 +5,7 @@ Run from the repository root:
 
     python3 scripts/gen_asymptotic.py
 
-It rewrites, deterministically, crates/rough-model/tests/data/params_asymptotic.csv:
+It rewrites, deterministically, crates/rough-study/data/params_asymptotic.csv:
 the columns of params.csv (spectrum, hardness, indices, slopes at the indices)
 with the moments of eq. 10 (MODEL.md, "Asymptotic"):
 

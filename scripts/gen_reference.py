@@ -5,7 +5,7 @@ Run from the repository root:
 
     python3 scripts/gen_reference.py
 
-It rewrites, deterministically, every file in crates/rough-model/tests/data/:
+It rewrites, deterministically, every file in crates/rough-study/data/:
 
     slopes.csv         initial slopes of the exact (theta) and closed-form models
     areas.csv          finite-load areas A/A0 of both models

@@ -54,7 +54,7 @@
 //! ψ → 0 at fixed ρ, where A_el → 1 for any p̄ > 0 (the initial elastic slope is
 //! infinite). ρ = 1 (p̄ = H), any ψ: the pressure starts on the plastic barrier,
 //! (0, 1, 1) in both models. Against the mpmath references
-//! (`tests/data/areas.csv`, `tests/data/areas_extra.csv`) every output is within
+//! (`areas.csv`, `areas_extra.csv` in `crates/rough-study/data/`) every output is within
 //! 1e-12 relative (values below 1e-300 may be 0; measured at most 5e-15, the
 //! worst being the closed-form elastic area next to x = 0.8); never NaN;
 //! A(ρ)/ρ → the initial slopes of [`mod@crate::slopes`] as ρ → 0. The closed-form

@@ -17,18 +17,19 @@
 //! ψ enters as a double-double ([`Dd`]): exponents reach ~1400 where slopes
 //! approach 1e-300, and each ulp of ψ there costs ~1400 ulp of the slope.
 //!
-//! Accuracy (against the mpmath reference in `tests/data/slopes.csv`): within
-//! 1e-12 relative for every ψ ≥ 0; results below 1e-300 may be 0. ψ = 0 gives
-//! elastic = total = +∞, plastic = 0; ψ = ∞ gives elastic = 0,
-//! plastic = total = 1. Never NaN.
+//! Accuracy (against the mpmath reference `crates/rough-study/data/slopes.csv`):
+//! within 1e-12 relative for every ψ ≥ 0; results below 1e-300 may be 0.
+//! ψ = 0 gives elastic = total = +∞, plastic = 0; ψ = ∞ gives elastic = 0,
+//! plastic = total = 1. Never NaN. The series forms on their own, for
+//! comparison, are in `rough_study::forms`.
 
 use std::ops::{Add, Mul};
 
 use crate::dd::{Dd, PI2_HALF};
 use libm::erfc;
 
-/// √(2/π).
-const SQRT_2_OVER_PI: f64 = 0.7978845608028654;
+/// √(2/π), the prefactor of the elastic slope √(2/π)/ψ.
+pub const SQRT_2_OVER_PI: f64 = 0.7978845608028654;
 
 /// Which solution of the elasto-plastic problem.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -334,60 +335,5 @@ pub(crate) fn closed_form_sq(x: f64, s: Dd) -> Slopes {
 impl From<f64> for Dd {
     fn from(x: f64) -> Dd {
         Dd::from_f64(x)
-    }
-}
-
-/// The two series forms of the exact slopes on their own, with a fixed number
-/// of terms and plain f64 arithmetic: for comparison (tests, `roughtui bench`),
-/// not for use. Each converges only on its own side of x² ≈ π and loses
-/// digits on the other; [`exact`] picks per ψ.
-pub mod forms {
-    use super::{Slopes, SQRT_2_OVER_PI};
-
-    /// Image sums in x = 1/ψ, `terms` terms per sum:
-    /// S_tot = √(2/π)x(1 + 2Σ_{n=1..N} e^(−2n²x²)),
-    /// S_pl = 2√(2/π)x Σ_{j=0..N−1} e^(−(2j+1)²x²/2),
-    /// S_el = √(2/π)x(1 + 2Σ_{m=1..N} (−1)^m e^(−m²x²/2)).
-    pub fn image(psi: f64, terms: u32) -> Slopes {
-        let x = 1.0 / psi;
-        let u = x * x;
-        let (mut tot, mut pl, mut el) = (1.0, 0.0, 1.0);
-        for n in 1..=terms {
-            let n = f64::from(n);
-            tot += 2.0 * (-2.0 * n * n * u).exp();
-            let j = 2.0 * n - 1.0;
-            pl += 2.0 * (-j * j * u / 2.0).exp();
-            let sign = if (n as u64) % 2 == 1 { -1.0 } else { 1.0 };
-            el += sign * 2.0 * (-n * n * u / 2.0).exp();
-        }
-        let pref = SQRT_2_OVER_PI * x;
-        Slopes {
-            elastic: pref * el,
-            plastic: if pl == 0.0 { 0.0 } else { pref * pl },
-            total: pref * tot,
-        }
-    }
-
-    /// Fourier (Poisson-summed) sums in ψ, `terms` terms per sum:
-    /// S_tot = 1 + 2Σ_{k=1..K} e^(−π²k²ψ²/2), S_pl = 1 + 2Σ (−1)^k e^(…),
-    /// S_el = 4Σ_{k odd ≤ K} e^(…).
-    pub fn fourier(psi: f64, terms: u32) -> Slopes {
-        let a = std::f64::consts::PI.powi(2) * psi * psi / 2.0;
-        let (mut tot, mut pl, mut el) = (1.0, 1.0, 0.0);
-        for k in 1..=terms {
-            let t = (-a * f64::from(k * k)).exp();
-            tot += 2.0 * t;
-            if k % 2 == 1 {
-                pl -= 2.0 * t;
-                el += 4.0 * t;
-            } else {
-                pl += 2.0 * t;
-            }
-        }
-        Slopes {
-            elastic: el,
-            plastic: pl,
-            total: tot,
-        }
     }
 }

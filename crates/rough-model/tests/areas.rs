@@ -25,7 +25,7 @@ fn load(name: &str) -> Vec<Row> {
     let path = if name.starts_with('/') {
         name.to_string()
     } else {
-        format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"))
+        format!("{}/{name}", rough_study::DATA_DIR)
     };
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
     let mut rows = Vec::new();

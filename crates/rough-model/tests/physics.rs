@@ -2,11 +2,11 @@
 //! agreeing, and no NaN anywhere in the valid domain.
 
 use proptest::prelude::*;
-use rough_model::slopes::forms;
 use rough_model::{
     closed_form, exact, persson_elastic, Axis, Curves, Model, Moments, ParamValues, Params, Scene,
     SceneSpec, Slopes, Surface, Sweep,
 };
+use rough_study::forms;
 
 const SQRT_2_OVER_PI: f64 = 0.7978845608028654;
 

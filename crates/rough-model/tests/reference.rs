@@ -1,16 +1,14 @@
 //! Accuracy against the 50-digit mpmath reference (scripts/gen_reference.py):
 //! every output within 1e-12 relative, values below 1e-300 may be 0.
 
-mod common;
-
-use common::{tol, Report, Table};
 use rough_model::{
     closed_form, exact, persson_elastic, slopes, Model, Moments, ParamValues, Params, Surface,
 };
+use rough_study::{tol, Report, Table};
 
 #[test]
 fn slopes_of_both_models_match_reference() {
-    let t = Table::load("slopes.csv");
+    let t = Table::read("slopes.csv").unwrap();
     let mut r = Report::default();
     for row in &t.rows {
         let psi = t.get(row, "psi").unwrap();
@@ -68,7 +66,7 @@ fn check_values_of_model_md() {
     r.finish("MODEL.md check values");
 }
 
-fn params_of(t: &Table, row: &[String]) -> Params {
+fn params_of(t: &Table, row: &[Option<f64>]) -> Params {
     Params::new(ParamValues {
         h0_over_e: t.get(row, "h0_over_e").unwrap(),
         h_rms: t.get(row, "h_rms").unwrap(),
@@ -93,7 +91,7 @@ fn asymptotic_moments_match_reference() {
 /// Every output of `Surface::of` under `moments`, and both models' slopes at
 /// Ψ_P and Ψ*, against one table of the reference.
 fn check_params_table(file: &str, moments: Moments) {
-    let t = Table::load(file);
+    let t = Table::read(file).unwrap();
     let mut r = Report::default();
     for row in &t.rows {
         let p = params_of(&t, row);
