@@ -3,50 +3,30 @@
 use proptest::prelude::*;
 use rough_model::areas::forms;
 use rough_model::{areas, closed_form_areas, exact_areas, slopes, AreaError, Areas, Model};
+use rough_study::{rel_err, Table};
 
-/// Below this both values count as zero (the functions may underflow there).
-const TINY: f64 = 1e-300;
-
-fn rel_err(got: f64, want: f64) -> f64 {
-    if got == want || (got.abs() < TINY && want.abs() < TINY) {
-        0.0
-    } else {
-        (got - want).abs() / want.abs().max(TINY)
-    }
-}
-
+/// Reference rows: ψ, ρ and the six areas in the order of [`COLUMNS`].
 struct Row {
     psi: f64,
     rho: f64,
     want: [f64; 6],
 }
 
+/// `name` in `rough_study::DATA_DIR`, or an absolute path.
 fn load(name: &str) -> Vec<Row> {
-    let path = if name.starts_with('/') {
-        name.to_string()
-    } else {
-        format!("{}/{name}", rough_study::DATA_DIR)
+    let t = Table::read(name).unwrap_or_else(|e| panic!("{e}"));
+    let field = |row: &[Option<f64>], col: &str| {
+        t.get(row, col)
+            .unwrap_or_else(|| panic!("{name}: empty {col}"))
     };
-    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
-    let mut rows = Vec::new();
-    for line in text.lines() {
-        let line = line.trim();
-        if line.is_empty() || line.starts_with('#') || line.starts_with("psi") {
-            continue;
-        }
-        let v: Vec<f64> = line
-            .split(',')
-            .map(|s| s.parse().unwrap_or_else(|e| panic!("{path}: {s:?}: {e}")))
-            .collect();
-        assert_eq!(v.len(), 8, "{path}: {line}");
-        rows.push(Row {
-            psi: v[0],
-            rho: v[1],
-            want: [v[2], v[3], v[4], v[5], v[6], v[7]],
-        });
-    }
-    assert!(!rows.is_empty(), "{path}: no rows");
-    rows
+    t.rows
+        .iter()
+        .map(|row| Row {
+            psi: field(row, "psi"),
+            rho: field(row, "rho"),
+            want: COLUMNS.map(|c| field(row, c)),
+        })
+        .collect()
 }
 
 const COLUMNS: [&str; 6] = [
