@@ -64,7 +64,7 @@
 use std::f64::consts::{FRAC_1_SQRT_2, FRAC_2_SQRT_PI, PI};
 use std::fmt;
 
-use libm::{erf, erfc};
+use libm::erf;
 
 use crate::dd::{Dd, PI2_HALF};
 use crate::params::Shown;
@@ -164,20 +164,6 @@ pub fn areas(model: Model, psi: impl Into<Dd>, rho: f64) -> Result<Areas, AreaEr
     }
 }
 
-/// erfc(z) where z² = `z2` is known to double-double precision: the rounding of
-/// z, amplified ~2z² by the Gaussian tail, is taken out by
-/// erfc(z) = erfc(z_f)·e^(−(z² − z_f²)). 0 beyond z² = 760 (underflow).
-#[inline]
-fn erfc_sq(z2: Dd) -> f64 {
-    if z2.hi.is_nan() || z2.hi >= 760.0 {
-        return 0.0;
-    }
-    let zf = z2.hi.sqrt();
-    // |d| ≤ ulp(z²) < 2e-13 here, so e^(−d) = 1 − d to 1e-26.
-    let d = (z2 + Dd::prod(-zf, zf)).to_f64();
-    erfc(zf) * (1.0 - d)
-}
-
 /// 1/n for n < 64 (the Hermite recurrence divides by n every step).
 const INV_N: [f64; 64] = {
     let mut t = [0.0; 64];
@@ -197,12 +183,12 @@ fn interval(k: f64, rho: f64, w: Dd) -> f64 {
     let delta = 4.0 * k * rho * w.hi;
     if delta >= 1.0 {
         let a = Dd::sum(k, -rho);
-        let ea = erfc_sq(a * a * w);
+        let ea = (a * a * w).erfc_of_sqrt();
         if delta > 45.0 {
             return ea; // erfc(b) < e^(−45) erfc(a)
         }
         let b = Dd::sum(k, rho);
-        return (ea - erfc_sq(b * b * w)).max(0.0);
+        return (ea - (b * b * w).erfc_of_sqrt()).max(0.0);
     }
     // Midpoint m = k/r, half-width h = ρ/r, 2mh = δ/2 < 1/2, h² ≤ mh < 1/4:
     // E = (2/√π) e^(−m²) ∫_{−h}^{h} e^(−2mu − u²) du
@@ -263,17 +249,11 @@ fn exact_areas_unclamped(psi: Dd, rho: f64) -> Result<Areas, AreaError> {
     let s2 = psi * psi;
     let (elastic, plastic) = if s2.hi > PL_FOURIER_PSI2 {
         exact_fourier(s2, rho)
+    } else if s2.hi > EL_FOURIER_PSI2 {
+        let pl = images_plastic(half_inv_sq(psi), rho);
+        (exact_fourier(s2, rho).0, pl)
     } else {
-        let w = half_inv_sq(psi);
-        let pl = images_plastic(w, rho);
-        let el = if s2.hi > EL_FOURIER_PSI2 {
-            exact_fourier(s2, rho).0
-        } else if reflect(rho) == rho {
-            images_elastic(w, psi.hi, rho, Some(pl))
-        } else {
-            images_elastic(w, psi.hi, 1.0 - rho, None)
-        };
-        (el, pl)
+        exact_images(psi, rho)
     };
     Ok(Areas {
         elastic,
@@ -317,7 +297,7 @@ fn exact_images(psi: Dd, rho: f64) -> (f64, f64) {
 fn images_plastic(w: Dd, rho: f64) -> f64 {
     let mut pl = interval(1.0, rho, w);
     let floor = Floor::new(rho, w, pl);
-    for k in (3..2 * KMAX).step_by(2) {
+    for k in (3..2 * IMAGE_KMAX).step_by(2) {
         if floor.negligible(k as f64) {
             break;
         }
@@ -332,7 +312,7 @@ fn images_elastic(w: Dd, psi: f64, rp: f64, e1_plus: Option<f64>) -> f64 {
     let mut el = erf(over_r(rp, psi));
     // The alternating sum stays above a third of its first term.
     let floor = Floor::new(rp, w, el / 3.0);
-    for k in 1..KMAX {
+    for k in 1..IMAGE_KMAX {
         if floor.negligible(k as f64) {
             break;
         }
@@ -350,7 +330,11 @@ fn images_elastic(w: Dd, psi: f64, rp: f64, e1_plus: Option<f64>) -> f64 {
 
 /// Highest image index tried (reached only for ψ² near 1/π by the images,
 /// or by the tests through [`forms`]).
-const KMAX: u32 = 40;
+const IMAGE_KMAX: u32 = 40;
+
+/// Most terms of the sine series (reached only for q near 1, tiny ψ², by
+/// the tests through [`forms`]).
+const SINE_KMAX: u32 = 400;
 
 /// Decides when image terms E_k (k ≥ 1, decreasing in k) fall below 1e-18 of a
 /// sum of at least `acc`: E_k ≤ min(1, 4h/√π) e^(−(k−ρ)²/r²), h = ρ/r.
@@ -388,7 +372,6 @@ impl Floor {
 
 /// Sine series (elastic, plastic) for 0 < ρ < 1 from ψ² = `s2` > 0.
 fn exact_fourier(s2: Dd, rho: f64) -> (f64, f64) {
-    const KMAX: u32 = 400;
     let q = (PI2_HALF * s2).exp_neg();
     let rp = reflect(rho);
     let upper = rho > 0.5;
@@ -397,7 +380,7 @@ fn exact_fourier(s2: Dd, rho: f64) -> (f64, f64) {
     let (mut qk, mut step) = (q, q * q2); // q^(k²), q^(2k+1)
     let (mut s_prev, mut s_k) = (0.0, sin1); // sin((k−1)πρ'), sin(kπρ')
     let (mut el, mut mom) = (0.0, 0.0);
-    for k in 1..=KMAX {
+    for k in 1..=SINE_KMAX {
         let t = s_k * qk / k as f64;
         let odd = k % 2 == 1;
         if odd {
@@ -419,7 +402,7 @@ fn exact_fourier(s2: Dd, rho: f64) -> (f64, f64) {
 }
 
 /// Below this x = 1/ψ the closed-form elastic area comes from its series.
-const CLOSED_SERIES_X: f64 = 0.8;
+const CLOSED_AREA_SERIES_X: f64 = 0.8;
 
 /// The paper's three-Gaussian closed form (Xu, Li and Mulvihill; MODEL.md) at
 /// load `rho` = p̄/H and index `psi` = √V/H.
@@ -443,7 +426,7 @@ fn closed_form_areas_unclamped(psi: Dd, rho: f64) -> Result<Areas, AreaError> {
     }
     let c = Closed::new(psi);
     let rp = reflect(rho);
-    if c.x < CLOSED_SERIES_X {
+    if c.x < CLOSED_AREA_SERIES_X {
         let (pl, _) = c.plastic_total(rho, false);
         let elastic = c.elastic_series(rho);
         return Ok(Areas {
@@ -515,15 +498,16 @@ impl Closed {
         let w = self.w;
         let c = Dd::sum(1.0, -rho);
         let e2c = (c * self.t).mul_f64(2.0).exp_neg(); // e^(−2(1−ρ)x²)
-                                                       // erfc(α), erfc(β) at α = (1−ρ)x/√2, β = (1+ρ)x/√2; β² − α² = 2ρx² = δ
-                                                       // and erfc(β) < e^(−δ) erfc(α).
+
+        // erfc(α), erfc(β) at α = (1−ρ)x/√2, β = (1+ρ)x/√2; β² − α² = 2ρx² = δ
+        // and erfc(β) < e^(−δ) erfc(α).
         let delta = 4.0 * rho * w.hi;
-        let ea = erfc_sq(c * c * w);
+        let ea = (c * c * w).erfc_of_sqrt();
         let eb = if delta > 45.0 {
             0.0
         } else {
             let cp = Dd::sum(1.0, rho);
-            erfc_sq(cp * cp * w)
+            (cp * cp * w).erfc_of_sqrt()
         };
         let e1 = if delta >= 1.0 {
             (ea - eb).max(0.0)
@@ -542,7 +526,7 @@ impl Closed {
         let tail = if rho * rho * w.hi > 45.0 || (z2.hi > 45.0 && z2.hi > 44.0 - first.ln()) {
             0.0
         } else {
-            erfc_sq(z2)
+            z2.erfc_of_sqrt()
         };
         (pl, first + 0.5 * b * (tail + e2c))
     }

@@ -130,6 +130,27 @@ impl Dd {
     pub fn to_f64(self) -> f64 {
         self.hi + self.lo
     }
+
+    /// erfc(z) where z² = `self` is known to double-double precision: the
+    /// rounding of z, amplified ~2z² by erfc's Gaussian tail, is taken out by
+    /// erfc(z) = erfc(z_f)·e^(−(z² − z_f²)) (erfcx is well-conditioned).
+    /// 0 beyond z² = 760 (underflow) and for NaN.
+    #[inline(always)]
+    pub fn erfc_of_sqrt(self) -> f64 {
+        if self.hi.is_nan() || self.hi >= 760.0 {
+            return 0.0;
+        }
+        let zf = self.hi.sqrt();
+        // |d| ≤ ulp(z²) < 2e-13 here, so e^(−d) = 1 − d to 1e-26.
+        let d = (self + Dd::prod(-zf, zf)).to_f64();
+        libm::erfc(zf) * (1.0 - d)
+    }
+}
+
+impl From<f64> for Dd {
+    fn from(x: f64) -> Dd {
+        Dd::from_f64(x)
+    }
 }
 
 /// a·b − p exactly, for p = fl(a·b). A hardware instruction where the

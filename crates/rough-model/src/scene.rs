@@ -7,7 +7,7 @@ use std::ops::{Add, Div, Mul};
 use crate::dd::{Dd, PI, PI2_HALF};
 use crate::indices::psi_from_core;
 use crate::params::{Axis, Params, Shown};
-use crate::slopes::{slopes_sq, Model};
+use crate::slopes::{slopes_sq, Model, SQRT_2_OVER_PI};
 use crate::spectrum::{Core, Moments};
 
 /// A validated range of one parameter: log-spaced for all axes but the
@@ -299,7 +299,6 @@ fn fill_fma(spec: &SceneSpec, k: &Kernel, range: std::ops::Range<usize>, s: &mut
 
 #[inline(always)]
 fn fill(spec: &SceneSpec, k: &Kernel, range: std::ops::Range<usize>, s: &mut Scene) {
-    const SQRT_2_OVER_PI: f64 = 0.7978845608028654;
     let c = spec.curves;
     for i in range {
         let t = i as f64 / (spec.points - 1) as f64;

@@ -23,10 +23,9 @@
 //! plastic = total = 1. Never NaN. The series forms on their own, for
 //! comparison, are in `rough_study::forms`.
 
-use std::ops::{Add, Mul};
+use std::ops::Mul;
 
 use crate::dd::{Dd, PI2_HALF};
-use libm::erfc;
 
 /// √(2/π), the prefactor of the elastic slope √(2/π)/ψ.
 pub const SQRT_2_OVER_PI: f64 = 0.7978845608028654;
@@ -208,7 +207,7 @@ pub(crate) fn exact_sq(x: f64, s: Dd) -> Slopes {
 }
 
 /// Below this x the closed form's elastic slope is taken from its series.
-const CLOSED_SERIES_X: f64 = 1.0;
+const CLOSED_SLOPE_SERIES_X: f64 = 1.0;
 
 /// Taylor coefficients of the closed-form S_el in x: x⁵, x⁷, …, x⁸¹, exact
 /// rationals times √(2/π) (`scripts/gen_reference.py`, `closed_series.txt`).
@@ -256,20 +255,6 @@ const CLOSED_EL_SERIES: [f64; 39] = [
     -1.111605953866493941400353370333262676259e-20, // x^81
 ];
 
-/// erfc(z) where z² = `z2` is known to double-double precision: the error of
-/// rounding z, amplified ~2z² by erfc's Gaussian tail, is taken out by
-/// erfc(z) = erfc(z_f)·e^(−(z² − z_f²)) (erfcx is well-conditioned).
-#[inline(always)]
-fn erfc_of_sq(z2: Dd) -> f64 {
-    let zf = z2.hi.sqrt();
-    let e = erfc(zf);
-    if e == 0.0 {
-        return 0.0;
-    }
-    let d = z2.add(Dd::prod(-zf, zf)).to_f64();
-    e * (-d).exp()
-}
-
 /// The paper's closed-form slopes; see the module doc.
 pub fn closed_form(psi: impl Into<Dd>) -> Slopes {
     let psi = psi.into();
@@ -299,12 +284,12 @@ pub(crate) fn closed_form_sq(x: f64, s: Dd) -> Slopes {
         uf / uf.tanh()
     };
     let e_term = if uf.is_finite() {
-        u_coth * erfc_of_sq(u.mul_f64(0.5))
+        u_coth * u.mul_f64(0.5).erfc_of_sqrt()
     } else {
         0.0
     };
     let plastic = d_term + e_term;
-    if x < CLOSED_SERIES_X {
+    if x < CLOSED_SLOPE_SERIES_X {
         let mut acc = 0.0;
         for c in CLOSED_EL_SERIES.iter().rev() {
             acc = acc * uf + c;
@@ -320,7 +305,7 @@ pub(crate) fn closed_form_sq(x: f64, s: Dd) -> Slopes {
     let total = if uf.is_finite() {
         SQRT_2_OVER_PI * x
             + uf / (2.0 * uf).exp_m1()
-            + uf * erfc_of_sq(u.mul_f64(2.0)) / -(-2.0 * uf).exp_m1()
+            + uf * u.mul_f64(2.0).erfc_of_sqrt() / -(-2.0 * uf).exp_m1()
     } else {
         // x² overflows (ψ < 1e-154): the Gaussian terms are far below x.
         SQRT_2_OVER_PI * x
@@ -332,8 +317,12 @@ pub(crate) fn closed_form_sq(x: f64, s: Dd) -> Slopes {
     }
 }
 
-impl From<f64> for Dd {
-    fn from(x: f64) -> Dd {
-        Dd::from_f64(x)
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn sqrt_2_over_pi_is_the_nearest_double() {
+        // √(2/π) = 0.79788456080286535587989211986876…
+        assert_eq!(super::SQRT_2_OVER_PI, 0.797_884_560_802_865_4);
+        assert!((super::SQRT_2_OVER_PI - (2.0 / std::f64::consts::PI).sqrt()).abs() <= 1.2e-16);
     }
 }

@@ -2,13 +2,12 @@
 //! agreeing, and no NaN anywhere in the valid domain.
 
 use proptest::prelude::*;
+use rough_model::slopes::SQRT_2_OVER_PI;
 use rough_model::{
     closed_form, exact, persson_elastic, Axis, Curves, Model, Moments, ParamValues, Params, Scene,
     SceneSpec, Slopes, Surface, Sweep,
 };
 use rough_study::{forms, rel_err};
-
-const SQRT_2_OVER_PI: f64 = 0.7978845608028654;
 
 fn no_nan(s: &Slopes) -> bool {
     !(s.elastic.is_nan() || s.plastic.is_nan() || s.total.is_nan())
