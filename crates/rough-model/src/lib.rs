@@ -9,7 +9,6 @@
 
 pub mod areas;
 mod dd;
-pub mod hardness;
 pub mod indices;
 pub mod params;
 pub mod scene;
@@ -18,7 +17,6 @@ pub mod spectrum;
 
 pub use areas::{areas, closed_form_areas, exact_areas, AreaError, Areas};
 pub use dd::Dd;
-pub use hardness::hardness_ratio;
 pub use indices::{psi_in_use, Indices, Surface};
 pub use params::{Axis, ParamError, ParamValues, Params};
 pub use scene::{Curves, Scene, SceneSpec, Sweep, SweepError};

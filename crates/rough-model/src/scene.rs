@@ -145,16 +145,6 @@ impl Sweep {
         v.clamp(self.from, self.to)
     }
 
-    /// Where `value` lies in the range as a fraction (log or linear); may be
-    /// outside [0, 1] for values outside the range.
-    pub fn fraction(&self, value: f64) -> f64 {
-        if self.axis.is_log() {
-            (value.ln() - self.from.ln()) / (self.to.ln() - self.from.ln())
-        } else {
-            (value - self.from) / (self.to - self.from)
-        }
-    }
-
     /// `n` points including both ends.
     pub fn points(&self, n: usize) -> impl Iterator<Item = f64> + '_ {
         let last = n.saturating_sub(1).max(1) as f64;
@@ -193,12 +183,6 @@ impl Curves {
         plastic: true,
         total: true,
         persson_elastic: true,
-    };
-    pub const NONE: Curves = Curves {
-        elastic: false,
-        plastic: false,
-        total: false,
-        persson_elastic: false,
     };
 
     fn needs_slopes(self) -> bool {
