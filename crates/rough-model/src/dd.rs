@@ -191,4 +191,90 @@ mod tests {
         assert_eq!(back.hi, 2.0);
         assert!(back.lo.abs() < 1e-30);
     }
+
+    /// x = m·2^e exactly, m odd (0 as (0, 0)); x finite.
+    fn parts(x: f64) -> (i128, i32) {
+        if x == 0.0 {
+            return (0, 0);
+        }
+        let bits = x.to_bits();
+        let field = ((bits >> 52) & 0x7ff) as i32;
+        let frac = bits & ((1 << 52) - 1);
+        let (mut m, mut e) = if field == 0 {
+            (frac as i128, -1074)
+        } else {
+            ((frac | 1 << 52) as i128, field - 1075)
+        };
+        let tz = m.trailing_zeros();
+        m >>= tz;
+        e += tz as i32;
+        (if x < 0.0 { -m } else { m }, e)
+    }
+
+    /// The exact sum of `xs` as m·2^e, m odd (or 0); `None` if it does not
+    /// fit in i128 (the strategies below keep it well inside).
+    fn exact_sum(xs: &[f64]) -> Option<(i128, i32)> {
+        let ps: Vec<(i128, i32)> = xs.iter().map(|&x| parts(x)).filter(|p| p.0 != 0).collect();
+        let Some(lsb) = ps.iter().map(|p| p.1).min() else {
+            return Some((0, 0));
+        };
+        let mut m: i128 = 0;
+        for (pm, pe) in ps {
+            let shift = u32::try_from(pe - lsb).ok().filter(|&s| s < 127)?;
+            m = m.checked_add(pm.checked_mul(1i128 << shift)?)?;
+        }
+        if m == 0 {
+            return Some((0, 0));
+        }
+        let tz = m.trailing_zeros();
+        Some((m >> tz, lsb + tz as i32))
+    }
+
+    /// A finite double with exponent `e` (unbiased, normal range), fraction
+    /// `frac` and sign `neg`.
+    fn double(neg: bool, e: i32, frac: u64) -> f64 {
+        f64::from_bits((neg as u64) << 63 | ((e + 1023) as u64) << 52 | frac)
+    }
+
+    /// Fractions with all 52 bits random, or only the top few (values with
+    /// short mantissas, whose sums are often exact).
+    fn fraction() -> impl Strategy<Value = u64> {
+        prop_oneof![0u64..1 << 52, (0u64..1 << 8).prop_map(|f| f << 44)]
+    }
+
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(4000))]
+
+        /// Dd::sum is error-free: a + b = hi + lo exactly, hi = fl(a + b).
+        #[test]
+        fn sum_is_exact(
+            na: bool, nb: bool, ea in -900i32..900, d in -60i32..60,
+            fa in fraction(), fb in fraction(),
+        ) {
+            let (a, b) = (double(na, ea, fa), double(nb, (ea + d).clamp(-1022, 1023), fb));
+            let s = Dd::sum(a, b);
+            prop_assert_eq!(s.hi, a + b);
+            prop_assert_eq!(s.hi + s.lo, s.hi, "lo within half an ulp of hi");
+            let want = exact_sum(&[a, b]).unwrap();
+            prop_assert_eq!(exact_sum(&[s.hi, s.lo]).unwrap(), want, "{:e} + {:e} -> {:?}", a, b, s);
+        }
+
+        /// Dd::prod is error-free where the product neither overflows nor
+        /// underflows: a·b = hi + lo exactly, hi = fl(a·b).
+        #[test]
+        fn product_is_exact(
+            na: bool, nb: bool, ea in -450i32..450, eb in -450i32..450,
+            fa in fraction(), fb in fraction(),
+        ) {
+            let (a, b) = (double(na, ea, fa), double(nb, eb, fb));
+            let p = Dd::prod(a, b);
+            prop_assert_eq!(p.hi, a * b);
+            prop_assert_eq!(p.hi + p.lo, p.hi, "lo within half an ulp of hi");
+            let ((ma, xa), (mb, xb)) = (parts(a), parts(b));
+            let want = (ma * mb, xa + xb); // odd × odd is odd
+            prop_assert_eq!(exact_sum(&[p.hi, p.lo]).unwrap(), want, "{:e} * {:e} -> {:?}", a, b, p);
+        }
+    }
 }
