@@ -16,6 +16,28 @@ fn no_nan(s: &Slopes) -> bool {
         && s.total >= 0.0
 }
 
+/// Valid parameters from the decimal exponents of H0/E, h_rms and ζ and
+/// the values of H, R* and q0.
+fn params(h0: f64, h: f64, z: f64, hurst: f64, r_star: f64, q0: f64) -> Params {
+    Params::new(ParamValues {
+        h0_over_e: 10f64.powf(h0),
+        h_rms: 10f64.powf(h),
+        zeta: 10f64.powf(z),
+        hurst,
+        r_star,
+        q0,
+    })
+    .unwrap()
+}
+
+fn moments_of(asymptotic: bool) -> Moments {
+    if asymptotic {
+        Moments::Asymptotic
+    } else {
+        Moments::Truncated
+    }
+}
+
 /// 2000 cases unless PROPTEST_CASES says otherwise.
 fn cases() -> u32 {
     std::env::var("PROPTEST_CASES")
@@ -93,15 +115,8 @@ proptest! {
         q0 in -300.0f64..300.0,
         asymptotic in any::<bool>(),
     ) {
-        let moments = if asymptotic { Moments::Asymptotic } else { Moments::Truncated };
-        let p = Params::new(ParamValues {
-            h0_over_e: 10f64.powf(h0),
-            h_rms: 10f64.powf(h),
-            zeta: 10f64.powf(z),
-            hurst: hu,
-            r_star: rs,
-            q0: 10f64.powf(q0),
-        }).unwrap();
+        let moments = moments_of(asymptotic);
+        let p = params(h0, h, z, hu, rs, 10f64.powf(q0));
         let s = Surface::of(&p, moments);
         let sp = s.spectrum;
         let ix = s.indices;
@@ -244,15 +259,8 @@ proptest! {
         closed in any::<bool>(),
         asymptotic in any::<bool>(),
     ) {
-        let moments = if asymptotic { Moments::Asymptotic } else { Moments::Truncated };
-        let base = Params::new(ParamValues {
-            h0_over_e: 10f64.powf(h0),
-            h_rms: 10f64.powf(h),
-            zeta: 10f64.powf(z),
-            hurst: hu,
-            r_star: 10f64.powf(rs),
-            q0: 1e5,
-        }).unwrap();
+        let moments = moments_of(asymptotic);
+        let base = params(h0, h, z, hu, 10f64.powf(rs), 1e5);
         let model = if closed { Model::ClosedForm } else { Model::Exact };
         let spec = SceneSpec {
             base,

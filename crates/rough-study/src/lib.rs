@@ -19,7 +19,7 @@ mod report;
 mod table;
 
 pub use report::Report;
-pub use table::{slopes_reference, SlopeRow, Table, TableError};
+pub use table::{slopes_reference, SlopeRow, Table, TableError, MODEL_COLUMNS};
 
 /// The folder of the reference tables.
 pub const DATA_DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/data");

@@ -107,6 +107,17 @@ impl Table {
     }
 }
 
+/// The columns of both models' three outputs (elastic, plastic, total), as
+/// the slopes and areas tables name them.
+pub const MODEL_COLUMNS: [&str; 6] = [
+    "exact_elastic",
+    "exact_plastic",
+    "exact_total",
+    "closed_elastic",
+    "closed_plastic",
+    "closed_total",
+];
+
 /// One row of the slopes reference: ψ, the exact and the closed-form slopes.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SlopeRow {
@@ -121,15 +132,8 @@ pub struct SlopeRow {
 /// of its seven columns must be filled.
 pub fn slopes_reference(text: &str) -> Result<Vec<SlopeRow>, TableError> {
     let t = Table::parse("slopes.csv", text)?;
-    let names = [
-        "psi",
-        "exact_elastic",
-        "exact_plastic",
-        "exact_total",
-        "closed_elastic",
-        "closed_plastic",
-        "closed_total",
-    ];
+    let mut names = ["psi"; 7];
+    names[1..].copy_from_slice(&MODEL_COLUMNS);
     let mut idx = [0; 7];
     for (slot, name) in idx.iter_mut().zip(names) {
         *slot = t.col(name)?;
