@@ -13,7 +13,7 @@ identically).  a and b expand through Bernoulli polynomials:
 (1 - e^{-cy})/(1 - e^{-y}) = sum_{n>=1} (B_n(1) - B_n(1-c)) y^(n-1)/n!.
 Radius of convergence in x^2 is pi (zeros of 1 - e^{-2x^2}).
 
-Prints the coefficients as a Rust table for crates/rough-model/src/areas.rs
+Prints the coefficients as a Rust table for crates/rough-model/src/areas/closed.rs
 (each rounded correctly from the exact rational).  sympy, exact arithmetic.
 Usage: python3 scripts/closed_areas_series.py [J]   (J = highest j, default 26)
 """
