@@ -168,76 +168,58 @@ def _eps():
 # the switch only picks the fast one.  All exponents are formed from psi^2
 # (exact for a double psi at >= 107 bits) rather than from a rounded x.
 
+def _series(first, k, step, term, coef, skip_first_check=False):
+    """first + sum of coef(k) * term(k) over k, k + step, ... until a term
+    falls below eps times the sum (the terms fall monotonically); with
+    skip_first_check the first term is always taken (the sum starts at 0)."""
+    s, eps, first_term = mpf(first), _eps(), True
+    while True:
+        t = term(k)
+        if not (skip_first_check and first_term) and t < eps * s:
+            break
+        s += coef(k) * t
+        k += step
+        first_term = False
+    return s
+
+
+def _even_plus(k):
+    return 2 if k % 2 == 0 else -2
+
+
 def exact_tot_large(psi):
     x2 = 1 / (psi * psi)
-    s, n, eps = mpf(1), 1, _eps()
-    while True:
-        t = mpmath.exp(-2 * n * n * x2)
-        if t < eps * s:
-            break
-        s += 2 * t
-        n += 1
+    s = _series(1, 1, 1, lambda n: mpmath.exp(-2 * n * n * x2), lambda n: 2)
     return K() / psi * s
 
 
 def exact_tot_small(psi):
     a = mpmath.pi ** 2 * psi * psi / 2
-    s, k, eps = mpf(1), 1, _eps()
-    while True:
-        t = mpmath.exp(-a * k * k)
-        if t < eps * s:
-            break
-        s += 2 * t
-        k += 1
-    return s
+    return _series(1, 1, 1, lambda k: mpmath.exp(-a * k * k), lambda k: 2)
 
 
 def exact_pl_large(psi):
     x2 = 1 / (psi * psi)
-    s, n, eps = mpf(0), 0, _eps()
-    while True:
-        t = mpmath.exp(-(2 * n + 1) ** 2 * x2 / 2)
-        if n > 0 and t < eps * s:
-            break
-        s += 2 * t
-        n += 1
+    s = _series(0, 0, 1, lambda n: mpmath.exp(-(2 * n + 1) ** 2 * x2 / 2), lambda n: 2,
+                skip_first_check=True)
     return K() / psi * s
 
 
 def exact_pl_small(psi):
     a = mpmath.pi ** 2 * psi * psi / 2
-    s, k, eps = mpf(1), 1, _eps()
-    while True:
-        t = mpmath.exp(-a * k * k)
-        if t < eps * s:
-            break
-        s += 2 * t if k % 2 == 0 else -2 * t
-        k += 1
-    return s
+    return _series(1, 1, 1, lambda k: mpmath.exp(-a * k * k), _even_plus)
 
 
 def exact_el_large(psi):
     x2 = 1 / (psi * psi)
-    s, n, eps = mpf(1), 1, _eps()
-    while True:
-        t = mpmath.exp(-n * n * x2 / 2)
-        if t < eps * s:
-            break
-        s += 2 * t if n % 2 == 0 else -2 * t
-        n += 1
+    s = _series(1, 1, 1, lambda n: mpmath.exp(-n * n * x2 / 2), _even_plus)
     return K() / psi * s
 
 
 def exact_el_small(psi):
     a = mpmath.pi ** 2 * psi * psi / 2
-    s, k, eps = mpf(0), 1, _eps()
-    while True:
-        t = mpmath.exp(-a * k * k)
-        if k > 1 and t < eps * s:
-            break
-        s += 4 * t
-        k += 2
-    return s
+    return _series(0, 1, 2, lambda k: mpmath.exp(-a * k * k), lambda k: 4,
+                   skip_first_check=True)
 
 
 def exact_slopes(psi):
