@@ -18,7 +18,6 @@ Formatting, the adaptive precision driver and the slopes are those of
 scripts/gen_reference.py, imported from it.
 """
 
-import math
 import random
 import sys
 
@@ -98,28 +97,8 @@ def grid():
     rng = random.Random(20241083)
     zeta_special = [1.0, 1.0 + 2.0 ** -40, 2.0, 1e10]
     hurst_special = [0.5, 0.01, 0.99, 1.0 - 2.0 ** -30]
-    for _ in range(300):
-        h0e = 10.0 ** rng.uniform(-6.0, 0.0)
-        hr = 10.0 ** rng.uniform(-10.0, -3.0)
-        z = rng.choice(zeta_special) if rng.random() < 0.12 else 10.0 ** rng.uniform(0.0, 10.0)
-        hu = rng.choice(hurst_special) if rng.random() < 0.15 else rng.uniform(0.01, 0.999)
-        r = 0.0 if rng.random() < 0.25 else 10.0 ** rng.uniform(-9.0, -1.0)
-        q = 1e5 if rng.random() < 0.15 else 10.0 ** rng.uniform(2.0, 8.0)
-        rows.append((h0e, hr, z, hu, r, q))
-    # targeted: psi_p plastic (3..12) or small (1e-3..0.1), where the slopes
-    # are exponentially small and amplify every error of psi
-    for i in range(40):
-        z = 10.0 ** rng.uniform(0.0, 10.0)
-        hu = rng.uniform(0.3, 0.999) if i % 5 else 0.8
-        hr = 10.0 ** rng.uniform(-9.0, -6.0)
-        q = 10.0 ** rng.uniform(3.0, 7.0) if i % 4 else 1e5
-        r = 0.0 if i % 3 == 0 else 10.0 ** rng.uniform(-7.0, -2.0)
-        target = 10.0 ** rng.uniform(math.log10(3.0), math.log10(12.0)) if i % 2 == 0 \
-            else 10.0 ** rng.uniform(-3.0, -1.0)
-        with mp.workdps(30):
-            m2 = params_row_asymptotic(1.0, hr, z, hu, r, q)[2]
-            h0e = float(mpmath.sqrt(m2 / 2) / target)
-        rows.append((h0e, hr, z, hu, r, q))
+    rows += ref.random_params(rng, 300, zeta_special, hurst_special, 0.999, 0.0, 0.999,
+                              params_row_asymptotic)
     return rows
 
 

@@ -690,6 +690,36 @@ AREA_PSI = [1e-8, 1e-4, 1e-2, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0, 1.5, 2.0, 3.0,
 AREA_RHO = [1e-12, 1e-8, 1e-6, 1e-4, 1e-3, 1e-2, 0.05, 0.1, 0.25, 0.5, 0.75, 0.9, 0.99, 1.0]
 
 
+def random_params(rng, n, zeta_special, hurst_special, hurst_max, zeta_lo, hurst_hi, row):
+    """n random parameter sets (H up to hurst_max, special zeta and H values
+    mixed in), then 40 targeted ones with zeta from 10^zeta_lo to 1e10 and
+    psi_p plastic (3..12) or small (1e-3..0.1), where the slopes are
+    exponentially small and amplify every error of psi: H0/E is solved (in
+    floats) for the target from m2 of row(...), the row then uses that float."""
+    rows = []
+    for _ in range(n):
+        h0e = 10.0 ** rng.uniform(-6.0, 0.0)
+        hr = 10.0 ** rng.uniform(-10.0, -3.0)
+        z = rng.choice(zeta_special) if rng.random() < 0.12 else 10.0 ** rng.uniform(0.0, 10.0)
+        hu = rng.choice(hurst_special) if rng.random() < 0.15 else rng.uniform(0.01, hurst_max)
+        r = 0.0 if rng.random() < 0.25 else 10.0 ** rng.uniform(-9.0, -1.0)
+        q = 1e5 if rng.random() < 0.15 else 10.0 ** rng.uniform(2.0, 8.0)
+        rows.append((h0e, hr, z, hu, r, q))
+    for i in range(40):
+        z = 10.0 ** rng.uniform(zeta_lo, 10.0)
+        hu = rng.uniform(0.3, hurst_hi) if i % 5 else 0.8
+        hr = 10.0 ** rng.uniform(-9.0, -6.0)
+        q = 10.0 ** rng.uniform(3.0, 7.0) if i % 4 else 1e5
+        r = 0.0 if i % 3 == 0 else 10.0 ** rng.uniform(-7.0, -2.0)
+        target = 10.0 ** rng.uniform(math.log10(3.0), math.log10(12.0)) if i % 2 == 0 \
+            else 10.0 ** rng.uniform(-3.0, -1.0)
+        with mp.workdps(30):
+            m2 = row(1.0, hr, z, hu, r, q)[2]
+            h0e = float(mpmath.sqrt(m2 / 2) / target)
+        rows.append((h0e, hr, z, hu, r, q))
+    return rows
+
+
 def params_grid():
     rows = []
     q0, hurst, rst = 1e5, 0.8, 1e-3
@@ -712,28 +742,7 @@ def params_grid():
     rng = random.Random(20240303)
     zeta_special = [1.0, 1.0 + 2.0 ** -40, 1.0 + 1e-10, 2.0, 1e10]
     hurst_special = [1.0, 0.5, 0.01, 0.99, 1.0 - 2.0 ** -30]
-    for _ in range(600):
-        h0e = 10.0 ** rng.uniform(-6.0, 0.0)
-        hr = 10.0 ** rng.uniform(-10.0, -3.0)
-        z = rng.choice(zeta_special) if rng.random() < 0.12 else 10.0 ** rng.uniform(0.0, 10.0)
-        hu = rng.choice(hurst_special) if rng.random() < 0.15 else rng.uniform(0.01, 1.0)
-        r = 0.0 if rng.random() < 0.25 else 10.0 ** rng.uniform(-9.0, -1.0)
-        q = 1e5 if rng.random() < 0.15 else 10.0 ** rng.uniform(2.0, 8.0)
-        rows.append((h0e, hr, z, hu, r, q))
-    # targeted: large zeta with psi_p plastic (3..12) or small (1e-3..0.1);
-    # H0/E is solved (in floats) for the target, the row then uses that float
-    for i in range(40):
-        z = 10.0 ** rng.uniform(6.0, 10.0)
-        hu = rng.uniform(0.3, 0.95) if i % 5 else 0.8
-        hr = 10.0 ** rng.uniform(-9.0, -6.0)
-        q = 10.0 ** rng.uniform(3.0, 7.0) if i % 4 else 1e5
-        r = 0.0 if i % 3 == 0 else 10.0 ** rng.uniform(-7.0, -2.0)
-        target = 10.0 ** rng.uniform(math.log10(3.0), math.log10(12.0)) if i % 2 == 0 \
-            else 10.0 ** rng.uniform(-3.0, -1.0)
-        with mp.workdps(30):
-            m2 = params_row(1.0, hr, z, hu, r, q)[2]
-            h0e = float(mpmath.sqrt(m2 / 2) / target)
-        rows.append((h0e, hr, z, hu, r, q))
+    rows += random_params(rng, 600, zeta_special, hurst_special, 1.0, 6.0, 0.95, params_row)
     return rows
 
 
