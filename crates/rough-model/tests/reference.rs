@@ -105,29 +105,26 @@ fn check_params_table(file: &str, moments: Moments) {
         let mut chk = |name: &str, got: f64| {
             r.check(name, &input, got, t.get(row, name).unwrap(), tol::CONTRACT)
         };
-        chk("z", sp.z);
-        chk("m0", sp.m0);
-        chk("m2", sp.m2);
-        chk("m4", sp.m4);
-        chk("r_s", sp.r_s);
-        chk("lambda1", sp.lambda1);
-        chk("h_rms_actual", sp.h_rms_actual);
-        chk("rms_slope", sp.rms_slope);
-        chk("rms_curvature", sp.rms_curvature);
-        chk("hardness_ratio", ix.hardness_ratio);
-        chk("psi_gw", ix.psi_gw);
-        chk("psi_p", ix.psi_p);
-        chk("psi_star", ix.psi_star);
+        #[rustfmt::skip]
+        let outputs = [
+            ("z", sp.z), ("m0", sp.m0), ("m2", sp.m2), ("m4", sp.m4), ("r_s", sp.r_s),
+            ("lambda1", sp.lambda1), ("h_rms_actual", sp.h_rms_actual),
+            ("rms_slope", sp.rms_slope), ("rms_curvature", sp.rms_curvature),
+            ("hardness_ratio", ix.hardness_ratio), ("psi_gw", ix.psi_gw),
+            ("psi_p", ix.psi_p), ("psi_star", ix.psi_star),
+        ];
+        for (name, got) in outputs {
+            chk(name, got);
+        }
         for (size_effect, suffix) in [(false, "p"), (true, "star")] {
             let psi = ix.psi_in_use(size_effect);
             let e = slopes(Model::Exact, psi);
             let c = slopes(Model::ClosedForm, psi);
-            chk(&format!("exact_el_{suffix}"), e.elastic);
-            chk(&format!("exact_pl_{suffix}"), e.plastic);
-            chk(&format!("exact_tot_{suffix}"), e.total);
-            chk(&format!("closed_el_{suffix}"), c.elastic);
-            chk(&format!("closed_pl_{suffix}"), c.plastic);
-            chk(&format!("closed_tot_{suffix}"), c.total);
+            for (model, s) in [("exact", e), ("closed", c)] {
+                for (part, got) in [("el", s.elastic), ("pl", s.plastic), ("tot", s.total)] {
+                    chk(&format!("{model}_{part}_{suffix}"), got);
+                }
+            }
         }
         match (t.get(row, "psi_star_asym"), ix.psi_star_asymptotic) {
             (Some(want), Some(got)) => r.check("psi_star_asym", &input, got, want, tol::CONTRACT),
