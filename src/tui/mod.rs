@@ -42,7 +42,7 @@ pub fn run(state: State) -> anyhow::Result<()> {
     let _guard = term::Guard;
     let size = terminal.size()?;
     let mut app = App::new(state, Theme::from_env(), (size.width, size.height));
-    terminal.draw(|f| f.render_widget(&app, f.area()))?;
+    draw(&mut terminal, &app)?;
     loop {
         let (msg, arrived) = loop {
             let ev = event::read()?;
@@ -60,10 +60,17 @@ pub fn run(state: State) -> anyhow::Result<()> {
         if app.quit {
             break;
         }
-        terminal.draw(|f| f.render_widget(&app, f.area()))?;
+        draw(&mut terminal, &app)?;
         if let Some(log) = frame_log.as_mut() {
             writeln!(log, "{}", arrived.elapsed().as_micros())?;
         }
     }
+    Ok(())
+}
+
+/// One frame, written whole before a signal may restore the terminal.
+fn draw(terminal: &mut term::Tui, app: &App) -> std::io::Result<()> {
+    let _frame = term::drawing();
+    terminal.draw(|f| f.render_widget(app, f.area()))?;
     Ok(())
 }

@@ -2,6 +2,8 @@
 //! parts it needs with `mod common;`).
 #![allow(dead_code)]
 
+pub mod tmux;
+
 use std::path::Path;
 
 use ratatui::backend::TestBackend;

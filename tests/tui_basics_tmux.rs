@@ -1,0 +1,76 @@
+//! What a class runs into, in a real terminal (tmux): signals restore the
+//! terminal, a too-small terminal takes only quit keys, no terminal gets a
+//! clear message.
+
+mod common;
+
+use std::process::{Command, Stdio};
+
+use common::tmux::{have_tmux, Pane};
+
+/// SIGHUP (a dropped SSH connection), SIGTERM, SIGINT and SIGQUIT leave the
+/// alternate screen, show the cursor and exit with 128 + the signal.
+#[test]
+fn signals_restore_the_terminal_and_exit_128_plus_n() {
+    if !have_tmux() {
+        return;
+    }
+    for (sig, n) in [("HUP", 1), ("TERM", 15), ("INT", 2), ("QUIT", 3)] {
+        let dir = tempfile::tempdir().unwrap();
+        let p = Pane::start(&format!("sig{n}"), dir.path(), (80, 24), &[], &[]);
+        p.wait_text("Readout");
+        assert_eq!(p.display("#{alternate_on}"), "1");
+        assert_eq!(p.display("#{cursor_flag}"), "0");
+        let pid = p.program_pid().to_string();
+        let k = Command::new("kill")
+            .args([&format!("-{sig}"), &pid])
+            .status()
+            .unwrap();
+        assert!(k.success());
+        assert_eq!(p.exit_status(), 128 + n, "SIG{sig}");
+        assert_eq!(p.display("#{alternate_on}"), "0", "SIG{sig}");
+        assert_eq!(p.display("#{cursor_flag}"), "1", "SIG{sig}");
+    }
+}
+
+/// Without a terminal on standard input: one clear line and status 2.
+#[test]
+fn no_terminal_says_so_and_points_to_export() {
+    if !have_tmux() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let p = Pane::start_redirected(
+        "notty",
+        dir.path(),
+        (80, 24),
+        &[],
+        &["--preset", "fig2"],
+        " </dev/null",
+    );
+    assert_eq!(p.exit_status(), 2);
+    let s = p.wait_text("needs a terminal");
+    assert!(s.contains("roughtui export"), "{s}");
+    assert!(!s.contains("os error"), "{s}");
+    assert_eq!(p.display("#{alternate_on}"), "0");
+}
+
+/// The same without tmux: output to a pipe.
+#[test]
+fn output_to_a_pipe_says_it_needs_a_terminal() {
+    let o = Command::new(env!("CARGO_BIN_EXE_roughtui"))
+        .args(["--preset", "fig2"])
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    assert!(o.stdout.is_empty());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.contains("needs a terminal") && err.contains("`roughtui export`"),
+        "{err}"
+    );
+}
