@@ -74,3 +74,32 @@ fn output_to_a_pipe_says_it_needs_a_terminal() {
         "{err}"
     );
 }
+
+/// While "enlarge the terminal" shows, → changes nothing unseen, and with the
+/// save prompt open `q` quits instead of going into the name.
+#[test]
+fn too_small_takes_only_quit_keys() {
+    if !have_tmux() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let p = Pane::start("small", dir.path(), (100, 30), &[], &[]);
+    p.wait_text("ζ = 128");
+    p.tmux(&["resize-window", "-t", "t", "-x", "40", "-y", "12"]);
+    p.wait_text("enlarge the terminal");
+    p.keys(&["Right", "Right", "x", "m"]);
+    std::thread::sleep(std::time::Duration::from_millis(200));
+    p.tmux(&["resize-window", "-t", "t", "-x", "100", "-y", "30"]);
+    let s = p.wait_text("Readout");
+    assert!(s.contains("ζ = 128") && s.contains("[fig2]"), "{s}");
+    assert!(s.contains("sweep ζ"), "{s}");
+
+    p.keys(&["s"]);
+    p.wait_text("save as: fig2-");
+    p.tmux(&["resize-window", "-t", "t", "-x", "40", "-y", "12"]);
+    p.wait_text("enlarge the terminal");
+    p.keys(&["q"]);
+    assert_eq!(p.exit_status(), 0);
+    assert_eq!(p.display("#{alternate_on}"), "0");
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
+}

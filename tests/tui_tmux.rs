@@ -60,9 +60,9 @@ fn explorer_under_tmux() {
     p.keys(&["e"]);
     p.wait_text("size effect on");
     p.keys(&["?"]);
-    p.wait_text("keys · Esc or ? closes");
+    p.wait_text("Esc or ? closes");
     p.keys(&["Escape"]);
-    p.wait_for("help closed", |s| !s.contains("keys · Esc"));
+    p.wait_for("help closed", |s| !s.contains("Esc or ? closes"));
 
     // Resize down: a message, not a crash; back up: the explorer again.
     p.tmux(&["resize-window", "-t", "t", "-x", "40", "-y", "12"]);

@@ -3,47 +3,17 @@
 
 mod common;
 
-use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyEventState, KeyModifiers};
+use common::app::{ch, fig, key, press, screen};
+use crossterm::event::{KeyCode, KeyEventKind, KeyModifiers};
 use proptest::prelude::*;
-use ratatui::backend::TestBackend;
-use ratatui::Terminal;
 use rough_model::{Axis, Model};
 use roughtui::presets;
 use roughtui::snapshot::check_stem;
-use roughtui::tui::app::{step_value, update, App, Message, Mode};
+use roughtui::tui::app::{step_value, update, App, Message, Mode, PROMPT_MAX_CHARS};
 use roughtui::tui::keys::{self, message_for_key};
+use roughtui::tui::line_edit::{Edit, LineEdit};
 use roughtui::tui::theme::Theme;
 use roughtui::tui::view;
-
-fn fig(name: &str) -> App {
-    App::new(presets::load(name).unwrap(), Theme::colored(), (80, 24))
-}
-
-fn key(code: KeyCode, mods: KeyModifiers) -> KeyEvent {
-    KeyEvent {
-        code,
-        modifiers: mods,
-        kind: KeyEventKind::Press,
-        state: KeyEventState::NONE,
-    }
-}
-
-fn press(app: &mut App, code: KeyCode, mods: KeyModifiers) {
-    if let Some(m) = message_for_key(app, &key(code, mods)) {
-        update(app, m);
-    }
-}
-
-fn ch(app: &mut App, c: char) {
-    press(app, KeyCode::Char(c), KeyModifiers::NONE);
-}
-
-fn screen(app: &App) -> String {
-    let (w, h) = app.size;
-    let mut t = Terminal::new(TestBackend::new(w, h)).unwrap();
-    t.draw(|f| f.render_widget(app, f.area())).unwrap();
-    common::buffer_text(&t)
-}
 
 #[test]
 fn opens_on_the_swept_slider_with_one_point_per_braille_column() {
@@ -299,7 +269,7 @@ fn two_saves_give_two_files_that_load_back() {
         let Mode::Prompt(stem) = &a.mode else {
             panic!("s must open the prompt")
         };
-        assert!(stem.starts_with("fig3-20"), "{stem}");
+        assert!(stem.text().starts_with("fig3-20"), "{stem:?}");
         press(&mut a, KeyCode::Enter, KeyModifiers::NONE);
         assert_eq!(a.mode, Mode::Main);
         let st = a.status.clone().unwrap();
@@ -326,7 +296,7 @@ fn the_prompt_edits_rejects_bad_names_and_cancels() {
     for _ in 0..40 {
         press(&mut a, KeyCode::Backspace, KeyModifiers::NONE);
     }
-    assert_eq!(a.mode, Mode::Prompt(String::new()));
+    assert_eq!(a.mode, Mode::Prompt(LineEdit::new("", PROMPT_MAX_CHARS)));
     press(&mut a, KeyCode::Enter, KeyModifiers::NONE);
     assert!(a.status.as_ref().unwrap().error);
     assert!(
@@ -337,7 +307,7 @@ fn the_prompt_edits_rejects_bad_names_and_cancels() {
     for c in "a/b".chars() {
         ch(&mut a, c);
     }
-    assert_eq!(a.mode, Mode::Prompt("a/b".into()));
+    assert_eq!(a.mode, Mode::Prompt(LineEdit::new("a/b", PROMPT_MAX_CHARS)));
     press(&mut a, KeyCode::Enter, KeyModifiers::NONE);
     let st = a.status.clone().unwrap();
     assert!(st.error && st.text.contains('/'), "{st:?}");
@@ -382,7 +352,8 @@ fn small_terminals_get_a_message_and_resizing_back_restores() {
     update(&mut a, Message::Resize(40, 12));
     let s = screen(&a);
     assert!(s.contains("enlarge the terminal"), "{s}");
-    ch(&mut a, 'l'); // still works, draws nothing but the message
+    ch(&mut a, 'l'); // acts on nothing while nothing is shown
+    assert!(!a.modified);
     update(&mut a, Message::Resize(80, 24));
     let s = screen(&a);
     assert!(s.contains("Readout"));
@@ -427,9 +398,13 @@ fn any_message() -> impl Strategy<Value = Message> {
         Just(Message::ToggleSizeEffect),
         Just(Message::ToggleHelp),
         Just(Message::CloseHelp),
-        Just(Message::PromptBackspace),
+        Just(Message::PromptEdit(Edit::Backspace)),
+        Just(Message::PromptEdit(Edit::DeleteWord)),
+        Just(Message::PromptEdit(Edit::Left)),
+        Just(Message::StartValue),
+        Just(Message::PromptAccept),
         Just(Message::PromptCancel),
-        any::<char>().prop_map(Message::PromptInput),
+        any::<char>().prop_map(|c| Message::PromptEdit(Edit::Insert(c))),
         (0u16..200, 0u16..70).prop_map(|(w, h)| Message::Resize(w, h)),
     ]
 }
@@ -464,6 +439,7 @@ fn hostile_names_are_shown_and_prefilled_safely() {
     let Mode::Prompt(stem) = &a.mode else {
         panic!("no prompt")
     };
+    let stem = stem.text();
     // The stem is a plain file name: no path separator, no control character.
     assert!(stem.starts_with("a_b_"), "{stem}");
     assert!(

@@ -9,7 +9,9 @@ use rough_model::{
     persson_elastic, slopes, Axis, Curves, Scene, SceneSpec, Slopes, Surface, Sweep,
 };
 
+use super::line_edit::{Edit, LineEdit};
 use super::theme::Theme;
+use super::value_input;
 use super::view;
 use crate::presets;
 use crate::snapshot::{self, State};
@@ -30,10 +32,16 @@ pub enum Message {
     ToggleModel,
     ToggleSizeEffect,
     StartSave,
+    /// Open the prompt for the selected slider's value.
+    StartValue,
     ToggleHelp,
     CloseHelp,
-    PromptInput(char),
-    PromptBackspace,
+    /// The next (or previous) page of the help.
+    HelpPage {
+        next: bool,
+    },
+    /// Edit the open prompt's text.
+    PromptEdit(Edit),
     PromptCancel,
     PromptAccept,
     Resize(u16, u16),
@@ -45,8 +53,23 @@ pub enum Mode {
     Main,
     Help,
     /// The save prompt with the name typed so far.
-    Prompt(String),
+    Prompt(LineEdit),
+    /// The prompt for a slider's value, with the text typed so far.
+    Value(Axis, LineEdit),
 }
+
+impl Mode {
+    /// The open prompt's text field, if a prompt is open.
+    pub fn line_mut(&mut self) -> Option<&mut LineEdit> {
+        match self {
+            Mode::Prompt(l) | Mode::Value(_, l) => Some(l),
+            Mode::Main | Mode::Help => None,
+        }
+    }
+}
+
+/// The longest text a prompt takes.
+pub const PROMPT_MAX_CHARS: usize = 200;
 
 /// A line for the status bar.
 #[derive(Clone, Debug, PartialEq)]
@@ -109,6 +132,8 @@ pub struct App {
     /// Index into [`Axis::ALL`] of the selected slider.
     pub selected: usize,
     pub mode: Mode,
+    /// The help's page (wrapping around the pages the terminal needs).
+    pub help_page: usize,
     pub status: Option<Status>,
     /// Terminal size, columns × rows.
     pub size: (u16, u16),
@@ -180,6 +205,7 @@ impl App {
             state,
             selected: 0,
             mode: Mode::Main,
+            help_page: 0,
             status: None,
             size,
             theme,
@@ -197,6 +223,11 @@ impl App {
             .unwrap_or(0);
         app.refresh();
         app
+    }
+
+    /// Whether the terminal is below the smallest size the explorer draws in.
+    pub fn too_small(&self) -> bool {
+        view::areas(self.size).is_none()
     }
 
     pub fn selected_axis(&self) -> Axis {
@@ -387,38 +418,76 @@ pub fn update(app: &mut App, msg: Message) {
                 })
                 .collect();
             let stem = snapshot::default_stem(&name, SystemTime::now());
-            app.mode = Mode::Prompt(stem);
+            app.mode = Mode::Prompt(LineEdit::new(&stem, PROMPT_MAX_CHARS));
+        }
+        Message::StartValue => {
+            app.mode = Mode::Value(app.selected_axis(), LineEdit::new("", PROMPT_MAX_CHARS));
         }
         Message::ToggleHelp => {
+            app.help_page = 0;
             app.mode = match app.mode {
                 Mode::Help => Mode::Main,
                 _ => Mode::Help,
             }
         }
         Message::CloseHelp => app.mode = Mode::Main,
-        Message::PromptInput(c) => {
-            if let Mode::Prompt(s) = &mut app.mode {
-                if s.chars().count() < 200 {
-                    s.push(c);
-                }
+        Message::HelpPage { next } => {
+            app.help_page = if next {
+                app.help_page.wrapping_add(1)
+            } else {
+                app.help_page.wrapping_sub(1)
             }
         }
-        Message::PromptBackspace => {
-            if let Mode::Prompt(s) = &mut app.mode {
-                s.pop();
+        Message::PromptEdit(e) => {
+            if let Some(l) = app.mode.line_mut() {
+                l.apply(e);
             }
         }
-        Message::PromptCancel => {
-            if matches!(app.mode, Mode::Prompt(_)) {
+        Message::PromptCancel => match app.mode {
+            Mode::Prompt(_) => {
                 app.mode = Mode::Main;
                 app.set_status("save cancelled", false);
             }
-        }
-        Message::PromptAccept => {
-            let Mode::Prompt(stem) = &app.mode else {
+            Mode::Value(..) => app.mode = Mode::Main,
+            Mode::Main | Mode::Help => {}
+        },
+        Message::PromptAccept => accept_prompt(app),
+        Message::Resize(w, h) => app.size = (w, h),
+        Message::Quit => app.quit = true,
+    }
+    app.refresh();
+}
+
+/// Enter in a prompt: save under the typed name, or set the typed value.
+/// A bad name or value keeps the prompt open, with the reason.
+fn accept_prompt(app: &mut App) {
+    match &app.mode {
+        Mode::Value(axis, line) => {
+            let (axis, text) = (*axis, line.text());
+            if text.trim().is_empty() {
+                app.mode = Mode::Main;
                 return;
-            };
-            let stem = stem.clone();
+            }
+            match value_input::apply_value(&app.state.params, axis, &text) {
+                Ok(p) => {
+                    let mut next = app.state.clone();
+                    next.params = p;
+                    if let Err(e) = next.check() {
+                        app.set_status(e.to_string(), true);
+                        return;
+                    }
+                    app.mode = Mode::Main;
+                    if p != app.state.params {
+                        app.state.params = p;
+                        app.modified = true;
+                    }
+                    app.status = None;
+                }
+                Err(e) => app.set_status(e, true),
+            }
+        }
+        Mode::Prompt(line) => {
+            let stem = line.text();
             if let Err(why) = snapshot::check_stem(&stem) {
                 // Stay in the prompt so the name can be fixed.
                 app.set_status(format!("cannot save: {why}"), true);
@@ -430,8 +499,6 @@ pub fn update(app: &mut App, msg: Message) {
                 Err(e) => app.set_status(format!("{e:#}"), true),
             }
         }
-        Message::Resize(w, h) => app.size = (w, h),
-        Message::Quit => app.quit = true,
+        Mode::Main | Mode::Help => {}
     }
-    app.refresh();
 }

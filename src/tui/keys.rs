@@ -4,6 +4,7 @@
 use crossterm::event::{Event, KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
 
 use super::app::{App, Message, Mode};
+use super::line_edit::Edit;
 
 /// Where a binding applies.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -14,7 +15,7 @@ pub enum Context {
     Help,
     /// The explorer and the help overlay.
     MainAndHelp,
-    /// The save prompt is open.
+    /// A prompt (the save name, a slider's value) is open.
     Prompt,
 }
 
@@ -24,7 +25,7 @@ impl Context {
             (self, mode),
             (Context::Main | Context::MainAndHelp, Mode::Main)
                 | (Context::Help | Context::MainAndHelp, Mode::Help)
-                | (Context::Prompt, Mode::Prompt(_))
+                | (Context::Prompt, Mode::Prompt(_) | Mode::Value(..))
         )
     }
 }
@@ -91,8 +92,12 @@ pub struct Binding {
     pub footer: Option<&'static str>,
 }
 
-use KeyCode::{Backspace, Down, Enter, Esc, Left, Right, Up};
+use KeyCode::{Backspace, Delete, Down, End, Enter, Esc, Home, Left, PageDown, PageUp, Right, Up};
 use Message as M;
+
+const fn edit(e: Edit) -> Message {
+    M::PromptEdit(e)
+}
 
 pub const BINDINGS: &[Binding] = &[
     Binding {
@@ -193,6 +198,13 @@ pub const BINDINGS: &[Binding] = &[
     },
     Binding {
         context: Context::Main,
+        keys: &[(key(Enter), M::StartValue)],
+        label: "Enter",
+        help: "type its value (25nm, 2 mm, 1e-3)",
+        footer: Some("⏎ type"),
+    },
+    Binding {
+        context: Context::Main,
         keys: &[(ch('x'), M::CycleSweep)],
         label: "x",
         help: "sweep the next parameter",
@@ -234,6 +246,19 @@ pub const BINDINGS: &[Binding] = &[
         footer: None,
     },
     Binding {
+        context: Context::Help,
+        keys: &[
+            (key(Right), M::HelpPage { next: true }),
+            (key(PageDown), M::HelpPage { next: true }),
+            (ch(' '), M::HelpPage { next: true }),
+            (key(Left), M::HelpPage { next: false }),
+            (key(PageUp), M::HelpPage { next: false }),
+        ],
+        label: "→ ←  PgDn PgUp",
+        help: "next / previous page of the help",
+        footer: None,
+    },
+    Binding {
         context: Context::MainAndHelp,
         keys: &[(ch('q'), M::Quit), (ctrl('c'), M::Quit)],
         label: "q  Ctrl-C",
@@ -242,23 +267,54 @@ pub const BINDINGS: &[Binding] = &[
     },
     Binding {
         context: Context::Prompt,
-        keys: &[(key(Backspace), M::PromptBackspace)],
-        label: "text ⌫",
-        help: "edit the snapshot name",
+        keys: &[
+            (key(Left), edit(Edit::Left)),
+            (key(Right), edit(Edit::Right)),
+            (key(Home), edit(Edit::Home)),
+            (ctrl('a'), edit(Edit::Home)),
+            (key(End), edit(Edit::End)),
+            (ctrl('e'), edit(Edit::End)),
+        ],
+        label: "← → Home End",
+        help: "move the cursor (also Ctrl-A, Ctrl-E)",
+        footer: None,
+    },
+    Binding {
+        context: Context::Prompt,
+        keys: &[
+            (key(Backspace), edit(Edit::Backspace)),
+            (key(Delete), edit(Edit::Delete)),
+        ],
+        label: "⌫  Del",
+        help: "delete before / under the cursor",
+        footer: None,
+    },
+    Binding {
+        context: Context::Prompt,
+        keys: &[(ctrl('u'), edit(Edit::DeleteToStart))],
+        label: "Ctrl-U",
+        help: "delete up to the cursor (all of it at the end)",
+        footer: None,
+    },
+    Binding {
+        context: Context::Prompt,
+        keys: &[(ctrl('w'), edit(Edit::DeleteWord))],
+        label: "Ctrl-W",
+        help: "delete the word before the cursor",
         footer: None,
     },
     Binding {
         context: Context::Prompt,
         keys: &[(key(Enter), M::PromptAccept)],
         label: "Enter",
-        help: "save under that name",
+        help: "save under that name / set that value",
         footer: None,
     },
     Binding {
         context: Context::Prompt,
         keys: &[(key(Esc), M::PromptCancel), (ctrl('c'), M::PromptCancel)],
-        label: "Esc",
-        help: "cancel the save",
+        label: "Esc  Ctrl-C",
+        help: "cancel",
         footer: None,
     },
 ];
@@ -268,16 +324,24 @@ pub fn message_for_key(app: &App, ev: &KeyEvent) -> Option<Message> {
     if ev.kind == KeyEventKind::Release {
         return None;
     }
+    // While the terminal is too small nothing is shown: only quitting acts.
+    if app.too_small() {
+        let quits = BINDINGS
+            .iter()
+            .flat_map(|b| b.keys)
+            .any(|(k, m)| *m == M::Quit && k.matches(ev));
+        return quits.then_some(M::Quit);
+    }
     for b in BINDINGS.iter().filter(|b| b.context.covers(&app.mode)) {
         if let Some((_, m)) = b.keys.iter().find(|(k, _)| k.matches(ev)) {
             return Some(*m);
         }
     }
-    // The prompt takes any other printable character as text.
-    if let (Mode::Prompt(_), KeyCode::Char(c)) = (&app.mode, ev.code) {
+    // A prompt takes any other printable character as text.
+    if let (Mode::Prompt(_) | Mode::Value(..), KeyCode::Char(c)) = (&app.mode, ev.code) {
         let plain = ev.modifiers - KeyModifiers::SHIFT;
         if plain.is_empty() && !c.is_control() {
-            return Some(Message::PromptInput(c));
+            return Some(edit(Edit::Insert(c)));
         }
     }
     None

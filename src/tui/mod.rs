@@ -3,9 +3,13 @@
 //! something, so an idle session writes nothing to the terminal.
 
 pub mod app;
+pub mod help;
 pub mod keys;
+pub mod line_edit;
+pub mod status;
 pub mod term;
 pub mod theme;
+pub mod value_input;
 pub mod view;
 
 use std::io::Write;

@@ -3,15 +3,16 @@
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Alignment, Rect};
-use ratatui::style::{Modifier, Style};
+use ratatui::style::Style;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Block, Borders, Chart, Clear, Dataset, GraphType, Paragraph, Widget, Wrap};
+use ratatui::widgets::{Chart, Dataset, GraphType, Paragraph, Widget, Wrap};
 
 use rough_model::Axis;
 
 use super::app::{to_plot, App, Mode};
-use super::keys::{self, Context};
+use super::keys;
 use super::theme::CurveStyle;
+use super::{help, status};
 
 /// The smallest terminal the explorer draws in; below it, a short message.
 pub const MIN_SIZE: (u16, u16) = (80, 24);
@@ -201,10 +202,10 @@ impl Widget for &App {
         render_sliders(self, a.sliders, a.slider_rows, buf);
         render_readout(self, a.readout, buf);
         render_chart(self, a.chart, buf);
-        render_status(self, a.status, buf);
         render_footer(self, a.footer, buf);
+        status::render_status(self, a.status, a.footer, buf);
         if self.mode == Mode::Help {
-            render_help(self, area, buf);
+            help::render_help(self, area, buf);
         }
     }
 }
@@ -545,30 +546,6 @@ fn render_chart(app: &App, area: Rect, buf: &mut Buffer) {
         .render(g, buf);
 }
 
-fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
-    let t = &app.theme;
-    let line = match (&app.mode, &app.status) {
-        (Mode::Prompt(stem), status) => {
-            let mut spans = vec![
-                Span::styled("save as: ", t.title),
-                Span::raw(stem.clone()),
-                Span::styled(" ", Style::new().add_modifier(Modifier::REVERSED)),
-                Span::raw(".ron  (Enter saves, Esc cancels)"),
-            ];
-            if let Some(s) = status.as_ref().filter(|s| s.error) {
-                spans.push(Span::styled(format!("  {}", s.text), t.error));
-            }
-            Line::from(spans)
-        }
-        (_, Some(s)) => Line::styled(s.text.clone(), if s.error { t.error } else { t.ok }),
-        (_, None) => Line::styled(
-            "? help · the ↔ slider moves the marker · the readout is at the marker",
-            t.dim,
-        ),
-    };
-    line.render(area, buf);
-}
-
 fn render_footer(app: &App, area: Rect, buf: &mut Buffer) {
     let mut text = String::new();
     for entry in keys::footer(&app.mode) {
@@ -582,36 +559,4 @@ fn render_footer(app: &App, area: Rect, buf: &mut Buffer) {
         text.push_str(entry);
     }
     Line::styled(text, app.theme.dim).render(area, buf);
-}
-
-fn render_help(app: &App, area: Rect, buf: &mut Buffer) {
-    let t = &app.theme;
-    let mut lines = Vec::new();
-    let mut prompt_heading = false;
-    for b in keys::BINDINGS {
-        if b.context == Context::Prompt && !prompt_heading {
-            lines.push(Line::styled("in the save prompt:", t.title));
-            prompt_heading = true;
-        }
-        lines.push(Line::from(vec![
-            Span::styled(format!(" {:<12}", b.label), t.title),
-            Span::raw(b.help),
-        ]));
-    }
-    let h = (lines.len() as u16 + 2).min(area.height);
-    let w = 56.min(area.width);
-    let r = Rect::new(
-        area.x + (area.width - w) / 2,
-        area.y + (area.height - h) / 2,
-        w,
-        h,
-    );
-    Clear.render(r, buf);
-    Paragraph::new(lines)
-        .block(
-            Block::default()
-                .borders(Borders::ALL)
-                .title(" keys · Esc or ? closes "),
-        )
-        .render(r, buf);
 }

@@ -2,6 +2,7 @@
 //! parts it needs with `mod common;`).
 #![allow(dead_code)]
 
+pub mod app;
 pub mod tmux;
 
 use std::path::Path;

@@ -1,0 +1,105 @@
+//! The help overlay: the keys (from the one key table), then the symbols the
+//! screen uses, a line each, in pages when the terminal is short.
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, Borders, Clear, Paragraph, Widget};
+
+use super::app::App;
+use super::keys::{self, Context};
+
+/// What each symbol on the screen means.
+pub const SYMBOLS: &[(&str, &str)] = &[
+    (
+        "Ψ_GW",
+        "Greenwood–Williamson plasticity index (E/H0)√(h_rms/R_s)",
+    ),
+    ("Ψ_P", "Persson's plasticity index √V/H0 (eq. 11)"),
+    (
+        "Ψ*",
+        "the index with size-dependent hardness, √V/H_y (eq. 12)",
+    ),
+    ("Ψ*asy", "the paper's asymptotic form of Ψ* (eq. 13)"),
+    ("ψ", "the index in use: Ψ* with the size effect, else Ψ_P"),
+    ("R_s", "mean radius of the asperity summits"),
+    ("λ1", "shortest wavelength of the roughness, 2π/q1"),
+    ("h′", "rms slope of the surface, √(2 m2)"),
+    ("h_rms", "rms height of the roughness"),
+    ("ζ", "magnification q1/q0: how fine the roughness goes"),
+    ("H", "the Hurst exponent of the roughness (not a hardness)"),
+    ("H0  H_y", "bulk hardness; size-dependent hardness at R_s"),
+    ("R*", "length of the hardness size effect (0 = none)"),
+    ("p̄", "mean (nominal) contact pressure"),
+    (
+        "S_el S_pl",
+        "initial slopes H·dA/dp̄/A0, elastic and plastic",
+    ),
+    ("S_tot", "their sum, the total contact area's slope"),
+    ("S_P", "Persson's purely elastic slope, for comparison"),
+    (
+        "regime",
+        "plastic share < 10 % elastic, ≤ 90 % elasto-plastic, else",
+    ),
+    (
+        "",
+        "plastic: this program's thresholds (the paper sets none)",
+    ),
+];
+
+/// The help's lines, all pages together.
+pub fn lines(app: &App) -> Vec<Line<'static>> {
+    let t = &app.theme;
+    let mut lines = Vec::new();
+    let mut prompt_heading = false;
+    for b in keys::BINDINGS {
+        if b.context == Context::Prompt && !prompt_heading {
+            lines.push(Line::styled("in a prompt (save name, value):", t.title));
+            prompt_heading = true;
+        }
+        lines.push(Line::from(vec![
+            Span::styled(format!(" {:<15}", b.label), t.title),
+            Span::raw(b.help),
+        ]));
+    }
+    lines.push(Line::styled("symbols:", t.title));
+    for (sym, what) in SYMBOLS {
+        lines.push(Line::from(vec![
+            Span::styled(format!(" {sym:<10}"), t.title),
+            Span::raw(*what),
+        ]));
+    }
+    lines
+}
+
+pub fn render_help(app: &App, area: Rect, buf: &mut Buffer) {
+    let lines = lines(app);
+    let w = 78.min(area.width);
+    let h = (lines.len() as u16 + 2).min(area.height);
+    let per_page = usize::from(h.saturating_sub(2)).max(1);
+    let pages = lines.len().div_ceil(per_page).max(1);
+    let page = app.help_page % pages;
+    let r = Rect::new(
+        area.x + (area.width - w) / 2,
+        area.y + (area.height - h) / 2,
+        w,
+        h,
+    );
+    let title = if pages > 1 {
+        format!(
+            " help {}/{pages} · → next page · Esc or ? closes ",
+            page + 1
+        )
+    } else {
+        " help · Esc or ? closes ".to_string()
+    };
+    let shown: Vec<Line> = lines
+        .into_iter()
+        .skip(page * per_page)
+        .take(per_page)
+        .collect();
+    Clear.render(r, buf);
+    Paragraph::new(shown)
+        .block(Block::default().borders(Borders::ALL).title(title))
+        .render(r, buf);
+}

@@ -1,0 +1,132 @@
+//! The status row and, below it, the footer row: a prompt with its cursor and
+//! its reason for refusing; a status message wrapped over both rows when it
+//! is longer than the terminal is wide, so the reason is always visible.
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::style::{Modifier, Style};
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Clear, Widget};
+
+use super::app::{App, Mode};
+use super::line_edit::LineEdit;
+use super::value_input;
+use super::view::{axis_name, fmt_param, fmt_short};
+
+/// The text field with its cursor cell in reverse video.
+fn field(line: &LineEdit) -> Vec<Span<'static>> {
+    let (before, after) = line.split();
+    let mut rest = after.chars();
+    let under = rest.next().map_or(" ".to_string(), String::from);
+    vec![
+        Span::raw(before),
+        Span::styled(under, Style::new().add_modifier(Modifier::REVERSED)),
+        Span::raw(rest.collect::<String>()),
+    ]
+}
+
+/// `text` in at most `width` characters: when longer, its middle gives way
+/// to "…", so that both what failed (the start) and why (the end) show.
+pub fn elide_middle(text: &str, width: usize) -> String {
+    let n = text.chars().count();
+    if n <= width {
+        return text.to_string();
+    }
+    if width < 2 {
+        return "…".chars().take(width).collect();
+    }
+    let head = (width - 1) / 3;
+    let tail = width - 1 - head;
+    let mut out: String = text.chars().take(head).collect();
+    out.push('…');
+    out.extend(text.chars().skip(n - tail));
+    out
+}
+
+/// `status` is the status row, `below` the footer row under it.
+pub fn render_status(app: &App, status: Rect, below: Rect, buf: &mut Buffer) {
+    let t = &app.theme;
+    let error = app.status.as_ref().filter(|s| s.error);
+    let (first, second) = match &app.mode {
+        Mode::Prompt(line) => {
+            let mut spans = vec![Span::styled("save as: ", t.title)];
+            spans.extend(field(line));
+            spans.push(Span::raw(".ron"));
+            let hint = "Enter saves · Esc cancels · Ctrl-U clears · Ctrl-W deletes a word";
+            (Line::from(spans), Some(hint.to_string()))
+        }
+        Mode::Value(axis, line) => {
+            let mut spans = vec![Span::styled(format!("{} = ", axis_name(*axis)), t.title)];
+            spans.extend(field(line));
+            let (lo, hi) = app.range(*axis);
+            spans.push(Span::styled(
+                format!(
+                    "   now {} · slider {}…{}",
+                    fmt_param(*axis, app.state.params.get(*axis)),
+                    fmt_short(*axis, lo),
+                    fmt_short(*axis, hi)
+                ),
+                t.dim,
+            ));
+            let units = if value_input::is_length(*axis) {
+                "units m cm mm µm nm pm (none: m) · "
+            } else {
+                ""
+            };
+            (
+                Line::from(spans),
+                Some(format!("{units}Enter sets · Esc cancels")),
+            )
+        }
+        Mode::Main | Mode::Help => {
+            let w = usize::from(status.width);
+            let (text, style) = match &app.status {
+                Some(s) => (s.text.clone(), if s.error { t.error } else { t.ok }),
+                None => (
+                    "? help · the ↔ slider moves the marker · the readout is at the marker".into(),
+                    t.dim,
+                ),
+            };
+            // Too long for one row: continued on the footer's row, its
+            // middle elided if even two rows are too few.
+            let text = elide_middle(&text, 2 * w);
+            let (first, rest): (String, String) = (
+                text.chars().take(w).collect(),
+                text.chars().skip(w).collect(),
+            );
+            if !rest.is_empty() {
+                Clear.render(below, buf);
+                Line::styled(rest, style).render(below, buf);
+            }
+            let line = Line::styled(first, style);
+            line.render(status, buf);
+            return;
+        }
+    };
+    first.render(status, buf);
+    // The prompt's second row: the reason for a refusal, else how to go on.
+    Clear.render(below, buf);
+    match (error, second) {
+        (Some(e), _) => {
+            // The prompt says what is being done; the row says why not.
+            let why = e.text.strip_prefix("cannot save: ").unwrap_or(&e.text);
+            Line::styled(elide_middle(why, usize::from(below.width)), t.error).render(below, buf)
+        }
+        (None, Some(hint)) => Line::styled(hint, t.dim).render(below, buf),
+        (None, None) => {}
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::elide_middle;
+
+    #[test]
+    fn long_texts_keep_their_start_and_end() {
+        assert_eq!(elide_middle("short", 10), "short");
+        assert_eq!(elide_middle("0123456789abcdef", 10), "012…abcdef");
+        assert_eq!(elide_middle("0123456789abcdef", 10).chars().count(), 10);
+        assert_eq!(elide_middle("abc", 1), "…");
+        assert_eq!(elide_middle("abc", 0), "");
+    }
+}

@@ -1,0 +1,231 @@
+//! What a class runs into, without a terminal: the value prompt, the save
+//! prompt's editing keys, the help's symbols, status lines at 80 columns,
+//! and a too-small terminal that takes only quit keys.
+
+mod common;
+
+use common::app::{ch, ctrl, fig, press, screen, type_text};
+use crossterm::event::{KeyCode, KeyModifiers};
+use rough_model::Axis;
+use roughtui::tui::app::{update, Message, Mode};
+use roughtui::tui::help::SYMBOLS;
+
+fn enter(a: &mut roughtui::tui::app::App) {
+    press(a, KeyCode::Enter, KeyModifiers::NONE);
+}
+
+fn prompt_text(a: &roughtui::tui::app::App) -> String {
+    match &a.mode {
+        Mode::Prompt(l) | Mode::Value(_, l) => l.text(),
+        m => panic!("no prompt open: {m:?}"),
+    }
+}
+
+#[test]
+fn enter_types_an_exact_value_with_units() {
+    let mut a = fig("fig2");
+    ch(&mut a, 'k'); // h_rms, above ζ
+    assert_eq!(a.selected_axis(), Axis::HRms);
+    enter(&mut a);
+    assert!(matches!(a.mode, Mode::Value(Axis::HRms, _)), "{:?}", a.mode);
+    let s = screen(&a);
+    assert!(s.contains("h_rms = "), "{s}");
+    assert!(s.contains("units m cm mm µm nm pm"), "{s}");
+    type_text(&mut a, "25nm");
+    enter(&mut a);
+    assert_eq!(a.mode, Mode::Main);
+    assert_eq!(a.state.params.get(Axis::HRms), 2.5e-8);
+    assert!(a.modified);
+    assert!(screen(&a).contains("25.0 nm"));
+
+    // With a space and another unit; then a plain number on ζ.
+    enter(&mut a);
+    type_text(&mut a, "0.1 µm");
+    enter(&mut a);
+    assert_eq!(a.state.params.get(Axis::HRms), 1e-7);
+    ch(&mut a, 'j'); // ζ
+    enter(&mut a);
+    type_text(&mut a, "300");
+    enter(&mut a);
+    assert_eq!(a.state.params.get(Axis::Zeta), 300.0);
+}
+
+#[test]
+fn bad_values_keep_the_prompt_with_the_reason_and_esc_cancels() {
+    let mut a = fig("fig2");
+    ch(&mut a, 'j'); // H, the Hurst exponent, below ζ
+    assert_eq!(a.selected_axis(), Axis::Hurst);
+    let before = a.state.clone();
+    enter(&mut a);
+    type_text(&mut a, "1.5");
+    enter(&mut a);
+    assert!(
+        matches!(a.mode, Mode::Value(..)),
+        "a refusal keeps the prompt"
+    );
+    let st = a.status.clone().unwrap();
+    assert!(
+        st.error && st.text.contains("hurst = 1.5 is out of range"),
+        "{st:?}"
+    );
+    assert!(screen(&a).contains("hurst = 1.5 is out of range"));
+    // q and other command keys are text in the prompt.
+    type_text(&mut a, "qx");
+    assert!(!a.quit);
+    assert_eq!(prompt_text(&a), "1.5qx");
+    enter(&mut a);
+    let st = a.status.clone().unwrap();
+    assert!(st.text.contains("hurst takes no unit (\"qx\")"), "{st:?}");
+    press(&mut a, KeyCode::Esc, KeyModifiers::NONE);
+    assert_eq!(a.mode, Mode::Main);
+    assert_eq!(a.state, before);
+    assert!(!a.modified);
+    // A unit on a number without one.
+    enter(&mut a);
+    type_text(&mut a, "0.5 nm");
+    enter(&mut a);
+    assert!(a
+        .status
+        .as_ref()
+        .unwrap()
+        .text
+        .contains("hurst takes no unit"));
+}
+
+#[test]
+fn the_save_prompt_edits_at_a_cursor() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut a = fig("fig2");
+    a.save_dir = dir.path().to_path_buf();
+    ch(&mut a, 's');
+    let stem = prompt_text(&a);
+    assert!(stem.starts_with("fig2-20"), "{stem}");
+    // Ctrl-W deletes the last word, then the separator and the next one.
+    ctrl(&mut a, 'w');
+    ctrl(&mut a, 'w');
+    assert_eq!(prompt_text(&a), "fig2-");
+    ctrl(&mut a, 'u');
+    assert_eq!(prompt_text(&a), "");
+    type_text(&mut a, "run");
+    press(&mut a, KeyCode::Home, KeyModifiers::NONE);
+    type_text(&mut a, "my-");
+    press(&mut a, KeyCode::End, KeyModifiers::NONE);
+    type_text(&mut a, "1");
+    press(&mut a, KeyCode::Left, KeyModifiers::NONE);
+    press(&mut a, KeyCode::Left, KeyModifiers::NONE);
+    press(&mut a, KeyCode::Delete, KeyModifiers::NONE);
+    ctrl(&mut a, 'a');
+    press(&mut a, KeyCode::Right, KeyModifiers::NONE);
+    press(&mut a, KeyCode::Backspace, KeyModifiers::NONE);
+    ctrl(&mut a, 'e');
+    assert_eq!(prompt_text(&a), "y-ru1");
+    // The cursor is drawn where it is.
+    press(&mut a, KeyCode::Left, KeyModifiers::NONE);
+    let s = screen(&a);
+    assert!(s.contains("save as: y-ru1.ron"), "{s}");
+    enter(&mut a);
+    assert!(dir.path().join("y-ru1.ron").exists());
+}
+
+#[test]
+fn the_help_explains_every_symbol_on_some_page() {
+    let mut a = fig("fig2");
+    ch(&mut a, '?');
+    let mut seen = String::new();
+    for _ in 0..4 {
+        seen.push_str(&screen(&a));
+        press(&mut a, KeyCode::Right, KeyModifiers::NONE);
+    }
+    assert_eq!(a.mode, Mode::Help, "paging keeps the help open");
+    for (sym, what) in SYMBOLS {
+        let first_words: String = what.chars().take(20).collect();
+        assert!(
+            seen.contains(&first_words),
+            "{sym}: \"{first_words}\" not in the help"
+        );
+    }
+    for must in [
+        "Ψ_GW",
+        "Ψ*asy",
+        "R_s",
+        "λ1",
+        "h′",
+        "S_P",
+        "p̄",
+        "Hurst exponent",
+        "H_y",
+    ] {
+        assert!(seen.contains(must), "{must}");
+    }
+    assert!(seen.contains("this program's thresholds"));
+    assert!(
+        seen.contains("help 1/2") && seen.contains("help 2/2"),
+        "{seen}"
+    );
+}
+
+#[test]
+fn long_status_lines_keep_their_reason_at_80_columns() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut a = fig("fig2");
+    a.save_dir = dir.path().to_path_buf();
+    ch(&mut a, 's');
+    ctrl(&mut a, 'u');
+    type_text(&mut a, "a/b");
+    enter(&mut a);
+    let s = screen(&a);
+    assert!(s.contains("it must be a file name, not a path"), "{s}");
+    // A very long bad name: its middle gives way, the reason stays.
+    ctrl(&mut a, 'u');
+    type_text(&mut a, &format!("x/{}", "y".repeat(150)));
+    enter(&mut a);
+    let s = screen(&a);
+    assert!(s.contains("not a path (no '/' or '\\')"), "{s}");
+    assert!(s.contains('…'), "{s}");
+    // Outside the prompt, a long status wraps onto the footer's row.
+    press(&mut a, KeyCode::Esc, KeyModifiers::NONE);
+    a.save_dir = "/proc/no/such/folder/with/a/rather/long/name/to/push/the/reason/out".into();
+    ch(&mut a, 's');
+    enter(&mut a);
+    let st = a.status.clone().unwrap();
+    assert!(st.error && st.text.chars().count() > 80, "{st:?}");
+    let s = screen(&a);
+    let tail: String = st
+        .text
+        .chars()
+        .rev()
+        .take(20)
+        .collect::<Vec<_>>()
+        .into_iter()
+        .rev()
+        .collect();
+    assert!(s.contains(&tail), "\"{tail}\" not shown:\n{s}");
+}
+
+#[test]
+fn too_small_only_quit_keys_act() {
+    let mut a = fig("fig2");
+    let before = a.state.clone();
+    update(&mut a, Message::Resize(40, 12));
+    press(&mut a, KeyCode::Right, KeyModifiers::NONE);
+    for c in ['l', 'x', 'm', 'e', '2', 's', '?', 'g'] {
+        ch(&mut a, c);
+    }
+    enter(&mut a);
+    assert_eq!(a.state, before, "hidden state changed");
+    assert_eq!(a.mode, Mode::Main);
+    assert!(!a.modified);
+    // A prompt opened before the shrink takes no text while too small.
+    update(&mut a, Message::Resize(80, 24));
+    ch(&mut a, 's');
+    let stem = prompt_text(&a);
+    update(&mut a, Message::Resize(60, 20));
+    ch(&mut a, 'x');
+    assert_eq!(prompt_text(&a), stem);
+    ch(&mut a, 'q');
+    assert!(a.quit, "q quits even with the prompt open");
+    let mut b = fig("fig2");
+    update(&mut b, Message::Resize(79, 24));
+    ctrl(&mut b, 'c');
+    assert!(b.quit);
+}
