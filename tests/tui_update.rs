@@ -11,9 +11,10 @@ use rough_model::{Axis, Model};
 use roughtui::presets;
 use roughtui::snapshot::check_stem;
 use roughtui::tui::app::{step_value, update, App, Message, Mode};
+use roughtui::tui::fmt;
 use roughtui::tui::keys::{self, message_for_key};
+use roughtui::tui::layout::Regions;
 use roughtui::tui::theme::Theme;
-use roughtui::tui::view;
 
 fn fig(name: &str) -> App {
     App::new(presets::load(name).unwrap(), Theme::colored(), (80, 24))
@@ -49,7 +50,7 @@ fn screen(app: &App) -> String {
 fn opens_on_the_swept_slider_with_one_point_per_braille_column() {
     let a = fig("fig2");
     assert_eq!(a.selected_axis(), Axis::Zeta);
-    let g = view::graph_area((80, 24)).unwrap();
+    let g = Regions::of_size((80, 24)).unwrap().graph;
     assert_eq!(a.plot.points, 2 * g.width as usize);
     assert_eq!(a.recomputes, 1);
     // The paper's asymptotic moments keep ψ finite down to ζ = 1, so every
@@ -394,26 +395,26 @@ fn small_terminals_get_a_message_and_resizing_back_restores() {
     update(&mut a, Message::Resize(160, 48));
     assert_eq!(
         a.plot.points,
-        2 * view::graph_area((160, 48)).unwrap().width as usize
+        2 * Regions::of_size((160, 48)).unwrap().graph.width as usize
     );
 }
 
 #[test]
 fn numbers_are_formatted_with_units() {
-    assert_eq!(view::fmt_len(2e-8), "20.0 nm");
-    assert_eq!(view::fmt_len(1e-3), "1.00 mm");
-    assert_eq!(view::fmt_len(1.9676875762993e-5), "19.7 µm");
-    assert_eq!(view::fmt_short(Axis::HRms, 1e-5), "10 µm");
-    assert_eq!(view::fmt_short(Axis::RStar, 1e-2), "10 mm");
-    assert_eq!(view::fmt_short(Axis::H0OverE, 1e-4), "1e-4");
-    assert_eq!(view::fmt_short(Axis::Hurst, 0.05), "0.05");
-    assert_eq!(view::fmt_num(128.0), "128");
-    assert_eq!(view::fmt_num(0.0741847), "0.0742");
-    assert_eq!(view::fmt_num(7.5e-39), "7.50e-39");
-    assert_eq!(view::fmt_num(f64::INFINITY), "∞");
-    assert_eq!(view::fmt_rel(1.1, 1.0), "+10.0%");
-    assert_eq!(view::fmt_rel(f64::INFINITY, f64::INFINITY), "±0%");
-    assert_eq!(view::fmt_rel(1.0, 0.0), "n/a");
+    assert_eq!(fmt::fmt_len(2e-8), "20.0 nm");
+    assert_eq!(fmt::fmt_len(1e-3), "1.00 mm");
+    assert_eq!(fmt::fmt_len(1.9676875762993e-5), "19.7 µm");
+    assert_eq!(fmt::fmt_short(Axis::HRms, 1e-5), "10 µm");
+    assert_eq!(fmt::fmt_short(Axis::RStar, 1e-2), "10 mm");
+    assert_eq!(fmt::fmt_short(Axis::H0OverE, 1e-4), "1e-4");
+    assert_eq!(fmt::fmt_short(Axis::Hurst, 0.05), "0.05");
+    assert_eq!(fmt::fmt_num(128.0), "128");
+    assert_eq!(fmt::fmt_num(0.0741847), "0.0742");
+    assert_eq!(fmt::fmt_num(7.5e-39), "7.50e-39");
+    assert_eq!(fmt::fmt_num(f64::INFINITY), "∞");
+    assert_eq!(fmt::fmt_rel(1.1, 1.0), "+10.0%");
+    assert_eq!(fmt::fmt_rel(f64::INFINITY, f64::INFINITY), "±0%");
+    assert_eq!(fmt::fmt_rel(1.0, 0.0), "n/a");
 }
 
 fn any_message() -> impl Strategy<Value = Message> {

@@ -9,8 +9,8 @@ use rough_model::{
     persson_elastic, slopes, Axis, Curves, Scene, SceneSpec, Slopes, Surface, Sweep,
 };
 
+use super::layout::Regions;
 use super::theme::Theme;
-use super::view;
 use crate::presets;
 use crate::snapshot::{self, State};
 
@@ -231,10 +231,10 @@ impl App {
     /// Recomputes the readout, and the curves when what they depend on changed.
     fn refresh(&mut self) {
         self.readout = Readout::of(&self.state);
-        let Some(graph) = view::graph_area(self.size) else {
+        let Some(regions) = Regions::of_size(self.size) else {
             return;
         };
-        let points = (usize::from(graph.width) * 2).max(2);
+        let points = (usize::from(regions.graph.width) * 2).max(2);
         let key = self.curve_key(points);
         if self.key == Some(key) {
             return;

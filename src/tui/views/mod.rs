@@ -1,0 +1,154 @@
+//! Drawing: `impl Widget for &App`, split into `(area, buf)` helpers, one
+//! view per file. Reads the app, never changes it; where things go comes
+//! from [`Regions`].
+
+mod chart;
+mod side;
+mod slopes;
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::{Alignment, Rect};
+use ratatui::style::{Modifier, Style};
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, Borders, Clear, Paragraph, Widget, Wrap};
+
+use super::app::{App, Mode};
+use super::fmt::{axis_name, fmt_short};
+use super::keys::{self, Context};
+use super::layout::{Regions, MIN_SIZE};
+
+impl Widget for &App {
+    fn render(self, area: Rect, buf: &mut Buffer) {
+        let Some(r) = Regions::of(area) else {
+            render_too_small(area, buf);
+            return;
+        };
+        render_header(self, r.header, buf);
+        side::render_sliders(self, r.sliders, r.slider_rows, buf);
+        side::render_readout(self, r.readout, buf);
+        slopes::render(self, (r.chart, r.graph), buf);
+        render_status(self, r.status, buf);
+        render_footer(self, r.footer, buf);
+        if self.mode == Mode::Help {
+            render_help(self, area, buf);
+        }
+    }
+}
+
+fn render_too_small(area: Rect, buf: &mut Buffer) {
+    if area.width == 0 || area.height == 0 {
+        return;
+    }
+    let text = format!(
+        "enlarge the terminal to {}×{} (now {}×{}) · q quits",
+        MIN_SIZE.0, MIN_SIZE.1, area.width, area.height
+    );
+    let y = area.y + area.height.saturating_sub(2) / 2;
+    let r = Rect::new(area.x, y, area.width, area.height - (y - area.y));
+    Paragraph::new(text)
+        .alignment(Alignment::Center)
+        .wrap(Wrap { trim: true })
+        .render(r, buf);
+}
+
+fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
+    let s = &app.state;
+    let t = &app.theme;
+    let axis = s.sweep.axis();
+    // A snapshot's name is untrusted text: no control characters reach the terminal.
+    let clean: String = s
+        .name
+        .chars()
+        .map(|c| if c.is_control() { '�' } else { c })
+        .collect();
+    let name = if app.modified {
+        format!("{clean}*")
+    } else {
+        clean
+    };
+    let psi_name = if s.size_effect { "Ψ*" } else { "Ψ_P" };
+    let line = Line::from(vec![
+        Span::styled(" roughtui ", t.title),
+        Span::styled(format!("[{name}]"), t.selected),
+        Span::raw(format!(
+            "  sweep {} {}…{} · {} · size effect {} (ψ = {psi_name})",
+            axis_name(axis),
+            fmt_short(axis, s.sweep.from()),
+            fmt_short(axis, s.sweep.to()),
+            s.model.label(),
+            if s.size_effect { "on" } else { "off" },
+        )),
+    ]);
+    line.render(area, buf);
+}
+
+fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
+    let t = &app.theme;
+    let line = match (&app.mode, &app.status) {
+        (Mode::Prompt(stem), status) => {
+            let mut spans = vec![
+                Span::styled("save as: ", t.title),
+                Span::raw(stem.clone()),
+                Span::styled(" ", Style::new().add_modifier(Modifier::REVERSED)),
+                Span::raw(".ron  (Enter saves, Esc cancels)"),
+            ];
+            if let Some(s) = status.as_ref().filter(|s| s.error) {
+                spans.push(Span::styled(format!("  {}", s.text), t.error));
+            }
+            Line::from(spans)
+        }
+        (_, Some(s)) => Line::styled(s.text.clone(), if s.error { t.error } else { t.ok }),
+        (_, None) => Line::styled(
+            "? help · the ↔ slider moves the marker · the readout is at the marker",
+            t.dim,
+        ),
+    };
+    line.render(area, buf);
+}
+
+fn render_footer(app: &App, area: Rect, buf: &mut Buffer) {
+    let mut text = String::new();
+    for entry in keys::footer(&app.mode) {
+        let extra = if text.is_empty() { 0 } else { 2 };
+        if text.chars().count() + extra + entry.chars().count() > area.width as usize {
+            break;
+        }
+        if !text.is_empty() {
+            text.push_str("  ");
+        }
+        text.push_str(entry);
+    }
+    Line::styled(text, app.theme.dim).render(area, buf);
+}
+
+fn render_help(app: &App, area: Rect, buf: &mut Buffer) {
+    let t = &app.theme;
+    let mut lines = Vec::new();
+    let mut prompt_heading = false;
+    for b in keys::BINDINGS {
+        if b.context == Context::Prompt && !prompt_heading {
+            lines.push(Line::styled("in the save prompt:", t.title));
+            prompt_heading = true;
+        }
+        lines.push(Line::from(vec![
+            Span::styled(format!(" {:<12}", b.label), t.title),
+            Span::raw(b.help),
+        ]));
+    }
+    let h = (lines.len() as u16 + 2).min(area.height);
+    let w = 56.min(area.width);
+    let r = Rect::new(
+        area.x + (area.width - w) / 2,
+        area.y + (area.height - h) / 2,
+        w,
+        h,
+    );
+    Clear.render(r, buf);
+    Paragraph::new(lines)
+        .block(
+            Block::default()
+                .borders(Borders::ALL)
+                .title(" keys · Esc or ? closes "),
+        )
+        .render(r, buf);
+}
