@@ -7,10 +7,10 @@ use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyEventState, KeyModifi
 use proptest::prelude::*;
 use ratatui::backend::TestBackend;
 use ratatui::Terminal;
-use rough_model::{Axis, Model};
+use rough_model::{Axis, Model, Moments};
 use roughtui::presets;
 use roughtui::snapshot::check_stem;
-use roughtui::tui::app::{step_value, update, App, Message, Mode};
+use roughtui::tui::app::{step_value, update, App, Message, Mode, HURST_ONE_ASYMPTOTIC};
 use roughtui::tui::fmt;
 use roughtui::tui::keys::{self, message_for_key};
 use roughtui::tui::layout::Regions;
@@ -471,4 +471,54 @@ fn hostile_names_are_shown_and_prefilled_safely() {
         !stem.contains('/') && !stem.chars().any(char::is_control),
         "{stem}"
     );
+}
+
+#[test]
+fn readout_shows_epsilon_and_repulsive_diameter() {
+    // scripts/readout_reference.py (mpmath, asymptotic moments of eq. 10).
+    for (name, eps, d_rep) in [
+        ("fig2", 0.02091856688869314, 7.654655446197433e-7),
+        ("fig4", 1.5142976267524633, 9.797958971132713e-9),
+    ] {
+        let a = fig(name);
+        let sp = a.readout.surface.spectrum;
+        let (e, d) = (2.0 * sp.rms_slope, 4.0 * sp.rms_slope / sp.rms_curvature);
+        assert!((e / eps - 1.0).abs() < 1e-12, "{name}: ε {e} vs {eps}");
+        assert!(
+            (d / d_rep - 1.0).abs() < 1e-12,
+            "{name}: d_rep {d} vs {d_rep}"
+        );
+        let s = screen(&a);
+        let shown = format!("ε     {:<10}d_rep  {}", fmt::fmt_num(e), fmt::fmt_len(d));
+        assert!(s.contains(&shown), "{name}: {shown:?} in\n{s}");
+    }
+    assert!(screen(&fig("fig2")).contains("ε     0.0209    d_rep  765 nm"));
+}
+
+#[test]
+fn a_toggles_the_moments_and_refuses_hurst_one_with_asymptotic() {
+    let mut a = fig("fig2");
+    assert_eq!(a.state.moments, Moments::Asymptotic);
+    let asymptotic = a.readout.psi;
+    ch(&mut a, 'a');
+    assert_eq!(a.state.moments, Moments::Truncated);
+    assert!(a.modified);
+    assert!(screen(&a).contains("truncated moments"));
+    // Ψ_P at ζ = 128 on the truncated spectrum: (E/H0)√(m2/2) with
+    // m2 = πZq0^(2−2H)(ζ^(2−2H) − 1)/(2−2H) (scripts/readout_reference.py).
+    assert!((a.readout.psi / 0.48396447932992285 - 1.0).abs() < 1e-12);
+    assert!(a.readout.psi < asymptotic);
+    // H = 1 with truncated moments, then back to asymptotic: refused.
+    a.state.params = a.state.params.with(Axis::Hurst, 1.0).unwrap();
+    ch(&mut a, 'a');
+    assert_eq!(a.state.moments, Moments::Truncated);
+    assert!(a.status.as_ref().unwrap().error);
+    assert!(screen(&a).contains("H = 1 needs the truncated moments"));
+    // And stepping H up to 1 under asymptotic moments is refused too.
+    let mut a = fig("fig2");
+    a.state.params = a.state.params.with(Axis::Hurst, 0.95).unwrap();
+    a.selected = Axis::ALL.iter().position(|x| *x == Axis::Hurst).unwrap();
+    press(&mut a, KeyCode::Right, KeyModifiers::NONE);
+    assert_eq!(a.state.params.get(Axis::Hurst), 0.95);
+    assert_eq!(a.status.as_ref().unwrap().text, HURST_ONE_ASYMPTOTIC);
 }

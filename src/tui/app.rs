@@ -29,6 +29,8 @@ pub enum Message {
     CycleSweep,
     ToggleModel,
     ToggleSizeEffect,
+    /// Truncated / asymptotic spectrum moments.
+    ToggleMoments,
     StartSave,
     ToggleHelp,
     CloseHelp,
@@ -316,6 +318,11 @@ fn compute_plot(spec: &SceneSpec) -> Plot {
     plot
 }
 
+/// Why H = 1 and the asymptotic moments do not go together, in the
+/// explorer's words (the model's error names the snapshot field).
+pub const HURST_ONE_ASYMPTOTIC: &str =
+    "H = 1 needs the truncated moments (the asymptotic m2 is infinite there)";
+
 /// The one place that changes an [`App`].
 pub fn update(app: &mut App, msg: Message) {
     let n = Axis::ALL.len();
@@ -327,6 +334,9 @@ pub fn update(app: &mut App, msg: Message) {
             let old = app.state.params.get(axis);
             let v = step_value(axis, old, app.range(axis), up, fine);
             match app.state.params.with(axis, v) {
+                Ok(p) if app.state.moments.check(&p).is_err() => {
+                    app.set_status(HURST_ONE_ASYMPTOTIC, true)
+                }
                 Ok(p) => {
                     if p != app.state.params {
                         app.state.params = p;
@@ -371,6 +381,15 @@ pub fn update(app: &mut App, msg: Message) {
         Message::ToggleSizeEffect => {
             app.state.size_effect = !app.state.size_effect;
             app.modified = true;
+        }
+        Message::ToggleMoments => {
+            let moments = app.state.moments.other();
+            if moments.check(&app.state.params).is_ok() {
+                app.state.moments = moments;
+                app.modified = true;
+            } else {
+                app.set_status(HURST_ONE_ASYMPTOTIC, true);
+            }
         }
         Message::StartSave => {
             // The prefill is a file name: no separators or control characters.

@@ -132,11 +132,12 @@ const FINE_UP: Message = M::Step {
 pub const BINDINGS: &[Binding] = &[
     bind(Main, &[(key(Up), M::SelectPrev), (ch('k'), M::SelectPrev), (key(Down), M::SelectNext), (ch('j'), M::SelectNext)], "↑ ↓  k j", "select a slider", Some("↑↓ select")),
     bind(Main, &[(key(Left), DOWN), (ch('h'), DOWN), (key(Right), UP), (ch('l'), UP)], "← →  h l", "change it (¼ decade; H: 0.05)", Some("←→ change")),
-    bind(Main, &[(shift(Left), FINE_DOWN), (ch('H'), FINE_DOWN), (shift(Right), FINE_UP), (ch('L'), FINE_UP)], "⇧← ⇧→  H L", "fine step (1/40 decade; H: 0.01)", Some("⇧ fine")),
+    bind(Main, &[(shift(Left), FINE_DOWN), (ch('H'), FINE_DOWN), (shift(Right), FINE_UP), (ch('L'), FINE_UP)], "⇧← ⇧→  H L", "fine step (1/40 decade; H: 0.01)", None),
     bind(Main, &[(ch('1'), M::LoadPreset(0)), (ch('2'), M::LoadPreset(1)), (ch('3'), M::LoadPreset(2)), (ch('4'), M::LoadPreset(3))], "1 2 3 4", "load the paper's fig1 … fig4", Some("1-4 figs")),
     bind(Main, &[(ch('x'), M::CycleSweep)], "x", "sweep the next parameter", Some("x sweep")),
     bind(Main, &[(ch('m'), M::ToggleModel)], "m", "exact / closed-form model", Some("m model")),
     bind(Main, &[(ch('e'), M::ToggleSizeEffect)], "e", "size effect on / off", Some("e size")),
+    bind(Main, &[(ch('a'), M::ToggleMoments)], "a", "truncated / asymptotic moments (eq. 10)", Some("a moments")),
     bind(Main, &[(ch('s'), M::StartSave)], "s", "save a snapshot here (.ron)", Some("s save")),
     bind(MainAndHelp, &[(ch('?'), M::ToggleHelp)], "?", "show / hide this help", Some("? help")),
     bind(Help, &[(key(Esc), M::CloseHelp)], "Esc", "close the help", None),
@@ -176,11 +177,29 @@ pub fn message_for_event(app: &App, ev: &Event) -> Option<Message> {
     }
 }
 
-/// The footer entries for a mode, in table order.
-pub fn footer(mode: &Mode) -> Vec<&'static str> {
-    BINDINGS
+/// The footer for a mode in `width` columns: the entries in table order,
+/// those that do not fit left out, but the help key's always kept.
+pub fn footer(mode: &Mode, width: usize) -> String {
+    let entries: Vec<(&str, bool)> = BINDINGS
         .iter()
         .filter(|b| b.context.covers(mode))
-        .filter_map(|b| b.footer)
-        .collect()
+        .filter_map(|b| {
+            let help = b.keys.iter().any(|(_, m)| *m == Message::ToggleHelp);
+            b.footer.map(|f| (f, help))
+        })
+        .collect();
+    let len = |e: &str| e.chars().count() + 2;
+    let mut reserved: usize = entries.iter().filter(|e| e.1).map(|e| len(e.0)).sum();
+    let mut used = 0;
+    let mut parts = Vec::new();
+    for (entry, keep) in entries {
+        if keep {
+            reserved -= len(entry);
+        } else if used + len(entry) + reserved > width + 2 {
+            continue;
+        }
+        used += len(entry);
+        parts.push(entry);
+    }
+    parts.join("  ")
 }

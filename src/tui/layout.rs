@@ -14,6 +14,8 @@ pub const Y_LABEL_W: u16 = 5;
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Regions {
     pub header: Rect,
+    /// The scene's caption and, on its last row, the claims checked live.
+    pub caption: Rect,
     pub sliders: Rect,
     pub readout: Rect,
     /// The chart panel: title, legend, axes, labels and the graph.
@@ -35,8 +37,10 @@ impl Regions {
             return None;
         }
         let left = (w * 2 / 5).clamp(34, 44);
-        let [header, main, status, footer] = Layout::vertical([
+        let caption_rows = if h >= 30 { 3 } else { 2 };
+        let [header, caption, main, status, footer] = Layout::vertical([
             Constraint::Length(1),
+            Constraint::Length(caption_rows),
             Constraint::Fill(1),
             Constraint::Length(1),
             Constraint::Length(1),
@@ -54,6 +58,7 @@ impl Regions {
                 .areas(side);
         Some(Regions {
             header,
+            caption,
             sliders,
             readout,
             chart,

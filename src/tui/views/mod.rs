@@ -13,7 +13,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Clear, Paragraph, Widget, Wrap};
 
 use super::app::{App, Mode};
-use super::fmt::{axis_name, fmt_short};
+use super::fmt::{axis_name, fmt_short, wrap};
 use super::keys::{self, Context};
 use super::layout::{Regions, MIN_SIZE};
 
@@ -24,6 +24,7 @@ impl Widget for &App {
             return;
         };
         render_header(self, r.header, buf);
+        render_caption(self, r.caption, buf);
         side::render_sliders(self, r.sliders, r.slider_rows, buf);
         side::render_readout(self, r.readout, buf);
         slopes::render(self, (r.chart, r.graph), buf);
@@ -66,20 +67,34 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
     } else {
         clean
     };
-    let psi_name = if s.size_effect { "Ψ*" } else { "Ψ_P" };
     let line = Line::from(vec![
         Span::styled(" roughtui ", t.title),
         Span::styled(format!("[{name}]"), t.selected),
         Span::raw(format!(
-            "  sweep {} {}…{} · {} · size effect {} (ψ = {psi_name})",
+            "  {} {}…{} · {} · {} moments · size effect {}",
             axis_name(axis),
             fmt_short(axis, s.sweep.from()),
             fmt_short(axis, s.sweep.to()),
             s.model.label(),
+            s.moments.label(),
             if s.size_effect { "on" } else { "off" },
         )),
     ]);
     line.render(area, buf);
+}
+
+/// The caption, wrapped over all rows but the last, and on the last row
+/// where the figure's claims hold at the current parameters.
+fn render_caption(app: &App, area: Rect, buf: &mut Buffer) {
+    let t = &app.theme;
+    let rows = usize::from(area.height.saturating_sub(1));
+    let text = app.state.caption.as_deref().unwrap_or("");
+    let mut lines: Vec<Line> = wrap(text, usize::from(area.width), rows)
+        .into_iter()
+        .map(|l| Line::styled(l, t.dim))
+        .collect();
+    lines.resize(rows, Line::raw(""));
+    Paragraph::new(lines).render(area, buf);
 }
 
 fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
@@ -107,17 +122,7 @@ fn render_status(app: &App, area: Rect, buf: &mut Buffer) {
 }
 
 fn render_footer(app: &App, area: Rect, buf: &mut Buffer) {
-    let mut text = String::new();
-    for entry in keys::footer(&app.mode) {
-        let extra = if text.is_empty() { 0 } else { 2 };
-        if text.chars().count() + extra + entry.chars().count() > area.width as usize {
-            break;
-        }
-        if !text.is_empty() {
-            text.push_str("  ");
-        }
-        text.push_str(entry);
-    }
+    let text = keys::footer(&app.mode, usize::from(area.width));
     Line::styled(text, app.theme.dim).render(area, buf);
 }
 

@@ -118,8 +118,19 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
             "h′",
             fmt_num(sp.rms_slope),
         )),
+        Line::raw(pair(
+            "ε",
+            fmt_num(2.0 * sp.rms_slope),
+            "d_rep",
+            fmt_len(4.0 * sp.rms_slope / sp.rms_curvature),
+        )),
         Line::styled(
-            format!("at marker: ψ = {} ({})", fmt_num(r.psi), s.model.label()),
+            format!(
+                "marker: {} = {} ({})",
+                if s.size_effect { "Ψ*" } else { "Ψ_P" },
+                fmt_num(r.psi),
+                s.model.label()
+            ),
             t.title,
         ),
         Line::from(slopes1),
