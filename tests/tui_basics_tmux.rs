@@ -92,7 +92,7 @@ fn too_small_takes_only_quit_keys() {
     p.tmux(&["resize-window", "-t", "t", "-x", "100", "-y", "30"]);
     let s = p.wait_text("Readout");
     assert!(s.contains("ζ = 128") && s.contains("[fig2]"), "{s}");
-    assert!(s.contains("sweep ζ"), "{s}");
+    assert!(s.contains("ζ 1…1e4"), "{s}");
 
     p.keys(&["s"]);
     p.wait_text("save as: fig2-");

@@ -54,7 +54,7 @@ fn explorer_under_tmux() {
         assert!(braille(&s) > 30, "{name}:\n{s}");
     }
     p.keys(&["x"]);
-    p.wait_text("sweep H 0.05…1");
+    p.wait_text("H 0.05…1 · ");
     p.keys(&["m"]);
     p.wait_text("· exact ·"); // the presets use the paper's closed form
     p.keys(&["e"]);

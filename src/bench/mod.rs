@@ -18,7 +18,8 @@ use rough_study::compare::{accurate_range, max_error, methods, shipped_closed};
 use rough_study::{rel_err, slopes_reference, SLOPES_CSV};
 
 use crate::cli::BenchArgs;
-pub use table::{fmt_err, fmt_psi, render_table, Row, HEADER};
+use crate::figure::short_number;
+pub use table::{fmt_err, render_table, Row, HEADER};
 
 /// Median nanoseconds per point of `f` over `grid`, from `passes` timed
 /// passes after one untimed warm-up pass. A pass repeats the grid enough
@@ -111,8 +112,8 @@ pub fn report(passes: u32) -> anyhow::Result<String> {
         "\n{} reference ψ (mpmath, {} … {}, and ψ = 0 for errors only); ns/point is the \
          median of {} timed passes; errors are the max over elastic, plastic and total.",
         reference.len(),
-        fmt_psi(lo),
-        fmt_psi(hi),
+        short_number(lo),
+        short_number(hi),
         passes.max(1)
     );
     let _ = writeln!(

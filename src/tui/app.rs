@@ -9,10 +9,10 @@ use rough_model::{
     persson_elastic, slopes, Axis, Curves, Scene, SceneSpec, Slopes, Surface, Sweep,
 };
 
+use super::layout::Regions;
 use super::line_edit::{Edit, LineEdit};
 use super::theme::Theme;
 use super::value_input;
-use super::view;
 use crate::presets;
 use crate::snapshot::{self, State};
 
@@ -31,6 +31,8 @@ pub enum Message {
     CycleSweep,
     ToggleModel,
     ToggleSizeEffect,
+    /// Truncated / asymptotic spectrum moments.
+    ToggleMoments,
     StartSave,
     /// Open the prompt for the selected slider's value.
     StartValue,
@@ -227,7 +229,7 @@ impl App {
 
     /// Whether the terminal is below the smallest size the explorer draws in.
     pub fn too_small(&self) -> bool {
-        view::areas(self.size).is_none()
+        Regions::of_size(self.size).is_none()
     }
 
     pub fn selected_axis(&self) -> Axis {
@@ -262,10 +264,10 @@ impl App {
     /// Recomputes the readout, and the curves when what they depend on changed.
     fn refresh(&mut self) {
         self.readout = Readout::of(&self.state);
-        let Some(graph) = view::graph_area(self.size) else {
+        let Some(regions) = Regions::of_size(self.size) else {
             return;
         };
-        let points = (usize::from(graph.width) * 2).max(2);
+        let points = (usize::from(regions.graph.width) * 2).max(2);
         let key = self.curve_key(points);
         if self.key == Some(key) {
             return;
@@ -347,6 +349,11 @@ fn compute_plot(spec: &SceneSpec) -> Plot {
     plot
 }
 
+/// Why H = 1 and the asymptotic moments do not go together, in the
+/// explorer's words (the model's error names the snapshot field).
+pub const HURST_ONE_ASYMPTOTIC: &str =
+    "H = 1 needs the truncated moments (the asymptotic m2 is infinite there)";
+
 /// The one place that changes an [`App`].
 pub fn update(app: &mut App, msg: Message) {
     let n = Axis::ALL.len();
@@ -358,6 +365,9 @@ pub fn update(app: &mut App, msg: Message) {
             let old = app.state.params.get(axis);
             let v = step_value(axis, old, app.range(axis), up, fine);
             match app.state.params.with(axis, v) {
+                Ok(p) if app.state.moments.check(&p).is_err() => {
+                    app.set_status(HURST_ONE_ASYMPTOTIC, true)
+                }
                 Ok(p) => {
                     if p != app.state.params {
                         app.state.params = p;
@@ -402,6 +412,15 @@ pub fn update(app: &mut App, msg: Message) {
         Message::ToggleSizeEffect => {
             app.state.size_effect = !app.state.size_effect;
             app.modified = true;
+        }
+        Message::ToggleMoments => {
+            let moments = app.state.moments.other();
+            if moments.check(&app.state.params).is_ok() {
+                app.state.moments = moments;
+                app.modified = true;
+            } else {
+                app.set_status(HURST_ONE_ASYMPTOTIC, true);
+            }
         }
         Message::StartSave => {
             // The prefill is a file name: no separators or control characters.

@@ -92,6 +92,7 @@ pub struct Binding {
     pub footer: Option<&'static str>,
 }
 
+use Context::{Help, Main, MainAndHelp, Prompt};
 use KeyCode::{Backspace, Delete, Down, End, Enter, Esc, Home, Left, PageDown, PageUp, Right, Up};
 use Message as M;
 
@@ -99,224 +100,61 @@ const fn edit(e: Edit) -> Message {
     M::PromptEdit(e)
 }
 
+const fn bind(
+    context: Context,
+    keys: &'static [(Key, Message)],
+    label: &'static str,
+    help: &'static str,
+    footer: Option<&'static str>,
+) -> Binding {
+    Binding {
+        context,
+        keys,
+        label,
+        help,
+        footer,
+    }
+}
+
+const DOWN: Message = M::Step {
+    up: false,
+    fine: false,
+};
+const UP: Message = M::Step {
+    up: true,
+    fine: false,
+};
+const FINE_DOWN: Message = M::Step {
+    up: false,
+    fine: true,
+};
+const FINE_UP: Message = M::Step {
+    up: true,
+    fine: true,
+};
+
+#[rustfmt::skip]
 pub const BINDINGS: &[Binding] = &[
-    Binding {
-        context: Context::Main,
-        keys: &[
-            (key(Up), M::SelectPrev),
-            (ch('k'), M::SelectPrev),
-            (key(Down), M::SelectNext),
-            (ch('j'), M::SelectNext),
-        ],
-        label: "↑ ↓  k j",
-        help: "select a slider",
-        footer: Some("↑↓ select"),
-    },
-    Binding {
-        context: Context::Main,
-        keys: &[
-            (
-                key(Left),
-                M::Step {
-                    up: false,
-                    fine: false,
-                },
-            ),
-            (
-                ch('h'),
-                M::Step {
-                    up: false,
-                    fine: false,
-                },
-            ),
-            (
-                key(Right),
-                M::Step {
-                    up: true,
-                    fine: false,
-                },
-            ),
-            (
-                ch('l'),
-                M::Step {
-                    up: true,
-                    fine: false,
-                },
-            ),
-        ],
-        label: "← →  h l",
-        help: "change it (¼ decade; H: 0.05)",
-        footer: Some("←→ change"),
-    },
-    Binding {
-        context: Context::Main,
-        keys: &[
-            (
-                shift(Left),
-                M::Step {
-                    up: false,
-                    fine: true,
-                },
-            ),
-            (
-                ch('H'),
-                M::Step {
-                    up: false,
-                    fine: true,
-                },
-            ),
-            (
-                shift(Right),
-                M::Step {
-                    up: true,
-                    fine: true,
-                },
-            ),
-            (
-                ch('L'),
-                M::Step {
-                    up: true,
-                    fine: true,
-                },
-            ),
-        ],
-        label: "⇧← ⇧→  H L",
-        help: "fine step (1/40 decade; H: 0.01)",
-        footer: Some("⇧ fine"),
-    },
-    Binding {
-        context: Context::Main,
-        keys: &[
-            (ch('1'), M::LoadPreset(0)),
-            (ch('2'), M::LoadPreset(1)),
-            (ch('3'), M::LoadPreset(2)),
-            (ch('4'), M::LoadPreset(3)),
-        ],
-        label: "1 2 3 4",
-        help: "load the paper's fig1 … fig4",
-        footer: Some("1-4 figs"),
-    },
-    Binding {
-        context: Context::Main,
-        keys: &[(key(Enter), M::StartValue)],
-        label: "Enter",
-        help: "type its value (25nm, 2 mm, 1e-3)",
-        footer: Some("⏎ type"),
-    },
-    Binding {
-        context: Context::Main,
-        keys: &[(ch('x'), M::CycleSweep)],
-        label: "x",
-        help: "sweep the next parameter",
-        footer: Some("x sweep"),
-    },
-    Binding {
-        context: Context::Main,
-        keys: &[(ch('m'), M::ToggleModel)],
-        label: "m",
-        help: "exact / closed-form model",
-        footer: Some("m model"),
-    },
-    Binding {
-        context: Context::Main,
-        keys: &[(ch('e'), M::ToggleSizeEffect)],
-        label: "e",
-        help: "size effect on / off",
-        footer: Some("e size"),
-    },
-    Binding {
-        context: Context::Main,
-        keys: &[(ch('s'), M::StartSave)],
-        label: "s",
-        help: "save a snapshot here (.ron)",
-        footer: Some("s save"),
-    },
-    Binding {
-        context: Context::MainAndHelp,
-        keys: &[(ch('?'), M::ToggleHelp)],
-        label: "?",
-        help: "show / hide this help",
-        footer: Some("? help"),
-    },
-    Binding {
-        context: Context::Help,
-        keys: &[(key(Esc), M::CloseHelp)],
-        label: "Esc",
-        help: "close the help",
-        footer: None,
-    },
-    Binding {
-        context: Context::Help,
-        keys: &[
-            (key(Right), M::HelpPage { next: true }),
-            (key(PageDown), M::HelpPage { next: true }),
-            (ch(' '), M::HelpPage { next: true }),
-            (key(Left), M::HelpPage { next: false }),
-            (key(PageUp), M::HelpPage { next: false }),
-        ],
-        label: "→ ←  PgDn PgUp",
-        help: "next / previous page of the help",
-        footer: None,
-    },
-    Binding {
-        context: Context::MainAndHelp,
-        keys: &[(ch('q'), M::Quit), (ctrl('c'), M::Quit)],
-        label: "q  Ctrl-C",
-        help: "quit",
-        footer: Some("q quit"),
-    },
-    Binding {
-        context: Context::Prompt,
-        keys: &[
-            (key(Left), edit(Edit::Left)),
-            (key(Right), edit(Edit::Right)),
-            (key(Home), edit(Edit::Home)),
-            (ctrl('a'), edit(Edit::Home)),
-            (key(End), edit(Edit::End)),
-            (ctrl('e'), edit(Edit::End)),
-        ],
-        label: "← → Home End",
-        help: "move the cursor (also Ctrl-A, Ctrl-E)",
-        footer: None,
-    },
-    Binding {
-        context: Context::Prompt,
-        keys: &[
-            (key(Backspace), edit(Edit::Backspace)),
-            (key(Delete), edit(Edit::Delete)),
-        ],
-        label: "⌫  Del",
-        help: "delete before / under the cursor",
-        footer: None,
-    },
-    Binding {
-        context: Context::Prompt,
-        keys: &[(ctrl('u'), edit(Edit::DeleteToStart))],
-        label: "Ctrl-U",
-        help: "delete up to the cursor (all of it at the end)",
-        footer: None,
-    },
-    Binding {
-        context: Context::Prompt,
-        keys: &[(ctrl('w'), edit(Edit::DeleteWord))],
-        label: "Ctrl-W",
-        help: "delete the word before the cursor",
-        footer: None,
-    },
-    Binding {
-        context: Context::Prompt,
-        keys: &[(key(Enter), M::PromptAccept)],
-        label: "Enter",
-        help: "save under that name / set that value",
-        footer: None,
-    },
-    Binding {
-        context: Context::Prompt,
-        keys: &[(key(Esc), M::PromptCancel), (ctrl('c'), M::PromptCancel)],
-        label: "Esc  Ctrl-C",
-        help: "cancel",
-        footer: None,
-    },
+    bind(Main, &[(key(Up), M::SelectPrev), (ch('k'), M::SelectPrev), (key(Down), M::SelectNext), (ch('j'), M::SelectNext)], "↑ ↓  k j", "select a slider", Some("↑↓ select")),
+    bind(Main, &[(key(Left), DOWN), (ch('h'), DOWN), (key(Right), UP), (ch('l'), UP)], "← →  h l", "change it (¼ decade; H: 0.05)", Some("←→ change")),
+    bind(Main, &[(shift(Left), FINE_DOWN), (ch('H'), FINE_DOWN), (shift(Right), FINE_UP), (ch('L'), FINE_UP)], "⇧← ⇧→  H L", "fine step (1/40 decade; H: 0.01)", None),
+    bind(Main, &[(ch('1'), M::LoadPreset(0)), (ch('2'), M::LoadPreset(1)), (ch('3'), M::LoadPreset(2)), (ch('4'), M::LoadPreset(3))], "1 2 3 4", "load the paper's fig1 … fig4", Some("1-4 figs")),
+    bind(Main, &[(key(Enter), M::StartValue)], "Enter", "type its value (25nm, 2 mm, 1e-3)", Some("⏎ type")),
+    bind(Main, &[(ch('x'), M::CycleSweep)], "x", "sweep the next parameter", Some("x sweep")),
+    bind(Main, &[(ch('m'), M::ToggleModel)], "m", "exact / closed-form model", Some("m model")),
+    bind(Main, &[(ch('e'), M::ToggleSizeEffect)], "e", "size effect on / off", Some("e size")),
+    bind(Main, &[(ch('a'), M::ToggleMoments)], "a", "truncated / asymptotic moments (eq. 10)", Some("a moments")),
+    bind(Main, &[(ch('s'), M::StartSave)], "s", "save a snapshot here (.ron)", Some("s save")),
+    bind(MainAndHelp, &[(ch('?'), M::ToggleHelp)], "?", "show / hide this help", Some("? help")),
+    bind(Help, &[(key(Esc), M::CloseHelp)], "Esc", "close the help", None),
+    bind(Help, &[(key(Right), M::HelpPage { next: true }), (key(PageDown), M::HelpPage { next: true }), (ch(' '), M::HelpPage { next: true }), (key(Left), M::HelpPage { next: false }), (key(PageUp), M::HelpPage { next: false })], "→ ←  PgDn PgUp", "next / previous page of the help", None),
+    bind(MainAndHelp, &[(ch('q'), M::Quit), (ctrl('c'), M::Quit)], "q  Ctrl-C", "quit", Some("q quit")),
+    bind(Prompt, &[(key(Left), edit(Edit::Left)), (key(Right), edit(Edit::Right)), (key(Home), edit(Edit::Home)), (ctrl('a'), edit(Edit::Home)), (key(End), edit(Edit::End)), (ctrl('e'), edit(Edit::End))], "← → Home End", "move the cursor (also Ctrl-A, Ctrl-E)", None),
+    bind(Prompt, &[(key(Backspace), edit(Edit::Backspace)), (key(Delete), edit(Edit::Delete))], "⌫  Del", "delete before / under the cursor", None),
+    bind(Prompt, &[(ctrl('u'), edit(Edit::DeleteToStart))], "Ctrl-U", "delete up to the cursor (all of it at the end)", None),
+    bind(Prompt, &[(ctrl('w'), edit(Edit::DeleteWord))], "Ctrl-W", "delete the word before the cursor", None),
+    bind(Prompt, &[(key(Enter), M::PromptAccept)], "Enter", "save under that name / set that value", None),
+    bind(Prompt, &[(key(Esc), M::PromptCancel), (ctrl('c'), M::PromptCancel)], "Esc  Ctrl-C", "cancel", None),
 ];
 
 /// The message a key sends in the app's current mode, if any.
@@ -357,11 +195,29 @@ pub fn message_for_event(app: &App, ev: &Event) -> Option<Message> {
     }
 }
 
-/// The footer entries for a mode, in table order.
-pub fn footer(mode: &Mode) -> Vec<&'static str> {
-    BINDINGS
+/// The footer for a mode in `width` columns: the entries in table order,
+/// those that do not fit left out, but the help key's always kept.
+pub fn footer(mode: &Mode, width: usize) -> String {
+    let entries: Vec<(&str, bool)> = BINDINGS
         .iter()
         .filter(|b| b.context.covers(mode))
-        .filter_map(|b| b.footer)
-        .collect()
+        .filter_map(|b| {
+            let help = b.keys.iter().any(|(_, m)| *m == Message::ToggleHelp);
+            b.footer.map(|f| (f, help))
+        })
+        .collect();
+    let len = |e: &str| e.chars().count() + 2;
+    let mut reserved: usize = entries.iter().filter(|e| e.1).map(|e| len(e.0)).sum();
+    let mut used = 0;
+    let mut parts = Vec::new();
+    for (entry, keep) in entries {
+        if keep {
+            reserved -= len(entry);
+        } else if used + len(entry) + reserved > width + 2 {
+            continue;
+        }
+        used += len(entry);
+        parts.push(entry);
+    }
+    parts.join("  ")
 }

@@ -3,14 +3,16 @@
 //! something, so an idle session writes nothing to the terminal.
 
 pub mod app;
+pub mod fmt;
 pub mod help;
 pub mod keys;
+pub mod layout;
 pub mod line_edit;
 pub mod status;
 pub mod term;
 pub mod theme;
 pub mod value_input;
-pub mod view;
+pub mod views;
 
 use std::io::Write;
 use std::time::Instant;

@@ -9,9 +9,9 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Clear, Widget};
 
 use super::app::{App, Mode};
+use super::fmt::{axis_name, fmt_param, fmt_short};
 use super::line_edit::LineEdit;
 use super::value_input;
-use super::view::{axis_name, fmt_param, fmt_short};
 
 /// The text field with its cursor cell in reverse video.
 fn field(line: &LineEdit) -> Vec<Span<'static>> {

@@ -1,0 +1,176 @@
+//! What every chart view shares: the title line, the legend, axes with
+//! ticks and labels placed where ratatui's braille canvas puts the values,
+//! and the datasets drawn over them.
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::style::Style;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Chart, Dataset, GraphType, Widget};
+
+use rough_model::Axis;
+
+use crate::tui::app::{to_plot, App};
+use crate::tui::fmt::{axis_name, fmt_decade, fmt_param, fmt_short};
+use crate::tui::layout::Y_LABEL_W;
+use crate::tui::theme::{CurveStyle, Theme};
+
+/// The cell column the canvas puts a transformed x in (same arithmetic as
+/// ratatui's braille grid).
+pub fn col_of(g: Rect, b: [f64; 2], x: f64) -> Option<u16> {
+    let f = (x - b[0]) / (b[1] - b[0]);
+    if !(0.0..=1.0).contains(&f) {
+        return None;
+    }
+    let dots = f64::from(g.width) * 2.0 - 1.0;
+    Some(g.x + ((f * dots) as u16) / 2)
+}
+
+pub fn row_of(g: Rect, b: [f64; 2], y: f64) -> Option<u16> {
+    let f = (b[1] - y) / (b[1] - b[0]);
+    if !(0.0..=1.0).contains(&f) {
+        return None;
+    }
+    let dots = f64::from(g.height) * 4.0 - 1.0;
+    Some(g.y + ((f * dots) as u16) / 4)
+}
+
+/// Tick positions and labels along x: decades on log axes, tenths on Hurst.
+fn x_ticks(axis: Axis, b: [f64; 2]) -> Vec<(f64, String)> {
+    if axis.is_log() {
+        let (lo, hi) = (b[0].ceil() as i32, b[1].floor() as i32);
+        (lo..=hi)
+            .map(|d| (f64::from(d), fmt_short(axis, 10f64.powi(d))))
+            .collect()
+    } else {
+        let (lo, hi) = ((b[0] * 10.0).ceil() as i32, (b[1] * 10.0).floor() as i32);
+        (lo..=hi)
+            .map(|k| (f64::from(k) / 10.0, format!("{:.1}", f64::from(k) / 10.0)))
+            .collect()
+    }
+}
+
+/// The title line: `spans`, then the marker's sample and value when the
+/// marker lies inside the sweep.
+pub fn title(app: &App, mut spans: Vec<Span<'static>>, area: Rect, buf: &mut Buffer) {
+    let t = &app.theme;
+    let axis = app.state.sweep.axis();
+    if let Some(m) = app.marker() {
+        spans.push(Span::raw("  "));
+        spans.push(Span::styled(t.marker_line.sample, t.marker_line.style));
+        spans.push(Span::raw(format!(
+            " {} = {}",
+            axis_name(axis),
+            fmt_param(axis, m)
+        )));
+    }
+    Line::from(spans).render(Rect::new(area.x, area.y, area.width, 1), buf);
+}
+
+/// Legend: one line under the title, each curve's sample in its own style;
+/// shorter samples and gaps when the full one does not fit.
+pub fn legend(curves: &[&CurveStyle], area: Rect, buf: &mut Buffer) {
+    let full: usize = curves
+        .iter()
+        .map(|c| c.sample.chars().count() + c.name.chars().count() + 3)
+        .sum();
+    let short = full > area.width as usize;
+    let mut legend = Vec::new();
+    for c in curves {
+        let sample: String = if short {
+            c.sample.chars().take(1).collect()
+        } else {
+            c.sample.into()
+        };
+        legend.push(Span::styled(format!("{sample} "), c.style));
+        legend.push(Span::raw(format!(
+            "{}{}",
+            c.name,
+            if short { " " } else { "  " }
+        )));
+    }
+    Line::from(legend).render(Rect::new(area.x, area.y + 1, area.width, 1), buf);
+}
+
+/// Axes, ticks and labels around the graph `g` inside the panel `area`:
+/// decades up the y axis, the swept parameter's ticks along x and its name
+/// at the right end.
+pub fn axes(
+    t: &Theme,
+    axis: Axis,
+    bounds: ([f64; 2], [f64; 2]),
+    (area, g): (Rect, Rect),
+    buf: &mut Buffer,
+) {
+    let (x_bounds, y_bounds) = bounds;
+    let ax = g.x - 1;
+    let ay = g.bottom();
+    for y in g.y..g.bottom() {
+        buf[(ax, y)].set_symbol("│");
+    }
+    buf[(ax, ay)].set_symbol("└");
+    for x in g.x..g.right() {
+        buf[(x, ay)].set_symbol("─");
+    }
+    let (ylo, yhi) = (y_bounds[0] as i32, y_bounds[1] as i32);
+    for d in ylo..=yhi {
+        if let Some(row) = row_of(g, y_bounds, f64::from(d)) {
+            buf[(ax, row)].set_symbol("┤");
+            let label = format!("{:>w$}", fmt_decade(d), w = Y_LABEL_W as usize);
+            buf.set_stringn(area.x, row, label, Y_LABEL_W as usize, Style::new());
+        }
+    }
+    let mut free_from = area.x;
+    for (v, label) in x_ticks(axis, x_bounds) {
+        let Some(col) = col_of(g, x_bounds, v) else {
+            continue;
+        };
+        buf[(col, ay)].set_symbol("┬");
+        let w = label.chars().count() as u16;
+        let start = col.saturating_sub(w / 2).max(area.x);
+        if start >= free_from && start + w <= area.right() {
+            buf.set_stringn(start, ay + 1, &label, w as usize, Style::new());
+            free_from = start + w + 1;
+        }
+    }
+    let name = axis_name(axis);
+    let nx = area.right().saturating_sub(name.chars().count() as u16 + 1);
+    if nx >= free_from {
+        buf.set_stringn(nx, ay + 1, name, 8, t.title);
+    }
+}
+
+/// A curve as a line dataset in its style.
+pub fn dataset<'a>(c: &CurveStyle, data: &'a [(f64, f64)]) -> Dataset<'a> {
+    Dataset::default()
+        .marker(c.marker)
+        .graph_type(GraphType::Line)
+        .style(c.style)
+        .data(data)
+}
+
+/// The marker's vertical line across `y_bounds`, empty when the marker lies
+/// outside the sweep.
+pub fn marker_line(app: &App, y_bounds: [f64; 2]) -> Vec<(f64, f64)> {
+    let axis = app.state.sweep.axis();
+    app.marker()
+        .map(|m| {
+            let x = to_plot(axis.is_log(), m);
+            vec![(x, y_bounds[0]), (x, y_bounds[1])]
+        })
+        .unwrap_or_default()
+}
+
+/// Draws `sets` into the graph, later sets over earlier ones.
+pub fn plot(
+    sets: Vec<Dataset>,
+    (x_bounds, y_bounds): ([f64; 2], [f64; 2]),
+    g: Rect,
+    buf: &mut Buffer,
+) {
+    Chart::new(sets)
+        .x_axis(ratatui::widgets::Axis::default().bounds(x_bounds))
+        .y_axis(ratatui::widgets::Axis::default().bounds(y_bounds))
+        .legend_position(None)
+        .render(g, buf);
+}

@@ -1,0 +1,103 @@
+//! Drawing: `impl Widget for &App`, split into `(area, buf)` helpers, one
+//! view per file. Reads the app, never changes it; where things go comes
+//! from [`Regions`].
+
+mod chart;
+mod side;
+mod slopes;
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::{Alignment, Rect};
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Paragraph, Widget, Wrap};
+
+use super::app::{App, Mode};
+use super::fmt::{axis_name, fmt_short, wrap};
+use super::keys;
+use super::layout::{Regions, MIN_SIZE};
+use super::{help, status};
+
+impl Widget for &App {
+    fn render(self, area: Rect, buf: &mut Buffer) {
+        let Some(r) = Regions::of(area) else {
+            render_too_small(area, buf);
+            return;
+        };
+        render_header(self, r.header, buf);
+        render_caption(self, r.caption, buf);
+        side::render_sliders(self, r.sliders, r.slider_rows, buf);
+        side::render_readout(self, r.readout, buf);
+        slopes::render(self, (r.chart, r.graph), buf);
+        render_footer(self, r.footer, buf);
+        status::render_status(self, r.status, r.footer, buf);
+        if self.mode == Mode::Help {
+            help::render_help(self, area, buf);
+        }
+    }
+}
+
+fn render_too_small(area: Rect, buf: &mut Buffer) {
+    if area.width == 0 || area.height == 0 {
+        return;
+    }
+    let text = format!(
+        "enlarge the terminal to {}×{} (now {}×{}) · q quits",
+        MIN_SIZE.0, MIN_SIZE.1, area.width, area.height
+    );
+    let y = area.y + area.height.saturating_sub(2) / 2;
+    let r = Rect::new(area.x, y, area.width, area.height - (y - area.y));
+    Paragraph::new(text)
+        .alignment(Alignment::Center)
+        .wrap(Wrap { trim: true })
+        .render(r, buf);
+}
+
+fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
+    let s = &app.state;
+    let t = &app.theme;
+    let axis = s.sweep.axis();
+    // A snapshot's name is untrusted text: no control characters reach the terminal.
+    let clean: String = s
+        .name
+        .chars()
+        .map(|c| if c.is_control() { '�' } else { c })
+        .collect();
+    let name = if app.modified {
+        format!("{clean}*")
+    } else {
+        clean
+    };
+    let line = Line::from(vec![
+        Span::styled(" roughtui ", t.title),
+        Span::styled(format!("[{name}]"), t.selected),
+        Span::raw(format!(
+            "  {} {}…{} · {} · {} moments · size effect {}",
+            axis_name(axis),
+            fmt_short(axis, s.sweep.from()),
+            fmt_short(axis, s.sweep.to()),
+            s.model.label(),
+            s.moments.label(),
+            if s.size_effect { "on" } else { "off" },
+        )),
+    ]);
+    line.render(area, buf);
+}
+
+/// The caption, wrapped over all rows but the last, and on the last row
+/// where the figure's claims hold at the current parameters.
+fn render_caption(app: &App, area: Rect, buf: &mut Buffer) {
+    let t = &app.theme;
+    let rows = usize::from(area.height.saturating_sub(1));
+    let text = app.state.caption.as_deref().unwrap_or("");
+    let mut lines: Vec<Line> = wrap(text, usize::from(area.width), rows)
+        .into_iter()
+        .map(|l| Line::styled(l, t.dim))
+        .collect();
+    lines.resize(rows, Line::raw(""));
+    Paragraph::new(lines).render(area, buf);
+}
+
+fn render_footer(app: &App, area: Rect, buf: &mut Buffer) {
+    let text = keys::footer(&app.mode, usize::from(area.width));
+    Line::styled(text, app.theme.dim).render(area, buf);
+}
