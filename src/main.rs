@@ -48,7 +48,7 @@ fn run(cli: Cli) -> anyhow::Result<()> {
         Some(Command::Bench(a)) => roughtui::bench::run(&a),
         None => {
             let state = load_source(&cli.source)?;
-            tui::run(state)
+            tui::run(state, cli.source.load.as_deref())
         }
     }
 }

@@ -229,3 +229,109 @@ fn too_small_only_quit_keys_act() {
     ctrl(&mut b, 'c');
     assert!(b.quit);
 }
+
+#[test]
+fn a_loaded_file_shows_its_name_and_a_save_keeps_the_typed_name() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut a = fig("fig2");
+    a.file = Some("mine.ron".into());
+    assert!(screen(&a).contains("[fig2 · mine.ron]"), "{}", screen(&a));
+    ch(&mut a, 'l');
+    assert!(screen(&a).contains("[fig2 · mine.ron*]"));
+    a.save_dir = dir.path().to_path_buf();
+    ch(&mut a, 's');
+    ctrl(&mut a, 'u');
+    type_text(&mut a, "lecture 3");
+    enter(&mut a);
+    let saved = roughtui::snapshot::load_file(&dir.path().join("lecture 3.ron")).unwrap();
+    assert_eq!(saved.name, "lecture 3");
+    assert_eq!(saved.params, a.state.params);
+    let s = screen(&a);
+    assert!(s.contains("[lecture 3 · lecture 3.ron]"), "{s}");
+    // A preset is a preset again.
+    ch(&mut a, '3');
+    assert!(screen(&a).contains("[fig3]"));
+    assert_eq!(a.file, None);
+}
+
+#[test]
+fn the_r_star_hint_clears_when_it_stops_applying() {
+    let mut a = fig("fig2");
+    assert!(!a.state.size_effect);
+    while a.state.sweep.axis() != Axis::RStar {
+        ch(&mut a, 'x');
+    }
+    assert!(screen(&a).contains("R* acts only with the size effect"));
+    ch(&mut a, 'j'); // unrelated: the hint still applies
+    assert!(screen(&a).contains("R* acts only with the size effect"));
+    ch(&mut a, 'e');
+    assert_eq!(a.status, None);
+    assert!(!screen(&a).contains("R* acts only"));
+    // Again, and this time the sweep moves on.
+    ch(&mut a, 'e');
+    for _ in 0..5 {
+        ch(&mut a, 'x');
+    }
+    assert_eq!(a.state.sweep.axis(), Axis::RStar);
+    assert!(screen(&a).contains("R* acts only with the size effect"));
+    ch(&mut a, 'x');
+    assert!(!screen(&a).contains("R* acts only"));
+}
+
+#[test]
+fn the_regime_word_is_bold_without_colour() {
+    use ratatui::style::{Color, Modifier};
+    for preset in ["fig1", "fig2", "fig4"] {
+        let a = fig(preset);
+        let regime = a.readout.slopes.regime().label();
+        let (w, h) = a.size;
+        let mut t = ratatui::Terminal::new(ratatui::backend::TestBackend::new(w, h)).unwrap();
+        t.draw(|f| f.render_widget(&a, f.area())).unwrap();
+        let s = common::buffer_text(&t);
+        let (row, line) = s
+            .lines()
+            .enumerate()
+            .find(|(_, l)| l.starts_with("plastic "))
+            .unwrap();
+        let at = line.find(&format!("%  {regime}")).expect(line) + 3;
+        let col = line[..at].chars().count();
+        let cell = &t.backend().buffer()[(col as u16, row as u16)];
+        assert_eq!(cell.symbol(), &regime[..1]);
+        assert_eq!(cell.fg, Color::Reset, "{preset}: {regime} coloured");
+        assert!(cell.modifier.contains(Modifier::BOLD));
+    }
+}
+
+#[test]
+fn the_share_shown_agrees_with_the_regime_word() {
+    use roughtui::tui::fmt::fmt_share;
+    assert_eq!(fmt_share(0.09996), "9.996%");
+    assert_eq!(fmt_share(0.1), "10.0%");
+    assert_eq!(fmt_share(0.294), "29.4%");
+    assert_eq!(fmt_share(0.90004), "90.004%");
+    assert_eq!(fmt_share(0.9), "90.0%");
+    assert_eq!(fmt_share(0.0), "0.0%");
+    assert_eq!(fmt_share(1.0), "100.0%");
+    assert_eq!(fmt_share(0.1 - 1e-12), "< 10%");
+    // On screen: find a ζ where the share is 9.996 % and read the line.
+    let mut a = fig("fig2");
+    let p = a.state.params;
+    let (mut lo, mut hi) = (1.0f64, 128.0f64);
+    for _ in 0..200 {
+        let mid = (lo * hi).sqrt();
+        a.state.params = p.with(Axis::Zeta, mid).unwrap();
+        update(&mut a, Message::Resize(80, 24));
+        if a.readout.slopes.plastic_share() < 0.09996 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    a.state.params = p.with(Axis::Zeta, lo).unwrap();
+    update(&mut a, Message::Resize(80, 24));
+    let share = a.readout.slopes.plastic_share();
+    assert!((0.09995..0.09996).contains(&share), "{share}");
+    let s = screen(&a);
+    assert!(s.contains("plastic 9.99"), "{s}");
+    assert!(s.contains("%  elastic"), "{s}");
+}

@@ -284,8 +284,11 @@ fn two_saves_give_two_files_that_load_back() {
         .collect();
     files.sort();
     assert_eq!(files.len(), 2, "{files:?}");
+    // Each is named as its file (the name typed at the prompt).
     for f in &files {
-        let back = roughtui::snapshot::load_file(f).unwrap();
+        let mut back = roughtui::snapshot::load_file(f).unwrap();
+        assert_eq!(back.name, f.file_stem().unwrap().to_str().unwrap());
+        back.name = a.state.name.clone();
         assert_eq!(back, a.state);
     }
 }

@@ -78,6 +78,31 @@ pub const PROMPT_MAX_CHARS: usize = 200;
 pub struct Status {
     pub text: String,
     pub error: bool,
+    /// For a hint: the condition it is about; it clears once that no
+    /// longer holds.
+    pub hint: Option<Hint>,
+}
+
+/// Advice that holds only in some states.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Hint {
+    /// R* is swept while the size effect is off, so the curves are flat.
+    RStarNeedsSizeEffect,
+}
+
+impl Hint {
+    pub fn text(self) -> &'static str {
+        match self {
+            Hint::RStarNeedsSizeEffect => "R* acts only with the size effect: press e",
+        }
+    }
+
+    /// Whether the hint still applies to `state`.
+    pub fn applies(self, state: &State) -> bool {
+        match self {
+            Hint::RStarNeedsSizeEffect => state.sweep.axis() == Axis::RStar && !state.size_effect,
+        }
+    }
 }
 
 /// The curves as the chart draws them: transformed to the plot's axes
@@ -146,6 +171,9 @@ pub struct App {
     pub save_dir: PathBuf,
     /// Whether the parameters differ from the loaded preset or snapshot.
     pub modified: bool,
+    /// The name of the file the scene was loaded from or last saved to;
+    /// `None` for a preset.
+    pub file: Option<String>,
     pub quit: bool,
     /// How many times the curves were computed (for tests of the cache).
     pub recomputes: usize,
@@ -215,6 +243,7 @@ impl App {
             readout,
             save_dir: std::env::current_dir().unwrap_or_else(|_| PathBuf::from(".")),
             modified: false,
+            file: None,
             quit: false,
             recomputes: 0,
             key: None,
@@ -261,8 +290,14 @@ impl App {
         CurveKey { spec }
     }
 
-    /// Recomputes the readout, and the curves when what they depend on changed.
+    /// Recomputes the readout, and the curves when what they depend on
+    /// changed; clears a hint that no longer applies.
     fn refresh(&mut self) {
+        if let Some(h) = self.status.as_ref().and_then(|s| s.hint) {
+            if !h.applies(&self.state) {
+                self.status = None;
+            }
+        }
         self.readout = Readout::of(&self.state);
         let Some(regions) = Regions::of_size(self.size) else {
             return;
@@ -281,6 +316,15 @@ impl App {
         self.status = Some(Status {
             text: text.into(),
             error,
+            hint: None,
+        });
+    }
+
+    fn set_hint(&mut self, hint: Hint) {
+        self.status = Some(Status {
+            text: hint.text().into(),
+            error: false,
+            hint: Some(hint),
         });
     }
 
@@ -288,6 +332,7 @@ impl App {
         let axis = self.selected_axis();
         self.state = state;
         self.modified = false;
+        self.file = None;
         self.selected = Axis::ALL.iter().position(|a| *a == axis).unwrap_or(0);
     }
 }
@@ -398,8 +443,9 @@ pub fn update(app: &mut App, msg: Message) {
                 Ok(s) => {
                     app.state.sweep = s;
                     app.modified = true;
-                    if axis == Axis::RStar && !app.state.size_effect {
-                        app.set_status("R* acts only with the size effect: press e", false);
+                    let hint = Hint::RStarNeedsSizeEffect;
+                    if hint.applies(&app.state) {
+                        app.set_hint(hint);
                     }
                 }
                 Err(e) => app.set_status(e.to_string(), true),
@@ -507,14 +553,25 @@ fn accept_prompt(app: &mut App) {
         }
         Mode::Prompt(line) => {
             let stem = line.text();
-            if let Err(why) = snapshot::check_stem(&stem) {
-                // Stay in the prompt so the name can be fixed.
-                app.set_status(format!("cannot save: {why}"), true);
-                return;
-            }
+            let clean = match snapshot::check_stem(&stem) {
+                Ok(c) => c.to_string(),
+                Err(why) => {
+                    // Stay in the prompt so the name can be fixed.
+                    app.set_status(format!("cannot save: {why}"), true);
+                    return;
+                }
+            };
             app.mode = Mode::Main;
-            match snapshot::save_new(&app.save_dir, &stem, &app.state) {
-                Ok(path) => app.set_status(format!("saved {}", path.display()), false),
+            // The snapshot is named as typed (the stem, without ".ron").
+            let mut named = app.state.clone();
+            named.name = clean;
+            match snapshot::save_new(&app.save_dir, &stem, &named) {
+                Ok(path) => {
+                    app.state = named;
+                    app.modified = false;
+                    app.file = path.file_name().map(|f| f.to_string_lossy().into_owned());
+                    app.set_status(format!("saved {}", path.display()), false);
+                }
                 Err(e) => app.set_status(format!("{e:#}"), true),
             }
         }

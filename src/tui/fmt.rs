@@ -1,7 +1,7 @@
 //! Number and name formatting for the explorer's panels and charts: one
 //! formatter per kind of value, shared by every view.
 
-use rough_model::Axis;
+use rough_model::{Axis, Regime};
 
 /// Three significant digits; scientific outside 1e-3 … 1e5.
 pub fn fmt_num(v: f64) -> String {
@@ -102,6 +102,28 @@ pub fn axis_name(axis: Axis) -> &'static str {
         Axis::Zeta => "ζ",
         Axis::Hurst => "H",
         Axis::RStar => "R*",
+    }
+}
+
+/// A plastic share in per cent with as many decimals as it takes for the
+/// shown number to fall in the same regime as the true one: 9.996 % shows
+/// as "9.996%", not as "10.0%" next to the word "elastic".
+pub fn fmt_share(share: f64) -> String {
+    let regime = Regime::of_share(share);
+    let pct = share * 100.0;
+    for decimals in 1..=6 {
+        let shown = format!("{pct:.decimals$}");
+        if shown
+            .parse::<f64>()
+            .is_ok_and(|v| Regime::of_share(v / 100.0) == regime)
+        {
+            return format!("{shown}%");
+        }
+    }
+    match regime {
+        Regime::Elastic => "< 10%".into(),
+        Regime::Plastic => "> 90%".into(),
+        Regime::ElastoPlastic => format!("{pct}%"),
     }
 }
 

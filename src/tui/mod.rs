@@ -30,7 +30,7 @@ use theme::Theme;
 /// appends, per handled event, the microseconds from the event's arrival to
 /// the flushed frame; `ROUGHTUI_PANIC_KEY=C` makes key C panic, to test the
 /// restore on panic.
-pub fn run(state: State) -> anyhow::Result<()> {
+pub fn run(state: State, file: Option<&std::path::Path>) -> anyhow::Result<()> {
     let mut frame_log = match std::env::var_os("ROUGHTUI_FRAME_LOG") {
         Some(p) => Some(
             std::fs::OpenOptions::new()
@@ -48,6 +48,9 @@ pub fn run(state: State) -> anyhow::Result<()> {
     let _guard = term::Guard;
     let size = terminal.size()?;
     let mut app = App::new(state, Theme::from_env(), (size.width, size.height));
+    app.file = file
+        .and_then(|f| f.file_name())
+        .map(|f| f.to_string_lossy().into_owned());
     draw(&mut terminal, &app)?;
     loop {
         let (msg, arrived) = loop {

@@ -5,8 +5,6 @@
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::symbols::Marker;
 
-use rough_model::Regime;
-
 /// How one curve is drawn and named in the legend.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CurveStyle {
@@ -98,15 +96,10 @@ impl Theme {
         }
     }
 
-    pub fn regime(&self, r: Regime) -> Style {
-        let base = Style::new().add_modifier(Modifier::BOLD);
-        if !self.color {
-            return base;
-        }
-        base.fg(match r {
-            Regime::Elastic => Color::Green,
-            Regime::ElastoPlastic => Color::Yellow,
-            Regime::Plastic => Color::Red,
-        })
+    /// The regime word: bold, no colour, because the chart's colours name
+    /// curves (green Persson, red total, blue plastic) and must not mean a
+    /// regime too.
+    pub fn regime(&self) -> Style {
+        Style::new().add_modifier(Modifier::BOLD)
     }
 }

@@ -86,6 +86,18 @@ pub enum Regime {
 }
 
 impl Regime {
+    /// The regime of a plastic share: below 10 % elastic, above 90 %
+    /// plastic (this program's thresholds; the paper sets none).
+    pub fn of_share(share: f64) -> Regime {
+        if share < 0.1 {
+            Regime::Elastic
+        } else if share > 0.9 {
+            Regime::Plastic
+        } else {
+            Regime::ElastoPlastic
+        }
+    }
+
     pub fn label(self) -> &'static str {
         match self {
             Regime::Elastic => "elastic",

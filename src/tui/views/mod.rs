@@ -57,16 +57,18 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
     let axis = s.sweep.axis();
     // A snapshot's name is untrusted text: no control characters reach the terminal.
-    let clean: String = s
-        .name
-        .chars()
-        .map(|c| if c.is_control() { '�' } else { c })
-        .collect();
-    let name = if app.modified {
-        format!("{clean}*")
-    } else {
-        clean
+    let clean = |text: &str| -> String {
+        text.chars()
+            .map(|c| if c.is_control() { '�' } else { c })
+            .collect()
     };
+    let mut name = clean(&s.name);
+    if let Some(f) = &app.file {
+        name = format!("{name} · {}", clean(f));
+    }
+    if app.modified {
+        name.push('*');
+    }
     let line = Line::from(vec![
         Span::styled(" roughtui ", t.title),
         Span::styled(format!("[{name}]"), t.selected),

@@ -9,7 +9,7 @@ use ratatui::widgets::{Paragraph, Widget};
 use rough_model::Axis;
 
 use crate::tui::app::App;
-use crate::tui::fmt::{axis_name, fmt_len, fmt_num, fmt_param, fmt_rel, fmt_short};
+use crate::tui::fmt::{axis_name, fmt_len, fmt_num, fmt_param, fmt_rel, fmt_share, fmt_short};
 use crate::tui::theme::CurveStyle;
 
 pub fn render_sliders(app: &App, area: Rect, rows: u16, buf: &mut Buffer) {
@@ -136,8 +136,8 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
         Line::from(slopes1),
         Line::from(slopes2),
         Line::from(vec![
-            Span::raw(format!("plastic {:.1}%  ", sl.plastic_share() * 100.0)),
-            Span::styled(regime.label(), t.regime(regime)),
+            Span::raw(format!("plastic {}  ", fmt_share(sl.plastic_share()))),
+            Span::styled(regime.label(), t.regime()),
         ]),
         Line::raw(format!("{} at the marker:", s.model.other().label())),
         Line::raw(format!(
