@@ -103,3 +103,78 @@ fn too_small_takes_only_quit_keys() {
     assert_eq!(p.display("#{alternate_on}"), "0");
     assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
 }
+
+/// Braille cells drawn in each foreground colour (SGR 30–37, 90–97 and
+/// 38;5;N; 39 and 0 reset), from a pane captured with its escape sequences.
+fn braille_by_colour(raw: &str) -> std::collections::HashMap<u32, usize> {
+    let mut counts = std::collections::HashMap::new();
+    let mut fg = 39;
+    let mut it = raw.chars().peekable();
+    while let Some(c) = it.next() {
+        if c == '\u{1b}' && it.peek() == Some(&'[') {
+            it.next();
+            let mut params = String::new();
+            for d in it.by_ref() {
+                if d.is_ascii_alphabetic() {
+                    if d == 'm' {
+                        let ps: Vec<u32> =
+                            params.split(';').map(|p| p.parse().unwrap_or(0)).collect();
+                        let mut i = 0;
+                        while i < ps.len() {
+                            match ps[i] {
+                                0 | 39 => fg = 39,
+                                n @ (30..=37 | 90..=97) => fg = n,
+                                // 38;5;N: the 256-colour form tmux uses.
+                                38 if ps.get(i + 1) == Some(&5) => {
+                                    let n = ps.get(i + 2).copied().unwrap_or(0);
+                                    fg = if n < 8 { 30 + n } else { 82 + n };
+                                    i += 2;
+                                }
+                                _ => {}
+                            }
+                            i += 1;
+                        }
+                    }
+                    break;
+                }
+                params.push(d);
+            }
+        } else if ('\u{2801}'..='\u{28FF}').contains(&c) {
+            *counts.entry(fg).or_insert(0) += 1;
+        }
+    }
+    counts
+}
+
+/// Persson's green curve is drawn where it coincides with the total (fig3)
+/// and mostly with it (fig2), and the legend says which curve lies under it.
+#[test]
+fn coinciding_curves_stay_visible_and_the_legend_says_so() {
+    if !have_tmux() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    for (preset, legend, blue) in [
+        (
+            "fig3",
+            "━━ plastic < 1e-3  ━━ Persson = elastic = total here",
+            0,
+        ),
+        ("fig2", "Persson = total here", 20),
+    ] {
+        let p = Pane::start(preset, dir.path(), (100, 30), &[], &["--preset", preset]);
+        let s = p.wait_text("Readout");
+        assert!(s.contains(legend), "{preset}:\n{s}");
+        let raw = p.tmux(&["capture-pane", "-e", "-p", "-t", "t"]);
+        let counts = braille_by_colour(&String::from_utf8_lossy(&raw.stdout));
+        let green = counts.get(&32).copied().unwrap_or(0);
+        assert!(green > 30, "{preset}: {green} green cells ({counts:?})");
+        // The plastic curve (blue) is its own and visible where it lies in
+        // the chart (fig3's, at 1e-33, lies below it and the legend says so).
+        let shown = counts.get(&34).copied().unwrap_or(0);
+        assert!(
+            shown >= blue && (blue > 0) == (shown > 0),
+            "{preset}: {counts:?}"
+        );
+    }
+}

@@ -93,8 +93,11 @@ fn plain_theme_tells_curves_apart_by_marker() {
     for m in ['•', '+', 'o'] {
         assert!(s.matches(m).count() > 5, "marker {m} in\n{s}");
     }
-    assert!(braille_cells(&s) > 30);
-    assert!(s.contains("•• elastic") && s.contains("++ plastic") && s.contains("oo Persson"));
+    // The total (braille) lies under Persson's curve over most of fig2,
+    // and the legend says so.
+    assert!(braille_cells(&s) > 10);
+    assert!(s.contains("•• elastic") && s.contains("++ plastic"));
+    assert!(s.contains("oo Persson = total here"), "{s}");
 }
 
 #[test]

@@ -69,14 +69,14 @@ pub fn title(app: &App, mut spans: Vec<Span<'static>>, area: Rect, buf: &mut Buf
 
 /// Legend: one line under the title, each curve's sample in its own style;
 /// shorter samples and gaps when the full one does not fit.
-pub fn legend(curves: &[&CurveStyle], area: Rect, buf: &mut Buffer) {
+pub fn legend(curves: &[(&CurveStyle, String)], area: Rect, buf: &mut Buffer) {
     let full: usize = curves
         .iter()
-        .map(|c| c.sample.chars().count() + c.name.chars().count() + 3)
+        .map(|(c, name)| c.sample.chars().count() + name.chars().count() + 3)
         .sum();
     let short = full > area.width as usize;
     let mut legend = Vec::new();
-    for c in curves {
+    for (c, name) in curves {
         let sample: String = if short {
             c.sample.chars().take(1).collect()
         } else {
@@ -84,8 +84,7 @@ pub fn legend(curves: &[&CurveStyle], area: Rect, buf: &mut Buffer) {
         };
         legend.push(Span::styled(format!("{sample} "), c.style));
         legend.push(Span::raw(format!(
-            "{}{}",
-            c.name,
+            "{name}{}",
             if short { " " } else { "  " }
         )));
     }

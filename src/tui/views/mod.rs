@@ -3,6 +3,7 @@
 //! from [`Regions`].
 
 mod chart;
+mod overlap;
 mod side;
 mod slopes;
 

@@ -5,9 +5,10 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::Span;
 
-use super::chart;
+use super::{chart, overlap};
 use crate::tui::app::App;
-use crate::tui::fmt::axis_name;
+use crate::tui::fmt::{axis_name, fmt_decade};
+use crate::tui::theme::CurveStyle;
 
 /// The chart panel `area` with its graph `g`.
 pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
@@ -23,18 +24,78 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         t.title,
     )];
     chart::title(app, title, area, buf);
-    chart::legend(&[&t.elastic, &t.plastic, &t.total, &t.persson], area, buf);
     let bounds = (p.x_bounds, p.y_bounds);
+    // Draw order, later over earlier: Persson's reference curve last, so
+    // that it shows even where it equals the total (fig3) or the elastic
+    // curve; a curve left with under a quarter of its cells visible is
+    // named in the legend as lying under the one that hides it.
+    let curves = [
+        (&t.elastic, &p.elastic),
+        (&t.plastic, &p.plastic),
+        (&t.total, &p.total),
+        (&t.persson, &p.persson),
+    ];
+    let cells: Vec<_> = curves
+        .iter()
+        .map(|(_, data)| overlap::cells(data, bounds, g))
+        .collect();
+    let under = overlap::hidden_under(&cells);
+    // A hidden curve joins the entry of the curve on top of it.
+    let top = |mut i: usize| {
+        while let Some(j) = under[i] {
+            i = j;
+        }
+        i
+    };
+    let mut names: Vec<(&CurveStyle, String)> = (0..curves.len())
+        .filter(|&i| under[i].is_none())
+        .map(|i| {
+            let c = curves[i].0;
+            let below: Vec<&str> = (0..curves.len())
+                .filter(|&k| k != i && top(k) == i)
+                .map(|k| short_name(curves[k].0))
+                .collect();
+            let (data, yb) = (curves[i].1, p.y_bounds);
+            if cells[i].is_empty() {
+                // Nothing on the chart: say where the curve went.
+                let name = if data.is_empty() {
+                    format!("{} = 0", c.name)
+                } else if data.iter().all(|q| q.1 < yb[0]) {
+                    format!("{} < {}", c.name, fmt_decade(yb[0] as i32))
+                } else if data.iter().all(|q| q.1 > yb[1]) {
+                    format!("{} > {}", c.name, fmt_decade(yb[1] as i32))
+                } else {
+                    c.name.to_string()
+                };
+                (c, name)
+            } else if below.is_empty() {
+                (c, c.name.to_string())
+            } else {
+                (c, format!("{} = {} here", short_name(c), below.join(" = ")))
+            }
+        })
+        .collect();
+    // " here" goes first when the legend is too long for the panel (each
+    // entry takes at least a one-character sample and two spaces).
+    let len: usize = names.iter().map(|(_, n)| n.chars().count() + 3).sum();
+    if len > usize::from(area.width) {
+        for (_, n) in &mut names {
+            if let Some(cut) = n.strip_suffix(" here") {
+                *n = cut.to_string();
+            }
+        }
+    }
+    chart::legend(&names, area, buf);
     chart::axes(t, axis, bounds, (area, g), buf);
 
     // The curves, over the marker line.
     let marker = chart::marker_line(app, p.y_bounds);
-    let sets = vec![
-        chart::dataset(&t.marker_line, &marker),
-        chart::dataset(&t.persson, &p.persson),
-        chart::dataset(&t.elastic, &p.elastic),
-        chart::dataset(&t.plastic, &p.plastic),
-        chart::dataset(&t.total, &p.total),
-    ];
+    let mut sets = vec![chart::dataset(&t.marker_line, &marker)];
+    sets.extend(curves.iter().map(|(c, data)| chart::dataset(c, data)));
     chart::plot(sets, bounds, g, buf);
+}
+
+/// A curve's name without qualifiers, for "total = Persson here".
+fn short_name(c: &CurveStyle) -> &'static str {
+    c.name.split_whitespace().next().unwrap_or(c.name)
 }
