@@ -3,7 +3,9 @@
 
 mod common;
 
-use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyEventState, KeyModifiers};
+use common::key;
+
+use crossterm::event::{KeyCode, KeyEventKind, KeyModifiers};
 use proptest::prelude::*;
 use ratatui::backend::TestBackend;
 use ratatui::Terminal;
@@ -18,15 +20,6 @@ use roughtui::tui::theme::Theme;
 
 fn fig(name: &str) -> App {
     App::new(presets::load(name).unwrap(), Theme::colored(), (80, 24))
-}
-
-fn key(code: KeyCode, mods: KeyModifiers) -> KeyEvent {
-    KeyEvent {
-        code,
-        modifiers: mods,
-        kind: KeyEventKind::Press,
-        state: KeyEventState::NONE,
-    }
 }
 
 fn press(app: &mut App, code: KeyCode, mods: KeyModifiers) {

@@ -95,16 +95,6 @@ pub fn fmt_param(axis: Axis, v: f64) -> String {
     }
 }
 
-pub fn axis_name(axis: Axis) -> &'static str {
-    match axis {
-        Axis::H0OverE => "H0/E",
-        Axis::HRms => "h_rms",
-        Axis::Zeta => "ζ",
-        Axis::Hurst => "H",
-        Axis::RStar => "R*",
-    }
-}
-
 /// How far `other` lies from `this`, in per cent or as a ratio.
 pub fn fmt_rel(other: f64, this: f64) -> String {
     if other == this {

@@ -6,6 +6,7 @@ pub mod app;
 pub mod fmt;
 pub mod keys;
 pub mod layout;
+pub mod plots;
 pub mod term;
 pub mod theme;
 pub mod views;

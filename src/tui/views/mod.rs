@@ -3,6 +3,9 @@
 //! from [`Regions`].
 
 mod chart;
+mod indices;
+mod load;
+mod map;
 mod side;
 mod slopes;
 
@@ -13,9 +16,10 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Clear, Paragraph, Widget, Wrap};
 
 use super::app::{App, Mode};
-use super::fmt::{axis_name, fmt_short, wrap};
+use super::fmt::{fmt_short, wrap};
 use super::keys::{self, Context};
 use super::layout::{Regions, MIN_SIZE};
+use crate::figure::{View, ELASTIC_BELOW, PLASTIC_ABOVE};
 
 impl Widget for &App {
     fn render(self, area: Rect, buf: &mut Buffer) {
@@ -27,7 +31,13 @@ impl Widget for &App {
         render_caption(self, r.caption, buf);
         side::render_sliders(self, r.sliders, r.slider_rows, buf);
         side::render_readout(self, r.readout, buf);
-        slopes::render(self, (r.chart, r.graph), buf);
+        let chart = (r.chart, r.graph);
+        match self.view {
+            View::Slopes => slopes::render(self, chart, buf),
+            View::Indices => indices::render(self, chart, buf),
+            View::Map => map::render(self, chart, buf),
+            View::Load => load::render(self, chart, buf),
+        }
         render_status(self, r.status, buf);
         render_footer(self, r.footer, buf);
         if self.mode == Mode::Help {
@@ -72,7 +82,7 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
         Span::styled(format!("[{name}]"), t.selected),
         Span::raw(format!(
             "  {} {}…{} · {} · {} moments · size effect {}",
-            axis_name(axis),
+            axis.symbol(),
             fmt_short(axis, s.sweep.from()),
             fmt_short(axis, s.sweep.to()),
             s.model.label(),
@@ -94,6 +104,8 @@ fn render_caption(app: &App, area: Rect, buf: &mut Buffer) {
         .map(|l| Line::styled(l, t.dim))
         .collect();
     lines.resize(rows, Line::raw(""));
+    let claims: Vec<String> = app.claims.iter().map(|c| c.text()).collect();
+    lines.push(Line::styled(claims.join(" · "), t.ok));
     Paragraph::new(lines).render(area, buf);
 }
 
@@ -140,8 +152,19 @@ fn render_help(app: &App, area: Rect, buf: &mut Buffer) {
             Span::raw(b.help),
         ]));
     }
+    lines.push(Line::styled(
+        format!(
+            "regimes: elastic < {:.0}% < elasto-plastic < {:.0}% < plastic",
+            ELASTIC_BELOW * 100.0,
+            PLASTIC_ABOVE * 100.0
+        ),
+        t.title,
+    ));
+    lines.push(Line::raw(
+        " (plastic share S_pl/S_tot): this program's thresholds; the paper sets none",
+    ));
     let h = (lines.len() as u16 + 2).min(area.height);
-    let w = 56.min(area.width);
+    let w = 78.min(area.width);
     let r = Rect::new(
         area.x + (area.width - w) / 2,
         area.y + (area.height - h) / 2,

@@ -5,9 +5,8 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::Span;
 
-use super::chart;
+use super::chart::{self, Scale};
 use crate::tui::app::App;
-use crate::tui::fmt::axis_name;
 
 /// The chart panel `area` with its graph `g`.
 pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
@@ -19,13 +18,13 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     let p = &app.plot;
     let norm = if app.state.size_effect { "H_y" } else { "H0" };
     let title = vec![Span::styled(
-        format!("slope {norm}·dA/dp̄/A0 vs {}", axis_name(axis)),
+        format!("slope {norm}·dA/dp̄/A0 vs {}", axis.symbol()),
         t.title,
     )];
     chart::title(app, title, area, buf);
     chart::legend(&[&t.elastic, &t.plastic, &t.total, &t.persson], area, buf);
-    let bounds = (p.x_bounds, p.y_bounds);
-    chart::axes(t, axis, bounds, (area, g), buf);
+    let (x, y) = (Scale::of_axis(axis, p.x_bounds), Scale::decades(p.y_bounds));
+    chart::axes(t, (&x, &y), axis.symbol(), (area, g), buf);
 
     // The curves, over the marker line.
     let marker = chart::marker_line(app, p.y_bounds);
@@ -36,5 +35,5 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         chart::dataset(&t.plastic, &p.plastic),
         chart::dataset(&t.total, &p.total),
     ];
-    chart::plot(sets, bounds, g, buf);
+    chart::plot(sets, (p.x_bounds, p.y_bounds), g, buf);
 }
