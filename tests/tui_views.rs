@@ -248,3 +248,50 @@ fn snapshots_of_the_new_views() {
     show(&mut a, View::Map);
     insta::assert_snapshot!("fig2_map_no_color_80x24", text(&a));
 }
+
+#[test]
+fn p_writes_the_view_as_an_svg_and_never_overwrites() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut a = app("fig2", (80, 24), Theme::colored());
+    a.save_dir = dir.path().to_path_buf();
+    show(&mut a, View::Map);
+    press(&mut a, KeyCode::Char('p'), KeyModifiers::NONE);
+    press(&mut a, KeyCode::Char('p'), KeyModifiers::NONE);
+    let files = common::files_in(dir.path());
+    assert_eq!(files.len(), 2, "{files:?}");
+    for f in &files {
+        assert!(f.starts_with("fig2-map-") && f.ends_with(".svg"), "{f}");
+        let text = std::fs::read_to_string(dir.path().join(f)).unwrap();
+        let doc = roxmltree::Document::parse(&text).expect("well-formed SVG");
+        assert_eq!(doc.root_element().tag_name().name(), "svg");
+        assert!(text.contains("H0/E"), "the map's y axis is labelled");
+    }
+    let status = a.status.as_ref().unwrap();
+    assert!(
+        !status.error && status.text.starts_with("saved "),
+        "{status:?}"
+    );
+    assert!(status.text.ends_with(&files[1]) || status.text.ends_with(&files[0]));
+    // An unwritable folder: one clear error on the status line, no file, no panic.
+    a.save_dir = dir.path().join("missing");
+    press(&mut a, KeyCode::Char('p'), KeyModifiers::NONE);
+    let status = a.status.as_ref().unwrap();
+    assert!(
+        status.error && status.text.starts_with("cannot save picture in"),
+        "{status:?}"
+    );
+    assert_eq!(common::files_in(dir.path()).len(), 2);
+    // Each view gives its own picture.
+    a.save_dir = dir.path().to_path_buf();
+    for v in [View::Slopes, View::Indices, View::Load] {
+        show(&mut a, v);
+        press(&mut a, KeyCode::Char('p'), KeyModifiers::NONE);
+    }
+    let files = common::files_in(dir.path());
+    for v in ["slopes", "indices", "load"] {
+        assert!(
+            files.iter().any(|f| f.starts_with(&format!("fig2-{v}-"))),
+            "{files:?}"
+        );
+    }
+}
