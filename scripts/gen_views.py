@@ -11,6 +11,8 @@ It rewrites, deterministically, in crates/rough-study/data/:
     views_indices.csv  psi_gw, psi_p, psi_star, eq. 13, H_y/H0 along a sweep
     views_map.csv      psi in use, slopes and plastic share over a 2-D grid
     views_load.csv     areas A/A0 against pbar/H at one parameter set
+    views_claims.csv   where the plastic share crosses 1/2 and the index in
+                       use crosses 1 along a preset's sweep (the live claims)
 
 Each file names its cases in comment lines `# case N: ARGS`: N is the `case`
 column, ARGS the arguments of `roughtui export` that produce the same
@@ -244,6 +246,79 @@ def gen_load():
     write("views_load.csv", header(ad, names, doc), "case,load,elastic,plastic,total", rows)
 
 
+CLAIM_PRESETS = ["fig1", "fig2", "fig3", "fig4"]
+CLAIM_SAMPLES = 256
+
+
+def claim_roots(s):
+    """[(kind, rising, at)]: kind 0 = plastic share crosses 1/2, kind 1 = the
+    index in use crosses 1; brackets from 256 samples of the sweep, each
+    root by mpmath's findroot (anderson) in ln x, then polished by bisection."""
+    axis, a, b = s["sweep"]
+    assert axis in LOG_AXES
+
+    def at(x):
+        return dict(s["params"], **{axis: x})
+
+    def share(x):
+        psi = psi_in_use(at(x), s["moments"], s["size_effect"])
+        el, pl, tot = slopes(s["model"], psi)
+        return (mpf(0) if mpmath.isinf(tot) else pl / tot) - mpf(1) / 2
+
+    def index(x):
+        return psi_in_use(at(x), s["moments"], s["size_effect"]) - 1
+
+    out = []
+    xs = grid(axis, a, b, CLAIM_SAMPLES)
+    for kind, f in ((0, share), (1, index)):
+        vs = [f(mpf(x)) for x in xs]
+        for i in range(len(xs) - 1):
+            if (vs[i] < 0) == (vs[i + 1] < 0):
+                continue
+            lo, hi = mpmath.log(xs[i]), mpmath.log(xs[i + 1])
+            g = lambda u: f(mpmath.exp(u))  # noqa: E731
+            neg_lo = g(lo) < 0
+            for _ in range(400):
+                mid = (lo + hi) / 2
+                if (g(mid) < 0) == neg_lo:
+                    lo = mid
+                else:
+                    hi = mid
+                if hi - lo < mpf(10) ** -40:
+                    break
+            out.append((kind, 1 if vs[i] < 0 else 0, mpmath.exp((lo + hi) / 2)))
+    return out
+
+
+def gen_claims():
+    rows, names = [], []
+    for k, name in enumerate(CLAIM_PRESETS):
+        args, s = case(name)
+        names.append(args)
+        with mpmath.workdps(60):
+            roots = claim_roots(s)
+        with mpmath.workdps(100):
+            again = claim_roots(s)
+        assert len(roots) == len(again)
+        for (kind, rising, x), (_, _, y) in zip(roots, again):
+            assert abs(x / y - 1) < mpf(10) ** -30, (name, x, y)
+            rows.append([str(k), str(kind), str(rising), ref.fmt_out(y)])
+    lines = [
+        "# generator: %s (python3 %s from the repository root)" % (SCRIPT, SCRIPT),
+        "# mpmath %s; model: /work/shared/MODEL.md" % mpmath.__version__,
+        "# precision: each root by bisection in ln x to 1e-40 at 60 and at 100 digits,",
+        "#   the two agreeing to 1e-30; printed from the 100-digit run, 25 digits.",
+        "# columns: case (the preset below, its own model, moments and size effect);",
+        "#   kind 0 = the plastic share S_pl/S_tot crosses 1/2, kind 1 = the index in use",
+        "#   (psi_star with the size effect, psi_p without) crosses 1; rising = 1 when the",
+        "#   quantity rises through the level; at = the swept value there. Roots are",
+        "#   bracketed by 256 log-spaced samples of the sweep (ends included).",
+    ]
+    for k, c in enumerate(names):
+        lines.append("# case %d: %s" % (k, " ".join(c)))
+    write("views_claims.csv", lines, "case,kind,rising,at", rows)
+
+
 def check():
     """The grid rule against hand values, and one index against MODEL.md."""
     assert grid("zeta", 1.0, 1e4, 5) == [1.0, 10.0, 100.0, 1000.0, 1e4]
@@ -259,6 +334,7 @@ def main():
     gen_indices()
     gen_map()
     gen_load()
+    gen_claims()
 
 
 if __name__ == "__main__":

@@ -82,3 +82,34 @@ fn map_matches_the_reference() {
 fn load_matches_the_reference() {
     check("views_load.csv", &["load"]);
 }
+
+#[test]
+fn claims_match_the_reference() {
+    use roughtui::figure::{claims, ClaimKind};
+    let text = std::fs::read_to_string(format!("{DATA_DIR}/views_claims.csv")).unwrap();
+    let reference = Table::parse("views_claims.csv", &text).unwrap();
+    let mut report = Report::default();
+    for (k, args) in cases(&text).iter().enumerate() {
+        assert_eq!(args[0], "--preset");
+        let state = roughtui::presets::load(&args[1]).unwrap();
+        let got = claims(&state);
+        let want: Vec<_> = reference
+            .rows
+            .iter()
+            .filter(|r| reference.get(r, "case") == Some(k as f64))
+            .collect();
+        assert_eq!(got.len(), want.len(), "{}: {got:?}", args[1]);
+        for (g, w) in got.iter().zip(want) {
+            let kind = match g.kind {
+                ClaimKind::ShareHalf => 0.0,
+                ClaimKind::IndexOne => 1.0,
+            };
+            assert_eq!(reference.get(w, "kind"), Some(kind), "{}", args[1]);
+            let rising = reference.get(w, "rising") == Some(1.0);
+            assert_eq!(g.rising, rising, "{}: {}", args[1], g.text());
+            let at = reference.get(w, "at").unwrap();
+            report.check(&g.text(), &args[1], g.at, at, tol::CONTRACT);
+        }
+    }
+    report.finish("views_claims.csv");
+}
