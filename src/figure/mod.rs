@@ -17,8 +17,8 @@
 //!   program's regime thresholds (the paper sets none).
 //! - [`claims`]: where the plastic share passes ½ and where the index in use
 //!   crosses 1 along the sweep, located by bisection.
-//! - [`render_svg`]: any view as a self-contained SVG document; [`save_svg`]
-//!   writes it into a folder with the snapshot save's rules.
+//! - [`render_svg`]: any view as a self-contained SVG document (the
+//!   explorer saves it with `snapshot::save_file_new`).
 
 mod claims;
 mod colour;
@@ -33,7 +33,7 @@ pub use map::{MapCache, MapSpec, RegimeMap, DEFAULT_GRID};
 pub use number::short_number;
 pub use rough_model::slopes::{ELASTIC_BELOW, PLASTIC_ABOVE};
 pub use series::{IndexSeries, LoadCurve};
-pub use svg::{render_svg, save_svg};
+pub use svg::render_svg;
 
 use rough_model::Axis;
 

@@ -92,58 +92,18 @@ pub fn save_new(dir: &Path, stem: &str, state: &State) -> anyhow::Result<PathBuf
     state
         .check()
         .map_err(|e| anyhow::anyhow!("cannot save snapshot: {e}"))?;
-    save_with(
-        dir,
-        Name::SNAPSHOT,
-        stem,
-        state.to_ron().as_bytes(),
-        |f, b| f.write_all(b),
-    )
+    save_with(dir, stem, state.to_ron().as_bytes(), |f, b| f.write_all(b))
 }
-
-/// Writes `bytes` to `dir/{stem}.{ext}` under [`save_new`]'s rules: never
-/// replacing a file (`{stem}-2.{ext}`, … if taken), never leaving half of
-/// one, `stem` checked by [`check_stem`] (a trailing `.{ext}` is dropped).
-/// `what` names the file in errors ("picture" → "cannot save picture in
-/// DIR: …"). For the explorer's pictures (`ext` = "svg").
-pub fn save_bytes(
-    dir: &Path,
-    stem: &str,
-    ext: &'static str,
-    what: &'static str,
-    bytes: &[u8],
-) -> anyhow::Result<PathBuf> {
-    let stem = stem.trim();
-    let stem = stem.strip_suffix(&format!(".{ext}")).unwrap_or(stem);
-    save_with(dir, Name { ext, what }, stem, bytes, |f, b| f.write_all(b))
-}
-
-/// What is saved: the file extension and the noun for messages.
-#[derive(Clone, Copy)]
-struct Name {
-    ext: &'static str,
-    what: &'static str,
-}
-
-impl Name {
-    const SNAPSHOT: Name = Name {
-        ext: "ron",
-        what: "snapshot",
-    };
-}
-
 /// [`save_new`] with the write step given, so that tests can make it fail.
 fn save_with(
     dir: &Path,
-    name: Name,
     stem: &str,
     bytes: &[u8],
     write: impl Fn(&mut File, &[u8]) -> io::Result<()>,
 ) -> anyhow::Result<PathBuf> {
-    let Name { ext, what } = name;
-    let stem = check_stem(stem).map_err(|e| anyhow::anyhow!("cannot save {what}: {e}"))?;
+    let stem = check_stem(stem).map_err(|e| anyhow::anyhow!("cannot save snapshot: {e}"))?;
     let d = shown(dir);
-    let in_dir = |e: io::Error| anyhow::anyhow!("cannot save {what} in {d}: {e}");
+    let in_dir = |e: io::Error| anyhow::anyhow!("cannot save snapshot in {d}: {e}");
 
     // 1. A fresh temporary file of our own.
     let (tmp, mut file) = {
@@ -170,9 +130,9 @@ fn save_with(
     let result = (|| {
         for n in 1..10_000u32 {
             let target = dir.join(if n == 1 {
-                format!("{stem}.{ext}")
+                format!("{stem}.ron")
             } else {
-                format!("{stem}-{n}.{ext}")
+                format!("{stem}-{n}.ron")
             });
             match std::fs::hard_link(&tmp, &target) {
                 Ok(()) => return Ok(target),
@@ -194,7 +154,7 @@ fn save_with(
                 Err(e) => return Err(in_dir(e)),
             }
         }
-        anyhow::bail!("cannot save {what} in {d}: too many files named {stem}.{ext}")
+        anyhow::bail!("cannot save snapshot in {d}: too many snapshots named {stem}")
     })();
     let _ = std::fs::remove_file(&tmp);
     if result.is_ok() {
@@ -240,16 +200,10 @@ mod tests {
     #[test]
     fn failed_write_leaves_no_file_behind() {
         let dir = tempfile::tempdir().unwrap();
-        let err = save_with(
-            dir.path(),
-            Name::SNAPSHOT,
-            "full",
-            b"(version: 1)",
-            |f, b| {
-                f.write_all(&b[..4])?;
-                Err(io::Error::from_raw_os_error(28)) // ENOSPC
-            },
-        )
+        let err = save_with(dir.path(), "full", b"(version: 1)", |f, b| {
+            f.write_all(&b[..4])?;
+            Err(io::Error::from_raw_os_error(28)) // ENOSPC
+        })
         .unwrap_err()
         .to_string();
         assert!(err.contains("cannot save snapshot in"), "{err}");
@@ -262,7 +216,7 @@ mod tests {
     fn a_file_created_during_the_save_is_not_replaced() {
         let dir = tempfile::tempdir().unwrap();
         let theirs = dir.path().join("race.ron");
-        let path = save_with(dir.path(), Name::SNAPSHOT, "race", b"ours\n", |f, b| {
+        let path = save_with(dir.path(), "race", b"ours\n", |f, b| {
             // Someone else takes the name after any check we could have made.
             std::fs::write(&theirs, "theirs\n")?;
             f.write_all(b)
@@ -286,26 +240,6 @@ mod tests {
         let other = dir.path().join("y.ron");
         assert!(write_exclusive(&other, b"three", &fail).is_err());
         assert!(!other.exists());
-    }
-
-    #[test]
-    fn pictures_are_saved_under_the_same_rules() {
-        let dir = tempfile::tempdir().unwrap();
-        let svg = b"<svg/>";
-        let a = save_bytes(dir.path(), "fig2-map.svg", "svg", "picture", svg).unwrap();
-        let b = save_bytes(dir.path(), "fig2-map", "svg", "picture", svg).unwrap();
-        assert_eq!(a, dir.path().join("fig2-map.svg"));
-        assert_eq!(b, dir.path().join("fig2-map-2.svg"));
-        assert_eq!(std::fs::read(&a).unwrap(), svg);
-        assert_eq!(files_in(dir.path()), ["fig2-map-2.svg", "fig2-map.svg"]);
-        let e = save_bytes(dir.path(), "a/b", "svg", "picture", svg).unwrap_err();
-        assert!(
-            e.to_string()
-                .starts_with("cannot save picture: bad file name"),
-            "{e}"
-        );
-        let e = save_bytes(Path::new("/nonexistent/dir"), "x", "svg", "picture", svg).unwrap_err();
-        assert!(e.to_string().contains("cannot save picture in"), "{e}");
     }
 
     #[test]

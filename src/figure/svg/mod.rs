@@ -12,9 +12,7 @@ use rough_model::{Axis, Curves, Scene};
 
 use super::{axis_unit, FigureOptions, IndexSeries, LoadCurve, View};
 use crate::figure::short_number;
-use crate::snapshot::{default_stem, save_bytes, State};
-use std::path::{Path, PathBuf};
-use std::time::SystemTime;
+use crate::snapshot::State;
 
 /// Picture size in pixels (SVG user units).
 pub const SIZE: (u32, u32) = (900, 600);
@@ -48,22 +46,6 @@ pub fn render_svg(view: View, state: &State, opts: &FigureOptions) -> anyhow::Re
         root.present().map_err(plot_err)?;
     }
     Ok(buf)
-}
-
-/// Renders `view` of `state` and saves it in `dir` as
-/// `{name}-{view}-{YYYYMMDD-HHMMSS}.svg` (UTC at `time`) under the snapshot
-/// save's rules: never replacing a file, never leaving half of one. Returns
-/// the path written (the explorer's picture key).
-pub fn save_svg(
-    dir: &Path,
-    view: View,
-    state: &State,
-    opts: &FigureOptions,
-    time: SystemTime,
-) -> anyhow::Result<PathBuf> {
-    let svg = render_svg(view, state, opts)?;
-    let stem = default_stem(&format!("{}-{}", state.name, view.name()), time);
-    save_bytes(dir, &stem, "svg", "picture", svg.as_bytes())
 }
 
 type Area<'a> = DrawingArea<SVGBackend<'a>, plotters::coord::Shift>;
@@ -405,21 +387,6 @@ fn wrap(text: &str, width: usize) -> Vec<String> {
 #[cfg(test)]
 mod tests {
     use super::wrap;
-
-    #[test]
-    fn saved_pictures_are_named_by_scene_view_and_time() {
-        use super::*;
-        let dir = tempfile::tempdir().unwrap();
-        let s = crate::presets::load("fig4").unwrap();
-        let t = std::time::UNIX_EPOCH + std::time::Duration::from_secs(1_795_275_012);
-        let opts = FigureOptions::default();
-        let a = save_svg(dir.path(), View::Load, &s, &opts, t).unwrap();
-        let b = save_svg(dir.path(), View::Load, &s, &opts, t).unwrap();
-        assert_eq!(a, dir.path().join("fig4-load-20261121-153012.svg"));
-        assert_eq!(b, dir.path().join("fig4-load-20261121-153012-2.svg"));
-        let text = std::fs::read_to_string(&a).unwrap();
-        assert!(text.starts_with("<svg") && text.trim_end().ends_with("</svg>"));
-    }
 
     #[test]
     fn wrap_breaks_at_spaces() {
