@@ -1,11 +1,14 @@
 //! One frame of the explorer drawn into ratatui's TestBackend at 160×48:
-//! the drawing alone (curves cached), and a slider step (recompute + draw).
+//! the drawing alone (curves cached), and a slider step (recompute + draw);
+//! the same for the regime map view at 160×48 and with a 200×60-cell map
+//! (253×70 terminal, 200×120 points).
 
 use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use ratatui::backend::TestBackend;
 use ratatui::Terminal;
+use roughtui::figure::View;
 use roughtui::presets;
 use roughtui::tui::app::{update, App, Message};
 use roughtui::tui::theme::Theme;
@@ -54,5 +57,43 @@ fn frame(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, frame);
+/// The regime map view: drawing the cached map, and a step of a slider that
+/// is not swept (the map is recomputed, then drawn).
+fn map_frame(c: &mut Criterion) {
+    let mut g = c.benchmark_group("map frame");
+    for (size, label) in [((160, 48), "160x48"), ((253, 70), "200x60 cells")] {
+        let state = presets::load("fig2").expect("built-in preset");
+        let mut app = App::new(state, Theme::colored(), size);
+        while app.view != View::Map {
+            update(&mut app, Message::NextView);
+        }
+        let mut terminal = Terminal::new(TestBackend::new(size.0, size.1)).expect("terminal");
+        g.bench_function(format!("draw {label}"), |b| {
+            b.iter(|| {
+                terminal
+                    .draw(|f| f.render_widget(black_box(&app), f.area()))
+                    .expect("draw");
+            })
+        });
+        update(&mut app, Message::SelectNext);
+        let before = app.map.computes();
+        let mut up = true;
+        g.bench_function(format!("step+draw {label}"), |b| {
+            b.iter(|| {
+                update(&mut app, Message::Step { up, fine: false });
+                up = !up;
+                terminal
+                    .draw(|f| f.render_widget(black_box(&app), f.area()))
+                    .expect("draw");
+            })
+        });
+        assert!(
+            app.map.computes() > before + 1,
+            "each step recomputes the map"
+        );
+    }
+    g.finish();
+}
+
+criterion_group!(benches, frame, map_frame);
 criterion_main!(benches);

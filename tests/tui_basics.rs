@@ -291,7 +291,7 @@ fn the_regime_word_is_bold_without_colour() {
         let (row, line) = s
             .lines()
             .enumerate()
-            .find(|(_, l)| l.starts_with("plastic "))
+            .find(|(_, l)| l.starts_with("plastic ") && l.contains(&format!("%  {regime}")))
             .unwrap();
         let at = line.find(&format!("%  {regime}")).expect(line) + 3;
         let col = line[..at].chars().count();

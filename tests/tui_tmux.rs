@@ -6,7 +6,7 @@
 
 mod common;
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::{Duration, Instant};
 
@@ -19,9 +19,11 @@ fn explorer_under_tmux() {
     }
     let dir = tempfile::tempdir().unwrap();
     let p = Pane::start("main", dir.path(), (100, 30), &[], &[]);
-    let s = p.wait_text("Readout");
-    assert!(s.contains("[fig2]"), "{s}");
-    assert!(braille(&s) > 100, "{} braille cells:\n{s}", braille(&s));
+    // Waits for the whole first frame (a capture may catch it half drawn).
+    let s = p.wait_for("the first frame", |s| {
+        s.contains("[fig2]") && braille(s) > 100
+    });
+    assert!(s.contains("Readout"), "{s}");
 
     // One coarse slider step: ζ 128 → 10^2.25; count the bytes it costs.
     let bytes = p.bytes_written(|| {
@@ -201,6 +203,21 @@ fn no_color_draws_without_colour_codes() {
     assert!(!colour_codes(&String::from_utf8_lossy(&raw.stdout)).is_empty());
 }
 
+/// The microseconds of each handled event in a `ROUGHTUI_FRAME_LOG` file.
+fn frame_times(log: &Path) -> Vec<u64> {
+    std::fs::read_to_string(log)
+        .unwrap()
+        .lines()
+        .map(|l| l.parse().unwrap())
+        .collect()
+}
+
+/// Median and 90th percentile.
+fn median_p90(mut us: Vec<u64>) -> (u64, u64) {
+    us.sort_unstable();
+    (us[us.len() / 2], us[(us.len() * 9) / 10])
+}
+
 /// Key → drawn frame at 160×48, from the program's own frame log.
 #[test]
 fn key_to_frame_time_at_160x48() {
@@ -225,14 +242,88 @@ fn key_to_frame_time_at_160x48() {
     }
     p.keys(&["q"]);
     assert_eq!(p.exit_status(), 0);
-    let mut us: Vec<u64> = std::fs::read_to_string(&log)
-        .unwrap()
-        .lines()
-        .map(|l| l.parse().unwrap())
-        .collect();
+    let us = frame_times(&log);
     assert_eq!(us.len(), 20, "{us:?}");
-    us.sort_unstable();
-    let (median, max) = (us[us.len() / 2], us[us.len() - 1]);
+    let max = *us.iter().max().unwrap();
+    let (median, _) = median_p90(us);
     eprintln!("key to frame at 160x48: median {median} µs, max {max} µs");
     assert!(median < 100_000, "median {median} µs");
+}
+
+/// Tab and Shift-Tab through all four views; the size-effect key redraws the
+/// regime map.
+#[test]
+fn tab_cycles_the_four_views() {
+    if !have_tmux() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let p = Pane::start("views", dir.path(), (80, 24), &[], &[]);
+    p.wait_text("slope H0·dA/dp̄/A0 vs ζ");
+    for (key, title) in [
+        ("Tab", "plasticity indices vs ζ"),
+        ("Tab", "plastic share over ζ × H0/E"),
+        ("Tab", "A/A0 vs p̄/H0"),
+        ("Tab", "slope H0·dA/dp̄/A0 vs ζ"),
+        ("BTab", "A/A0 vs p̄/H0"),
+        ("BTab", "plastic share over ζ × H0/E"),
+    ] {
+        p.keys(&[key]);
+        p.wait_text(title);
+    }
+    let s = p.wait_text("Ψ_P=1");
+    assert!(s.contains("▀") && s.contains("◆"), "{s}");
+    p.keys(&["e"]);
+    p.wait_text("Ψ*=1");
+    p.keys(&["y"]);
+    p.wait_text("plastic share over ζ × h_rms");
+    p.keys(&["Tab"]);
+    p.wait_text("A/A0 vs p̄/H_y");
+    p.keys(&["q"]);
+    assert_eq!(p.exit_status(), 0);
+}
+
+/// Key → drawn frame in the regime map view at 160×48: steps of the swept
+/// slider (the map only moves its point) and of another slider (the map is
+/// recomputed).
+#[test]
+fn key_to_frame_time_in_map_view_at_160x48() {
+    if !have_tmux() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let log = dir.path().join("frames");
+    let p = Pane::start(
+        "map-timing",
+        dir.path(),
+        (160, 48),
+        &[("ROUGHTUI_FRAME_LOG", log.to_str().unwrap())],
+        &[],
+    );
+    p.wait_text("Readout");
+    p.keys(&["Tab", "Tab"]);
+    p.wait_text("plastic share over");
+    let keys = ["Right", "Left", "Up", "Right", "Left", "Down"];
+    for i in 0..36 {
+        p.keys(&[keys[i % 6]]);
+        std::thread::sleep(Duration::from_millis(60));
+    }
+    p.keys(&["q"]);
+    assert_eq!(p.exit_status(), 0);
+    let us = frame_times(&log);
+    assert_eq!(us.len(), 38, "{us:?}");
+    let steps = &us[2..];
+    let pick = |phase: &[usize]| -> Vec<u64> {
+        (0..steps.len())
+            .filter(|i| phase.contains(&(i % 6)))
+            .map(|i| steps[i])
+            .collect()
+    };
+    let (marker, marker_p90) = median_p90(pick(&[0, 1]));
+    let (map, map_p90) = median_p90(pick(&[3, 4]));
+    eprintln!(
+        "key to frame in map view at 160x48: median {marker} µs (p90 {marker_p90} µs) \
+         moving the point, median {map} µs (p90 {map_p90} µs) recomputing the map"
+    );
+    assert!(map < 1_000_000, "median {map} µs");
 }

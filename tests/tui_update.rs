@@ -3,7 +3,8 @@
 
 mod common;
 
-use common::app::{ch, fig, key, press, screen};
+use common::app::{ch, fig, press, screen};
+use common::key;
 use crossterm::event::{KeyCode, KeyEventKind, KeyModifiers};
 use proptest::prelude::*;
 use rough_model::{Axis, Model, Moments};

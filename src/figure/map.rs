@@ -197,9 +197,54 @@ pub struct RegimeMap {
 }
 
 impl RegimeMap {
-    /// Computes every cell: one sweep of the model per row.
+    /// Computes every cell: one sweep of the model per row, the rows
+    /// shared among the cores for maps of more than a few thousand cells.
     pub fn compute(spec: &MapSpec) -> RegimeMap {
-        let n = spec.cols * spec.rows;
+        let threads = if spec.cols * spec.rows < 4096 {
+            1
+        } else {
+            std::thread::available_parallelism().map_or(1, |n| n.get().min(8))
+        };
+        let per = spec.rows.div_ceil(threads);
+        let parts: Vec<RegimeMap> = if threads == 1 {
+            vec![RegimeMap::rows(spec, 0..spec.rows)]
+        } else {
+            std::thread::scope(|scope| {
+                let jobs: Vec<_> = (0..threads)
+                    .map(|k| {
+                        let lo = (k * per).min(spec.rows);
+                        let hi = (lo + per).min(spec.rows);
+                        scope.spawn(move || RegimeMap::rows(spec, lo..hi))
+                    })
+                    .collect();
+                jobs.into_iter()
+                    // A row computation does not panic; if one did, its
+                    // rows are recomputed here.
+                    .enumerate()
+                    .map(|(k, j)| {
+                        j.join().unwrap_or_else(|_| {
+                            let lo = (k * per).min(spec.rows);
+                            RegimeMap::rows(spec, lo..(lo + per).min(spec.rows))
+                        })
+                    })
+                    .collect()
+            })
+        };
+        let mut parts = parts.into_iter();
+        let mut m = parts.next().unwrap_or_else(|| RegimeMap::rows(spec, 0..0));
+        for p in parts {
+            m.psi.extend(p.psi);
+            m.elastic.extend(p.elastic);
+            m.plastic.extend(p.plastic);
+            m.total.extend(p.total);
+            m.share.extend(p.share);
+        }
+        m
+    }
+
+    /// Rows `rows` of the map (a partial map: only those rows' cells).
+    fn rows(spec: &MapSpec, rows: std::ops::Range<usize>) -> RegimeMap {
+        let n = spec.cols * rows.len();
         let mut m = RegimeMap {
             spec: *spec,
             psi: Vec::with_capacity(n),
@@ -212,7 +257,7 @@ impl RegimeMap {
             persson_elastic: false,
             ..Curves::ALL
         };
-        for row in 0..spec.rows {
+        for row in rows {
             let scene_spec = SceneSpec {
                 base: at(&spec.base, spec.y.axis(), spec.y_at(row)),
                 sweep: spec.x,
@@ -379,6 +424,15 @@ mod tests {
         s.model = s.model.other();
         cache.get(&spec(&s));
         assert_eq!(cache.computes(), 4);
+    }
+
+    #[test]
+    fn rows_shared_among_threads_give_the_same_map() {
+        let s = fig("fig4");
+        let spec = MapSpec::of(&s, (100, 61), None).unwrap();
+        let whole = RegimeMap::compute(&spec);
+        assert_eq!(whole, RegimeMap::rows(&spec, 0..61));
+        assert_eq!(whole.share.len(), 6100);
     }
 
     #[test]

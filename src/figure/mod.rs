@@ -17,7 +17,8 @@
 //!   program's regime thresholds (the paper sets none).
 //! - [`claims`]: where the plastic share passes ½ and where the index in use
 //!   crosses 1 along the sweep, located by bisection.
-//! - [`render_svg`]: any view as a self-contained SVG document.
+//! - [`render_svg`]: any view as a self-contained SVG document (the
+//!   explorer saves it with `snapshot::save_file_new`).
 
 mod claims;
 mod colour;

@@ -1,5 +1,7 @@
 //! The index view's series along the sweep and the load view's curve.
 
+use std::ops::Range;
+
 use rough_model::{areas, slopes, Indices, Params, Slopes, SweepError};
 
 use crate::snapshot::State;
@@ -25,12 +27,24 @@ impl IndexSeries {
     /// The indices of `state` at `points` points of its sweep, under its
     /// moments convention.
     pub fn compute(state: &State, points: usize) -> Result<IndexSeries, SweepError> {
+        IndexSeries::compute_range(state, points, 0..points)
+    }
+
+    /// Points `range` of [`IndexSeries::compute`]'s series (cut to the
+    /// sweep), so that long series can be computed and written in blocks.
+    pub fn compute_range(
+        state: &State,
+        points: usize,
+        range: Range<usize>,
+    ) -> Result<IndexSeries, SweepError> {
         if points < 2 {
             return Err(SweepError::TooFewPoints(points));
         }
         let mut s = IndexSeries::default();
         let axis = state.sweep.axis();
-        for x in state.sweep.points(points) {
+        let last = (points - 1) as f64;
+        for i in range.start.min(points)..range.end.min(points) {
+            let x = state.sweep.at(i as f64 / last);
             let ix = Indices::of(&at(&state.params, axis, x), state.moments);
             s.x.push(x);
             s.psi_gw.push(ix.psi_gw);
@@ -76,21 +90,32 @@ impl LoadCurve {
     /// The areas of `state` at `points` loads (≥ 2). At p̄ = 0 every area is
     /// 0; at p̄ = H the contact is fully plastic (0, 1, 1).
     pub fn compute(state: &State, points: usize) -> Result<LoadCurve, SweepError> {
+        LoadCurve::compute_range(state, points, 0..points)
+    }
+
+    /// Points `range` of [`LoadCurve::compute`]'s curve (cut to the grid).
+    pub fn compute_range(
+        state: &State,
+        points: usize,
+        range: Range<usize>,
+    ) -> Result<LoadCurve, SweepError> {
         if points < 2 {
             return Err(SweepError::TooFewPoints(points));
         }
         let ix = Indices::of(&state.params, state.moments);
         let psi = ix.psi_in_use(state.size_effect);
+        let range = range.start.min(points)..range.end.min(points);
+        let n = range.len();
         let mut c = LoadCurve {
-            load: Vec::with_capacity(points),
-            elastic: Vec::with_capacity(points),
-            plastic: Vec::with_capacity(points),
-            total: Vec::with_capacity(points),
+            load: Vec::with_capacity(n),
+            elastic: Vec::with_capacity(n),
+            plastic: Vec::with_capacity(n),
+            total: Vec::with_capacity(n),
             psi: psi.to_f64(),
             slopes: slopes(state.model, psi),
         };
         let last = (points - 1) as f64;
-        for i in 0..points {
+        for i in range {
             let rho = if i == points - 1 {
                 1.0
             } else {

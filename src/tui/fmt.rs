@@ -95,16 +95,6 @@ pub fn fmt_param(axis: Axis, v: f64) -> String {
     }
 }
 
-pub fn axis_name(axis: Axis) -> &'static str {
-    match axis {
-        Axis::H0OverE => "H0/E",
-        Axis::HRms => "h_rms",
-        Axis::Zeta => "ζ",
-        Axis::Hurst => "H",
-        Axis::RStar => "R*",
-    }
-}
-
 /// A plastic share in per cent with as many decimals as it takes for the
 /// shown number to fall in the same regime as the true one: 9.996 % shows
 /// as "9.996%", not as "10.0%" next to the word "elastic".

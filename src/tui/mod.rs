@@ -8,6 +8,7 @@ pub mod help;
 pub mod keys;
 pub mod layout;
 pub mod line_edit;
+pub mod plots;
 pub mod status;
 pub mod term;
 pub mod theme;

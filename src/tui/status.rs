@@ -9,7 +9,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Clear, Widget};
 
 use super::app::{App, Mode};
-use super::fmt::{axis_name, fmt_param, fmt_short};
+use super::fmt::{fmt_param, fmt_short};
 use super::line_edit::LineEdit;
 use super::value_input;
 
@@ -56,7 +56,7 @@ pub fn render_status(app: &App, status: Rect, below: Rect, buf: &mut Buffer) {
             (Line::from(spans), Some(hint.to_string()))
         }
         Mode::Value(axis, line) => {
-            let mut spans = vec![Span::styled(format!("{} = ", axis_name(*axis)), t.title)];
+            let mut spans = vec![Span::styled(format!("{} = ", axis.symbol()), t.title)];
             spans.extend(field(line));
             let (lo, hi) = app.range(*axis);
             spans.push(Span::styled(

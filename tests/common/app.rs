@@ -1,7 +1,7 @@
 //! Driving the explorer without a terminal: key presses through the key
 //! table, and the drawn screen as text.
 
-use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyEventState, KeyModifiers};
+use crossterm::event::{KeyCode, KeyModifiers};
 use ratatui::backend::TestBackend;
 use ratatui::Terminal;
 use roughtui::presets;
@@ -14,18 +14,9 @@ pub fn fig(name: &str) -> App {
     App::new(presets::load(name).unwrap(), Theme::colored(), (80, 24))
 }
 
-pub fn key(code: KeyCode, mods: KeyModifiers) -> KeyEvent {
-    KeyEvent {
-        code,
-        modifiers: mods,
-        kind: KeyEventKind::Press,
-        state: KeyEventState::NONE,
-    }
-}
-
 /// Presses a key: the message the key table gives, if any, goes to update.
 pub fn press(app: &mut App, code: KeyCode, mods: KeyModifiers) {
-    if let Some(m) = message_for_key(app, &key(code, mods)) {
+    if let Some(m) = message_for_key(app, &super::key(code, mods)) {
         update(app, m);
     }
 }

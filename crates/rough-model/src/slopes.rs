@@ -86,12 +86,11 @@ pub enum Regime {
 }
 
 impl Regime {
-    /// The regime of a plastic share: below 10 % elastic, above 90 %
-    /// plastic (this program's thresholds; the paper sets none).
+    /// The regime of a plastic share ([`ELASTIC_BELOW`], [`PLASTIC_ABOVE`]).
     pub fn of_share(share: f64) -> Regime {
-        if share < 0.1 {
+        if share < ELASTIC_BELOW {
             Regime::Elastic
-        } else if share > 0.9 {
+        } else if share > PLASTIC_ABOVE {
             Regime::Plastic
         } else {
             Regime::ElastoPlastic
@@ -130,14 +129,7 @@ impl Slopes {
 
     /// Below 10 % plastic share elastic, above 90 % plastic.
     pub fn regime(&self) -> Regime {
-        let s = self.plastic_share();
-        if s < ELASTIC_BELOW {
-            Regime::Elastic
-        } else if s > PLASTIC_ABOVE {
-            Regime::Plastic
-        } else {
-            Regime::ElastoPlastic
-        }
+        Regime::of_share(self.plastic_share())
     }
 }
 

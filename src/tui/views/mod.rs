@@ -3,6 +3,9 @@
 //! from [`Regions`].
 
 mod chart;
+mod indices;
+mod load;
+mod map;
 mod overlap;
 mod side;
 mod slopes;
@@ -13,10 +16,11 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Widget, Wrap};
 
 use super::app::{App, Mode};
-use super::fmt::{axis_name, fmt_short, wrap};
+use super::fmt::{fmt_short, wrap};
 use super::keys;
 use super::layout::{Regions, MIN_SIZE};
 use super::{help, status};
+use crate::figure::View;
 
 impl Widget for &App {
     fn render(self, area: Rect, buf: &mut Buffer) {
@@ -28,7 +32,13 @@ impl Widget for &App {
         render_caption(self, r.caption, buf);
         side::render_sliders(self, r.sliders, r.slider_rows, buf);
         side::render_readout(self, r.readout, buf);
-        slopes::render(self, (r.chart, r.graph), buf);
+        let chart = (r.chart, r.graph);
+        match self.view {
+            View::Slopes => slopes::render(self, chart, buf),
+            View::Indices => indices::render(self, chart, buf),
+            View::Map => map::render(self, chart, buf),
+            View::Load => load::render(self, chart, buf),
+        }
         render_footer(self, r.footer, buf);
         status::render_status(self, r.status, r.footer, buf);
         if self.mode == Mode::Help {
@@ -75,7 +85,7 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
         Span::styled(format!("[{name}]"), t.selected),
         Span::raw(format!(
             "  {} {}…{} · {} · {} moments · size effect {}",
-            axis_name(axis),
+            axis.symbol(),
             fmt_short(axis, s.sweep.from()),
             fmt_short(axis, s.sweep.to()),
             s.model.label(),
@@ -97,6 +107,8 @@ fn render_caption(app: &App, area: Rect, buf: &mut Buffer) {
         .map(|l| Line::styled(l, t.dim))
         .collect();
     lines.resize(rows, Line::raw(""));
+    let claims: Vec<String> = app.claims.iter().map(|c| c.text()).collect();
+    lines.push(Line::styled(claims.join(" · "), t.ok));
     Paragraph::new(lines).render(area, buf);
 }
 

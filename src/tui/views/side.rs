@@ -9,7 +9,7 @@ use ratatui::widgets::{Paragraph, Widget};
 use rough_model::Axis;
 
 use crate::tui::app::App;
-use crate::tui::fmt::{axis_name, fmt_len, fmt_num, fmt_param, fmt_rel, fmt_share, fmt_short};
+use crate::tui::fmt::{fmt_len, fmt_num, fmt_param, fmt_rel, fmt_share, fmt_short};
 use crate::tui::theme::CurveStyle;
 
 pub fn render_sliders(app: &App, area: Rect, rows: u16, buf: &mut Buffer) {
@@ -27,7 +27,7 @@ pub fn render_sliders(app: &App, area: Rect, rows: u16, buf: &mut Buffer) {
         let text = format!(
             "{}{:<5}{} {:>9}  {}…{}",
             if selected { "▶ " } else { "  " },
-            axis_name(axis),
+            axis.symbol(),
             if axis == swept { "↔" } else { " " },
             fmt_param(axis, v),
             fmt_short(axis, lo),

@@ -5,9 +5,10 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::Span;
 
-use super::{chart, overlap};
+use super::chart::{self, Scale};
+use super::overlap;
 use crate::tui::app::App;
-use crate::tui::fmt::{axis_name, fmt_decade};
+use crate::tui::fmt::fmt_decade;
 use crate::tui::theme::CurveStyle;
 
 /// The chart panel `area` with its graph `g`.
@@ -20,7 +21,7 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     let p = &app.plot;
     let norm = if app.state.size_effect { "H_y" } else { "H0" };
     let title = vec![Span::styled(
-        format!("slope {norm}·dA/dp̄/A0 vs {}", axis_name(axis)),
+        format!("slope {norm}·dA/dp̄/A0 vs {}", axis.symbol()),
         t.title,
     )];
     chart::title(app, title, area, buf);
@@ -85,8 +86,9 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
             }
         }
     }
-    chart::legend(&names, area, buf);
-    chart::axes(t, axis, bounds, (area, g), buf);
+    chart::legend_named(&names, area, buf);
+    let (x, y) = (Scale::of_axis(axis, p.x_bounds), Scale::decades(p.y_bounds));
+    chart::axes(t, (&x, &y), axis.symbol(), (area, g), buf);
 
     // The curves, over the marker line.
     let marker = chart::marker_line(app, p.y_bounds);
