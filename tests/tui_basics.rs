@@ -335,3 +335,58 @@ fn the_share_shown_agrees_with_the_regime_word() {
     assert!(s.contains("plastic 9.99"), "{s}");
     assert!(s.contains("%  elastic"), "{s}");
 }
+
+/// The ζ in [lo, hi] where `f` changes sign, by bisection on log ζ.
+fn root(f: impl Fn(f64) -> f64, (mut lo, mut hi): (f64, f64)) -> f64 {
+    assert!((f(lo) < 0.0) != (f(hi) < 0.0));
+    for _ in 0..100 {
+        let mid = (lo * hi).sqrt();
+        if (f(mid) < 0.0) == (f(lo) < 0.0) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    lo
+}
+
+#[test]
+fn regime_marks_sit_where_psi_and_the_share_cross() {
+    use rough_model::{slopes, Surface};
+    use roughtui::tui::plots::RegimeMark;
+    let a = fig("fig2");
+    let st = a.state.clone();
+    let psi = |z: f64| {
+        let p = st.params.with(Axis::Zeta, z).unwrap();
+        Surface::of(&p, st.moments)
+            .indices
+            .psi_in_use(st.size_effect)
+            .to_f64()
+    };
+    let share = |z: f64| slopes(st.model, psi(z)).plastic_share();
+    let want = [
+        (root(|z| share(z) - 0.1, (1.0, 1e4)), RegimeMark::ShareLow),
+        (root(|z| psi(z) - 1.0, (1.0, 1e4)), RegimeMark::PsiOne),
+        (root(|z| share(z) - 0.9, (1.0, 1e4)), RegimeMark::ShareHigh),
+    ];
+    let got = &a.plot.regime_marks;
+    assert_eq!(got.len(), 3, "{got:?}");
+    // Within one sample of the curves (4 decades over the points drawn).
+    let step = 4.0 / (a.plot.points - 1) as f64;
+    for ((x, m), (z, wm)) in got.iter().zip(want) {
+        assert_eq!(*m, wm);
+        assert!(
+            (x - z.log10()).abs() < step,
+            "{m:?} at 10^{x}, want 10^{}",
+            z.log10()
+        );
+    }
+    // All three are on the x axis line, side by side where they share a cell.
+    let s = screen(&a);
+    let axis = s.lines().find(|l| l.contains('└')).unwrap();
+    for m in ["ψ", "◦", "●"] {
+        assert!(axis.contains(m), "{m} missing: {axis}");
+    }
+    // Fig. 3 (size effect on) stays elastic: no marks at all.
+    assert_eq!(fig("fig3").plot.regime_marks, vec![]);
+}

@@ -45,6 +45,10 @@ pub const SYMBOLS: &[(&str, &str)] = &[
         "",
         "plastic: this program's thresholds (the paper sets none)",
     ),
+    (
+        "ψ ◦ ●",
+        "on the x axis: ψ = 1; plastic share 10 %; plastic share 90 %",
+    ),
 ];
 
 /// The help's lines, all pages together.

@@ -2,6 +2,7 @@
 //! curves of each view transformed to the chart's axes, non-finite and
 //! non-positive points on log axes dropped.
 
+use rough_model::slopes::{ELASTIC_BELOW, PLASTIC_ABOVE};
 use rough_model::{Scene, SceneSpec};
 
 use crate::figure::{IndexSeries, LoadCurve};
@@ -22,6 +23,69 @@ pub struct Plot {
     pub y_bounds: [f64; 2],
     /// Points sampled per curve: the chart's braille dot columns.
     pub points: usize,
+    /// Where along x the regime changes: ψ crosses 1, the plastic share
+    /// crosses 10 % or 90 % (transformed x, interpolated between samples).
+    pub regime_marks: Vec<(f64, RegimeMark)>,
+}
+
+/// A place along the x axis where the regime changes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RegimeMark {
+    /// The index in use (Ψ_P or Ψ*) crosses 1.
+    PsiOne,
+    /// The plastic share crosses [`ELASTIC_BELOW`] (10 %).
+    ShareLow,
+    /// The plastic share crosses [`PLASTIC_ABOVE`] (90 %).
+    ShareHigh,
+}
+
+impl RegimeMark {
+    /// The character drawn on the x axis.
+    pub fn symbol(self) -> &'static str {
+        match self {
+            RegimeMark::PsiOne => "ψ",
+            RegimeMark::ShareLow => "◦",
+            RegimeMark::ShareHigh => "●",
+        }
+    }
+}
+
+/// Where `ys - level` changes sign between samples, x interpolated linearly.
+fn level_crossings(xs: &[f64], ys: &[f64], level: f64) -> Vec<f64> {
+    let mut out = Vec::new();
+    for i in 1..xs.len().min(ys.len()) {
+        let (a, b) = (ys[i - 1] - level, ys[i] - level);
+        if a.is_finite() && b.is_finite() && a != b && (a < 0.0) != (b < 0.0) {
+            let t = a / (a - b);
+            out.push(xs[i - 1] + t * (xs[i] - xs[i - 1]));
+        }
+    }
+    out
+}
+
+/// The regime marks of a scene, on the chart's x axis.
+fn regime_marks(log_x: bool, scene: &Scene) -> Vec<(f64, RegimeMark)> {
+    let xs: Vec<f64> = scene.x.iter().map(|x| to_plot(log_x, *x)).collect();
+    let share: Vec<f64> = scene
+        .plastic
+        .iter()
+        .zip(&scene.total)
+        .map(|(p, t)| if t.is_infinite() { 0.0 } else { p / t })
+        .collect();
+    let mut marks: Vec<(f64, RegimeMark)> = Vec::new();
+    for (ys, level, mark) in [
+        (&scene.psi, 1.0, RegimeMark::PsiOne),
+        (&share, ELASTIC_BELOW, RegimeMark::ShareLow),
+        (&share, PLASTIC_ABOVE, RegimeMark::ShareHigh),
+    ] {
+        marks.extend(
+            level_crossings(&xs, ys, level)
+                .into_iter()
+                .map(|x| (x, mark)),
+        );
+    }
+    marks.sort_by(|a, b| a.0.total_cmp(&b.0));
+    marks
 }
 
 /// Transforms a value for a plot axis: log10 for log axes.
@@ -83,6 +147,7 @@ pub fn compute_plot(spec: &SceneSpec) -> Plot {
     plot.plastic = curve(&scene.plastic);
     plot.total = curve(&scene.total);
     plot.persson = curve(&scene.persson_elastic);
+    plot.regime_marks = regime_marks(log_x, &scene);
     let curves = [&plot.elastic, &plot.plastic, &plot.total, &plot.persson];
     plot.y_bounds = decade_bounds(&curves, Y_DECADES);
     plot

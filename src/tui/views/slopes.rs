@@ -89,6 +89,26 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     chart::legend_named(&names, area, buf);
     let (x, y) = (Scale::of_axis(axis, p.x_bounds), Scale::decades(p.y_bounds));
     chart::axes(t, (&x, &y), axis.symbol(), (area, g), buf);
+    // Where the regime changes along the sweep, on the x axis line; a mark
+    // whose cell is taken by another sits in the nearest free one beside it.
+    let mut taken: Vec<u16> = Vec::new();
+    for (v, mark) in &p.regime_marks {
+        let Some(col) = chart::col_of(g, p.x_bounds, *v) else {
+            continue;
+        };
+        let free = [0i32, 1, -1, 2, -2]
+            .into_iter()
+            .map(|d| i32::from(col) + d)
+            .filter(|c| (i32::from(g.x)..i32::from(g.right())).contains(c))
+            .map(|c| c as u16)
+            .find(|c| !taken.contains(c));
+        if let Some(c) = free {
+            taken.push(c);
+            buf[(c, g.bottom())]
+                .set_symbol(mark.symbol())
+                .set_style(t.title);
+        }
+    }
 
     // The curves, over the marker line.
     let marker = chart::marker_line(app, p.y_bounds);
