@@ -132,7 +132,7 @@ fn the_help_explains_every_symbol_on_some_page() {
     let mut a = fig("fig2");
     ch(&mut a, '?');
     let mut seen = String::new();
-    for _ in 0..4 {
+    for _ in 0..6 {
         seen.push_str(&screen(&a));
         press(&mut a, KeyCode::Right, KeyModifiers::NONE);
     }
