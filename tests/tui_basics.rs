@@ -159,7 +159,7 @@ fn the_help_explains_every_symbol_on_some_page() {
     }
     assert!(seen.contains("this program's thresholds"));
     assert!(
-        seen.contains("help 1/2") && seen.contains("help 2/2"),
+        seen.contains("help 1/") && seen.contains("help 2/"),
         "{seen}"
     );
 }
