@@ -390,3 +390,53 @@ fn regime_marks_sit_where_psi_and_the_share_cross() {
     // Fig. 3 (size effect on) stays elastic: no marks at all.
     assert_eq!(fig("fig3").plot.regime_marks, vec![]);
 }
+
+#[test]
+fn g_pins_a_ghost_that_stays_while_parameters_change() {
+    let mut a = fig("fig2");
+    let pinned = a.plot.clone();
+    ch(&mut a, 'g');
+    assert!(a.ghost.is_some());
+    assert!(screen(&a).contains("ghost = now"), "{}", screen(&a));
+    ch(&mut a, 'k'); // h_rms
+    ch(&mut a, 'l');
+    ch(&mut a, 'm');
+    assert_ne!(a.plot, pinned, "the curves moved");
+    let g = a.ghost.as_ref().unwrap();
+    assert_eq!(g.plot, pinned, "the ghost did not");
+    let s = screen(&a);
+    assert!(s.contains("ghost: h_rms 19.8 nm, closed form"), "{s}");
+    // Dim, under the current curves: some cells of the chart are the ghost's.
+    let (w, h) = a.size;
+    let mut t = ratatui::Terminal::new(ratatui::backend::TestBackend::new(w, h)).unwrap();
+    t.draw(|f| f.render_widget(&a, f.area())).unwrap();
+    let dim = t
+        .backend()
+        .buffer()
+        .content()
+        .iter()
+        .filter(|c| {
+            c.fg == ratatui::style::Color::DarkGray
+                && ('\u{2801}'..='\u{28FF}').contains(&c.symbol().chars().next().unwrap())
+        })
+        .count();
+    assert!(dim > 10, "{dim} ghost cells");
+    // In a wide terminal the legend itself names it.
+    update(&mut a, Message::Resize(160, 48));
+    let s = screen(&a);
+    let legend = s.lines().find(|l| l.contains("━━ elastic")).unwrap();
+    assert!(
+        legend.contains("┄┄ ghost: h_rms 19.8 nm, closed form"),
+        "{legend}"
+    );
+    update(&mut a, Message::Resize(80, 24));
+    // g again clears it.
+    ch(&mut a, 'g');
+    assert!(a.ghost.is_none());
+    assert!(!screen(&a).contains("ghost:"));
+    // A new sweep gives a new x axis: the ghost goes, and says so.
+    ch(&mut a, 'g');
+    ch(&mut a, 'x');
+    assert!(a.ghost.is_none());
+    assert!(a.status.as_ref().unwrap().text.contains("ghost cleared"));
+}

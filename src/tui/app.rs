@@ -7,11 +7,13 @@ use std::time::SystemTime;
 
 use rough_model::{persson_elastic, slopes, Axis, Curves, SceneSpec, Slopes, Surface, Sweep};
 
+use super::ghost::Ghost;
 use super::layout::Regions;
 use super::line_edit::{Edit, LineEdit};
 use super::plots::{compute_indices, compute_load, compute_plot, IndexPlot, LoadPlot, Plot};
+use super::prompt;
+pub use super::status::Hint;
 use super::theme::Theme;
-use super::value_input;
 use crate::figure::{claims, render_svg, Claim, FigureOptions, MapCache, MapSpec, View};
 use crate::presets;
 use crate::snapshot::{self, State};
@@ -40,6 +42,8 @@ pub enum Message {
     NextMapY,
     /// Write the current view as an SVG picture into the save folder.
     SavePicture,
+    /// Pin the current curves as a ghost, or clear the ghost.
+    ToggleGhost,
     StartSave,
     /// Open the prompt for the selected slider's value.
     StartValue,
@@ -88,28 +92,6 @@ pub struct Status {
     /// For a hint: the condition it is about; it clears once that no
     /// longer holds.
     pub hint: Option<Hint>,
-}
-
-/// Advice that holds only in some states.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Hint {
-    /// R* is swept while the size effect is off, so the curves are flat.
-    RStarNeedsSizeEffect,
-}
-
-impl Hint {
-    pub fn text(self) -> &'static str {
-        match self {
-            Hint::RStarNeedsSizeEffect => "R* acts only with the size effect: press e",
-        }
-    }
-
-    /// Whether the hint still applies to `state`.
-    pub fn applies(self, state: &State) -> bool {
-        match self {
-            Hint::RStarNeedsSizeEffect => state.sweep.axis() == Axis::RStar && !state.size_effect,
-        }
-    }
 }
 
 /// Everything the readout shows, at the current parameters.
@@ -179,6 +161,8 @@ pub struct App {
     /// The name of the file the scene was loaded from or last saved to;
     /// `None` for a preset.
     pub file: Option<String>,
+    /// Curves pinned with `g`, drawn dim under the current ones.
+    pub ghost: Option<Ghost>,
     pub quit: bool,
     /// How many times the curves were computed (for tests of the cache).
     pub recomputes: usize,
@@ -258,6 +242,7 @@ impl App {
             save_dir: std::env::current_dir().unwrap_or_else(|_| PathBuf::from(".")),
             modified: false,
             file: None,
+            ghost: None,
             quit: false,
             recomputes: 0,
             key: None,
@@ -325,6 +310,10 @@ impl App {
                 self.status = None;
             }
         }
+        if self.ghost.as_ref().is_some_and(|g| !g.fits(&self.state)) {
+            self.ghost = None;
+            self.set_status("ghost cleared: the sweep changed", false);
+        }
         self.readout = Readout::of(&self.state);
         let Some(regions) = Regions::of_size(self.size) else {
             return;
@@ -380,7 +369,7 @@ impl App {
         }
     }
 
-    fn set_status(&mut self, text: impl Into<String>, error: bool) {
+    pub(super) fn set_status(&mut self, text: impl Into<String>, error: bool) {
         self.status = Some(Status {
             text: text.into(),
             error,
@@ -388,7 +377,7 @@ impl App {
         });
     }
 
-    fn set_hint(&mut self, hint: Hint) {
+    pub(super) fn set_hint(&mut self, hint: Hint) {
         self.status = Some(Status {
             text: hint.text().into(),
             error: false,
@@ -488,6 +477,20 @@ pub fn update(app: &mut App, msg: Message) {
             }
         }
         Message::SavePicture => app.save_picture(),
+        Message::ToggleGhost => {
+            if app.ghost.take().is_some() {
+                app.set_status("ghost cleared", false);
+            } else if app.view != View::Slopes {
+                app.set_status("g pins the slopes view's curves: Tab to it", false);
+            } else {
+                app.ghost = Some(Ghost {
+                    plot: app.plot.clone(),
+                    state: app.state.clone(),
+                });
+                // The status row shows what the ghost is.
+                app.status = None;
+            }
+        }
         Message::StartSave => {
             // The prefill is a file name: no separators or control characters.
             let name: String = app
@@ -536,65 +539,9 @@ pub fn update(app: &mut App, msg: Message) {
             Mode::Value(..) => app.mode = Mode::Main,
             Mode::Main | Mode::Help => {}
         },
-        Message::PromptAccept => accept_prompt(app),
+        Message::PromptAccept => prompt::accept(app),
         Message::Resize(w, h) => app.size = (w, h),
         Message::Quit => app.quit = true,
     }
     app.refresh();
-}
-
-/// Enter in a prompt: save under the typed name, or set the typed value.
-/// A bad name or value keeps the prompt open, with the reason.
-fn accept_prompt(app: &mut App) {
-    match &app.mode {
-        Mode::Value(axis, line) => {
-            let (axis, text) = (*axis, line.text());
-            if text.trim().is_empty() {
-                app.mode = Mode::Main;
-                return;
-            }
-            match value_input::apply_value(&app.state.params, axis, &text) {
-                Ok(p) => {
-                    let mut next = app.state.clone();
-                    next.params = p;
-                    if let Err(e) = next.check() {
-                        app.set_status(e.to_string(), true);
-                        return;
-                    }
-                    app.mode = Mode::Main;
-                    if p != app.state.params {
-                        app.state.params = p;
-                        app.modified = true;
-                    }
-                    app.status = None;
-                }
-                Err(e) => app.set_status(e, true),
-            }
-        }
-        Mode::Prompt(line) => {
-            let stem = line.text();
-            let clean = match snapshot::check_stem(&stem) {
-                Ok(c) => c.to_string(),
-                Err(why) => {
-                    // Stay in the prompt so the name can be fixed.
-                    app.set_status(format!("cannot save: {why}"), true);
-                    return;
-                }
-            };
-            app.mode = Mode::Main;
-            // The snapshot is named as typed (the stem, without ".ron").
-            let mut named = app.state.clone();
-            named.name = clean;
-            match snapshot::save_new(&app.save_dir, &stem, &named) {
-                Ok(path) => {
-                    app.state = named;
-                    app.modified = false;
-                    app.file = path.file_name().map(|f| f.to_string_lossy().into_owned());
-                    app.set_status(format!("saved {}", path.display()), false);
-                }
-                Err(e) => app.set_status(format!("{e:#}"), true),
-            }
-        }
-        Mode::Main | Mode::Help => {}
-    }
 }

@@ -149,6 +149,7 @@ pub const BINDINGS: &[Binding] = &[
     bind(Main, &[(ch('a'), M::ToggleMoments)], "a", "truncated / asymptotic moments (eq. 10)", Some("a moments")),
     bind(Main, &[(ch('y'), M::NextMapY)], "y", "the regime map's next y parameter", None),
     bind(Main, &[(ch('s'), M::StartSave)], "s", "save a snapshot here (.ron)", Some("s save")),
+    bind(Main, &[(ch('g'), M::ToggleGhost)], "g", "pin the curves as a dim ghost / clear it", None),
     bind(Main, &[(ch('p'), M::SavePicture)], "p", "save the view as a picture here (.svg)", Some("p picture")),
     bind(MainAndHelp, &[(ch('?'), M::ToggleHelp)], "?", "show / hide this help", Some("? help")),
     bind(Help, &[(key(Esc), M::CloseHelp)], "Esc", "close the help", None),

@@ -4,11 +4,13 @@
 
 pub mod app;
 pub mod fmt;
+pub mod ghost;
 pub mod help;
 pub mod keys;
 pub mod layout;
 pub mod line_edit;
 pub mod plots;
+pub mod prompt;
 pub mod status;
 pub mod term;
 pub mod theme;

@@ -12,6 +12,30 @@ use super::app::{App, Mode};
 use super::fmt::{fmt_param, fmt_short};
 use super::line_edit::LineEdit;
 use super::value_input;
+use crate::snapshot::State;
+use rough_model::Axis;
+
+/// Advice that holds only in some states.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Hint {
+    /// R* is swept while the size effect is off, so the curves are flat.
+    RStarNeedsSizeEffect,
+}
+
+impl Hint {
+    pub fn text(self) -> &'static str {
+        match self {
+            Hint::RStarNeedsSizeEffect => "R* acts only with the size effect: press e",
+        }
+    }
+
+    /// Whether the hint still applies to `state`.
+    pub fn applies(self, state: &State) -> bool {
+        match self {
+            Hint::RStarNeedsSizeEffect => state.sweep.axis() == Axis::RStar && !state.size_effect,
+        }
+    }
+}
 
 /// The text field with its cursor cell in reverse video.
 fn field(line: &LineEdit) -> Vec<Span<'static>> {
@@ -82,10 +106,14 @@ pub fn render_status(app: &App, status: Rect, below: Rect, buf: &mut Buffer) {
             let w = usize::from(status.width);
             let (text, style) = match &app.status {
                 Some(s) => (s.text.clone(), if s.error { t.error } else { t.ok }),
-                None => (
-                    "? help · the ↔ slider moves the marker · the readout is at the marker".into(),
-                    t.dim,
-                ),
+                None => match &app.ghost {
+                    Some(g) => (format!("┄ {} · g clears it", g.label(&app.state)), t.dim),
+                    None => (
+                        "? help · the ↔ slider moves the marker · the readout is at the marker"
+                            .into(),
+                        t.dim,
+                    ),
+                },
             };
             // Too long for one row: continued on the footer's row, its
             // middle elided if even two rows are too few.

@@ -32,6 +32,8 @@ pub struct Theme {
     pub psi_one: CurveStyle,
     /// The load view's initial-slope line from the origin.
     pub tangent: CurveStyle,
+    /// Curves pinned with `g`.
+    pub ghost: CurveStyle,
     pub selected: Style,
     pub title: Style,
     pub dim: Style,
@@ -77,6 +79,12 @@ impl Theme {
                 marker: Marker::Braille,
                 sample: "··",
             },
+            ghost: CurveStyle {
+                name: "ghost",
+                style: Style::new().fg(Color::DarkGray),
+                marker: Marker::Braille,
+                sample: "┄┄",
+            },
             selected: Style::new()
                 .add_modifier(Modifier::REVERSED)
                 .add_modifier(Modifier::BOLD),
@@ -108,6 +116,7 @@ impl Theme {
             psi_asy: curve("Ψ*asy eq.13", Marker::Custom('o'), "oo"),
             psi_one: curve("Ψ = 1", Marker::Dot, "··"),
             tangent: curve("initial slope", Marker::Dot, "··"),
+            ghost: curve("ghost", Marker::Custom('·'), "··"),
             selected: Style::new()
                 .add_modifier(Modifier::REVERSED)
                 .add_modifier(Modifier::BOLD),

@@ -78,13 +78,26 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         .collect();
     // " here" goes first when the legend is too long for the panel (each
     // entry takes at least a one-character sample and two spaces).
+    let ghost_len = if app.ghost.is_some() {
+        "ghost".len() + 3
+    } else {
+        0
+    };
     let len: usize = names.iter().map(|(_, n)| n.chars().count() + 3).sum();
-    if len > usize::from(area.width) {
+    if len + ghost_len > usize::from(area.width) {
         for (_, n) in &mut names {
             if let Some(cut) = n.strip_suffix(" here") {
                 *n = cut.to_string();
             }
         }
+    }
+    // The ghost's entry: what it shows when that fits, else its name (the
+    // status row then says what it shows).
+    if let Some(ghost) = &app.ghost {
+        let label = ghost.label(&app.state);
+        let len: usize = names.iter().map(|(_, n)| n.chars().count() + 3).sum();
+        let fits = len + label.chars().count() + 3 <= usize::from(area.width);
+        names.push((&t.ghost, if fits { label } else { "ghost".into() }));
     }
     chart::legend_named(&names, area, buf);
     let (x, y) = (Scale::of_axis(axis, p.x_bounds), Scale::decades(p.y_bounds));
@@ -113,6 +126,13 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     // The curves, over the marker line.
     let marker = chart::marker_line(app, p.y_bounds);
     let mut sets = vec![chart::dataset(&t.marker_line, &marker)];
+    // The ghost under everything current.
+    if let Some(ghost) = &app.ghost {
+        let gp = &ghost.plot;
+        for data in [&gp.elastic, &gp.plastic, &gp.total, &gp.persson] {
+            sets.push(chart::dataset(&t.ghost, data));
+        }
+    }
     sets.extend(curves.iter().map(|(c, data)| chart::dataset(c, data)));
     chart::plot(sets, bounds, g, buf);
 }

@@ -1,0 +1,62 @@
+//! Enter in a prompt: the save prompt writes a snapshot named as typed; the
+//! value prompt sets the selected parameter, checked by the model.
+
+use super::app::{App, Mode};
+use super::value_input;
+use crate::snapshot;
+
+/// Enter in a prompt: save under the typed name, or set the typed value.
+/// A bad name or value keeps the prompt open, with the reason.
+pub fn accept(app: &mut App) {
+    match &app.mode {
+        Mode::Value(axis, line) => {
+            let (axis, text) = (*axis, line.text());
+            if text.trim().is_empty() {
+                app.mode = Mode::Main;
+                return;
+            }
+            match value_input::apply_value(&app.state.params, axis, &text) {
+                Ok(p) => {
+                    let mut next = app.state.clone();
+                    next.params = p;
+                    if let Err(e) = next.check() {
+                        app.set_status(e.to_string(), true);
+                        return;
+                    }
+                    app.mode = Mode::Main;
+                    if p != app.state.params {
+                        app.state.params = p;
+                        app.modified = true;
+                    }
+                    app.status = None;
+                }
+                Err(e) => app.set_status(e, true),
+            }
+        }
+        Mode::Prompt(line) => {
+            let stem = line.text();
+            let clean = match snapshot::check_stem(&stem) {
+                Ok(c) => c.to_string(),
+                Err(why) => {
+                    // Stay in the prompt so the name can be fixed.
+                    app.set_status(format!("cannot save: {why}"), true);
+                    return;
+                }
+            };
+            app.mode = Mode::Main;
+            // The snapshot is named as typed (the stem, without ".ron").
+            let mut named = app.state.clone();
+            named.name = clean;
+            match snapshot::save_new(&app.save_dir, &stem, &named) {
+                Ok(path) => {
+                    app.state = named;
+                    app.modified = false;
+                    app.file = path.file_name().map(|f| f.to_string_lossy().into_owned());
+                    app.set_status(format!("saved {}", path.display()), false);
+                }
+                Err(e) => app.set_status(format!("{e:#}"), true),
+            }
+        }
+        Mode::Main | Mode::Help => {}
+    }
+}
