@@ -12,7 +12,10 @@ use rough_model::Axis;
     about = "Explore elasto-plastic rough contact with size-dependent hardness (Ciavarella 2024)",
     long_about = "Explore elasto-plastic rough contact with size-dependent hardness \
                   (Ciavarella, Lubricants 2024, 12(3), 83). Without a command, opens the \
-                  full-screen explorer on fig2, a preset, or a saved snapshot."
+                  full-screen explorer on fig2, a preset, or a saved snapshot.",
+    after_help = "The explorer needs a terminal of at least 80×24; in it, ? lists the keys \
+                  (Enter types a value, s saves, q quits). NO_COLOR=1 draws without colour. \
+                  For data without a terminal use `roughtui export`."
 )]
 pub struct Cli {
     #[command(subcommand)]

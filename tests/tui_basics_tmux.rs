@@ -178,3 +178,17 @@ fn coinciding_curves_stay_visible_and_the_legend_says_so() {
         );
     }
 }
+
+/// `--help` says where the keys are, the smallest terminal and NO_COLOR.
+#[test]
+fn help_mentions_the_keys_the_minimum_size_and_no_color() {
+    let o = Command::new(env!("CARGO_BIN_EXE_roughtui"))
+        .arg("--help")
+        .output()
+        .unwrap();
+    assert!(o.status.success());
+    let s = String::from_utf8_lossy(&o.stdout);
+    for must in ["80×24", "? lists the keys", "NO_COLOR", "roughtui export"] {
+        assert!(s.contains(must), "--help lacks {must:?}:\n{s}");
+    }
+}
