@@ -192,3 +192,26 @@ fn help_mentions_the_keys_the_minimum_size_and_no_color() {
         assert!(s.contains(must), "--help lacks {must:?}:\n{s}");
     }
 }
+
+/// Bytes for one ζ step (marker and readout move) and one h_rms step
+/// (curves redrawn too) on fig2 at 100×30; printed for the README.
+#[test]
+fn bytes_per_slider_step_at_100x30() {
+    if !have_tmux() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let p = Pane::start("bytes", dir.path(), (100, 30), &[], &[]);
+    p.wait_text("ζ = 128");
+    let zeta = p.bytes_written(|| {
+        p.keys(&["Right"]);
+        p.wait_text("ζ = 178");
+    });
+    p.keys(&["k"]);
+    let h_rms = p.bytes_written(|| {
+        p.keys(&["Right"]);
+        p.wait_text("31.6 nm");
+    });
+    eprintln!("bytes for one step at 100x30: ζ {zeta}, h_rms {h_rms}");
+    assert!(zeta > 0 && zeta < 4000 && h_rms > 0 && h_rms < 6000);
+}
