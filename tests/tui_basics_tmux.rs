@@ -21,12 +21,7 @@ fn signals_restore_the_terminal_and_exit_128_plus_n() {
         p.wait_text("Readout");
         assert_eq!(p.display("#{alternate_on}"), "1");
         assert_eq!(p.display("#{cursor_flag}"), "0");
-        let pid = p.program_pid().to_string();
-        let k = Command::new("kill")
-            .args([&format!("-{sig}"), &pid])
-            .status()
-            .unwrap();
-        assert!(k.success());
+        p.signal(sig);
         assert_eq!(p.exit_status(), 128 + n, "SIG{sig}");
         assert_eq!(p.display("#{alternate_on}"), "0", "SIG{sig}");
         assert_eq!(p.display("#{cursor_flag}"), "1", "SIG{sig}");

@@ -105,18 +105,37 @@ impl Pane {
         assert!(self.tmux(&args).status.success());
     }
 
-    /// The process id of roughtui (the pane's shell's child).
+    /// The process id of roughtui (the pane's shell's only child), read
+    /// from /proc so that no `ps` is needed.
     pub fn program_pid(&self) -> u32 {
         let shell = self.display("#{pane_pid}");
-        let o = Command::new("ps")
-            .args(["-o", "pid=", "--ppid", &shell])
-            .output()
-            .unwrap();
-        let pids = String::from_utf8_lossy(&o.stdout);
-        let mut it = pids.split_whitespace();
-        let pid = it.next().expect("roughtui is not running").parse().unwrap();
-        assert!(it.next().is_none(), "more than one child: {pids}");
-        pid
+        let children: Vec<u32> = std::fs::read_dir("/proc")
+            .unwrap()
+            .filter_map(|e| e.ok()?.file_name().to_str()?.parse::<u32>().ok())
+            .filter(|pid| {
+                std::fs::read_to_string(format!("/proc/{pid}/status")).is_ok_and(|st| {
+                    st.lines()
+                        .any(|l| l.strip_prefix("PPid:").map(str::trim) == Some(shell.as_str()))
+                })
+            })
+            .collect();
+        assert_eq!(
+            children.len(),
+            1,
+            "children of the pane's shell: {children:?}"
+        );
+        children[0]
+    }
+
+    /// Sends `signal` (HUP, TERM …) to roughtui, with the shell's own kill.
+    pub fn signal(&self, signal: &str) {
+        let pid = self.program_pid();
+        let ok = Command::new("sh")
+            .args(["-c", &format!("kill -{signal} {pid}")])
+            .status()
+            .unwrap()
+            .success();
+        assert!(ok, "kill -{signal} {pid}");
     }
 
     pub fn display(&self, format: &str) -> String {
