@@ -210,3 +210,18 @@ fn bytes_per_slider_step_at_100x30() {
     eprintln!("bytes for one step at 100x30: ζ {zeta}, h_rms {h_rms}");
     assert!(zeta > 0 && zeta < 4000 && h_rms > 0 && h_rms < 6000);
 }
+
+/// `--load mine.ron` shows the file's name beside the scene's.
+#[test]
+fn a_loaded_file_shows_its_name() {
+    if !have_tmux() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("mine.ron"), common::GOOD).unwrap();
+    let p = Pane::start("load", dir.path(), (100, 30), &[], &["--load", "mine.ron"]);
+    let s = p.wait_text("Readout");
+    assert!(s.contains("[fig2 · mine.ron]"), "{s}");
+    p.keys(&["q"]);
+    assert_eq!(p.exit_status(), 0);
+}

@@ -51,29 +51,54 @@ pub const SYMBOLS: &[(&str, &str)] = &[
     ),
 ];
 
-/// The help's lines, all pages together.
-pub fn lines(app: &App) -> Vec<Line<'static>> {
+/// The help's lines, all pages together, each marked whether it is a
+/// heading.
+pub fn lines(app: &App) -> Vec<(bool, Line<'static>)> {
     let t = &app.theme;
     let mut lines = Vec::new();
     let mut prompt_heading = false;
     for b in keys::BINDINGS {
         if b.context == Context::Prompt && !prompt_heading {
-            lines.push(Line::styled("in a prompt (save name, value):", t.title));
+            lines.push((
+                true,
+                Line::styled("in a prompt (save name, value):", t.title),
+            ));
             prompt_heading = true;
         }
-        lines.push(Line::from(vec![
-            Span::styled(format!(" {:<15}", b.label), t.title),
-            Span::raw(b.help),
-        ]));
+        lines.push((
+            false,
+            Line::from(vec![
+                Span::styled(format!(" {:<15}", b.label), t.title),
+                Span::raw(b.help),
+            ]),
+        ));
     }
-    lines.push(Line::styled("symbols:", t.title));
+    lines.push((true, Line::styled("symbols:", t.title)));
     for (sym, what) in SYMBOLS {
-        lines.push(Line::from(vec![
-            Span::styled(format!(" {sym:<10}"), t.title),
-            Span::raw(*what),
-        ]));
+        lines.push((
+            false,
+            Line::from(vec![
+                Span::styled(format!(" {sym:<10}"), t.title),
+                Span::raw(*what),
+            ]),
+        ));
     }
     lines
+}
+
+/// `lines` in pages of `per_page`; a heading never ends a page.
+fn pages(lines: Vec<(bool, Line<'static>)>, per_page: usize) -> Vec<Vec<Line<'static>>> {
+    let mut pages: Vec<Vec<Line>> = vec![Vec::new()];
+    for (heading, line) in lines {
+        let used = pages.last().map_or(0, Vec::len);
+        if used == per_page || (heading && used + 1 >= per_page && used > 0) {
+            pages.push(Vec::new());
+        }
+        if let Some(p) = pages.last_mut() {
+            p.push(line);
+        }
+    }
+    pages
 }
 
 pub fn render_help(app: &App, area: Rect, buf: &mut Buffer) {
@@ -81,29 +106,25 @@ pub fn render_help(app: &App, area: Rect, buf: &mut Buffer) {
     let w = 78.min(area.width);
     let h = (lines.len() as u16 + 2).min(area.height);
     let per_page = usize::from(h.saturating_sub(2)).max(1);
-    let pages = lines.len().div_ceil(per_page).max(1);
-    let page = app.help_page % pages;
+    let mut pages = pages(lines, per_page);
+    let count = pages.len();
+    let page = app.help_page % count;
     let r = Rect::new(
         area.x + (area.width - w) / 2,
         area.y + (area.height - h) / 2,
         w,
         h,
     );
-    let title = if pages > 1 {
+    let title = if count > 1 {
         format!(
-            " help {}/{pages} · → next page · Esc or ? closes ",
+            " help {}/{count} · → next page · Esc or ? closes ",
             page + 1
         )
     } else {
         " help · Esc or ? closes ".to_string()
     };
-    let shown: Vec<Line> = lines
-        .into_iter()
-        .skip(page * per_page)
-        .take(per_page)
-        .collect();
     Clear.render(r, buf);
-    Paragraph::new(shown)
+    Paragraph::new(std::mem::take(&mut pages[page]))
         .block(Block::default().borders(Borders::ALL).title(title))
         .render(r, buf);
 }

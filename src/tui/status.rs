@@ -37,15 +37,39 @@ impl Hint {
     }
 }
 
-/// The text field with its cursor cell in reverse video.
-fn field(line: &LineEdit) -> Vec<Span<'static>> {
-    let (before, after) = line.split();
-    let mut rest = after.chars();
-    let under = rest.next().map_or(" ".to_string(), String::from);
+/// The text field with its cursor cell in reverse video, in at most
+/// `width` cells: a longer text scrolls so that the cursor stays in sight,
+/// "…" marking what is cut off.
+fn field(line: &LineEdit, width: usize) -> Vec<Span<'static>> {
+    // The text and, at its end, the cell the cursor takes there.
+    let mut cells: Vec<char> = line.text().chars().collect();
+    let n = cells.len();
+    cells.push(' ');
+    let cursor = line.cursor();
+    let width = width.max(3);
+    // The end cell only while the cursor is on it; a window of `width`
+    // cells that keeps a cell right of the cursor.
+    let end = if cursor == n { n + 1 } else { n };
+    let from = (cursor + 2)
+        .saturating_sub(width)
+        .min(end.saturating_sub(width));
+    let to = (from + width).min(end);
+    let mut spans = vec![String::new(), String::new(), String::new()];
+    for (k, c) in cells.iter().enumerate().take(to).skip(from) {
+        let cut = (k == from && from > 0) || (k + 1 == to && to < end);
+        let c = if cut && k != cursor { '…' } else { *c };
+        let part = match k.cmp(&cursor) {
+            std::cmp::Ordering::Less => 0,
+            std::cmp::Ordering::Equal => 1,
+            std::cmp::Ordering::Greater => 2,
+        };
+        spans[part].push(c);
+    }
+    let [before, under, after] = [0, 1, 2].map(|i| std::mem::take(&mut spans[i]));
     vec![
         Span::raw(before),
         Span::styled(under, Style::new().add_modifier(Modifier::REVERSED)),
-        Span::raw(rest.collect::<String>()),
+        Span::raw(after),
     ]
 }
 
@@ -74,14 +98,14 @@ pub fn render_status(app: &App, status: Rect, below: Rect, buf: &mut Buffer) {
     let (first, second) = match &app.mode {
         Mode::Prompt(line) => {
             let mut spans = vec![Span::styled("save as: ", t.title)];
-            spans.extend(field(line));
+            spans.extend(field(line, usize::from(status.width).saturating_sub(13)));
             spans.push(Span::raw(".ron"));
             let hint = "Enter saves · Esc cancels · Ctrl-U clears · Ctrl-W deletes a word";
             (Line::from(spans), Some(hint.to_string()))
         }
         Mode::Value(axis, line) => {
             let mut spans = vec![Span::styled(format!("{} = ", axis.symbol()), t.title)];
-            spans.extend(field(line));
+            spans.extend(field(line, usize::from(status.width) / 2));
             let (lo, hi) = app.range(*axis);
             spans.push(Span::styled(
                 format!(
@@ -147,7 +171,28 @@ pub fn render_status(app: &App, status: Rect, below: Rect, buf: &mut Buffer) {
 
 #[cfg(test)]
 mod tests {
-    use super::elide_middle;
+    use super::{elide_middle, field, LineEdit};
+
+    fn shown(text: &str, left: usize, width: usize) -> String {
+        let mut l = LineEdit::new(text, 200);
+        for _ in 0..left {
+            l.apply(crate::tui::line_edit::Edit::Left);
+        }
+        field(&l, width)
+            .iter()
+            .map(|s| s.content.to_string())
+            .collect()
+    }
+
+    #[test]
+    fn a_long_field_scrolls_to_keep_the_cursor_in_sight() {
+        assert_eq!(shown("abc", 0, 10), "abc ");
+        assert_eq!(shown("abc", 1, 10), "abc");
+        let long = "0123456789abcdefghij";
+        assert_eq!(shown(long, 0, 10), "…cdefghij ");
+        assert_eq!(shown(long, 20, 10), "012345678…");
+        assert_eq!(shown(long, 10, 10), "…3456789a…");
+    }
 
     #[test]
     fn long_texts_keep_their_start_and_end() {
