@@ -54,7 +54,7 @@ fn field(line: &LineEdit, width: usize) -> Vec<Span<'static>> {
         .saturating_sub(width)
         .min(end.saturating_sub(width));
     let to = (from + width).min(end);
-    let mut spans = vec![String::new(), String::new(), String::new()];
+    let mut parts: [String; 3] = Default::default();
     for (k, c) in cells.iter().enumerate().take(to).skip(from) {
         let cut = (k == from && from > 0) || (k + 1 == to && to < end);
         let c = if cut && k != cursor { '…' } else { *c };
@@ -63,9 +63,9 @@ fn field(line: &LineEdit, width: usize) -> Vec<Span<'static>> {
             std::cmp::Ordering::Equal => 1,
             std::cmp::Ordering::Greater => 2,
         };
-        spans[part].push(c);
+        parts[part].push(c);
     }
-    let [before, under, after] = [0, 1, 2].map(|i| std::mem::take(&mut spans[i]));
+    let [before, under, after] = parts;
     vec![
         Span::raw(before),
         Span::styled(under, Style::new().add_modifier(Modifier::REVERSED)),
