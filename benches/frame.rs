@@ -15,44 +15,51 @@ use roughtui::tui::theme::Theme;
 
 const SIZE: (u16, u16) = (160, 48);
 
+type Group<'a> = criterion::BenchmarkGroup<'a, criterion::measurement::WallTime>;
+
+/// Drawing `app` as it is (nothing recomputed).
+fn bench_draw(g: &mut Group, name: String, app: &App) {
+    let (w, h) = app.size;
+    let mut terminal = Terminal::new(TestBackend::new(w, h)).expect("terminal");
+    g.bench_function(name, |b| {
+        b.iter(|| {
+            terminal
+                .draw(|f| f.render_widget(black_box(app), f.area()))
+                .expect("draw");
+        })
+    });
+}
+
+/// Steps of the selected slider, up and down in turn, each drawn.
+fn bench_step(g: &mut Group, name: String, app: &mut App) {
+    let (w, h) = app.size;
+    let mut terminal = Terminal::new(TestBackend::new(w, h)).expect("terminal");
+    let mut up = true;
+    g.bench_function(name, |b| {
+        b.iter(|| {
+            update(app, Message::Step { up, fine: false });
+            up = !up;
+            terminal
+                .draw(|f| f.render_widget(black_box(&*app), f.area()))
+                .expect("draw");
+        })
+    });
+}
+
 fn frame(c: &mut Criterion) {
     let mut g = c.benchmark_group("frame 160x48");
     for preset in ["fig2", "fig4"] {
         let state = presets::load(preset).expect("built-in preset");
         for (name, theme) in [("colored", Theme::colored()), ("plain", Theme::plain())] {
             let app = App::new(state.clone(), theme, SIZE);
-            let mut terminal = Terminal::new(TestBackend::new(SIZE.0, SIZE.1)).expect("terminal");
-            g.bench_function(format!("draw {preset} {name}"), |b| {
-                b.iter(|| {
-                    terminal
-                        .draw(|f| f.render_widget(black_box(&app), f.area()))
-                        .expect("draw");
-                })
-            });
+            bench_draw(&mut g, format!("draw {preset} {name}"), &app);
         }
         // A slider step on a parameter that is not swept: recompute and draw.
         let mut app = App::new(state.clone(), Theme::colored(), SIZE);
         update(&mut app, Message::SelectNext);
         let before = app.recomputes;
-        update(
-            &mut app,
-            Message::Step {
-                up: true,
-                fine: false,
-            },
-        );
+        bench_step(&mut g, format!("step+draw {preset}"), &mut app);
         assert!(app.recomputes > before, "a step must recompute the curves");
-        let mut terminal = Terminal::new(TestBackend::new(SIZE.0, SIZE.1)).expect("terminal");
-        let mut up = false;
-        g.bench_function(format!("step+draw {preset}"), |b| {
-            b.iter(|| {
-                update(&mut app, Message::Step { up, fine: false });
-                up = !up;
-                terminal
-                    .draw(|f| f.render_widget(black_box(&app), f.area()))
-                    .expect("draw");
-            })
-        });
     }
     g.finish();
 }
@@ -67,26 +74,10 @@ fn map_frame(c: &mut Criterion) {
         while app.view != View::Map {
             update(&mut app, Message::NextView);
         }
-        let mut terminal = Terminal::new(TestBackend::new(size.0, size.1)).expect("terminal");
-        g.bench_function(format!("draw {label}"), |b| {
-            b.iter(|| {
-                terminal
-                    .draw(|f| f.render_widget(black_box(&app), f.area()))
-                    .expect("draw");
-            })
-        });
+        bench_draw(&mut g, format!("draw {label}"), &app);
         update(&mut app, Message::SelectNext);
         let before = app.map.computes();
-        let mut up = true;
-        g.bench_function(format!("step+draw {label}"), |b| {
-            b.iter(|| {
-                update(&mut app, Message::Step { up, fine: false });
-                up = !up;
-                terminal
-                    .draw(|f| f.render_widget(black_box(&app), f.area()))
-                    .expect("draw");
-            })
-        });
+        bench_step(&mut g, format!("step+draw {label}"), &mut app);
         assert!(
             app.map.computes() > before + 1,
             "each step recomputes the map"

@@ -218,36 +218,56 @@ fn median_p90(mut us: Vec<u64>) -> (u64, u64) {
     (us[us.len() / 2], us[(us.len() * 9) / 10])
 }
 
-/// Key → drawn frame at 160×48, from the program's own frame log.
-#[test]
-fn key_to_frame_time_at_160x48() {
-    if !have_tmux() {
-        return;
-    }
+/// Key → drawn frame at 160×48 from the program's own frame log, in the
+/// view `tabs` Tab presses from the slopes: 36 keys cycling a step of the
+/// swept slider (twice: the marker moves), a selection, a step of h_rms
+/// (twice: what the view shows is recomputed) and a selection back. Returns
+/// (median, p90) in µs for the marker steps and for the recomputing steps.
+fn key_to_frame(name: &str, tabs: usize, title: &str) -> ((u64, u64), (u64, u64)) {
     let dir = tempfile::tempdir().unwrap();
     let log = dir.path().join("frames");
     let p = Pane::start(
-        "timing",
+        name,
         dir.path(),
         (160, 48),
         &[("ROUGHTUI_FRAME_LOG", log.to_str().unwrap())],
         &[],
     );
     p.wait_text("Readout");
-    // Alternate a swept step (marker only) with a non-swept one (curves).
-    for i in 0..20 {
-        let key = ["Right", "Left", "Up", "Right", "Left", "Down"][i % 6];
-        p.keys(&[key]);
-        std::thread::sleep(Duration::from_millis(40));
+    for _ in 0..tabs {
+        p.keys(&["Tab"]);
+    }
+    p.wait_text(title);
+    let keys = ["Right", "Left", "Up", "Right", "Left", "Down"];
+    for i in 0..36 {
+        p.keys(&[keys[i % 6]]);
+        std::thread::sleep(Duration::from_millis(60));
     }
     p.keys(&["q"]);
     assert_eq!(p.exit_status(), 0);
     let us = frame_times(&log);
-    assert_eq!(us.len(), 20, "{us:?}");
-    let max = *us.iter().max().unwrap();
-    let (median, _) = median_p90(us);
-    eprintln!("key to frame at 160x48: median {median} µs, max {max} µs");
-    assert!(median < 100_000, "median {median} µs");
+    assert_eq!(us.len(), 36 + tabs, "{us:?}");
+    let steps = &us[tabs..];
+    let pick = |phase: [usize; 2]| -> Vec<u64> {
+        (0..steps.len())
+            .filter(|i| phase.contains(&(i % 6)))
+            .map(|i| steps[i])
+            .collect()
+    };
+    (median_p90(pick([0, 1])), median_p90(pick([3, 4])))
+}
+
+#[test]
+fn key_to_frame_time_at_160x48() {
+    if !have_tmux() {
+        return;
+    }
+    let ((m, m90), (r, r90)) = key_to_frame("timing", 0, "slope H0");
+    eprintln!(
+        "key to frame at 160x48: median {m} µs (p90 {m90} µs) moving the marker, \
+         median {r} µs (p90 {r90} µs) recomputing the curves"
+    );
+    assert!(r < 100_000, "median {r} µs");
 }
 
 /// Tab and Shift-Tab through all four views; the size-effect key redraws the
@@ -291,39 +311,10 @@ fn key_to_frame_time_in_map_view_at_160x48() {
     if !have_tmux() {
         return;
     }
-    let dir = tempfile::tempdir().unwrap();
-    let log = dir.path().join("frames");
-    let p = Pane::start(
-        "map-timing",
-        dir.path(),
-        (160, 48),
-        &[("ROUGHTUI_FRAME_LOG", log.to_str().unwrap())],
-        &[],
-    );
-    p.wait_text("Readout");
-    p.keys(&["Tab", "Tab"]);
-    p.wait_text("plastic share over");
-    let keys = ["Right", "Left", "Up", "Right", "Left", "Down"];
-    for i in 0..36 {
-        p.keys(&[keys[i % 6]]);
-        std::thread::sleep(Duration::from_millis(60));
-    }
-    p.keys(&["q"]);
-    assert_eq!(p.exit_status(), 0);
-    let us = frame_times(&log);
-    assert_eq!(us.len(), 38, "{us:?}");
-    let steps = &us[2..];
-    let pick = |phase: &[usize]| -> Vec<u64> {
-        (0..steps.len())
-            .filter(|i| phase.contains(&(i % 6)))
-            .map(|i| steps[i])
-            .collect()
-    };
-    let (marker, marker_p90) = median_p90(pick(&[0, 1]));
-    let (map, map_p90) = median_p90(pick(&[3, 4]));
+    let ((m, m90), (r, r90)) = key_to_frame("map-timing", 2, "plastic share over");
     eprintln!(
-        "key to frame in map view at 160x48: median {marker} µs (p90 {marker_p90} µs) \
-         moving the point, median {map} µs (p90 {map_p90} µs) recomputing the map"
+        "key to frame in map view at 160x48: median {m} µs (p90 {m90} µs) \
+         moving the point, median {r} µs (p90 {r90} µs) recomputing the map"
     );
-    assert!(map < 1_000_000, "median {map} µs");
+    assert!(r < 1_000_000, "median {r} µs");
 }
