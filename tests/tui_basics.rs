@@ -31,6 +31,11 @@ fn enter_types_an_exact_value_with_units() {
     let s = screen(&a);
     assert!(s.contains("h_rms = "), "{s}");
     assert!(s.contains("units m cm mm µm nm pm"), "{s}");
+    // The footer lists the prompt's keys, from the key table.
+    let footer = s.lines().last().unwrap();
+    for k in ["⏎ accept", "Esc cancel", "←→ move", "^U clear", "^W word"] {
+        assert!(footer.contains(k), "{k} not in {footer:?}");
+    }
     type_text(&mut a, "25nm");
     enter(&mut a);
     assert_eq!(a.mode, Mode::Main);

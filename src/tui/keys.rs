@@ -155,12 +155,12 @@ pub const BINDINGS: &[Binding] = &[
     bind(Help, &[(key(Esc), M::CloseHelp)], "Esc", "close the help", None),
     bind(Help, &[(key(Right), M::HelpPage { next: true }), (key(PageDown), M::HelpPage { next: true }), (ch(' '), M::HelpPage { next: true }), (key(Left), M::HelpPage { next: false }), (key(PageUp), M::HelpPage { next: false })], "→ ←  PgDn PgUp", "next / previous page of the help", None),
     bind(MainAndHelp, &[(ch('q'), M::Quit), (ctrl('c'), M::Quit)], "q  Ctrl-C", "quit", Some("q quit")),
-    bind(Prompt, &[(key(Left), edit(Edit::Left)), (key(Right), edit(Edit::Right)), (key(Home), edit(Edit::Home)), (ctrl('a'), edit(Edit::Home)), (key(End), edit(Edit::End)), (ctrl('e'), edit(Edit::End))], "← → Home End", "move the cursor (also Ctrl-A, Ctrl-E)", None),
+    bind(Prompt, &[(key(Left), edit(Edit::Left)), (key(Right), edit(Edit::Right)), (key(Home), edit(Edit::Home)), (ctrl('a'), edit(Edit::Home)), (key(End), edit(Edit::End)), (ctrl('e'), edit(Edit::End))], "← → Home End", "move the cursor (also Ctrl-A, Ctrl-E)", Some("←→ move")),
     bind(Prompt, &[(key(Backspace), edit(Edit::Backspace)), (key(Delete), edit(Edit::Delete))], "⌫  Del", "delete before / under the cursor", None),
-    bind(Prompt, &[(ctrl('u'), edit(Edit::DeleteToStart))], "Ctrl-U", "delete up to the cursor (all of it at the end)", None),
-    bind(Prompt, &[(ctrl('w'), edit(Edit::DeleteWord))], "Ctrl-W", "delete the word before the cursor", None),
-    bind(Prompt, &[(key(Enter), M::PromptAccept)], "Enter", "save under that name / set that value", None),
-    bind(Prompt, &[(key(Esc), M::PromptCancel), (ctrl('c'), M::PromptCancel)], "Esc  Ctrl-C", "cancel", None),
+    bind(Prompt, &[(ctrl('u'), edit(Edit::DeleteToStart))], "Ctrl-U", "delete up to the cursor (all of it at the end)", Some("^U clear")),
+    bind(Prompt, &[(ctrl('w'), edit(Edit::DeleteWord))], "Ctrl-W", "delete the word before the cursor", Some("^W word")),
+    bind(Prompt, &[(key(Enter), M::PromptAccept)], "Enter", "save under that name / set that value", Some("⏎ accept")),
+    bind(Prompt, &[(key(Esc), M::PromptCancel), (ctrl('c'), M::PromptCancel)], "Esc  Ctrl-C", "cancel", Some("Esc cancel")),
 ];
 
 /// The message a key sends in the app's current mode, if any.

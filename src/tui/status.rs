@@ -95,36 +95,32 @@ pub fn elide_middle(text: &str, width: usize) -> String {
 pub fn render_status(app: &App, status: Rect, below: Rect, buf: &mut Buffer) {
     let t = &app.theme;
     let error = app.status.as_ref().filter(|s| s.error);
-    let (first, second) = match &app.mode {
+    let first = match &app.mode {
         Mode::Prompt(line) => {
             let mut spans = vec![Span::styled("save as: ", t.title)];
             spans.extend(field(line, usize::from(status.width).saturating_sub(13)));
             spans.push(Span::raw(".ron"));
-            let hint = "Enter saves · Esc cancels · Ctrl-U clears · Ctrl-W deletes a word";
-            (Line::from(spans), Some(hint.to_string()))
+            Line::from(spans)
         }
         Mode::Value(axis, line) => {
             let mut spans = vec![Span::styled(format!("{} = ", axis.symbol()), t.title)];
-            spans.extend(field(line, usize::from(status.width) / 2));
+            spans.extend(field(line, usize::from(status.width) / 3));
+            let units = if value_input::is_length(*axis) {
+                "units m cm mm µm nm pm · "
+            } else {
+                ""
+            };
             let (lo, hi) = app.range(*axis);
             spans.push(Span::styled(
                 format!(
-                    "   now {} · slider {}…{}",
+                    "   {units}now {} · slider {}…{}",
                     fmt_param(*axis, app.state.params.get(*axis)),
                     fmt_short(*axis, lo),
                     fmt_short(*axis, hi)
                 ),
                 t.dim,
             ));
-            let units = if value_input::is_length(*axis) {
-                "units m cm mm µm nm pm (none: m) · "
-            } else {
-                ""
-            };
-            (
-                Line::from(spans),
-                Some(format!("{units}Enter sets · Esc cancels")),
-            )
+            Line::from(spans)
         }
         Mode::Main | Mode::Help => {
             let w = usize::from(status.width);
@@ -156,16 +152,12 @@ pub fn render_status(app: &App, status: Rect, below: Rect, buf: &mut Buffer) {
         }
     };
     first.render(status, buf);
-    // The prompt's second row: the reason for a refusal, else how to go on.
-    Clear.render(below, buf);
-    match (error, second) {
-        (Some(e), _) => {
-            // The prompt says what is being done; the row says why not.
-            let why = e.text.strip_prefix("cannot save: ").unwrap_or(&e.text);
-            Line::styled(elide_middle(why, usize::from(below.width)), t.error).render(below, buf)
-        }
-        (None, Some(hint)) => Line::styled(hint, t.dim).render(below, buf),
-        (None, None) => {}
+    // The prompt's reason for a refusal, over the footer (its keys).
+    if let Some(e) = error {
+        // The prompt says what is being done; the row says why not.
+        let why = e.text.strip_prefix("cannot save: ").unwrap_or(&e.text);
+        Clear.render(below, buf);
+        Line::styled(elide_middle(why, usize::from(below.width)), t.error).render(below, buf);
     }
 }
 
