@@ -295,3 +295,53 @@ fn p_writes_the_view_as_an_svg_and_never_overwrites() {
         );
     }
 }
+
+fn any_message() -> impl proptest::strategy::Strategy<Value = Message> {
+    use proptest::prelude::*;
+    prop_oneof![
+        Just(Message::SelectPrev),
+        Just(Message::SelectNext),
+        (any::<bool>(), any::<bool>()).prop_map(|(up, fine)| Message::Step { up, fine }),
+        (0usize..4).prop_map(Message::LoadPreset),
+        Just(Message::CycleSweep),
+        Just(Message::ToggleModel),
+        Just(Message::ToggleSizeEffect),
+        Just(Message::ToggleMoments),
+        Just(Message::NextView),
+        Just(Message::PrevView),
+        Just(Message::NextMapY),
+        (0u16..120, 0u16..40).prop_map(|(w, h)| Message::Resize(w, h)),
+    ]
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(24))]
+
+    /// Any sequence of messages over the four views leaves a drawable app
+    /// whose curves hold finite points and whose map, when shown, fits its
+    /// graph.
+    #[test]
+    fn no_message_sequence_breaks_a_view(
+        msgs in proptest::collection::vec(any_message(), 1..30),
+        theme in proptest::bool::ANY,
+    ) {
+        let theme = if theme { Theme::colored() } else { Theme::plain() };
+        let mut a = app("fig2", (80, 24), theme);
+        for m in msgs {
+            update(&mut a, m);
+        }
+        let i = &a.indices;
+        for c in [&i.psi_gw, &i.psi_p, &i.psi_star, &i.psi_star_asymptotic] {
+            proptest::prop_assert!(c.iter().all(|(x, y)| x.is_finite() && y.is_finite()));
+        }
+        let l = &a.load;
+        for c in [&l.elastic, &l.plastic, &l.total] {
+            proptest::prop_assert!(c.iter().all(|(x, y)| (0.0..=1.0).contains(x) && (0.0..=1.0).contains(y)));
+        }
+        if let (View::Map, Some(r)) = (a.view, Regions::of_size(a.size)) {
+            let spec = a.map.peek().map(|m| m.spec);
+            proptest::prop_assert_eq!(spec, a.map_spec(r.graph));
+        }
+        let _ = text(&a);
+    }
+}
