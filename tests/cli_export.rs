@@ -356,6 +356,10 @@ fn options_that_do_not_apply_are_refused() {
         &["'chart'", "slopes, indices, map, load"],
     );
     usage_error(&["export", "--format", "png"], &["'png'", "csv, svg"]);
+    usage_error(
+        &["export", "--format", "svg", "--points", "20001"],
+        &["--points 20001 is too many for --format svg: at most 20000"],
+    );
     usage_error(&["export", "--size-effect", "yes"], &["'yes'", "on, off"]);
     usage_error(&["export", "--sweep", "zeta:1"], &["AXIS:FROM:TO"]);
     usage_error(

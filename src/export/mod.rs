@@ -23,6 +23,10 @@ use crate::snapshot::State;
 /// Points along a curve when `--points` is not given.
 pub const DEFAULT_POINTS: usize = 200;
 
+/// Most points of a curve in a picture (a 900-pixel-wide chart needs far
+/// fewer; more would only make the file large).
+pub const MAX_SVG_POINTS: usize = 20_000;
+
 /// The state `args` describe: the source with every override applied,
 /// checked.
 pub fn state_of(args: &ExportArgs) -> anyhow::Result<State> {
@@ -77,6 +81,13 @@ pub fn run(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
     let (view, opts) = options_of(args)?;
     let state = state_of(args)?;
     if args.format == FormatArg::Svg {
+        if opts.points > MAX_SVG_POINTS {
+            bail!(
+                "--points {} is too many for --format svg: at most {MAX_SVG_POINTS} \
+                 (CSV takes up to 10000000)",
+                opts.points
+            );
+        }
         let svg = render_svg(view, &state, &opts)?;
         out.write_all(svg.as_bytes())?;
         out.flush()?;
