@@ -192,14 +192,14 @@ fn line(
     let segs = segs.into_iter().filter(|s| s.len() > 1);
     let style = colour.stroke_width(2);
     let anno = if stroke == Stroke::Dashed {
-        c.draw_series(segs.map(move |s| DashedPathElement::new(s.into_iter(), 9, 6, style)))
+        c.draw_series(segs.map(move |s| DashedPathElement::new(s, 9, 6, style)))
     } else {
         c.draw_series(segs.map(move |s| PathElement::new(s, style)))
     }
     .map_err(plot_err)?;
     anno.label(label).legend(move |(px, py)| {
         DashedPathElement::new(
-            vec![(px, py), (px + 20, py)].into_iter(),
+            vec![(px, py), (px + 20, py)],
             if stroke == Stroke::Dashed { 5 } else { 20 },
             if stroke == Stroke::Dashed { 3 } else { 0 },
             style,
