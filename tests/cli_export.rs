@@ -357,6 +357,10 @@ fn options_that_do_not_apply_are_refused() {
     );
     usage_error(&["export", "--format", "png"], &["'png'", "csv, svg"]);
     usage_error(
+        &["export", "--view", "load", "--sweep", "zeta:1:10"],
+        &["--sweep does not apply to --view load"],
+    );
+    usage_error(
         &["export", "--format", "svg", "--points", "20001"],
         &["--points 20001 is too many for --format svg: at most 20000"],
     );

@@ -51,6 +51,11 @@ pub fn state_of(args: &ExportArgs) -> anyhow::Result<State> {
 pub fn options_of(args: &ExportArgs) -> anyhow::Result<(View, FigureOptions)> {
     let view = View::from(args.view);
     let name = view.name();
+    if view == View::Load && args.sweep.is_some() {
+        bail!(
+            "--sweep does not apply to --view load: it shows the areas at the current parameters"
+        );
+    }
     if view == View::Map {
         if args.points.is_some() {
             bail!("--points does not apply to --view map: its size is --grid COLSxROWS");
