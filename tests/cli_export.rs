@@ -325,6 +325,20 @@ fn export_defaults_to_fig2_and_overrides_apply() {
 }
 
 #[test]
+fn a_picture_of_a_changed_scene_drops_the_saved_caption() {
+    let svg = |args: &[&str]| stdout(&[&["export", "--format", "svg"][..], args].concat());
+    assert!(svg(&[]).contains("Fig. 2: slopes against magnification"));
+    assert!(svg(&["--model", "exact"]).contains("Fig. 2: slopes against magnification"));
+    for changed in [&["--size-effect", "on"][..], &["--sweep", "zeta:1:1e6"]] {
+        let t = svg(changed);
+        assert!(!t.contains("Fig. 2:"), "{changed:?}");
+        assert!(t.contains("fig2 — initial slopes"), "{changed:?}");
+    }
+    // Setting what the preset already has changes nothing.
+    assert!(svg(&["--size-effect", "off"]).contains("Fig. 2:"));
+}
+
+#[test]
 fn options_that_do_not_apply_are_refused() {
     usage_error(
         &["export", "--view", "map", "--points", "5"],

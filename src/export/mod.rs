@@ -37,11 +37,17 @@ pub fn state_of(args: &ExportArgs) -> anyhow::Result<State> {
     if let Some(m) = args.moments {
         state.moments = m.into();
     }
+    let scene = (state.size_effect, state.sweep);
     if let Some(s) = args.size_effect {
         state.size_effect = s == OnOff::On;
     }
     if let Some((axis, from, to)) = args.sweep {
         state.sweep = Sweep::new(axis, from, to).map_err(|e| anyhow::anyhow!("--sweep: {e}"))?;
+    }
+    if scene != (state.size_effect, state.sweep) {
+        // The caption describes the scene as saved; a picture of another
+        // one is titled by its name alone (the title names the settings).
+        state.caption = None;
     }
     state.check()?;
     Ok(state)
