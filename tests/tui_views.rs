@@ -167,10 +167,12 @@ fn map_view_colours_two_points_per_cell_with_contour_and_point() {
     assert_eq!(cells.iter().filter(|c| c.0 == "◆").count(), 1);
     assert!(cells.iter().filter(|c| c.0 == "▀").count() >= cells.len() - 1);
     let s = text(&a);
-    assert!(
-        s.contains("elastic ██████████ plastic  ▀ Ψ_P=1  ◆ now  (elastic <10%, plastic >90%)"),
-        "{s}"
-    );
+    let legend = "elastic ██████████ plastic  ▀ Ψ_P=1  ◆ now  \
+                  (elastic <10%, plastic >90%: this program's thresholds)";
+    assert!(s.contains(legend), "{s}");
+    // At 80×24 the short form keeps the thresholds.
+    update(&mut a, Message::Resize(80, 24));
+    assert!(text(&a).contains("el <10% ██████████ >90% pl  ▀ Ψ_P=1  ◆ now"));
 }
 
 #[test]
