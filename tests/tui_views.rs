@@ -347,3 +347,33 @@ proptest::proptest! {
         let _ = text(&a);
     }
 }
+
+#[test]
+fn map_y_labels_keep_their_units() {
+    let mut a = app("fig3", (100, 30), Theme::plain());
+    show(&mut a, View::Map);
+    // H0/E → h_rms → Hurst → R* (ζ is swept).
+    for _ in 0..3 {
+        update(&mut a, Message::NextMapY);
+    }
+    assert_eq!(a.map.peek().unwrap().spec.y.axis(), Axis::RStar);
+    let s = text(&a);
+    for label in ["100mm┤", "10 mm┤", " 1 mm┤", " 1 µm┤"] {
+        assert!(s.contains(label), "{label} in\n{s}");
+    }
+    assert!(!s.contains("100 m┤"), "{s}");
+}
+
+#[test]
+fn no_color_load_view_tells_the_tangent_from_the_elastic_curve() {
+    let mut a = app("fig3", (100, 30), Theme::plain());
+    show(&mut a, View::Load);
+    let s = text(&a);
+    assert!(
+        s.contains("•• elastic  ++ plastic  ⠒⠒ total  ·· initial slope"),
+        "{s}"
+    );
+    // The tangent's dots and the elastic curve's bullets both show.
+    assert!(s.matches('·').count() > 10 + 1, "{s}");
+    assert!(s.matches('•').count() > 10 + 2, "{s}");
+}
