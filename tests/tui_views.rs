@@ -114,6 +114,12 @@ fn index_view_draws_the_four_indices_against_psi_one() {
     };
     let star = 10f64.powf(at(&p.psi_star, 128f64.log10()));
     assert!((star / a.readout.surface.indices.psi_star - 1.0).abs() < 1e-3);
+    // Where eq. 13 lies within a dot row of Ψ* everywhere, the legend says
+    // it is drawn under Ψ* (fig4 at 80×24: R*/R_p ≫ 1 holds over the sweep).
+    assert!(!s.contains("under Ψ*"));
+    let mut b = app("fig4", (80, 24), Theme::colored());
+    show(&mut b, View::Indices);
+    assert!(text(&b).contains("━ Ψ* ━ eq.13 under Ψ* · Ψ = 1"));
     // The Ψ = 1 line: a row of braille across the graph at the decade 1.
     let row = s.lines().find(|l| l.contains("   1┤")).unwrap();
     let braille = row
