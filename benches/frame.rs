@@ -30,11 +30,17 @@ fn bench_draw(g: &mut Group, name: String, app: &App) {
     });
 }
 
-/// Steps of the selected slider, up and down in turn, each drawn.
+const STEP_UP: Message = Message::Step {
+    up: true,
+    fine: false,
+};
+
+/// Steps of the selected slider, down and up in turn (after a first step
+/// up), each drawn.
 fn bench_step(g: &mut Group, name: String, app: &mut App) {
     let (w, h) = app.size;
     let mut terminal = Terminal::new(TestBackend::new(w, h)).expect("terminal");
-    let mut up = true;
+    let mut up = false;
     g.bench_function(name, |b| {
         b.iter(|| {
             update(app, Message::Step { up, fine: false });
@@ -58,8 +64,9 @@ fn frame(c: &mut Criterion) {
         let mut app = App::new(state.clone(), Theme::colored(), SIZE);
         update(&mut app, Message::SelectNext);
         let before = app.recomputes;
-        bench_step(&mut g, format!("step+draw {preset}"), &mut app);
+        update(&mut app, STEP_UP);
         assert!(app.recomputes > before, "a step must recompute the curves");
+        bench_step(&mut g, format!("step+draw {preset}"), &mut app);
     }
     g.finish();
 }

@@ -167,14 +167,13 @@ def header(ad, cases, columns_doc):
 
 
 def write(name, lines, cols, rows):
-    path = os.path.join(OUT_DIR, name)
-    with open(path, "w", newline="\n") as f:
-        for line in lines:
-            f.write(line + "\n")
-        f.write(cols + "\n")
-        for r in rows:
-            f.write(",".join(r) + "\n")
-    print("wrote %s (%d rows)" % (path, len(rows)), file=sys.stderr)
+    ref.OUT_DIR = OUT_DIR
+    ref.write_file(name, lines, cols, rows)
+
+
+def write_view(name, ad, names, doc, cols, rows):
+    """A view's table: the common header, its column notes, its cases."""
+    write(name, header(ad, names, doc), cols, rows)
 
 
 def gen_indices():
@@ -192,8 +191,8 @@ def gen_indices():
         "#   gen_asymptotic.py) under the case's moments: psi_gw, psi_p, psi_star,",
         "#   psi_star_asymptotic (eq. 13, empty when r_star = 0), hardness_ratio = H_y/H0.",
     ]
-    write("views_indices.csv", header(ad, names, doc),
-          "case,x,psi_gw,psi_p,psi_star,psi_star_asymptotic,hardness_ratio", rows)
+    write_view("views_indices.csv", ad, names, doc,
+               "case,x,psi_gw,psi_p,psi_star,psi_star_asymptotic,hardness_ratio", rows)
 
 
 def gen_map():
@@ -220,8 +219,8 @@ def gen_map():
         "#   psi_p without); elastic, plastic, total = the case's model's initial slopes",
         "#   at psi (slopes.csv's formulas); plastic_share = plastic/total (0 where total = inf).",
     ]
-    write("views_map.csv", header(ad, names, doc),
-          "case,x,y,psi,elastic,plastic,total,plastic_share", rows)
+    write_view("views_map.csv", ad, names, doc,
+               "case,x,y,psi,elastic,plastic,total,plastic_share", rows)
 
 
 def gen_load():
@@ -243,7 +242,7 @@ def gen_load():
         "#   A/A0 of the case's model (areas.csv's formulas) at the index in use of the",
         "#   case's parameters; 0 at load 0.",
     ]
-    write("views_load.csv", header(ad, names, doc), "case,load,elastic,plastic,total", rows)
+    write_view("views_load.csv", ad, names, doc, "case,load,elastic,plastic,total", rows)
 
 
 CLAIM_PRESETS = ["fig1", "fig2", "fig3", "fig4"]

@@ -114,6 +114,12 @@ fn index_view_draws_the_four_indices_against_psi_one() {
     };
     let star = 10f64.powf(at(&p.psi_star, 128f64.log10()));
     assert!((star / a.readout.surface.indices.psi_star - 1.0).abs() < 1e-3);
+    // Where eq. 13 lies within a dot row of Ψ* everywhere, the legend says
+    // it is drawn under Ψ* (fig4 at 80×24: R*/R_p ≫ 1 holds over the sweep).
+    assert!(!s.contains("under Ψ*"));
+    let mut b = app("fig4", (80, 24), Theme::colored());
+    show(&mut b, View::Indices);
+    assert!(text(&b).contains("━ Ψ* ━ eq.13 under Ψ* · Ψ = 1"));
     // The Ψ = 1 line: a row of braille across the graph at the decade 1.
     let row = s.lines().find(|l| l.contains("   1┤")).unwrap();
     let braille = row
@@ -167,10 +173,12 @@ fn map_view_colours_two_points_per_cell_with_contour_and_point() {
     assert_eq!(cells.iter().filter(|c| c.0 == "◆").count(), 1);
     assert!(cells.iter().filter(|c| c.0 == "▀").count() >= cells.len() - 1);
     let s = text(&a);
-    assert!(
-        s.contains("elastic ██████████ plastic  ▀ Ψ_P=1  ◆ now  (elastic <10%, plastic >90%)"),
-        "{s}"
-    );
+    let legend = "elastic ██████████ plastic  ▀ Ψ_P=1  ◆ now  \
+                  (elastic <10%, plastic >90%: this program's thresholds)";
+    assert!(s.contains(legend), "{s}");
+    // At 80×24 the short form keeps the thresholds.
+    update(&mut a, Message::Resize(80, 24));
+    assert!(text(&a).contains("el <10% ██████████ >90% pl  ▀ Ψ_P=1  ◆ now"));
 }
 
 #[test]
@@ -294,4 +302,84 @@ fn p_writes_the_view_as_an_svg_and_never_overwrites() {
             "{files:?}"
         );
     }
+}
+
+fn any_message() -> impl proptest::strategy::Strategy<Value = Message> {
+    use proptest::prelude::*;
+    prop_oneof![
+        Just(Message::SelectPrev),
+        Just(Message::SelectNext),
+        (any::<bool>(), any::<bool>()).prop_map(|(up, fine)| Message::Step { up, fine }),
+        (0usize..4).prop_map(Message::LoadPreset),
+        Just(Message::CycleSweep),
+        Just(Message::ToggleModel),
+        Just(Message::ToggleSizeEffect),
+        Just(Message::ToggleMoments),
+        Just(Message::NextView),
+        Just(Message::PrevView),
+        Just(Message::NextMapY),
+        (0u16..120, 0u16..40).prop_map(|(w, h)| Message::Resize(w, h)),
+    ]
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(24))]
+
+    /// Any sequence of messages over the four views leaves a drawable app
+    /// whose curves hold finite points and whose map, when shown, fits its
+    /// graph.
+    #[test]
+    fn no_message_sequence_breaks_a_view(
+        msgs in proptest::collection::vec(any_message(), 1..30),
+        theme in proptest::bool::ANY,
+    ) {
+        let theme = if theme { Theme::colored() } else { Theme::plain() };
+        let mut a = app("fig2", (80, 24), theme);
+        for m in msgs {
+            update(&mut a, m);
+        }
+        let i = &a.indices;
+        for c in [&i.psi_gw, &i.psi_p, &i.psi_star, &i.psi_star_asymptotic] {
+            proptest::prop_assert!(c.iter().all(|(x, y)| x.is_finite() && y.is_finite()));
+        }
+        let l = &a.load;
+        for c in [&l.elastic, &l.plastic, &l.total] {
+            proptest::prop_assert!(c.iter().all(|(x, y)| (0.0..=1.0).contains(x) && (0.0..=1.0).contains(y)));
+        }
+        if let (View::Map, Some(r)) = (a.view, Regions::of_size(a.size)) {
+            let spec = a.map.peek().map(|m| m.spec);
+            proptest::prop_assert_eq!(spec, a.map_spec(r.graph));
+        }
+        let _ = text(&a);
+    }
+}
+
+#[test]
+fn map_y_labels_keep_their_units() {
+    let mut a = app("fig3", (100, 30), Theme::plain());
+    show(&mut a, View::Map);
+    // H0/E → h_rms → Hurst → R* (ζ is swept).
+    for _ in 0..3 {
+        update(&mut a, Message::NextMapY);
+    }
+    assert_eq!(a.map.peek().unwrap().spec.y.axis(), Axis::RStar);
+    let s = text(&a);
+    for label in ["100mm┤", "10 mm┤", " 1 mm┤", " 1 µm┤"] {
+        assert!(s.contains(label), "{label} in\n{s}");
+    }
+    assert!(!s.contains("100 m┤"), "{s}");
+}
+
+#[test]
+fn no_color_load_view_tells_the_tangent_from_the_elastic_curve() {
+    let mut a = app("fig3", (100, 30), Theme::plain());
+    show(&mut a, View::Load);
+    let s = text(&a);
+    assert!(
+        s.contains("•• elastic  ++ plastic  ⠒⠒ total  ·· initial slope"),
+        "{s}"
+    );
+    // The tangent's dots and the elastic curve's bullets both show.
+    assert!(s.matches('·').count() > 10 + 1, "{s}");
+    assert!(s.matches('•').count() > 10 + 2, "{s}");
 }

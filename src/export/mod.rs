@@ -23,6 +23,10 @@ use crate::snapshot::State;
 /// Points along a curve when `--points` is not given.
 pub const DEFAULT_POINTS: usize = 200;
 
+/// Most points of a curve in a picture (a 900-pixel-wide chart needs far
+/// fewer; more would only make the file large).
+pub const MAX_SVG_POINTS: usize = 20_000;
+
 /// The state `args` describe: the source with every override applied,
 /// checked.
 pub fn state_of(args: &ExportArgs) -> anyhow::Result<State> {
@@ -33,11 +37,17 @@ pub fn state_of(args: &ExportArgs) -> anyhow::Result<State> {
     if let Some(m) = args.moments {
         state.moments = m.into();
     }
+    let scene = (state.size_effect, state.sweep);
     if let Some(s) = args.size_effect {
         state.size_effect = s == OnOff::On;
     }
     if let Some((axis, from, to)) = args.sweep {
         state.sweep = Sweep::new(axis, from, to).map_err(|e| anyhow::anyhow!("--sweep: {e}"))?;
+    }
+    if scene != (state.size_effect, state.sweep) {
+        // The caption describes the scene as saved; a picture of another
+        // one is titled by its name alone (the title names the settings).
+        state.caption = None;
     }
     state.check()?;
     Ok(state)
@@ -47,6 +57,11 @@ pub fn state_of(args: &ExportArgs) -> anyhow::Result<State> {
 pub fn options_of(args: &ExportArgs) -> anyhow::Result<(View, FigureOptions)> {
     let view = View::from(args.view);
     let name = view.name();
+    if view == View::Load && args.sweep.is_some() {
+        bail!(
+            "--sweep does not apply to --view load: it shows the areas at the current parameters"
+        );
+    }
     if view == View::Map {
         if args.points.is_some() {
             bail!("--points does not apply to --view map: its size is --grid COLSxROWS");
@@ -77,6 +92,13 @@ pub fn run(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
     let (view, opts) = options_of(args)?;
     let state = state_of(args)?;
     if args.format == FormatArg::Svg {
+        if opts.points > MAX_SVG_POINTS {
+            bail!(
+                "--points {} is too many for --format svg: at most {MAX_SVG_POINTS} \
+                 (CSV takes up to 10000000)",
+                opts.points
+            );
+        }
         let svg = render_svg(view, &state, &opts)?;
         out.write_all(svg.as_bytes())?;
         out.flush()?;

@@ -427,6 +427,31 @@ mod tests {
     }
 
     #[test]
+    fn contour_lies_where_psi_crosses_one() {
+        let s = fig("fig2");
+        let m = RegimeMap::compute(&MapSpec::of(&s, (30, 20), None).unwrap());
+        let mut on = 0;
+        for row in 0..20 {
+            for col in 0..30 {
+                let (right, up) = m.contour_edges(col, row);
+                let here = m.psi_at(col, row) >= 1.0;
+                if right {
+                    assert_ne!(here, m.psi_at(col + 1, row) >= 1.0);
+                }
+                if up {
+                    assert_ne!(here, m.psi_at(col, row + 1) >= 1.0);
+                }
+                on += usize::from(m.on_contour(col, row));
+            }
+        }
+        // ψ grows down the map (softer) and across (finer): one crossing per column.
+        assert!(on >= 30, "{on}");
+        for col in 0..30 {
+            assert!(m.psi_at(col, 0) > 1.0 && m.psi_at(col, 19) < 1.0);
+        }
+    }
+
+    #[test]
     fn rows_shared_among_threads_give_the_same_map() {
         let s = fig("fig4");
         let spec = MapSpec::of(&s, (100, 61), None).unwrap();

@@ -154,3 +154,55 @@ impl LoadCurve {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn fig(name: &str) -> State {
+        crate::presets::load(name).unwrap()
+    }
+
+    #[test]
+    fn index_series_follow_their_definitions() {
+        let s = fig("fig4");
+        let ix = IndexSeries::compute(&s, 9).unwrap();
+        assert_eq!(ix.len(), 9);
+        assert_eq!((ix.x[0], ix.x[8]), (1.0, 1e6));
+        for i in 0..9 {
+            // Ψ* = Ψ_P/(H_y/H0), the hardness growing with ζ.
+            let r = ix.psi_p[i] / ix.hardness_ratio[i] / ix.psi_star[i] - 1.0;
+            assert!(r.abs() < 1e-15, "{i}: {r}");
+            assert!(i == 0 || ix.hardness_ratio[i] > ix.hardness_ratio[i - 1]);
+            assert!(ix.psi_star_asymptotic[i].is_some());
+        }
+        // Eq. 13 approaches Ψ* at large ζ.
+        let dev = ix.psi_star_asymptotic[8].unwrap() / ix.psi_star[8] - 1.0;
+        assert!(dev.abs() < 1e-3, "{dev}");
+        assert!(IndexSeries::compute(&s, 1).is_err());
+    }
+
+    #[test]
+    fn load_curve_starts_on_its_initial_slope_and_ends_plastic() {
+        let s = fig("fig2");
+        let c = LoadCurve::compute(&s, 1001).unwrap();
+        assert_eq!((c.load[0], c.total[0]), (0.0, 0.0));
+        assert_eq!(
+            (c.elastic[1000], c.plastic[1000], c.total[1000]),
+            (0.0, 1.0, 1.0)
+        );
+        // A/A0 ≈ S·p̄/H near the origin: the tangent the view draws.
+        let slope = c.total[1] / c.load[1];
+        assert!((slope / c.slopes.total - 1.0).abs() < 1e-2, "{slope}");
+        for i in 1..=1000 {
+            assert!(c.total[i] >= c.total[i - 1] && c.total[i] <= 1.0);
+            let sum = c.elastic[i] + c.plastic[i];
+            assert!((sum - c.total[i]).abs() <= 1e-15, "{i}");
+        }
+        let (x, y) = c.tangent_end();
+        assert!((x - 1.0 / c.slopes.total).abs() < 1e-15 && y == 1.0);
+        // Blocks give the same rows as the whole curve.
+        let part = LoadCurve::compute_range(&s, 1001, 500..503).unwrap();
+        assert_eq!(part.total[..], c.total[500..503]);
+    }
+}

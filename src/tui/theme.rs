@@ -114,8 +114,8 @@ impl Theme {
             psi_p: curve("Ψ_P", Marker::Custom('+'), "++"),
             psi_star: curve("Ψ*", Marker::Braille, "⠒⠒"),
             psi_asy: curve("Ψ*asy eq.13", Marker::Custom('o'), "oo"),
-            psi_one: curve("Ψ = 1", Marker::Dot, "··"),
-            tangent: curve("initial slope", Marker::Dot, "··"),
+            psi_one: curve("Ψ = 1", Marker::Custom('·'), "··"),
+            tangent: curve("initial slope", Marker::Custom('·'), "··"),
             ghost: curve("ghost", Marker::Custom('·'), "··"),
             selected: Style::new()
                 .add_modifier(Modifier::REVERSED)

@@ -7,6 +7,7 @@ mod map;
 
 use anyhow::anyhow;
 use plotters::coord::types::RangedCoordf64;
+use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use rough_model::{Axis, Curves, Scene};
 
@@ -159,14 +160,23 @@ fn chart<'a, 'b>(
     Ok(c)
 }
 
+/// How a curve is stroked: solid, or dashed so that it stays visible on
+/// top of a curve it coincides with (Persson's line on the total, eq. 13
+/// on Ψ*).
+#[derive(Clone, Copy, PartialEq)]
+enum Stroke {
+    Solid,
+    Dashed,
+}
+
 /// Draws `ys` against `xs` as a labelled line, broken where a point is
 /// undefined or off the chart.
 fn line(
     c: &mut Chart,
     (x, y): (&Scale, &Scale),
-    xs: &[f64],
-    ys: &[f64],
+    (xs, ys): (&[f64], &[f64]),
     colour: RGBColor,
+    stroke: Stroke,
     label: &str,
 ) -> anyhow::Result<()> {
     let mut segs: Vec<Vec<(f64, f64)>> = vec![vec![]];
@@ -179,15 +189,22 @@ fn line(
             segs.push(vec![]);
         }
     }
+    let segs = segs.into_iter().filter(|s| s.len() > 1);
     let style = colour.stroke_width(2);
-    c.draw_series(
-        segs.into_iter()
-            .filter(|s| s.len() > 1)
-            .map(move |s| PathElement::new(s, style)),
-    )
-    .map_err(plot_err)?
-    .label(label)
-    .legend(move |(px, py)| PathElement::new(vec![(px, py), (px + 20, py)], style));
+    let anno = if stroke == Stroke::Dashed {
+        c.draw_series(segs.map(move |s| DashedPathElement::new(s, 9, 6, style)))
+    } else {
+        c.draw_series(segs.map(move |s| PathElement::new(s, style)))
+    }
+    .map_err(plot_err)?;
+    anno.label(label).legend(move |(px, py)| {
+        DashedPathElement::new(
+            vec![(px, py), (px + 20, py)],
+            if stroke == Stroke::Dashed { 5 } else { 20 },
+            if stroke == Stroke::Dashed { 3 } else { 0 },
+            style,
+        )
+    });
     Ok(())
 }
 
@@ -233,6 +250,15 @@ fn positive_span<'a>(vals: impl Iterator<Item = &'a f64>) -> (f64, f64) {
     }
 }
 
+/// Whether two curves lie within 0.1 % of each other wherever both are
+/// finite (then one hides the other on the chart).
+fn coincide(a: &[f64], b: &[f64]) -> bool {
+    a.iter()
+        .zip(b)
+        .filter(|(u, v)| u.is_finite() && v.is_finite())
+        .all(|(u, v)| (u - v).abs() <= 1e-3 * v.abs())
+}
+
 fn x_scale(state: &State) -> Scale {
     let s = &state.sweep;
     Scale {
@@ -267,17 +293,32 @@ fn slopes(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::Result<()
     let mut c = chart(area, &title(state, "initial slopes"), &x, &y)?;
     marker(&mut c, state, &x, &y)?;
     let xy = (&x, &y);
+    let solid = Stroke::Solid;
+    // Every listed curve can be found: say where one lies under another
+    // or below the chart.
+    let el = if coincide(&s.elastic, &s.total) {
+        "elastic (= total here)"
+    } else {
+        "elastic"
+    };
+    let pl = if s.plastic.iter().any(|&v| y.contains(v)) {
+        "plastic"
+    } else {
+        "plastic (below the chart here)"
+    };
+    line(&mut c, xy, (&s.x, &s.elastic), ELASTIC, solid, el)?;
+    line(&mut c, xy, (&s.x, &s.plastic), PLASTIC, solid, pl)?;
+    line(&mut c, xy, (&s.x, &s.total), TOTAL, solid, "total")?;
+    let persson = (&s.x[..], &s.persson_elastic[..]);
+    let dashed = Stroke::Dashed;
     line(
         &mut c,
         xy,
-        &s.x,
-        &s.persson_elastic,
+        persson,
         PERSSON,
+        dashed,
         "Persson elastic √(2/π)/ψ",
     )?;
-    line(&mut c, xy, &s.x, &s.elastic, ELASTIC, "elastic")?;
-    line(&mut c, xy, &s.x, &s.plastic, PLASTIC, "plastic")?;
-    line(&mut c, xy, &s.x, &s.total, TOTAL, "total")?;
     legend(&mut c)
 }
 
@@ -296,24 +337,33 @@ fn indices(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::Result<(
     let r = x.range();
     guide(&mut c, (r.start, 0.0), (r.end, 0.0), GREY)?;
     let xy = (&x, &y);
+    let solid = Stroke::Solid;
     line(
         &mut c,
         xy,
-        &s.x,
-        &s.psi_gw,
+        (&s.x, &s.psi_gw),
         PSI_GW,
+        solid,
         "Ψ_GW (Greenwood–Williamson)",
     )?;
-    line(&mut c, xy, &s.x, &s.psi_p, PLASTIC, "Ψ_P (Persson, H0)")?;
     line(
         &mut c,
         xy,
-        &s.x,
-        &s.psi_star,
+        (&s.x, &s.psi_p),
+        PLASTIC,
+        solid,
+        "Ψ_P (Persson, H0)",
+    )?;
+    line(
+        &mut c,
+        xy,
+        (&s.x, &s.psi_star),
         TOTAL,
+        solid,
         "Ψ* (size-dependent H_y)",
     )?;
-    line(&mut c, xy, &s.x, &asy, PSI_ASY, "Ψ*asy (eq. 13)")?;
+    let dashed = Stroke::Dashed;
+    line(&mut c, xy, (&s.x, &asy), PSI_ASY, dashed, "Ψ*asy (eq. 13)")?;
     legend(&mut c)
 }
 
@@ -347,9 +397,10 @@ fn load(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::Result<()> 
     ))
     .legend(move |(px, py)| PathElement::new(vec![(px, py), (px + 20, py)], tangent));
     let xy = (&x, &y);
-    line(&mut c, xy, &l.load, &l.elastic, ELASTIC, "elastic")?;
-    line(&mut c, xy, &l.load, &l.plastic, PLASTIC, "plastic")?;
-    line(&mut c, xy, &l.load, &l.total, TOTAL, "total")?;
+    let solid = Stroke::Solid;
+    line(&mut c, xy, (&l.load, &l.elastic), ELASTIC, solid, "elastic")?;
+    line(&mut c, xy, (&l.load, &l.plastic), PLASTIC, solid, "plastic")?;
+    line(&mut c, xy, (&l.load, &l.total), TOTAL, solid, "total")?;
     legend(&mut c)
 }
 
@@ -387,6 +438,20 @@ fn wrap(text: &str, width: usize) -> Vec<String> {
 #[cfg(test)]
 mod tests {
     use super::wrap;
+
+    #[test]
+    fn legend_says_where_a_curve_hides() {
+        use super::*;
+        let svg = |name: &str| {
+            let s = crate::presets::load(name).unwrap();
+            render_svg(View::Slopes, &s, &FigureOptions::default()).unwrap()
+        };
+        let fig3 = svg("fig3");
+        assert!(fig3.contains("elastic (= total here)"));
+        assert!(fig3.contains("plastic (below the chart here)"));
+        let fig2 = svg("fig2");
+        assert!(!fig2.contains("= total here") && !fig2.contains("below the chart"));
+    }
 
     #[test]
     fn wrap_breaks_at_spaces() {

@@ -156,6 +156,12 @@ pub fn axes(
     for (v, label) in &y.ticks {
         if let Some(row) = row_of(g, y.bounds, *v) {
             buf[(ax, row)].set_symbol("┤");
+            // "100 nm" loses its space rather than its unit.
+            let label = if label.chars().count() > usize::from(Y_LABEL_W) {
+                label.replace(' ', "")
+            } else {
+                label.clone()
+            };
             let label = format!("{label:>w$}", w = Y_LABEL_W as usize);
             buf.set_stringn(area.x, row, label, Y_LABEL_W as usize, Style::new());
         }

@@ -8,6 +8,7 @@ use ratatui::text::Span;
 
 use super::chart::{self, Scale};
 use crate::tui::app::App;
+use crate::tui::theme::CurveStyle;
 
 /// The chart panel `area` with its graph `g`.
 pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
@@ -19,7 +20,21 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         t.title,
     )];
     chart::title(app, title, area, buf);
-    let curves = [&t.psi_gw, &t.psi_p, &t.psi_star, &t.psi_asy, &t.psi_one];
+    // Eq. 13 drawn under Ψ* where they meet: the legend says so when they
+    // meet everywhere (within a braille dot row).
+    let dot = (p.y_bounds[1] - p.y_bounds[0]) / (4.0 * f64::from(g.height));
+    let under = !p.psi_star_asymptotic.is_empty()
+        && p.psi_star_asymptotic.len() == p.psi_star.len()
+        && (p.psi_star_asymptotic.iter().zip(&p.psi_star)).all(|(a, b)| (a.1 - b.1).abs() < dot);
+    let asy = CurveStyle {
+        name: if under {
+            "eq.13 under Ψ*"
+        } else {
+            t.psi_asy.name
+        },
+        ..t.psi_asy
+    };
+    let curves = [&t.psi_gw, &t.psi_p, &t.psi_star, &asy, &t.psi_one];
     chart::legend(&curves, area, buf);
     let (x, y) = (Scale::of_axis(axis, p.x_bounds), Scale::decades(p.y_bounds));
     chart::axes(t, (&x, &y), axis.symbol(), (area, g), buf);

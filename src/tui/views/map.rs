@@ -59,19 +59,18 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     cells(app, map, g, buf);
 }
 
-/// The scale's legend: its ends, the thresholds, the contour and the point.
+/// The scale's legend: its ends with the thresholds, the contour and the
+/// point; in full words where the panel is wide enough.
 fn legend(app: &App, psi: &str, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
-    let mut spans = vec![Span::raw("elastic ")];
-    if t.color {
-        for i in 0..10 {
-            let c = rgb(f64::from(i) / 9.0);
-            spans.push(Span::styled("█", Style::new().fg(c)));
-        }
+    let (el, pl) = (ELASTIC_BELOW * 100.0, PLASTIC_ABOVE * 100.0);
+    let bar: Vec<Span> = if t.color {
+        (0..10)
+            .map(|i| Span::styled("█", Style::new().fg(rgb(f64::from(i) / 9.0))))
+            .collect()
     } else {
-        spans.push(Span::raw(format!("'{}'", RAMP.iter().collect::<String>())));
-    }
-    spans.push(Span::raw(" plastic  "));
+        vec![Span::raw(format!("'{}'", RAMP.iter().collect::<String>()))]
+    };
     let (contour, point) = if t.color {
         (
             Span::styled("▀", Style::new().fg(CONTOUR).bg(Color::Black)),
@@ -80,22 +79,30 @@ fn legend(app: &App, psi: &str, area: Rect, buf: &mut Buffer) {
     } else {
         (Span::raw(CONTOUR_CHAR), Span::raw(POINT_CHAR))
     };
-    spans.extend([
+    let marks = [
         contour,
         Span::raw(format!(" {psi}=1  ")),
         point,
         Span::raw(" now"),
-    ]);
-    let used: usize = spans.iter().map(|s| s.content.chars().count()).sum();
-    let thresholds = format!(
-        "  (elastic <{:.0}%, plastic >{:.0}%)",
-        ELASTIC_BELOW * 100.0,
-        PLASTIC_ABOVE * 100.0
+    ];
+    let line = |head: String, tail: String, note: Option<String>| {
+        let mut spans = vec![Span::raw(head)];
+        spans.extend(bar.iter().cloned());
+        spans.push(Span::raw(tail));
+        spans.extend(marks.iter().cloned());
+        spans.extend(note.map(|n| Span::styled(n, t.dim)));
+        Line::from(spans)
+    };
+    let wide = line(
+        "elastic ".into(),
+        " plastic  ".into(),
+        Some(format!(
+            "  (elastic <{el:.0}%, plastic >{pl:.0}%: this program's thresholds)"
+        )),
     );
-    if used + thresholds.chars().count() <= usize::from(area.width) {
-        spans.push(Span::styled(thresholds, t.dim));
-    }
-    Line::from(spans).render(area, buf);
+    let narrow = line(format!("el <{el:.0}% "), format!(" >{pl:.0}% pl  "), None);
+    let fits = |l: &Line| l.width() <= usize::from(area.width);
+    if fits(&wide) { wide } else { narrow }.render(area, buf);
 }
 
 /// Whether the Ψ = 1 contour passes this point's right or upper side: one
