@@ -244,11 +244,21 @@ impl App {
         self.recomputes += 1;
     }
 
-    fn set_status(&mut self, text: impl Into<String>, error: bool) {
+    pub fn set_status(&mut self, text: impl Into<String>, error: bool) {
         self.status = Some(Status {
             text: text.into(),
             error,
         });
+    }
+
+    /// Shows `state` with slider `selected` selected, as another session
+    /// has it (a followed lecturer's explorer).
+    pub fn show(&mut self, state: &State, selected: usize) {
+        if self.state != *state || self.selected != selected {
+            self.state = state.clone();
+            self.selected = selected % Axis::ALL.len();
+            self.refresh();
+        }
     }
 
     fn load(&mut self, state: State) {

@@ -4,6 +4,7 @@
 
 pub mod app;
 pub mod keys;
+pub mod session;
 pub mod term;
 pub mod theme;
 pub mod view;
@@ -14,7 +15,7 @@ use std::time::Instant;
 use crossterm::event::{self, Event, KeyCode};
 
 use crate::snapshot::State;
-use app::{update, App};
+use session::Session;
 use theme::Theme;
 
 /// Runs the explorer on `state` until `q`. The terminal is restored on every
@@ -38,11 +39,11 @@ pub fn run(state: State) -> anyhow::Result<()> {
         .ok()
         .and_then(|s| s.chars().next());
 
-    let mut terminal = term::setup()?;
+    let out = term::setup()?;
     let _guard = term::Guard;
-    let size = terminal.size()?;
-    let mut app = App::new(state, Theme::from_env(), (size.width, size.height));
-    terminal.draw(|f| f.render_widget(&app, f.area()))?;
+    let (w, h) = crossterm::terminal::size()?;
+    let mut session = Session::new(out, state, Theme::from_env(), (w, h))?;
+    session.draw()?;
     loop {
         let (msg, arrived) = loop {
             let ev = event::read()?;
@@ -52,15 +53,15 @@ pub fn run(state: State) -> anyhow::Result<()> {
                     panic!("ROUGHTUI_PANIC_KEY pressed");
                 }
             }
-            if let Some(m) = keys::message_for_event(&app, &ev) {
+            if let Some(m) = session.message_for(&ev) {
                 break (m, arrived);
             }
         };
-        update(&mut app, msg);
-        if app.quit {
+        session.update(msg)?;
+        if session.app.quit {
             break;
         }
-        terminal.draw(|f| f.render_widget(&app, f.area()))?;
+        session.draw()?;
         if let Some(log) = frame_log.as_mut() {
             writeln!(log, "{}", arrived.elapsed().as_micros())?;
         }

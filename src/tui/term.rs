@@ -10,16 +10,13 @@ use crossterm::execute;
 use crossterm::terminal::{
     disable_raw_mode, enable_raw_mode, EnterAlternateScreen, LeaveAlternateScreen,
 };
-use ratatui::backend::CrosstermBackend;
-use ratatui::Terminal;
-
-pub type Tui = Terminal<CrosstermBackend<BufWriter<Stdout>>>;
 
 /// Whether the terminal is set up, so restoring twice does nothing.
 static ACTIVE: AtomicBool = AtomicBool::new(false);
 
 /// Raw mode, alternate screen, hidden cursor; a panic hook that restores.
-pub fn setup() -> io::Result<Tui> {
+/// Returns the buffered stdout to draw into.
+pub fn setup() -> io::Result<BufWriter<Stdout>> {
     install_panic_hook();
     enable_raw_mode()?;
     ACTIVE.store(true, Ordering::SeqCst);
@@ -29,8 +26,7 @@ pub fn setup() -> io::Result<Tui> {
         return Err(e);
     }
     // One write per frame instead of one per line.
-    let backend = CrosstermBackend::new(BufWriter::with_capacity(1 << 16, io::stdout()));
-    Terminal::new(backend).inspect_err(|_| restore())
+    Ok(BufWriter::with_capacity(1 << 16, io::stdout()))
 }
 
 /// Leaves the alternate screen, shows the cursor, ends raw mode. Idempotent.
