@@ -170,7 +170,9 @@ mod tests {
         assert_eq!(parse_duration("30m"), Ok(Duration::from_secs(1800)));
         assert_eq!(parse_duration("90s"), Ok(Duration::from_secs(90)));
         assert_eq!(parse_duration("2h"), Ok(Duration::from_secs(7200)));
-        assert!(parse_duration("0s").unwrap_err().contains("outside 1s to 24h"));
+        assert!(parse_duration("0s")
+            .unwrap_err()
+            .contains("outside 1s to 24h"));
         assert!(parse_duration("25h").unwrap_err().contains("outside"));
         assert!(parse_duration("5").unwrap_err().contains("not a time"));
         assert!(parse_duration("-5m").unwrap_err().contains("not a time"));

@@ -138,7 +138,11 @@ impl russh::server::Handler for Handler {
         Ok(())
     }
 
-    async fn shell_request(&mut self, channel: ChannelId, session: &mut Session) -> Result<(), Error> {
+    async fn shell_request(
+        &mut self,
+        channel: ChannelId,
+        session: &mut Session,
+    ) -> Result<(), Error> {
         self.count()?;
         let (Some(size), Some(role)) = (self.pty, self.role) else {
             // No pty: there is nothing to draw on.
@@ -165,7 +169,12 @@ impl russh::server::Handler for Handler {
         self.refuse(c, s)
     }
 
-    async fn subsystem_request(&mut self, c: ChannelId, _: &str, s: &mut Session) -> Result<(), Error> {
+    async fn subsystem_request(
+        &mut self,
+        c: ChannelId,
+        _: &str,
+        s: &mut Session,
+    ) -> Result<(), Error> {
         self.refuse(c, s)
     }
 
@@ -209,7 +218,12 @@ impl russh::server::Handler for Handler {
         Ok(())
     }
 
-    async fn tcpip_forward(&mut self, _: &str, _: &mut u32, _: &mut Session) -> Result<bool, Error> {
+    async fn tcpip_forward(
+        &mut self,
+        _: &str,
+        _: &mut u32,
+        _: &mut Session,
+    ) -> Result<bool, Error> {
         self.count()?;
         Ok(false)
     }

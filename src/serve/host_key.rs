@@ -31,10 +31,16 @@ pub fn load_or_create(path: &Path) -> anyhow::Result<(PrivateKey, bool)> {
             let text = std::fs::read_to_string(path)
                 .with_context(|| format!("cannot read the host key {}", path.display()))?;
             let key = PrivateKey::from_openssh(text.as_bytes()).map_err(|e| {
-                anyhow::anyhow!("the host key {} is not an OpenSSH private key: {e}", path.display())
+                anyhow::anyhow!(
+                    "the host key {} is not an OpenSSH private key: {e}",
+                    path.display()
+                )
             })?;
             if key.is_encrypted() {
-                bail!("the host key {} is encrypted: give one without a passphrase", path.display());
+                bail!(
+                    "the host key {} is encrypted: give one without a passphrase",
+                    path.display()
+                );
             }
             Ok((key, false))
         }
@@ -78,8 +84,7 @@ fn create(path: &Path) -> anyhow::Result<PrivateKey> {
         .map_err(|e| anyhow::anyhow!("cannot encode the host key: {e}"))?;
     let dir = path.parent().filter(|d| !d.as_os_str().is_empty());
     if let Some(dir) = dir {
-        std::fs::create_dir_all(dir)
-            .with_context(|| format!("cannot create {}", dir.display()))?;
+        std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
     }
     // Written under a temporary name, then linked into place: the key file
     // appears whole or not at all, and an existing one is never replaced.

@@ -177,7 +177,8 @@ async fn connection(
     let started = Arc::new(Notify::new());
     let handler = handler::Handler::new(shared, Arc::clone(&started));
     let deadline = tokio::time::Instant::now() + LOGIN_DEADLINE;
-    let setup = tokio::time::timeout_at(deadline, russh::server::run_stream(config, socket, handler));
+    let setup =
+        tokio::time::timeout_at(deadline, russh::server::run_stream(config, socket, handler));
     let Ok(Ok(running)) = setup.await else {
         return;
     };

@@ -14,6 +14,7 @@ use ratatui::widgets::{Block, Borders, Clear, Paragraph, Wrap};
 use ratatui::Frame;
 use russh::server::Msg;
 use russh::{Channel, ChannelMsg};
+use tokio::sync::watch;
 use tokio::time::{sleep_until, Instant};
 
 use super::auth::Role;
@@ -88,7 +89,7 @@ async fn run(start: Start) {
                                 dirty = true;
                                 continue;
                             }
-                            if on_key(&mut ex, &mut follow, &mut panel, role, key) {
+                            if on_key(&mut ex, &mut follow, &mut panel, role, &lecturer, key) {
                                 dirty = true;
                             }
                             if ex.app.quit {
@@ -159,13 +160,17 @@ fn on_key(
     follow: &mut Follow,
     panel: &mut Option<Panel>,
     role: Role,
+    lecturer: &watch::Receiver<Option<Shown>>,
     key: KeyEvent,
 ) -> bool {
     let plain_f = key.code == KeyCode::Char('f') && key.modifiers == KeyModifiers::NONE;
     if role == Role::Student && plain_f && ex.app.mode == Mode::Main {
         match follow.on_follow_key() {
             Effect::Say(s) => ex.app.set_status(s, false),
-            Effect::Catch => ex.app.set_status(super::follow::FOLLOWING, false),
+            Effect::Catch => {
+                catch_up(ex, &lecturer.borrow());
+                ex.app.set_status(super::follow::FOLLOWING, false);
+            }
             Effect::None => {}
         }
         return true;

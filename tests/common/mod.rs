@@ -2,6 +2,9 @@
 //! parts it needs with `mod common;`).
 #![allow(dead_code)]
 
+pub mod serve;
+pub mod tmux;
+
 use std::path::Path;
 
 use ratatui::backend::TestBackend;

@@ -1,0 +1,159 @@
+//! tmux for the real-terminal tests: one tmux server per pane, torn down on
+//! drop; the pane stays after the program exits so its screen can be read.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+use std::time::{Duration, Instant};
+
+pub const BIN: &str = env!("CARGO_BIN_EXE_roughtui");
+
+pub fn have_tmux() -> bool {
+    let ok = Command::new("tmux")
+        .arg("-V")
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !ok {
+        assert!(
+            std::env::var_os("ROUGHTUI_REQUIRE_TMUX").is_none(),
+            "tmux is required (ROUGHTUI_REQUIRE_TMUX is set) but missing"
+        );
+        eprintln!("tmux not found: skipping the real-terminal test");
+    }
+    ok
+}
+
+/// One tmux server running one roughtui, torn down on drop.
+pub struct Pane {
+    socket: String,
+    status: PathBuf,
+    _scratch: tempfile::TempDir,
+}
+
+pub fn sh_quote(s: &str) -> String {
+    format!("'{}'", s.replace('\'', r"'\''"))
+}
+
+impl Pane {
+    pub fn start(
+        name: &str,
+        cwd: &Path,
+        size: (u16, u16),
+        env: &[(&str, &str)],
+        args: &[&str],
+    ) -> Pane {
+        let mut cmd = format!("cd {} && env", sh_quote(cwd.to_str().unwrap()));
+        for (k, v) in env {
+            cmd.push_str(&format!(" {k}={}", sh_quote(v)));
+        }
+        cmd.push_str(&format!(" {}", sh_quote(BIN)));
+        for a in args {
+            cmd.push_str(&format!(" {}", sh_quote(a)));
+        }
+        Pane::start_shell(name, size, &cmd)
+    }
+
+    /// A pane running the shell command `cmd`; its exit status is kept.
+    pub fn start_shell(name: &str, size: (u16, u16), cmd: &str) -> Pane {
+        let scratch = tempfile::tempdir().unwrap();
+        let status = scratch.path().join("status");
+        let socket = format!("roughtui-test-{name}-{}", std::process::id());
+        // Keep the pane after exit so its screen can be read.
+        let cmd = format!(
+            "{cmd}; echo $? > {}; sleep 600",
+            sh_quote(status.to_str().unwrap())
+        );
+        let p = Pane {
+            socket,
+            status,
+            _scratch: scratch,
+        };
+        let (w, h) = (size.0.to_string(), size.1.to_string());
+        let out = p.tmux(&["new-session", "-d", "-s", "t", "-x", &w, "-y", &h, &cmd]);
+        assert!(out.status.success(), "tmux: {out:?}");
+        p
+    }
+
+    pub fn tmux(&self, args: &[&str]) -> Output {
+        Command::new("tmux")
+            .args(["-L", &self.socket, "-f", "/dev/null"])
+            .args(args)
+            .output()
+            .unwrap()
+    }
+
+    pub fn capture(&self) -> String {
+        let o = self.tmux(&["capture-pane", "-p", "-t", "t"]);
+        String::from_utf8_lossy(&o.stdout).into_owned()
+    }
+
+    pub fn keys(&self, keys: &[&str]) {
+        let mut args = vec!["send-keys", "-t", "t"];
+        args.extend(keys);
+        assert!(self.tmux(&args).status.success());
+    }
+
+    pub fn display(&self, format: &str) -> String {
+        let o = self.tmux(&["display-message", "-p", "-t", "t", format]);
+        String::from_utf8_lossy(&o.stdout).trim().to_string()
+    }
+
+    /// Polls the pane until `pred` holds (10 s at most).
+    pub fn wait_for(&self, what: &str, pred: impl Fn(&str) -> bool) -> String {
+        let start = Instant::now();
+        loop {
+            let s = self.capture();
+            if pred(&s) {
+                return s;
+            }
+            assert!(
+                start.elapsed() < Duration::from_secs(10),
+                "timed out waiting for {what}; the pane shows:\n{s}"
+            );
+            std::thread::sleep(Duration::from_millis(30));
+        }
+    }
+
+    pub fn wait_text(&self, text: &str) -> String {
+        self.wait_for(text, |s| s.contains(text))
+    }
+
+    pub fn exit_status(&self) -> i32 {
+        let start = Instant::now();
+        loop {
+            if let Ok(s) = std::fs::read_to_string(&self.status) {
+                if let Ok(n) = s.trim().parse() {
+                    return n;
+                }
+            }
+            assert!(
+                start.elapsed() < Duration::from_secs(10),
+                "roughtui did not exit; the pane shows:\n{}",
+                self.capture()
+            );
+            std::thread::sleep(Duration::from_millis(30));
+        }
+    }
+
+    /// Bytes the program writes to the terminal while `act` runs.
+    pub fn bytes_written(&self, act: impl FnOnce()) -> u64 {
+        let log = self._scratch.path().join("pipe");
+        let _ = std::fs::remove_file(&log);
+        let cmd = format!("cat >> {}", sh_quote(log.to_str().unwrap()));
+        assert!(self
+            .tmux(&["pipe-pane", "-o", "-t", "t", &cmd])
+            .status
+            .success());
+        std::thread::sleep(Duration::from_millis(200));
+        act();
+        std::thread::sleep(Duration::from_millis(300));
+        self.tmux(&["pipe-pane", "-t", "t"]);
+        std::thread::sleep(Duration::from_millis(100));
+        std::fs::metadata(&log).map_or(0, |m| m.len())
+    }
+}
+
+impl Drop for Pane {
+    fn drop(&mut self) {
+        let _ = self.tmux(&["kill-server"]);
+    }
+}
