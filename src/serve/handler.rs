@@ -159,6 +159,7 @@ impl russh::server::Handler for Handler {
         session::spawn(Start {
             shared: Arc::clone(&self.shared),
             channel: ch,
+            conn: session.handle(),
             role,
             size,
         });

@@ -11,8 +11,8 @@ use std::time::Duration;
 
 use crossterm::cursor::Show;
 use crossterm::terminal::LeaveAlternateScreen;
-use russh::server::Msg;
-use russh::ChannelWriteHalf;
+use russh::server::{Handle, Msg};
+use russh::{ChannelWriteHalf, Disconnect};
 use tokio::sync::mpsc;
 
 /// How long a client may take to accept one frame.
@@ -47,11 +47,27 @@ impl Write for FrameBuf {
 pub type Slot = mpsc::Sender<Vec<u8>>;
 
 /// Starts the writer of `out`; it ends when the slot's sender is dropped
-/// (then it restores the client's terminal, sends exit status `0` and
-/// closes the channel) or when the client stalls or is gone.
-pub fn spawn(out: ChannelWriteHalf<Msg>) -> Slot {
+/// (then it restores the client's terminal, sends exit status `0`, closes
+/// the channel and the connection) or when the client stalls or is gone.
+pub fn spawn(out: ChannelWriteHalf<Msg>, conn: Handle) -> Slot {
     let (tx, rx) = mpsc::channel(1);
-    tokio::spawn(write_frames(out, rx));
+    tokio::spawn(async move {
+        write_frames(out, rx).await;
+        // The explorer was the connection's only use. A client closes the
+        // connection itself once the channel is closed; one that does not
+        // is disconnected (an earlier disconnect would make OpenSSH report
+        // status 255 instead of the session's 0).
+        tokio::time::sleep(STALL).await;
+        let _ = tokio::time::timeout(
+            STALL,
+            conn.disconnect(
+                Disconnect::ByApplication,
+                "session ended".into(),
+                String::new(),
+            ),
+        )
+        .await;
+    });
     tx
 }
 

@@ -31,6 +31,7 @@ use crate::tui::theme::Theme;
 pub struct Start {
     pub shared: Arc<Shared>,
     pub channel: Channel<Msg>,
+    pub conn: russh::server::Handle,
     pub role: Role,
     pub size: (u16, u16),
 }
@@ -46,11 +47,12 @@ async fn run(start: Start) {
     let Start {
         shared,
         channel,
+        conn,
         role,
         size,
     } = start;
     let (mut read, write) = channel.split();
-    let slot = output::spawn(write);
+    let slot = output::spawn(write, conn);
     let buf = FrameBuf::default();
     let mut prelude = Vec::new();
     let _ = crossterm::execute!(prelude, EnterAlternateScreen, Hide);
