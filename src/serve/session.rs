@@ -204,8 +204,11 @@ fn catch_up(ex: &mut Session<FrameBuf>, shown: &Option<Shown>) {
 fn draw_panel(f: &mut Frame, ron: &str) {
     let area = f.area();
     let lines: Vec<Line> = ron.lines().map(Line::raw).collect();
+    // As wide as the longest line where the screen allows, so that a copy
+    // gets each line whole.
+    let longest = ron.lines().map(|l| l.chars().count()).max().unwrap_or(0);
     let h = (lines.len() as u16 + 2).min(area.height);
-    let w = 72.min(area.width);
+    let w = (longest as u16).saturating_add(2).clamp(40, 160).min(area.width);
     let r = Rect::new(
         area.x + (area.width - w) / 2,
         area.y + (area.height - h) / 2,
