@@ -10,41 +10,26 @@
 
 use std::io::{BufRead, BufReader};
 use std::process::{Command, Stdio};
-use std::sync::Arc;
 use std::time::{Duration, Instant};
 
-use russh::client;
-use russh::keys::PublicKeyOrCertificate;
 use russh::ChannelMsg;
+
+use client::{cpu_ticks, proc_status, Client};
 
 const ACTIVE: usize = 50;
 const IDLE: usize = 10;
 const RUN: Duration = Duration::from_secs(20);
 const EVERY: Duration = Duration::from_millis(100);
 
-struct Trusting;
-
-impl client::Handler for Trusting {
-    type Error = russh::Error;
-    async fn check_server_key(&mut self, _: &PublicKeyOrCertificate) -> Result<bool, Self::Error> {
-        Ok(true)
-    }
-}
-
-type Client = (client::Handle<Trusting>, russh::Channel<client::Msg>);
+#[path = "../tests/common/client.rs"]
+mod client;
 
 async fn connect(port: u16, user: String) -> anyhow::Result<Client> {
-    let config = Arc::new(client::Config::default());
-    let mut h = client::connect(config, ("127.0.0.1", port), Trusting).await?;
-    anyhow::ensure!(h.authenticate_none(user).await?.success(), "auth");
-    let ch = h.channel_open_session().await?;
-    ch.request_pty(true, "xterm", 100, 30, 0, 0, &[]).await?;
-    ch.request_shell(true).await?;
-    Ok((h, ch))
+    Ok(client::student(port, &user, 100, 30).await?)
 }
 
 /// Reads until no data came for `quiet`; the bytes read.
-async fn drain(ch: &mut russh::Channel<client::Msg>, quiet: Duration) -> usize {
+async fn drain(ch: &mut russh::Channel<russh::client::Msg>, quiet: Duration) -> usize {
     let mut n = 0;
     while let Ok(Some(msg)) = tokio::time::timeout(quiet, ch.wait()).await {
         if let ChannelMsg::Data { data } = msg {
@@ -52,23 +37,6 @@ async fn drain(ch: &mut russh::Channel<client::Msg>, quiet: Duration) -> usize {
         }
     }
     n
-}
-
-fn proc_field(pid: u32, field: &str) -> u64 {
-    let s = std::fs::read_to_string(format!("/proc/{pid}/status")).unwrap_or_default();
-    s.lines()
-        .find_map(|l| l.strip_prefix(&format!("{field}:")))
-        .and_then(|v| v.split_whitespace().next())
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(0)
-}
-
-fn cpu_ticks(pid: u32) -> u64 {
-    let s = std::fs::read_to_string(format!("/proc/{pid}/stat")).unwrap_or_default();
-    let after = &s[s.rfind(')').map_or(0, |i| i + 2)..];
-    let f: Vec<&str> = after.split_whitespace().collect();
-    let tick = |i: usize| f.get(i).and_then(|v| v.parse::<u64>().ok()).unwrap_or(0);
-    tick(11) + tick(12)
 }
 
 fn percentile(sorted: &[f64], p: f64) -> f64 {
@@ -102,7 +70,7 @@ async fn main() -> anyhow::Result<()> {
     }
     anyhow::ensure!(port != 0, "the server printed no address");
     tokio::time::sleep(Duration::from_millis(200)).await;
-    let rss0 = proc_field(pid, "VmRSS");
+    let rss0 = proc_status(pid, "VmRSS");
 
     let mut idle = Vec::new();
     for i in 0..IDLE {
@@ -110,7 +78,7 @@ async fn main() -> anyhow::Result<()> {
         drain(&mut ch, Duration::from_millis(300)).await;
         idle.push((h, ch));
     }
-    let rss_idle = proc_field(pid, "VmRSS");
+    let rss_idle = proc_status(pid, "VmRSS");
 
     let cpu0 = cpu_ticks(pid);
     let t0 = Instant::now();
@@ -126,7 +94,7 @@ async fn main() -> anyhow::Result<()> {
             while Instant::now() < end {
                 next += EVERY;
                 // Right then left: every key changes the scene.
-                let key: &[u8] = if k % 2 == 0 { b"l" } else { b"h" };
+                let key: &[u8] = if k.is_multiple_of(2) { b"l" } else { b"h" };
                 k += 1;
                 let sent = Instant::now();
                 ch.data(key).await?;
@@ -146,7 +114,7 @@ async fn main() -> anyhow::Result<()> {
     let mut rss_peak = 0;
     while t0.elapsed() < RUN + Duration::from_secs(1) {
         tokio::time::sleep(Duration::from_millis(500)).await;
-        rss_peak = rss_peak.max(proc_field(pid, "VmRSS"));
+        rss_peak = rss_peak.max(proc_status(pid, "VmRSS"));
     }
     let mut lat = Vec::new();
     for t in tasks {

@@ -6,42 +6,21 @@ mod common;
 
 use std::io::{Read, Write};
 use std::process::{Command, Stdio};
-use std::sync::Arc;
 use std::time::{Duration, Instant};
 
+use common::client::{self, Client};
 use common::serve::{have_ssh, Server};
-use russh::client;
-use russh::keys::PublicKeyOrCertificate;
 use russh::ChannelMsg;
 
-struct Trusting;
-
-impl client::Handler for Trusting {
-    type Error = russh::Error;
-    async fn check_server_key(&mut self, _: &PublicKeyOrCertificate) -> Result<bool, Self::Error> {
-        Ok(true)
-    }
-}
-
-type Client = (client::Handle<Trusting>, russh::Channel<client::Msg>);
-
-/// Logs in as a student and starts the explorer at `cols`×`rows`.
 async fn student(port: u16, cols: u32, rows: u32) -> Client {
-    let config = Arc::new(client::Config::default());
-    let mut h = client::connect(config, ("127.0.0.1", port), Trusting)
-        .await
-        .unwrap();
-    assert!(h.authenticate_none("carol").await.unwrap().success());
-    let ch = h.channel_open_session().await.unwrap();
-    ch.request_pty(true, "xterm", cols, rows, 0, 0, &[])
-        .await
-        .unwrap();
-    ch.request_shell(true).await.unwrap();
-    (h, ch)
+    client::student(port, "carol", cols, rows).await.unwrap()
 }
 
 /// Bytes of data until `pred` holds on all received so far (10 s at most).
-async fn read_until(ch: &mut russh::Channel<client::Msg>, pred: impl Fn(&str) -> bool) -> String {
+async fn read_until(
+    ch: &mut russh::Channel<russh::client::Msg>,
+    pred: impl Fn(&str) -> bool,
+) -> String {
     let mut all = Vec::new();
     let deadline = tokio::time::Instant::now() + Duration::from_secs(10);
     loop {
@@ -64,7 +43,7 @@ async fn read_until(ch: &mut russh::Channel<client::Msg>, pred: impl Fn(&str) ->
 }
 
 /// The exit status the session sends before it closes.
-async fn exit_status(ch: &mut russh::Channel<client::Msg>) -> Option<u32> {
+async fn exit_status(ch: &mut russh::Channel<russh::client::Msg>) -> Option<u32> {
     let deadline = tokio::time::Instant::now() + Duration::from_secs(10);
     let mut status = None;
     while let Ok(Some(msg)) = tokio::time::timeout_at(deadline, ch.wait()).await {

@@ -12,16 +12,10 @@ use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
 use common::serve::{have_ssh, Server};
-use common::tmux::{have_tmux, Pane};
+use common::tmux::{braille, have_tmux, Pane};
 
 fn ready() -> bool {
     have_ssh() && have_tmux()
-}
-
-fn braille(s: &str) -> usize {
-    s.chars()
-        .filter(|c| ('\u{2801}'..='\u{28FF}').contains(c))
-        .count()
 }
 
 /// The ζ at the marker, as the chart's title shows it ("ζ = 128").

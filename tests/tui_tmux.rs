@@ -10,13 +10,7 @@ use std::path::PathBuf;
 use std::process::Command;
 use std::time::{Duration, Instant};
 
-use common::tmux::{have_tmux, Pane};
-
-fn braille(s: &str) -> usize {
-    s.chars()
-        .filter(|c| ('\u{2801}'..='\u{28FF}').contains(c))
-        .count()
-}
+use common::tmux::{braille, have_tmux, Pane};
 
 #[test]
 fn explorer_under_tmux() {

@@ -208,7 +208,10 @@ fn draw_panel(f: &mut Frame, ron: &str) {
     // gets each line whole.
     let longest = ron.lines().map(|l| l.chars().count()).max().unwrap_or(0);
     let h = (lines.len() as u16 + 2).min(area.height);
-    let w = (longest as u16).saturating_add(2).clamp(40, 160).min(area.width);
+    let w = (longest as u16)
+        .saturating_add(2)
+        .clamp(40, 160)
+        .min(area.width);
     let r = Rect::new(
         area.x + (area.width - w) / 2,
         area.y + (area.height - h) / 2,

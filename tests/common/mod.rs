@@ -2,6 +2,7 @@
 //! parts it needs with `mod common;`).
 #![allow(dead_code)]
 
+pub mod client;
 pub mod serve;
 pub mod tmux;
 

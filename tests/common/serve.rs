@@ -111,14 +111,9 @@ impl Server {
         s
     }
 
-    /// A field of /proc/PID/status, e.g. `Threads` or `VmRSS` (in kB).
+    /// A field of /proc/PID/status of the server, e.g. `Threads`.
     pub fn proc_status(&self, field: &str) -> u64 {
-        let s = std::fs::read_to_string(format!("/proc/{}/status", self.pid())).unwrap();
-        s.lines()
-            .find_map(|l| l.strip_prefix(&format!("{field}:")))
-            .and_then(|v| v.split_whitespace().next())
-            .and_then(|v| v.parse().ok())
-            .unwrap_or_else(|| panic!("no {field} in /proc status"))
+        super::client::proc_status(self.pid(), field)
     }
 
     /// Open file descriptors of the server.
@@ -130,10 +125,7 @@ impl Server {
 
     /// CPU time (user + system) of the server, in clock ticks.
     pub fn cpu_ticks(&self) -> u64 {
-        let s = std::fs::read_to_string(format!("/proc/{}/stat", self.pid())).unwrap();
-        let after = &s[s.rfind(')').unwrap() + 2..];
-        let f: Vec<&str> = after.split_whitespace().collect();
-        f[11].parse::<u64>().unwrap() + f[12].parse::<u64>().unwrap()
+        super::client::cpu_ticks(self.pid())
     }
 }
 

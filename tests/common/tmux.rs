@@ -157,3 +157,10 @@ impl Drop for Pane {
         let _ = self.tmux(&["kill-server"]);
     }
 }
+
+/// Braille cells on a screen: how much of the chart is drawn.
+pub fn braille(s: &str) -> usize {
+    s.chars()
+        .filter(|c| ('\u{2801}'..='\u{28FF}').contains(c))
+        .count()
+}
