@@ -114,6 +114,39 @@ async fn connections_over_the_limits_are_closed() {
     read_until(&mut d, |s| s.contains("Readout")).await;
 }
 
+#[tokio::test]
+async fn a_stalled_client_is_cut_off() {
+    let dir = tempfile::tempdir().unwrap();
+    let srv = Server::start(dir.path(), &[]);
+    let fds0 = srv.fds();
+    // A client that never reads: full redraws fill every buffer on the way.
+    let (_h, ch) = student(srv.port, 500, 200).await;
+    let t = Instant::now();
+    for i in 0..2000u32 {
+        let resize = ch.window_change(500 - i % 2, 200, 0, 0);
+        if tokio::time::timeout(Duration::from_millis(200), resize)
+            .await
+            .is_err()
+        {
+            break;
+        }
+    }
+    // The server lets go of it: its socket closes though the client keeps
+    // the connection open.
+    let start = Instant::now();
+    while srv.fds() > fds0 {
+        assert!(
+            start.elapsed() < Duration::from_secs(30),
+            "the stalled client is still held"
+        );
+        tokio::time::sleep(Duration::from_millis(100)).await;
+    }
+    assert!(
+        t.elapsed() >= roughtui::serve::output::STALL,
+        "cut before the stall timeout"
+    );
+}
+
 /// `n` OpenSSH clients with a forced pty on a pipe, each past its first frame.
 fn clients(srv: &Server, n: usize) -> Vec<std::process::Child> {
     let mut v: Vec<_> = (0..n)

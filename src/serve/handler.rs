@@ -14,6 +14,7 @@ use tokio::sync::Notify;
 use super::auth::Role;
 use super::limits::clamp_size;
 use super::session::{self, Start};
+use super::stream::Kill;
 use super::Shared;
 
 /// Channel requests a connection may make before its shell starts; past
@@ -24,6 +25,7 @@ pub struct Handler {
     pub shared: Arc<Shared>,
     /// Told when the explorer starts (the login deadline stops).
     pub started: Arc<Notify>,
+    kill: Kill,
     role: Option<Role>,
     channel: Option<Channel<Msg>>,
     channel_opened: bool,
@@ -42,10 +44,11 @@ impl From<russh::Error> for Error {
 }
 
 impl Handler {
-    pub fn new(shared: Arc<Shared>, started: Arc<Notify>) -> Handler {
+    pub fn new(shared: Arc<Shared>, started: Arc<Notify>, kill: Kill) -> Handler {
         Handler {
             shared,
             started,
+            kill,
             role: None,
             channel: None,
             channel_opened: false,
@@ -160,6 +163,7 @@ impl russh::server::Handler for Handler {
             shared: Arc::clone(&self.shared),
             channel: ch,
             conn: session.handle(),
+            kill: self.kill.clone(),
             role,
             size,
         });

@@ -12,6 +12,7 @@ pub mod input;
 pub mod limits;
 pub mod output;
 pub mod session;
+pub mod stream;
 
 use std::net::SocketAddr;
 use std::path::PathBuf;
@@ -175,7 +176,8 @@ async fn connection(
     socket: tokio::net::TcpStream,
 ) {
     let started = Arc::new(Notify::new());
-    let handler = handler::Handler::new(shared, Arc::clone(&started));
+    let (socket, kill) = stream::Killable::new(socket);
+    let handler = handler::Handler::new(shared, Arc::clone(&started), kill.clone());
     let deadline = tokio::time::Instant::now() + LOGIN_DEADLINE;
     let setup =
         tokio::time::timeout_at(deadline, russh::server::run_stream(config, socket, handler));
@@ -197,6 +199,7 @@ async fn connection(
                 ),
             )
             .await;
+            kill.kill();
         }
     }
     let _ = running.await;

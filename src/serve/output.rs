@@ -15,6 +15,8 @@ use russh::server::{Handle, Msg};
 use russh::{ChannelWriteHalf, Disconnect};
 use tokio::sync::mpsc;
 
+use super::stream::Kill;
+
 /// How long a client may take to accept one frame.
 pub const STALL: Duration = Duration::from_secs(5);
 
@@ -48,11 +50,16 @@ pub type Slot = mpsc::Sender<Vec<u8>>;
 
 /// Starts the writer of `out`; it ends when the slot's sender is dropped
 /// (then it restores the client's terminal, sends exit status `0`, closes
-/// the channel and the connection) or when the client stalls or is gone.
-pub fn spawn(out: ChannelWriteHalf<Msg>, conn: Handle) -> Slot {
+/// the channel and the connection, cut after a grace period if the
+/// client does not let go) or when the client stalls or is gone.
+pub fn spawn(out: ChannelWriteHalf<Msg>, conn: Handle, kill: Kill) -> Slot {
     let (tx, rx) = mpsc::channel(1);
     tokio::spawn(async move {
-        write_frames(out, rx).await;
+        if !write_frames(out, rx).await {
+            // Stalled or gone: cut the connection now.
+            kill.kill();
+            return;
+        }
         // The explorer was the connection's only use. A client closes the
         // connection itself once the channel is closed; one that does not
         // is disconnected (an earlier disconnect would make OpenSSH report
@@ -67,16 +74,20 @@ pub fn spawn(out: ChannelWriteHalf<Msg>, conn: Handle) -> Slot {
             ),
         )
         .await;
+        // A client that neither reads nor lets go keeps nothing here.
+        tokio::time::sleep(STALL).await;
+        kill.kill();
     });
     tx
 }
 
-async fn write_frames(out: ChannelWriteHalf<Msg>, mut rx: mpsc::Receiver<Vec<u8>>) {
+/// Whether the session ended normally (not by a stalled or gone client).
+async fn write_frames(out: ChannelWriteHalf<Msg>, mut rx: mpsc::Receiver<Vec<u8>>) -> bool {
     while let Some(frame) = rx.recv().await {
         match tokio::time::timeout(STALL, out.data_bytes(frame)).await {
             Ok(Ok(())) => {}
             // Gone or stalled: drop the slot, which ends the explorer.
-            _ => return,
+            _ => return false,
         }
     }
     let mut bye = Vec::new();
@@ -88,4 +99,5 @@ async fn write_frames(out: ChannelWriteHalf<Msg>, mut rx: mpsc::Receiver<Vec<u8>
         let _ = out.close().await;
     })
     .await;
+    true
 }

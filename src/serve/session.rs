@@ -22,6 +22,7 @@ use super::follow::{Effect, Follow, Shown};
 use super::input::{self, Decoder};
 use super::limits::clamp_size;
 use super::output::{self, FrameBuf};
+use super::stream::Kill;
 use super::Shared;
 use crate::tui::app::{Message, Mode};
 use crate::tui::session::Session;
@@ -32,6 +33,7 @@ pub struct Start {
     pub shared: Arc<Shared>,
     pub channel: Channel<Msg>,
     pub conn: russh::server::Handle,
+    pub kill: Kill,
     pub role: Role,
     pub size: (u16, u16),
 }
@@ -48,11 +50,12 @@ async fn run(start: Start) {
         shared,
         channel,
         conn,
+        kill,
         role,
         size,
     } = start;
     let (mut read, write) = channel.split();
-    let slot = output::spawn(write, conn);
+    let slot = output::spawn(write, conn, kill);
     let buf = FrameBuf::default();
     let mut prelude = Vec::new();
     let _ = crossterm::execute!(prelude, EnterAlternateScreen, Hide);
