@@ -147,6 +147,25 @@ async fn a_stalled_client_is_cut_off() {
     );
 }
 
+#[tokio::test]
+async fn auth_attempts_are_bounded() {
+    let dir = tempfile::tempdir().unwrap();
+    let srv = Server::start(dir.path(), &[]);
+    let config = std::sync::Arc::new(russh::client::Config::default());
+    let mut h = russh::client::connect(config, ("127.0.0.1", srv.port), client::Trusting)
+        .await
+        .unwrap();
+    let mut tries = 0;
+    while let Ok(r) = h.authenticate_password("mallory", "guess").await {
+        assert!(!r.success(), "a password was accepted");
+        tries += 1;
+        assert!(tries <= 20, "the connection stays after {tries} attempts");
+    }
+    // Six are answered; the seventh, not looked at, ends the connection
+    // (the client reports that one as a failure too).
+    assert_eq!(tries, roughtui::serve::MAX_AUTH_ATTEMPTS + 1);
+}
+
 /// `n` OpenSSH clients with a forced pty on a pipe, each past its first frame.
 fn clients(srv: &Server, n: usize) -> Vec<std::process::Child> {
     let mut v: Vec<_> = (0..n)

@@ -122,7 +122,13 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
     } else {
         println!("no --lecturer-keys: everyone explores alone");
     }
-    println!("students: ssh -p {} {}", addr.port(), addr.ip());
+    // On all interfaces the students need the machine's own name.
+    let host = if addr.ip().is_unspecified() {
+        "HOST".to_string()
+    } else {
+        addr.ip().to_string()
+    };
+    println!("students: ssh -p {} {host}", addr.port());
     use std::io::Write;
     std::io::stdout().flush()?;
 
