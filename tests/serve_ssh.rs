@@ -135,6 +135,7 @@ fn students_follow_the_lecturer_until_they_explore() {
     lect.wait_text("Readout");
     let stud = Pane::start_shell("serve-stud", (100, 30), &srv.ssh_line("bob", &["-t"]));
     stud.wait_text("Readout");
+    stud.wait_text("following the lecturer");
     lect.keys(&["Right"]);
     lect.wait_for("lecturer moved", |s| zeta(s) == "178");
     stud.wait_for("student follows", |s| zeta(s) == "178");

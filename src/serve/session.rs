@@ -18,7 +18,7 @@ use tokio::sync::watch;
 use tokio::time::{sleep_until, Instant};
 
 use super::auth::Role;
-use super::follow::{Effect, Follow, Shown};
+use super::follow::{Effect, Follow, Shown, FOLLOWING};
 use super::input::{self, Decoder};
 use super::limits::clamp_size;
 use super::output::{self, FrameBuf};
@@ -72,6 +72,7 @@ async fn run(start: Start) {
         shared.lecturer_joined(&ex.app.state, ex.app.selected);
     } else if follow.following() {
         catch_up(&mut ex, &lecturer.borrow());
+        ex.app.set_status(FOLLOWING, false);
     }
     let mut decoder = Decoder::new();
     let mut panel: Option<Panel> = None;
@@ -126,7 +127,8 @@ async fn run(start: Start) {
                 let shown = lecturer.borrow_and_update().clone();
                 match follow.on_lecturer(shown.is_some()) {
                     Effect::Say(s) => ex.app.set_status(s, false),
-                    Effect::Catch | Effect::None => {}
+                    Effect::Catch => ex.app.set_status(FOLLOWING, false),
+                    Effect::None => {}
                 }
                 if let (true, Some(s)) = (follow.following(), &shown) {
                     // Watching the lecturer counts as activity.
@@ -174,7 +176,7 @@ fn on_key(
             Effect::Say(s) => ex.app.set_status(s, false),
             Effect::Catch => {
                 catch_up(ex, &lecturer.borrow());
-                ex.app.set_status(super::follow::FOLLOWING, false);
+                ex.app.set_status(FOLLOWING, false);
             }
             Effect::None => {}
         }
