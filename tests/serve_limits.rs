@@ -148,6 +148,23 @@ async fn a_stalled_client_is_cut_off() {
 }
 
 #[tokio::test]
+async fn a_second_channel_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let srv = Server::start(dir.path(), &[]);
+    let (h, mut ch) = student(srv.port, 80, 24).await;
+    read_until(&mut ch, |s| s.contains("Readout")).await;
+    let second = h.channel_open_session().await;
+    assert!(second.is_err(), "a second session channel was opened");
+    let fwd = h
+        .channel_open_direct_tcpip("127.0.0.1", u32::from(srv.port), "127.0.0.1", 1)
+        .await;
+    assert!(fwd.is_err(), "a direct-tcpip channel was opened");
+    // The first session goes on.
+    ch.data(&b"q"[..]).await.unwrap();
+    assert_eq!(exit_status(&mut ch).await, Some(0));
+}
+
+#[tokio::test]
 async fn auth_attempts_are_bounded() {
     let dir = tempfile::tempdir().unwrap();
     let srv = Server::start(dir.path(), &[]);
