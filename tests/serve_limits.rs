@@ -165,6 +165,37 @@ async fn a_second_channel_is_refused() {
 }
 
 #[tokio::test]
+async fn slow_logins_are_cut_off() {
+    let dir = tempfile::tempdir().unwrap();
+    let env = [("ROUGHTUI_LOGIN_DEADLINE_MS", "500")];
+    let srv = Server::start_env(dir.path(), &[], &env);
+    let fds0 = srv.fds();
+    // A connection that says nothing, and one that logs in but asks for no shell.
+    let mut mute = std::net::TcpStream::connect(("127.0.0.1", srv.port)).unwrap();
+    let config = std::sync::Arc::new(russh::client::Config::default());
+    let mut h = russh::client::connect(config, ("127.0.0.1", srv.port), client::Trusting)
+        .await
+        .unwrap();
+    assert!(h.authenticate_none("dave").await.unwrap().success());
+    let t = Instant::now();
+    mute.set_read_timeout(Some(Duration::from_secs(5))).unwrap();
+    let mut got = Vec::new();
+    // The server's banner, then the close.
+    let _ = mute.read_to_end(&mut got);
+    assert!(String::from_utf8_lossy(&got).starts_with("SSH-2.0-"));
+    assert!(t.elapsed() < Duration::from_secs(3), "{:?}", t.elapsed());
+    let start = Instant::now();
+    while srv.fds() > fds0 {
+        assert!(
+            start.elapsed() < Duration::from_secs(10),
+            "a slow login is still held"
+        );
+        tokio::time::sleep(Duration::from_millis(50)).await;
+    }
+    assert!(h.channel_open_session().await.is_err());
+}
+
+#[tokio::test]
 async fn auth_attempts_are_bounded() {
     let dir = tempfile::tempdir().unwrap();
     let srv = Server::start(dir.path(), &[]);

@@ -31,7 +31,16 @@ use follow::Shown;
 use limits::Limits;
 
 /// How long a connection may take from TCP connect to a running explorer.
+/// For tests, `ROUGHTUI_LOGIN_DEADLINE_MS` shortens it.
 pub const LOGIN_DEADLINE: Duration = Duration::from_secs(60);
+
+fn login_deadline() -> Duration {
+    std::env::var("ROUGHTUI_LOGIN_DEADLINE_MS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .map_or(LOGIN_DEADLINE, Duration::from_millis)
+        .min(LOGIN_DEADLINE)
+}
 
 /// Authentication attempts per connection.
 pub const MAX_AUTH_ATTEMPTS: usize = 6;
@@ -152,6 +161,7 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         lecturers: AtomicUsize::new(0),
     });
     let limits = Limits::new(opts.max_sessions, opts.max_per_address);
+    let login = login_deadline();
     loop {
         let (socket, peer) = match listener.accept().await {
             Ok(x) => x,
@@ -171,7 +181,7 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         let shared = Arc::clone(&shared);
         tokio::spawn(async move {
             let _permit = permit;
-            connection(config, shared, socket).await;
+            connection(config, shared, socket, login).await;
         });
     }
 }
@@ -180,11 +190,12 @@ async fn connection(
     config: Arc<russh::server::Config>,
     shared: Arc<Shared>,
     socket: tokio::net::TcpStream,
+    login: Duration,
 ) {
     let started = Arc::new(Notify::new());
     let (socket, kill) = stream::Killable::new(socket);
     let handler = handler::Handler::new(shared, Arc::clone(&started), kill.clone());
-    let deadline = tokio::time::Instant::now() + LOGIN_DEADLINE;
+    let deadline = tokio::time::Instant::now() + login;
     let setup =
         tokio::time::timeout_at(deadline, russh::server::run_stream(config, socket, handler));
     let Ok(Ok(running)) = setup.await else {

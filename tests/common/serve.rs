@@ -35,7 +35,13 @@ pub struct Server {
 impl Server {
     /// `roughtui serve` in `dir` (host key `dir/host_key`) with `args`.
     pub fn start(dir: &Path, args: &[&str]) -> Server {
+        Server::start_env(dir, args, &[])
+    }
+
+    /// The same with environment variables set.
+    pub fn start_env(dir: &Path, args: &[&str], env: &[(&str, &str)]) -> Server {
         let mut child = Command::new(BIN)
+            .envs(env.iter().copied())
             .current_dir(dir)
             .args(["serve", "--listen", "127.0.0.1:0", "--host-key"])
             .arg(dir.join("host_key"))
