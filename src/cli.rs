@@ -3,6 +3,7 @@
 use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
+use rough_model::Axis;
 
 #[derive(Debug, Parser)]
 #[command(
@@ -22,7 +23,8 @@ pub struct Cli {
 
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Print the scene's curves as CSV on stdout.
+    /// Print a view (slopes, indices, regime map, load) as CSV or SVG on
+    /// stdout; fig2 unless --preset or --load says otherwise.
     Export(ExportArgs),
     /// Time each way of computing the initial slopes against the reference data.
     Bench(BenchArgs),
@@ -45,10 +47,26 @@ pub struct Source {
 #[derive(Debug, Args)]
 pub struct ExportArgs {
     #[command(flatten)]
-    pub source: RequiredSource,
-    /// Number of points, both ends included.
-    #[arg(long, default_value_t = 200, value_parser = clap::value_parser!(u32).range(2..=10_000_000))]
-    pub points: u32,
+    pub source: Source,
+    /// What to export: the slopes against the swept parameter, the
+    /// plasticity indices, the regime map, or the areas against the load.
+    #[arg(long, value_enum, default_value_t = ViewArg::Slopes)]
+    pub view: ViewArg,
+    /// CSV numbers, or an SVG picture of the view.
+    #[arg(long, value_enum, default_value_t = FormatArg::Csv)]
+    pub format: FormatArg,
+    /// Points along the curve, both ends included (slopes, indices, load;
+    /// default 200).
+    #[arg(long, value_name = "N", allow_hyphen_values = true, value_parser = parse_points)]
+    pub points: Option<usize>,
+    /// Map cells across × up, both ends of each axis included (map only;
+    /// default 50x30).
+    #[arg(long, value_name = "COLSxROWS", value_parser = parse_grid)]
+    pub grid: Option<(usize, usize)>,
+    /// The map's y axis (map only; default h0-over-e, or zeta when H0/E is
+    /// swept).
+    #[arg(long, value_enum, value_name = "AXIS")]
+    pub map_y: Option<AxisArg>,
     /// Override the snapshot's model.
     #[arg(long, value_enum)]
     pub model: Option<ModelArg>,
@@ -56,24 +74,112 @@ pub struct ExportArgs {
     /// exact moments, or the paper's asymptotic ones (eq. 10).
     #[arg(long, value_enum)]
     pub moments: Option<MomentsArg>,
+    /// Override the snapshot's size effect (Ψ* and H_y when on, Ψ_P and H0
+    /// when off).
+    #[arg(long, value_enum, value_name = "on|off")]
+    pub size_effect: Option<OnOff>,
+    /// Override the snapshot's sweep, e.g. zeta:1:1e4 or h-rms:1e-9:1e-6 (SI
+    /// units).
+    #[arg(long, value_name = "AXIS:FROM:TO", value_parser = parse_sweep)]
+    pub sweep: Option<(Axis, f64, f64)>,
 }
 
-#[derive(Debug, Args, Clone)]
-#[group(required = true, multiple = false)]
-pub struct RequiredSource {
-    /// A built-in preset: fig1, fig2, fig3 or fig4.
-    #[arg(long, value_name = "NAME")]
-    pub preset: Option<String>,
-    /// A snapshot file (RON, schema version 1).
-    #[arg(long, value_name = "FILE")]
-    pub load: Option<PathBuf>,
+/// Most points an export computes along a curve.
+pub const MAX_POINTS: usize = 10_000_000;
+
+/// `--points`: one message for every bad value (0, -5, 1e9, abc).
+fn parse_points(s: &str) -> Result<usize, String> {
+    match s.trim().parse::<usize>() {
+        Ok(n) if (2..=MAX_POINTS).contains(&n) => Ok(n),
+        _ => Err(format!("must be a whole number from 2 to {MAX_POINTS}")),
+    }
 }
 
-impl From<RequiredSource> for Source {
-    fn from(r: RequiredSource) -> Source {
-        Source {
-            preset: r.preset,
-            load: r.load,
+/// `--grid COLSxROWS`, each side a whole number (checked against the map's
+/// limits when the map is built).
+fn parse_grid(s: &str) -> Result<(usize, usize), String> {
+    let bad = || "must be COLSxROWS, two whole numbers such as 50x30".to_string();
+    let (c, r) = s.split_once(['x', 'X']).ok_or_else(bad)?;
+    Ok((
+        c.trim().parse().map_err(|_| bad())?,
+        r.trim().parse().map_err(|_| bad())?,
+    ))
+}
+
+/// `--sweep AXIS:FROM:TO`; the range itself is checked against the axis's
+/// domain when the sweep is built.
+fn parse_sweep(s: &str) -> Result<(Axis, f64, f64), String> {
+    let names = || {
+        AxisArg::value_variants()
+            .iter()
+            .filter_map(|v| v.to_possible_value().map(|p| p.get_name().to_string()))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let parts: Vec<&str> = s.split(':').collect();
+    let [axis, from, to] = parts[..] else {
+        return Err("must be AXIS:FROM:TO, e.g. zeta:1:1e4".into());
+    };
+    let axis = AxisArg::from_str(axis.trim(), true)
+        .map_err(|_| format!("unknown axis '{axis}': one of {}", names()))?;
+    let num = |v: &str| {
+        v.trim()
+            .parse::<f64>()
+            .map_err(|_| format!("'{v}' is not a number (AXIS:FROM:TO, e.g. zeta:1:1e4)"))
+    };
+    Ok((axis.into(), num(from)?, num(to)?))
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ViewArg {
+    Slopes,
+    Indices,
+    Map,
+    Load,
+}
+
+impl From<ViewArg> for crate::figure::View {
+    fn from(v: ViewArg) -> Self {
+        use crate::figure::View;
+        match v {
+            ViewArg::Slopes => View::Slopes,
+            ViewArg::Indices => View::Indices,
+            ViewArg::Map => View::Map,
+            ViewArg::Load => View::Load,
+        }
+    }
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum FormatArg {
+    Csv,
+    Svg,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum OnOff {
+    On,
+    Off,
+}
+
+/// A parameter on the command line.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum AxisArg {
+    H0OverE,
+    HRms,
+    Zeta,
+    Hurst,
+    RStar,
+}
+
+impl From<AxisArg> for Axis {
+    fn from(a: AxisArg) -> Axis {
+        match a {
+            AxisArg::H0OverE => Axis::H0OverE,
+            AxisArg::HRms => Axis::HRms,
+            AxisArg::Zeta => Axis::Zeta,
+            AxisArg::Hurst => Axis::Hurst,
+            AxisArg::RStar => Axis::RStar,
         }
     }
 }

@@ -6,6 +6,7 @@ pub mod bench;
 pub mod cli;
 pub mod csv_number;
 pub mod export;
+pub mod figure;
 pub mod presets;
 pub mod serve;
 pub mod snapshot;

@@ -33,17 +33,9 @@ fn is_broken_pipe(e: &anyhow::Error) -> bool {
 fn run(cli: Cli) -> anyhow::Result<()> {
     match cli.command {
         Some(Command::Export(a)) => {
-            let mut state = load_source(&a.source.into())?;
-            if let Some(m) = a.model {
-                state.model = m.into();
-            }
-            if let Some(m) = a.moments {
-                state.moments = m.into();
-            }
-            state.check()?;
             let stdout = std::io::stdout();
             let mut out = BufWriter::with_capacity(1 << 16, stdout.lock());
-            export::write_csv(&mut out, &state, a.points as usize)
+            export::run(&a, &mut out)
         }
         Some(Command::Bench(a)) => roughtui::bench::run(&a),
         Some(Command::Serve(a)) => {

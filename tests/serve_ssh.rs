@@ -18,13 +18,13 @@ fn ready() -> bool {
     have_ssh() && have_tmux()
 }
 
-/// The ζ at the marker, as the chart's title shows it ("ζ = 128").
+/// The ζ on the swept slider's line ("▶ ζ    ↔       128  1…1e4").
 fn zeta(screen: &str) -> String {
-    let Some(i) = screen.find("ζ = ") else {
+    let Some(line) = screen.lines().find(|l| l.contains("ζ") && l.contains('↔')) else {
         return String::new();
     };
-    let rest = &screen[i + "ζ = ".len()..];
-    rest.split_whitespace().next().unwrap_or("").to_string()
+    let after = line.split('↔').nth(1).unwrap_or("");
+    after.split_whitespace().next().unwrap_or("").to_string()
 }
 
 /// An ssh with a forced pty whose stdin is a pipe: the server sees a 0×0
@@ -107,6 +107,8 @@ fn student_explores_over_ssh() {
     assert!(s.contains("version: 1"), "{s}");
     p.keys(&["Escape"]);
     p.wait_for("panel closed", |s| !s.contains("snapshot: copy it"));
+    p.keys(&["p"]);
+    p.wait_text("no pictures over SSH");
     let files: Vec<_> = std::fs::read_dir(dir.path())
         .unwrap()
         .map(|e| e.unwrap().file_name().into_string().unwrap())
@@ -139,6 +141,11 @@ fn students_follow_the_lecturer_until_they_explore() {
     lect.keys(&["Right"]);
     lect.wait_for("lecturer moved", |s| zeta(s) == "178");
     stud.wait_for("student follows", |s| zeta(s) == "178");
+    // The view follows too.
+    lect.keys(&["Tab"]);
+    stud.wait_text("plasticity indices vs ζ");
+    lect.keys(&["BTab"]);
+    stud.wait_for("back to slopes", |s| !s.contains("plasticity indices vs ζ"));
     // The student's first edit detaches.
     stud.keys(&["Right"]);
     stud.wait_text("exploring on your own — f to follow");

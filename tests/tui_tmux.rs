@@ -6,7 +6,7 @@
 
 mod common;
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::{Duration, Instant};
 
@@ -54,7 +54,7 @@ fn explorer_under_tmux() {
         assert!(braille(&s) > 30, "{name}:\n{s}");
     }
     p.keys(&["x"]);
-    p.wait_text("sweep H 0.05…1");
+    p.wait_text("H 0.05…1 · ");
     p.keys(&["m"]);
     p.wait_text("· exact ·"); // the presets use the paper's closed form
     p.keys(&["e"]);
@@ -201,38 +201,118 @@ fn no_color_draws_without_colour_codes() {
     assert!(!colour_codes(&String::from_utf8_lossy(&raw.stdout)).is_empty());
 }
 
-/// Key → drawn frame at 160×48, from the program's own frame log.
-#[test]
-fn key_to_frame_time_at_160x48() {
-    if !have_tmux() {
-        return;
-    }
+/// The microseconds of each handled event in a `ROUGHTUI_FRAME_LOG` file.
+fn frame_times(log: &Path) -> Vec<u64> {
+    std::fs::read_to_string(log)
+        .unwrap()
+        .lines()
+        .map(|l| l.parse().unwrap())
+        .collect()
+}
+
+/// Median and 90th percentile.
+fn median_p90(mut us: Vec<u64>) -> (u64, u64) {
+    us.sort_unstable();
+    (us[us.len() / 2], us[(us.len() * 9) / 10])
+}
+
+/// Key → drawn frame at 160×48 from the program's own frame log, in the
+/// view `tabs` Tab presses from the slopes: 36 keys cycling a step of the
+/// swept slider (twice: the marker moves), a selection, a step of h_rms
+/// (twice: what the view shows is recomputed) and a selection back. Returns
+/// (median, p90) in µs for the marker steps and for the recomputing steps.
+fn key_to_frame(name: &str, tabs: usize, title: &str) -> ((u64, u64), (u64, u64)) {
     let dir = tempfile::tempdir().unwrap();
     let log = dir.path().join("frames");
     let p = Pane::start(
-        "timing",
+        name,
         dir.path(),
         (160, 48),
         &[("ROUGHTUI_FRAME_LOG", log.to_str().unwrap())],
         &[],
     );
     p.wait_text("Readout");
-    // Alternate a swept step (marker only) with a non-swept one (curves).
-    for i in 0..20 {
-        let key = ["Right", "Left", "Up", "Right", "Left", "Down"][i % 6];
-        p.keys(&[key]);
-        std::thread::sleep(Duration::from_millis(40));
+    for _ in 0..tabs {
+        p.keys(&["Tab"]);
+    }
+    p.wait_text(title);
+    let keys = ["Right", "Left", "Up", "Right", "Left", "Down"];
+    for i in 0..36 {
+        p.keys(&[keys[i % 6]]);
+        std::thread::sleep(Duration::from_millis(60));
     }
     p.keys(&["q"]);
     assert_eq!(p.exit_status(), 0);
-    let mut us: Vec<u64> = std::fs::read_to_string(&log)
-        .unwrap()
-        .lines()
-        .map(|l| l.parse().unwrap())
-        .collect();
-    assert_eq!(us.len(), 20, "{us:?}");
-    us.sort_unstable();
-    let (median, max) = (us[us.len() / 2], us[us.len() - 1]);
-    eprintln!("key to frame at 160x48: median {median} µs, max {max} µs");
-    assert!(median < 100_000, "median {median} µs");
+    let us = frame_times(&log);
+    assert_eq!(us.len(), 36 + tabs, "{us:?}");
+    let steps = &us[tabs..];
+    let pick = |phase: [usize; 2]| -> Vec<u64> {
+        (0..steps.len())
+            .filter(|i| phase.contains(&(i % 6)))
+            .map(|i| steps[i])
+            .collect()
+    };
+    (median_p90(pick([0, 1])), median_p90(pick([3, 4])))
+}
+
+#[test]
+fn key_to_frame_time_at_160x48() {
+    if !have_tmux() {
+        return;
+    }
+    let ((m, m90), (r, r90)) = key_to_frame("timing", 0, "slope H0");
+    eprintln!(
+        "key to frame at 160x48: median {m} µs (p90 {m90} µs) moving the marker, \
+         median {r} µs (p90 {r90} µs) recomputing the curves"
+    );
+    assert!(r < 100_000, "median {r} µs");
+}
+
+/// Tab and Shift-Tab through all four views; the size-effect key redraws the
+/// regime map.
+#[test]
+fn tab_cycles_the_four_views() {
+    if !have_tmux() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let p = Pane::start("views", dir.path(), (80, 24), &[], &[]);
+    p.wait_text("slope H0·dA/dp̄/A0 vs ζ");
+    for (key, title) in [
+        ("Tab", "plasticity indices vs ζ"),
+        ("Tab", "plastic share over ζ × H0/E"),
+        ("Tab", "A/A0 vs p̄/H0"),
+        ("Tab", "slope H0·dA/dp̄/A0 vs ζ"),
+        ("BTab", "A/A0 vs p̄/H0"),
+        ("BTab", "plastic share over ζ × H0/E"),
+    ] {
+        p.keys(&[key]);
+        p.wait_text(title);
+    }
+    let s = p.wait_text("Ψ_P=1");
+    assert!(s.contains("▀") && s.contains("◆"), "{s}");
+    p.keys(&["e"]);
+    p.wait_text("Ψ*=1");
+    p.keys(&["y"]);
+    p.wait_text("plastic share over ζ × h_rms");
+    p.keys(&["Tab"]);
+    p.wait_text("A/A0 vs p̄/H_y");
+    p.keys(&["q"]);
+    assert_eq!(p.exit_status(), 0);
+}
+
+/// Key → drawn frame in the regime map view at 160×48: steps of the swept
+/// slider (the map only moves its point) and of another slider (the map is
+/// recomputed).
+#[test]
+fn key_to_frame_time_in_map_view_at_160x48() {
+    if !have_tmux() {
+        return;
+    }
+    let ((m, m90), (r, r90)) = key_to_frame("map-timing", 2, "plastic share over");
+    eprintln!(
+        "key to frame in map view at 160x48: median {m} µs (p90 {m90} µs) \
+         moving the point, median {r} µs (p90 {r90} µs) recomputing the map"
+    );
+    assert!(r < 1_000_000, "median {r} µs");
 }

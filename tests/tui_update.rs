@@ -3,29 +3,23 @@
 
 mod common;
 
-use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyEventState, KeyModifiers};
+use common::key;
+
+use crossterm::event::{KeyCode, KeyEventKind, KeyModifiers};
 use proptest::prelude::*;
 use ratatui::backend::TestBackend;
 use ratatui::Terminal;
-use rough_model::{Axis, Model};
+use rough_model::{Axis, Model, Moments};
 use roughtui::presets;
 use roughtui::snapshot::check_stem;
-use roughtui::tui::app::{step_value, update, App, Message, Mode};
+use roughtui::tui::app::{step_value, update, App, Message, Mode, HURST_ONE_ASYMPTOTIC};
+use roughtui::tui::fmt;
 use roughtui::tui::keys::{self, message_for_key};
+use roughtui::tui::layout::Regions;
 use roughtui::tui::theme::Theme;
-use roughtui::tui::view;
 
 fn fig(name: &str) -> App {
     App::new(presets::load(name).unwrap(), Theme::colored(), (80, 24))
-}
-
-fn key(code: KeyCode, mods: KeyModifiers) -> KeyEvent {
-    KeyEvent {
-        code,
-        modifiers: mods,
-        kind: KeyEventKind::Press,
-        state: KeyEventState::NONE,
-    }
 }
 
 fn press(app: &mut App, code: KeyCode, mods: KeyModifiers) {
@@ -49,7 +43,7 @@ fn screen(app: &App) -> String {
 fn opens_on_the_swept_slider_with_one_point_per_braille_column() {
     let a = fig("fig2");
     assert_eq!(a.selected_axis(), Axis::Zeta);
-    let g = view::graph_area((80, 24)).unwrap();
+    let g = Regions::of_size((80, 24)).unwrap().graph;
     assert_eq!(a.plot.points, 2 * g.width as usize);
     assert_eq!(a.recomputes, 1);
     // The paper's asymptotic moments keep ψ finite down to ζ = 1, so every
@@ -394,26 +388,26 @@ fn small_terminals_get_a_message_and_resizing_back_restores() {
     update(&mut a, Message::Resize(160, 48));
     assert_eq!(
         a.plot.points,
-        2 * view::graph_area((160, 48)).unwrap().width as usize
+        2 * Regions::of_size((160, 48)).unwrap().graph.width as usize
     );
 }
 
 #[test]
 fn numbers_are_formatted_with_units() {
-    assert_eq!(view::fmt_len(2e-8), "20.0 nm");
-    assert_eq!(view::fmt_len(1e-3), "1.00 mm");
-    assert_eq!(view::fmt_len(1.9676875762993e-5), "19.7 µm");
-    assert_eq!(view::fmt_short(Axis::HRms, 1e-5), "10 µm");
-    assert_eq!(view::fmt_short(Axis::RStar, 1e-2), "10 mm");
-    assert_eq!(view::fmt_short(Axis::H0OverE, 1e-4), "1e-4");
-    assert_eq!(view::fmt_short(Axis::Hurst, 0.05), "0.05");
-    assert_eq!(view::fmt_num(128.0), "128");
-    assert_eq!(view::fmt_num(0.0741847), "0.0742");
-    assert_eq!(view::fmt_num(7.5e-39), "7.50e-39");
-    assert_eq!(view::fmt_num(f64::INFINITY), "∞");
-    assert_eq!(view::fmt_rel(1.1, 1.0), "+10.0%");
-    assert_eq!(view::fmt_rel(f64::INFINITY, f64::INFINITY), "±0%");
-    assert_eq!(view::fmt_rel(1.0, 0.0), "n/a");
+    assert_eq!(fmt::fmt_len(2e-8), "20.0 nm");
+    assert_eq!(fmt::fmt_len(1e-3), "1.00 mm");
+    assert_eq!(fmt::fmt_len(1.9676875762993e-5), "19.7 µm");
+    assert_eq!(fmt::fmt_short(Axis::HRms, 1e-5), "10 µm");
+    assert_eq!(fmt::fmt_short(Axis::RStar, 1e-2), "10 mm");
+    assert_eq!(fmt::fmt_short(Axis::H0OverE, 1e-4), "1e-4");
+    assert_eq!(fmt::fmt_short(Axis::Hurst, 0.05), "0.05");
+    assert_eq!(fmt::fmt_num(128.0), "128");
+    assert_eq!(fmt::fmt_num(0.0741847), "0.0742");
+    assert_eq!(fmt::fmt_num(7.5e-39), "7.50e-39");
+    assert_eq!(fmt::fmt_num(f64::INFINITY), "∞");
+    assert_eq!(fmt::fmt_rel(1.1, 1.0), "+10.0%");
+    assert_eq!(fmt::fmt_rel(f64::INFINITY, f64::INFINITY), "±0%");
+    assert_eq!(fmt::fmt_rel(1.0, 0.0), "n/a");
 }
 
 fn any_message() -> impl Strategy<Value = Message> {
@@ -470,4 +464,54 @@ fn hostile_names_are_shown_and_prefilled_safely() {
         !stem.contains('/') && !stem.chars().any(char::is_control),
         "{stem}"
     );
+}
+
+#[test]
+fn readout_shows_epsilon_and_repulsive_diameter() {
+    // scripts/readout_reference.py (mpmath, asymptotic moments of eq. 10).
+    for (name, eps, d_rep) in [
+        ("fig2", 0.02091856688869314, 7.654655446197433e-7),
+        ("fig4", 1.5142976267524633, 9.797958971132713e-9),
+    ] {
+        let a = fig(name);
+        let sp = a.readout.surface.spectrum;
+        let (e, d) = (2.0 * sp.rms_slope, 4.0 * sp.rms_slope / sp.rms_curvature);
+        assert!((e / eps - 1.0).abs() < 1e-12, "{name}: ε {e} vs {eps}");
+        assert!(
+            (d / d_rep - 1.0).abs() < 1e-12,
+            "{name}: d_rep {d} vs {d_rep}"
+        );
+        let s = screen(&a);
+        let shown = format!("ε     {:<10}d_rep  {}", fmt::fmt_num(e), fmt::fmt_len(d));
+        assert!(s.contains(&shown), "{name}: {shown:?} in\n{s}");
+    }
+    assert!(screen(&fig("fig2")).contains("ε     0.0209    d_rep  765 nm"));
+}
+
+#[test]
+fn a_toggles_the_moments_and_refuses_hurst_one_with_asymptotic() {
+    let mut a = fig("fig2");
+    assert_eq!(a.state.moments, Moments::Asymptotic);
+    let asymptotic = a.readout.psi;
+    ch(&mut a, 'a');
+    assert_eq!(a.state.moments, Moments::Truncated);
+    assert!(a.modified);
+    assert!(screen(&a).contains("truncated moments"));
+    // Ψ_P at ζ = 128 on the truncated spectrum: (E/H0)√(m2/2) with
+    // m2 = πZq0^(2−2H)(ζ^(2−2H) − 1)/(2−2H) (scripts/readout_reference.py).
+    assert!((a.readout.psi / 0.48396447932992285 - 1.0).abs() < 1e-12);
+    assert!(a.readout.psi < asymptotic);
+    // H = 1 with truncated moments, then back to asymptotic: refused.
+    a.state.params = a.state.params.with(Axis::Hurst, 1.0).unwrap();
+    ch(&mut a, 'a');
+    assert_eq!(a.state.moments, Moments::Truncated);
+    assert!(a.status.as_ref().unwrap().error);
+    assert!(screen(&a).contains("H = 1 needs the truncated moments"));
+    // And stepping H up to 1 under asymptotic moments is refused too.
+    let mut a = fig("fig2");
+    a.state.params = a.state.params.with(Axis::Hurst, 0.95).unwrap();
+    a.selected = Axis::ALL.iter().position(|x| *x == Axis::Hurst).unwrap();
+    press(&mut a, KeyCode::Right, KeyModifiers::NONE);
+    assert_eq!(a.state.params.get(Axis::Hurst), 0.95);
+    assert_eq!(a.status.as_ref().unwrap().text, HURST_ONE_ASYMPTOTIC);
 }

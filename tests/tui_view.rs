@@ -103,7 +103,7 @@ fn hurst_and_r_star_sweeps_label_their_axes() {
     update(&mut a, Message::CycleSweep);
     let s = text(&draw(&a));
     assert!(
-        s.contains("0.1") && s.contains("1.0") && s.contains("sweep H 0.05…1"),
+        s.contains("0.1") && s.contains("1.0") && s.contains("H 0.05…1 · closed form"),
         "{s}"
     );
     update(&mut a, Message::CycleSweep);

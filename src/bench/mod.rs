@@ -14,11 +14,14 @@ use std::hint::black_box;
 use std::time::Instant;
 
 use rough_model::{Curves, Scene, SceneSpec};
+
+use crate::figure::{MapSpec, RegimeMap};
 use rough_study::compare::{accurate_range, max_error, methods, shipped_closed};
 use rough_study::{rel_err, slopes_reference, SLOPES_CSV};
 
 use crate::cli::BenchArgs;
-pub use table::{fmt_err, fmt_psi, render_table, Row, HEADER};
+use crate::figure::short_number;
+pub use table::{fmt_err, render_table, Row, HEADER};
 
 /// Median nanoseconds per point of `f` over `grid`, from `passes` timed
 /// passes after one untimed warm-up pass. A pass repeats the grid enough
@@ -77,12 +80,30 @@ fn time_scene(passes: u32) -> anyhow::Result<f64> {
     }))
 }
 
+/// Median µs of one regime map of `preset` at 200 × 60 cells (a
+/// 200-column terminal's map), computed afresh each time.
+fn time_map(preset: &str, passes: u32) -> anyhow::Result<f64> {
+    let state = crate::presets::load(preset)?;
+    let spec = MapSpec::of(&state, (200, 60), None)?;
+    Ok(time_call(passes.max(1), || {
+        RegimeMap::compute(black_box(&spec))
+    }))
+}
+
 /// The lines after the table that time whole computations, one each.
 fn timings(passes: u32) -> anyhow::Result<Vec<String>> {
-    Ok(vec![format!(
-        "scene fig2, exact, 4 curves × 400 points: {:.1} µs (median).",
-        time_scene(passes)?
-    )])
+    Ok(vec![
+        format!(
+            "scene fig2, exact, 4 curves × 400 points: {:.1} µs (median).",
+            time_scene(passes)?
+        ),
+        format!(
+            "regime map 200 × 60 cells, closed form: fig2 {:.2} ms, fig4 (size effect) {:.2} ms \
+             (median).",
+            time_map("fig2", passes)? / 1e3,
+            time_map("fig4", passes)? / 1e3
+        ),
+    ])
 }
 
 /// Measures every method and renders the table and its notes.
@@ -111,8 +132,8 @@ pub fn report(passes: u32) -> anyhow::Result<String> {
         "\n{} reference ψ (mpmath, {} … {}, and ψ = 0 for errors only); ns/point is the \
          median of {} timed passes; errors are the max over elastic, plastic and total.",
         reference.len(),
-        fmt_psi(lo),
-        fmt_psi(hi),
+        short_number(lo),
+        short_number(hi),
         passes.max(1)
     );
     let _ = writeln!(
@@ -197,5 +218,6 @@ mod tests {
         let shipped = rows.iter().find(|r| r.contains("shipped")).unwrap();
         assert!(shipped.contains("exact"));
         assert!(out.contains("scene fig2, exact, 4 curves × 400 points: "));
+        assert!(out.contains("regime map 200 × 60 cells, closed form: fig2 "));
     }
 }

@@ -4,6 +4,8 @@ use std::fmt::Write as _;
 
 use rough_study::compare::ErrorStat;
 
+use crate::figure::short_number;
+
 /// The table's header, fixed by the command's contract.
 pub const HEADER: &str = "| method | terms | ns/point | max rel error | worst psi |";
 
@@ -27,40 +29,14 @@ pub fn fmt_err(e: f64) -> String {
     }
 }
 
-/// ψ with four significant digits: plain between 1e-3 and 1e4, else `1.5e-8`.
-pub fn fmt_psi(v: f64) -> String {
-    if v == 0.0 || !v.is_finite() {
-        return format!("{v}");
-    }
-    let a = v.abs();
-    if (1e-3..1e4).contains(&a) {
-        let digits = (3 - a.log10().floor() as i32).max(0) as usize;
-        let t = format!("{v:.digits$}");
-        if t.contains('.') {
-            t.trim_end_matches('0').trim_end_matches('.').to_string()
-        } else {
-            t
-        }
-    } else {
-        let t = format!("{v:.3e}");
-        let (m, e) = t.split_once('e').unwrap_or((&t, "0"));
-        let m = if m.contains('.') {
-            m.trim_end_matches('0').trim_end_matches('.')
-        } else {
-            m
-        };
-        format!("{m}e{e}")
-    }
-}
-
 /// A range of ψ from [`rough_study::compare::accurate_range`] as text.
 pub fn fmt_range(range: Option<(f64, f64, bool)>) -> String {
     match range {
         None => "nowhere".into(),
         Some((a, b, all)) => format!(
             "ψ from {} to {}{}",
-            fmt_psi(a),
-            fmt_psi(b),
+            short_number(a),
+            short_number(b),
             if all { " (all ψ > 0)" } else { "" }
         ),
     }
@@ -80,7 +56,7 @@ pub fn render_table(rows: &[Row]) -> String {
             r.terms,
             r.ns_per_point,
             fmt_err(r.err.max),
-            fmt_psi(r.err.worst_psi)
+            short_number(r.err.worst_psi)
         );
     }
     s
@@ -93,13 +69,6 @@ mod tests {
 
     #[test]
     fn psi_format() {
-        assert_eq!(fmt_psi(0.55), "0.55");
-        assert_eq!(fmt_psi(12.090201005025126), "12.09");
-        assert_eq!(fmt_psi(1.998), "1.998");
-        assert_eq!(fmt_psi(1e-308), "1e-308");
-        assert_eq!(fmt_psi(1.7976931348623157e308), "1.798e308");
-        assert_eq!(fmt_psi(2.6023616895101482e-2), "0.02602");
-        assert_eq!(fmt_psi(0.0), "0");
         assert_eq!(fmt_err(3.2e-15), "3.2e-15");
         assert_eq!(fmt_range(None), "nowhere");
         assert_eq!(

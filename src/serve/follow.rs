@@ -2,15 +2,36 @@
 //! (a [`Shown`]) on a latest-value channel, so a slow student never queues
 //! anything; each student's [`Follow`] decides whether to show it.
 
+use rough_model::Axis;
+
+use crate::figure::View;
 use crate::snapshot::State;
-use crate::tui::app::Message;
+use crate::tui::app::{App, Message};
 
 /// What a lecturer's explorer shows: the scene (parameters, sweep, model,
-/// moments) and the selected slider.
+/// moments), the selected slider, the view and the map's y axis.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Shown {
     pub state: State,
     pub selected: usize,
+    pub view: View,
+    pub map_y: Option<Axis>,
+}
+
+impl Shown {
+    pub fn of(app: &App) -> Shown {
+        Shown {
+            state: app.state.clone(),
+            selected: app.selected,
+            view: app.view,
+            map_y: app.map_y,
+        }
+    }
+
+    /// Makes `app` show this.
+    pub fn apply(&self, app: &mut App) {
+        app.show(&self.state, self.selected, self.view, self.map_y);
+    }
 }
 
 /// The status line a student sees when leaving the lecturer.
@@ -103,6 +124,10 @@ fn edits(msg: &Message) -> bool {
             | M::CycleSweep
             | M::ToggleModel
             | M::ToggleSizeEffect
+            | M::ToggleMoments
+            | M::NextView
+            | M::PrevView
+            | M::NextMapY
     )
 }
 
@@ -132,6 +157,8 @@ mod tests {
         assert_eq!(f.on_follow_key(), Effect::Catch);
         assert!(f.following());
         assert_eq!(f.on_message(&Message::SelectNext), Effect::Say(DETACHED));
+        f.on_follow_key();
+        assert_eq!(f.on_message(&Message::NextView), Effect::Say(DETACHED));
     }
 
     #[test]

@@ -69,16 +69,13 @@ pub struct Shared {
 }
 
 impl Shared {
-    fn lecturer_joined(&self, state: &State, selected: usize) {
+    fn lecturer_joined(&self, app: &crate::tui::app::App) {
         self.lecturers.fetch_add(1, Ordering::SeqCst);
-        self.publish(state, selected);
+        self.publish(app);
     }
 
-    fn publish(&self, state: &State, selected: usize) {
-        let shown = Shown {
-            state: state.clone(),
-            selected,
-        };
+    fn publish(&self, app: &crate::tui::app::App) {
+        let shown = Shown::of(app);
         self.follow.send_if_modified(|cur| {
             if cur.as_ref() == Some(&shown) {
                 return false;

@@ -42,6 +42,9 @@ pub fn spawn(start: Start) {
     tokio::spawn(run(start));
 }
 
+/// What a student's picture key says instead of writing on the server.
+pub const NO_PICTURE: &str = "no pictures over SSH: s shows the snapshot to copy";
+
 /// A student's snapshot text, shown instead of written to the server's disk.
 struct Panel(String);
 
@@ -69,7 +72,7 @@ async fn run(start: Start) {
     let mut follow = Follow::start(lecturer.borrow_and_update().is_some());
     let is_lecturer = role == Role::Lecturer;
     if is_lecturer {
-        shared.lecturer_joined(&ex.app.state, ex.app.selected);
+        shared.lecturer_joined(&ex.app);
     } else if follow.following() {
         catch_up(&mut ex, &lecturer.borrow());
         ex.app.set_status(FOLLOWING, false);
@@ -106,7 +109,7 @@ async fn run(start: Start) {
                             break;
                         }
                         if is_lecturer && dirty {
-                            shared.publish(&ex.app.state, ex.app.selected);
+                            shared.publish(&ex.app);
                         }
                     }
                     ChannelMsg::WindowChange { col_width, row_height, .. } => {
@@ -190,6 +193,11 @@ fn on_key(
             *panel = Some(Panel(ex.app.state.to_ron()));
             return true;
         }
+        if msg == Message::SavePicture {
+            // Nothing is written on the server for a student.
+            ex.app.set_status(NO_PICTURE, false);
+            return true;
+        }
         if let Effect::Say(s) = follow.on_message(&msg) {
             // The edit applies first; the status says what happened.
             let ok = ex.update(msg).is_ok();
@@ -202,7 +210,7 @@ fn on_key(
 
 fn catch_up(ex: &mut Session<FrameBuf>, shown: &Option<Shown>) {
     if let Some(s) = shown {
-        ex.app.show(&s.state, s.selected);
+        s.apply(&mut ex.app);
     }
 }
 

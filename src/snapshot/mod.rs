@@ -55,7 +55,7 @@ use serde::{Deserialize, Deserializer, Serialize, Serializer};
 pub use error::{
     Expected, Invalid, LoadError, LoadProblem, ParseProblem, SnapshotError, TextProblem,
 };
-pub use save::{check_stem, default_stem, save_new, MAX_STEM_BYTES};
+pub use save::{check_stem, default_stem, save_file_new, save_new, MAX_STEM_BYTES};
 
 /// The only schema version this build reads and writes.
 pub const VERSION: u32 = 1;

@@ -92,18 +92,36 @@ pub fn save_new(dir: &Path, stem: &str, state: &State) -> anyhow::Result<PathBuf
     state
         .check()
         .map_err(|e| anyhow::anyhow!("cannot save snapshot: {e}"))?;
-    save_with(dir, stem, state.to_ron().as_bytes(), |f, b| f.write_all(b))
+    save_with(
+        dir,
+        (stem, "ron", "snapshot"),
+        state.to_ron().as_bytes(),
+        |f, b| f.write_all(b),
+    )
+}
+
+/// Writes `bytes` to `dir/{stem}.{ext}` under the rules of [`save_new`]
+/// (never overwriting, a temporary file linked into place); `what` names
+/// the file in errors ("picture"). Returns the path written.
+pub fn save_file_new(
+    dir: &Path,
+    stem: &str,
+    ext: &str,
+    what: &str,
+    bytes: &[u8],
+) -> anyhow::Result<PathBuf> {
+    save_with(dir, (stem, ext, what), bytes, |f, b| f.write_all(b))
 }
 /// [`save_new`] with the write step given, so that tests can make it fail.
 fn save_with(
     dir: &Path,
-    stem: &str,
+    (stem, ext, what): (&str, &str, &str),
     bytes: &[u8],
     write: impl Fn(&mut File, &[u8]) -> io::Result<()>,
 ) -> anyhow::Result<PathBuf> {
-    let stem = check_stem(stem).map_err(|e| anyhow::anyhow!("cannot save snapshot: {e}"))?;
+    let stem = check_stem(stem).map_err(|e| anyhow::anyhow!("cannot save {what}: {e}"))?;
     let d = shown(dir);
-    let in_dir = |e: io::Error| anyhow::anyhow!("cannot save snapshot in {d}: {e}");
+    let in_dir = |e: io::Error| anyhow::anyhow!("cannot save {what} in {d}: {e}");
 
     // 1. A fresh temporary file of our own.
     let (tmp, mut file) = {
@@ -130,9 +148,9 @@ fn save_with(
     let result = (|| {
         for n in 1..10_000u32 {
             let target = dir.join(if n == 1 {
-                format!("{stem}.ron")
+                format!("{stem}.{ext}")
             } else {
-                format!("{stem}-{n}.ron")
+                format!("{stem}-{n}.{ext}")
             });
             match std::fs::hard_link(&tmp, &target) {
                 Ok(()) => return Ok(target),
@@ -154,7 +172,7 @@ fn save_with(
                 Err(e) => return Err(in_dir(e)),
             }
         }
-        anyhow::bail!("cannot save snapshot in {d}: too many snapshots named {stem}")
+        anyhow::bail!("cannot save {what} in {d}: too many {what}s named {stem}")
     })();
     let _ = std::fs::remove_file(&tmp);
     if result.is_ok() {
@@ -200,10 +218,15 @@ mod tests {
     #[test]
     fn failed_write_leaves_no_file_behind() {
         let dir = tempfile::tempdir().unwrap();
-        let err = save_with(dir.path(), "full", b"(version: 1)", |f, b| {
-            f.write_all(&b[..4])?;
-            Err(io::Error::from_raw_os_error(28)) // ENOSPC
-        })
+        let err = save_with(
+            dir.path(),
+            ("full", "ron", "snapshot"),
+            b"(version: 1)",
+            |f, b| {
+                f.write_all(&b[..4])?;
+                Err(io::Error::from_raw_os_error(28)) // ENOSPC
+            },
+        )
         .unwrap_err()
         .to_string();
         assert!(err.contains("cannot save snapshot in"), "{err}");
@@ -216,11 +239,16 @@ mod tests {
     fn a_file_created_during_the_save_is_not_replaced() {
         let dir = tempfile::tempdir().unwrap();
         let theirs = dir.path().join("race.ron");
-        let path = save_with(dir.path(), "race", b"ours\n", |f, b| {
-            // Someone else takes the name after any check we could have made.
-            std::fs::write(&theirs, "theirs\n")?;
-            f.write_all(b)
-        })
+        let path = save_with(
+            dir.path(),
+            ("race", "ron", "snapshot"),
+            b"ours\n",
+            |f, b| {
+                // Someone else takes the name after any check we could have made.
+                std::fs::write(&theirs, "theirs\n")?;
+                f.write_all(b)
+            },
+        )
         .unwrap();
         assert_eq!(path, dir.path().join("race-2.ron"));
         assert_eq!(std::fs::read_to_string(&theirs).unwrap(), "theirs\n");

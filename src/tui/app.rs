@@ -5,12 +5,12 @@
 use std::path::PathBuf;
 use std::time::SystemTime;
 
-use rough_model::{
-    persson_elastic, slopes, Axis, Curves, Scene, SceneSpec, Slopes, Surface, Sweep,
-};
+use rough_model::{persson_elastic, slopes, Axis, Curves, SceneSpec, Slopes, Surface, Sweep};
 
+use super::layout::Regions;
+use super::plots::{compute_indices, compute_load, compute_plot, IndexPlot, LoadPlot, Plot};
 use super::theme::Theme;
-use super::view;
+use crate::figure::{claims, render_svg, Claim, FigureOptions, MapCache, MapSpec, View};
 use crate::presets;
 use crate::snapshot::{self, State};
 
@@ -29,6 +29,15 @@ pub enum Message {
     CycleSweep,
     ToggleModel,
     ToggleSizeEffect,
+    /// Truncated / asymptotic spectrum moments.
+    ToggleMoments,
+    /// Tab / Shift-Tab: the next or previous view.
+    NextView,
+    PrevView,
+    /// Another y axis for the regime map.
+    NextMapY,
+    /// Write the current view as an SVG picture into the save folder.
+    SavePicture,
     StartSave,
     ToggleHelp,
     CloseHelp,
@@ -53,23 +62,6 @@ pub enum Mode {
 pub struct Status {
     pub text: String,
     pub error: bool,
-}
-
-/// The curves as the chart draws them: transformed to the plot's axes
-/// (log10 of both values; Hurst stays linear), non-finite and non-positive
-/// points dropped.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Plot {
-    pub elastic: Vec<(f64, f64)>,
-    pub plastic: Vec<(f64, f64)>,
-    pub total: Vec<(f64, f64)>,
-    pub persson: Vec<(f64, f64)>,
-    /// Transformed x range (the sweep's ends).
-    pub x_bounds: [f64; 2],
-    /// Transformed y range, whole decades.
-    pub y_bounds: [f64; 2],
-    /// Points sampled per curve: the chart's braille dot columns.
-    pub points: usize,
 }
 
 /// Everything the readout shows, at the current parameters.
@@ -98,11 +90,15 @@ impl Readout {
     }
 }
 
-/// What the curves depend on; they are recomputed only when it changes.
+/// What the curves along the sweep depend on; they are recomputed only
+/// when it changes.
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct CurveKey {
     spec: SceneSpec,
 }
+
+/// What the load view depends on: the state at the marker and the points.
+type LoadKey = (rough_model::Params, SceneSpec);
 
 pub struct App {
     pub state: State,
@@ -113,7 +109,18 @@ pub struct App {
     /// Terminal size, columns × rows.
     pub size: (u16, u16),
     pub theme: Theme,
+    /// The chart on screen.
+    pub view: View,
+    /// The regime map's y axis (`None`: H0/E, or ζ when H0/E is swept).
+    pub map_y: Option<Axis>,
+    /// The slopes view's curves.
     pub plot: Plot,
+    pub indices: IndexPlot,
+    pub load: LoadPlot,
+    /// The regime map, computed only when something it depends on changes.
+    pub map: MapCache,
+    /// The figure's checkable claims at the current parameters.
+    pub claims: Vec<Claim>,
     pub readout: Readout,
     /// Where `s` saves.
     pub save_dir: PathBuf,
@@ -123,6 +130,9 @@ pub struct App {
     /// How many times the curves were computed (for tests of the cache).
     pub recomputes: usize,
     key: Option<CurveKey>,
+    indices_key: Option<CurveKey>,
+    load_key: Option<LoadKey>,
+    claims_key: Option<CurveKey>,
 }
 
 /// The default range of each parameter, for its slider and when `x` makes it
@@ -183,13 +193,22 @@ impl App {
             status: None,
             size,
             theme,
+            view: View::Slopes,
+            map_y: None,
             plot: Plot::default(),
+            indices: IndexPlot::default(),
+            load: LoadPlot::default(),
+            map: MapCache::new(),
+            claims: Vec::new(),
             readout,
             save_dir: std::env::current_dir().unwrap_or_else(|_| PathBuf::from(".")),
             modified: false,
             quit: false,
             recomputes: 0,
             key: None,
+            indices_key: None,
+            load_key: None,
+            claims_key: None,
         };
         app.selected = Axis::ALL
             .iter()
@@ -228,20 +247,71 @@ impl App {
         CurveKey { spec }
     }
 
-    /// Recomputes the readout, and the curves when what they depend on changed.
+    /// The regime map's spec at the current state on a grid of `graph`'s
+    /// cells, two points per cell up (half blocks).
+    pub fn map_spec(&self, graph: ratatui::layout::Rect) -> Option<MapSpec> {
+        let grid = (usize::from(graph.width), usize::from(graph.height) * 2);
+        // A y axis that became the swept one falls back to the default.
+        let y = self.map_y.filter(|a| *a != self.state.sweep.axis());
+        MapSpec::of(&self.state, grid, y).ok()
+    }
+
+    /// Recomputes the readout, and what the chart on screen and the claims
+    /// line show when what they depend on changed.
     fn refresh(&mut self) {
         self.readout = Readout::of(&self.state);
-        let Some(graph) = view::graph_area(self.size) else {
+        let Some(regions) = Regions::of_size(self.size) else {
             return;
         };
-        let points = (usize::from(graph.width) * 2).max(2);
+        let points = (usize::from(regions.graph.width) * 2).max(2);
         let key = self.curve_key(points);
-        if self.key == Some(key) {
-            return;
+        let claims_key = self.curve_key(2);
+        if self.claims_key != Some(claims_key) {
+            self.claims = claims(&self.state);
+            self.claims_key = Some(claims_key);
         }
-        self.plot = compute_plot(&key.spec);
-        self.key = Some(key);
-        self.recomputes += 1;
+        match self.view {
+            View::Slopes if self.key != Some(key) => {
+                self.plot = compute_plot(&key.spec);
+                self.key = Some(key);
+                self.recomputes += 1;
+            }
+            View::Indices if self.indices_key != Some(key) => {
+                self.indices = compute_indices(&self.state, points);
+                self.indices_key = Some(key);
+            }
+            View::Load => {
+                let load_key = (self.state.params, key.spec);
+                if self.load_key != Some(load_key) {
+                    self.load = compute_load(&self.state, points);
+                    self.load_key = Some(load_key);
+                }
+            }
+            View::Map => {
+                if let Some(spec) = self.map_spec(regions.graph) {
+                    self.map.get(&spec);
+                }
+            }
+            _ => {}
+        }
+    }
+
+    /// Writes the current view as an SVG picture into the save folder, under
+    /// the snapshot save's rules (never overwriting, written atomically).
+    fn save_picture(&mut self) {
+        let opts = FigureOptions {
+            map_y: self.map_y.filter(|a| *a != self.state.sweep.axis()),
+            ..FigureOptions::default()
+        };
+        let name = format!("{}-{}", self.state.name, self.view.name());
+        let stem = snapshot::default_stem(&name, SystemTime::now());
+        let saved = render_svg(self.view, &self.state, &opts).and_then(|svg| {
+            snapshot::save_file_new(&self.save_dir, &stem, "svg", "picture", svg.as_bytes())
+        });
+        match saved {
+            Ok(path) => self.set_status(format!("saved {}", path.display()), false),
+            Err(e) => self.set_status(format!("{e:#}"), true),
+        }
     }
 
     pub fn set_status(&mut self, text: impl Into<String>, error: bool) {
@@ -251,12 +321,19 @@ impl App {
         });
     }
 
-    /// Shows `state` with slider `selected` selected, as another session
-    /// has it (a followed lecturer's explorer).
-    pub fn show(&mut self, state: &State, selected: usize) {
-        if self.state != *state || self.selected != selected {
+    /// Shows what another session shows (a followed lecturer's explorer):
+    /// its scene, selected slider, view and map axis.
+    pub fn show(&mut self, state: &State, selected: usize, view: View, map_y: Option<Axis>) {
+        let selected = selected % Axis::ALL.len();
+        if self.state != *state
+            || self.selected != selected
+            || self.view != view
+            || self.map_y != map_y
+        {
             self.state = state.clone();
-            self.selected = selected % Axis::ALL.len();
+            self.selected = selected;
+            self.view = view;
+            self.map_y = map_y;
             self.refresh();
         }
     }
@@ -269,62 +346,10 @@ impl App {
     }
 }
 
-/// Transforms a value for a plot axis: log10 for log axes.
-pub fn to_plot(axis_is_log: bool, v: f64) -> f64 {
-    if axis_is_log {
-        v.log10()
-    } else {
-        v
-    }
-}
-
-/// The smallest and largest decade the y axis may show (1e-3 … 1e2, as in
-/// the paper's figures).
-pub const Y_DECADES: (f64, f64) = (-3.0, 2.0);
-
-fn compute_plot(spec: &SceneSpec) -> Plot {
-    let log_x = spec.sweep.axis().is_log();
-    let x_bounds = [
-        to_plot(log_x, spec.sweep.from()),
-        to_plot(log_x, spec.sweep.to()),
-    ];
-    let mut plot = Plot {
-        x_bounds,
-        y_bounds: [Y_DECADES.0, Y_DECADES.1],
-        points: spec.points,
-        ..Plot::default()
-    };
-    let Ok(scene) = Scene::compute(spec) else {
-        return plot;
-    };
-    let curve = |ys: &[f64]| -> Vec<(f64, f64)> {
-        scene
-            .x
-            .iter()
-            .zip(ys)
-            .filter(|(x, y)| x.is_finite() && y.is_finite() && **y > 0.0 && (!log_x || **x > 0.0))
-            .map(|(x, y)| (to_plot(log_x, *x), y.log10()))
-            .collect()
-    };
-    plot.elastic = curve(&scene.elastic);
-    plot.plastic = curve(&scene.plastic);
-    plot.total = curve(&scene.total);
-    plot.persson = curve(&scene.persson_elastic);
-    let ys = || {
-        [&plot.elastic, &plot.plastic, &plot.total, &plot.persson]
-            .into_iter()
-            .flatten()
-            .map(|p| p.1)
-    };
-    let lo = ys().fold(f64::INFINITY, f64::min);
-    let hi = ys().fold(f64::NEG_INFINITY, f64::max);
-    if lo.is_finite() && hi.is_finite() {
-        let lo = lo.floor().clamp(Y_DECADES.0, Y_DECADES.1 - 1.0);
-        let hi = hi.ceil().clamp(lo + 1.0, Y_DECADES.1);
-        plot.y_bounds = [lo, hi];
-    }
-    plot
-}
+/// Why H = 1 and the asymptotic moments do not go together, in the
+/// explorer's words (the model's error names the snapshot field).
+pub const HURST_ONE_ASYMPTOTIC: &str =
+    "H = 1 needs the truncated moments (the asymptotic m2 is infinite there)";
 
 /// The one place that changes an [`App`].
 pub fn update(app: &mut App, msg: Message) {
@@ -337,6 +362,9 @@ pub fn update(app: &mut App, msg: Message) {
             let old = app.state.params.get(axis);
             let v = step_value(axis, old, app.range(axis), up, fine);
             match app.state.params.with(axis, v) {
+                Ok(p) if app.state.moments.check(&p).is_err() => {
+                    app.set_status(HURST_ONE_ASYMPTOTIC, true)
+                }
                 Ok(p) => {
                     if p != app.state.params {
                         app.state.params = p;
@@ -382,6 +410,24 @@ pub fn update(app: &mut App, msg: Message) {
             app.state.size_effect = !app.state.size_effect;
             app.modified = true;
         }
+        Message::ToggleMoments => {
+            let moments = app.state.moments.other();
+            if moments.check(&app.state.params).is_ok() {
+                app.state.moments = moments;
+                app.modified = true;
+            } else {
+                app.set_status(HURST_ONE_ASYMPTOTIC, true);
+            }
+        }
+        Message::NextView => app.view = app.view.next(),
+        Message::PrevView => app.view = app.view.prev(),
+        Message::NextMapY => {
+            let graph = Regions::of_size(app.size).map(|r| r.graph);
+            if let Some(spec) = graph.and_then(|g| app.map_spec(g)) {
+                app.map_y = Some(spec.next_y());
+            }
+        }
+        Message::SavePicture => app.save_picture(),
         Message::StartSave => {
             // The prefill is a file name: no separators or control characters.
             let name: String = app

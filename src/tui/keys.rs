@@ -91,176 +91,63 @@ pub struct Binding {
     pub footer: Option<&'static str>,
 }
 
-use KeyCode::{Backspace, Down, Enter, Esc, Left, Right, Up};
+use Context::{Help, Main, MainAndHelp, Prompt};
+use KeyCode::{BackTab, Backspace, Down, Enter, Esc, Left, Right, Tab, Up};
 use Message as M;
 
+const fn bind(
+    context: Context,
+    keys: &'static [(Key, Message)],
+    label: &'static str,
+    help: &'static str,
+    footer: Option<&'static str>,
+) -> Binding {
+    Binding {
+        context,
+        keys,
+        label,
+        help,
+        footer,
+    }
+}
+
+const DOWN: Message = M::Step {
+    up: false,
+    fine: false,
+};
+const UP: Message = M::Step {
+    up: true,
+    fine: false,
+};
+const FINE_DOWN: Message = M::Step {
+    up: false,
+    fine: true,
+};
+const FINE_UP: Message = M::Step {
+    up: true,
+    fine: true,
+};
+
+#[rustfmt::skip]
 pub const BINDINGS: &[Binding] = &[
-    Binding {
-        context: Context::Main,
-        keys: &[
-            (key(Up), M::SelectPrev),
-            (ch('k'), M::SelectPrev),
-            (key(Down), M::SelectNext),
-            (ch('j'), M::SelectNext),
-        ],
-        label: "↑ ↓  k j",
-        help: "select a slider",
-        footer: Some("↑↓ select"),
-    },
-    Binding {
-        context: Context::Main,
-        keys: &[
-            (
-                key(Left),
-                M::Step {
-                    up: false,
-                    fine: false,
-                },
-            ),
-            (
-                ch('h'),
-                M::Step {
-                    up: false,
-                    fine: false,
-                },
-            ),
-            (
-                key(Right),
-                M::Step {
-                    up: true,
-                    fine: false,
-                },
-            ),
-            (
-                ch('l'),
-                M::Step {
-                    up: true,
-                    fine: false,
-                },
-            ),
-        ],
-        label: "← →  h l",
-        help: "change it (¼ decade; H: 0.05)",
-        footer: Some("←→ change"),
-    },
-    Binding {
-        context: Context::Main,
-        keys: &[
-            (
-                shift(Left),
-                M::Step {
-                    up: false,
-                    fine: true,
-                },
-            ),
-            (
-                ch('H'),
-                M::Step {
-                    up: false,
-                    fine: true,
-                },
-            ),
-            (
-                shift(Right),
-                M::Step {
-                    up: true,
-                    fine: true,
-                },
-            ),
-            (
-                ch('L'),
-                M::Step {
-                    up: true,
-                    fine: true,
-                },
-            ),
-        ],
-        label: "⇧← ⇧→  H L",
-        help: "fine step (1/40 decade; H: 0.01)",
-        footer: Some("⇧ fine"),
-    },
-    Binding {
-        context: Context::Main,
-        keys: &[
-            (ch('1'), M::LoadPreset(0)),
-            (ch('2'), M::LoadPreset(1)),
-            (ch('3'), M::LoadPreset(2)),
-            (ch('4'), M::LoadPreset(3)),
-        ],
-        label: "1 2 3 4",
-        help: "load the paper's fig1 … fig4",
-        footer: Some("1-4 figs"),
-    },
-    Binding {
-        context: Context::Main,
-        keys: &[(ch('x'), M::CycleSweep)],
-        label: "x",
-        help: "sweep the next parameter",
-        footer: Some("x sweep"),
-    },
-    Binding {
-        context: Context::Main,
-        keys: &[(ch('m'), M::ToggleModel)],
-        label: "m",
-        help: "exact / closed-form model",
-        footer: Some("m model"),
-    },
-    Binding {
-        context: Context::Main,
-        keys: &[(ch('e'), M::ToggleSizeEffect)],
-        label: "e",
-        help: "size effect on / off",
-        footer: Some("e size"),
-    },
-    Binding {
-        context: Context::Main,
-        keys: &[(ch('s'), M::StartSave)],
-        label: "s",
-        help: "save a snapshot here (.ron)",
-        footer: Some("s save"),
-    },
-    Binding {
-        context: Context::MainAndHelp,
-        keys: &[(ch('?'), M::ToggleHelp)],
-        label: "?",
-        help: "show / hide this help",
-        footer: Some("? help"),
-    },
-    Binding {
-        context: Context::Help,
-        keys: &[(key(Esc), M::CloseHelp)],
-        label: "Esc",
-        help: "close the help",
-        footer: None,
-    },
-    Binding {
-        context: Context::MainAndHelp,
-        keys: &[(ch('q'), M::Quit), (ctrl('c'), M::Quit)],
-        label: "q  Ctrl-C",
-        help: "quit",
-        footer: Some("q quit"),
-    },
-    Binding {
-        context: Context::Prompt,
-        keys: &[(key(Backspace), M::PromptBackspace)],
-        label: "text ⌫",
-        help: "edit the snapshot name",
-        footer: None,
-    },
-    Binding {
-        context: Context::Prompt,
-        keys: &[(key(Enter), M::PromptAccept)],
-        label: "Enter",
-        help: "save under that name",
-        footer: None,
-    },
-    Binding {
-        context: Context::Prompt,
-        keys: &[(key(Esc), M::PromptCancel), (ctrl('c'), M::PromptCancel)],
-        label: "Esc",
-        help: "cancel the save",
-        footer: None,
-    },
+    bind(Main, &[(key(Up), M::SelectPrev), (ch('k'), M::SelectPrev), (key(Down), M::SelectNext), (ch('j'), M::SelectNext)], "↑ ↓  k j", "select a slider", Some("↑↓ select")),
+    bind(Main, &[(key(Left), DOWN), (ch('h'), DOWN), (key(Right), UP), (ch('l'), UP)], "← →  h l", "change it (¼ decade; H: 0.05)", Some("←→ change")),
+    bind(Main, &[(shift(Left), FINE_DOWN), (ch('H'), FINE_DOWN), (shift(Right), FINE_UP), (ch('L'), FINE_UP)], "⇧← ⇧→  H L", "fine step (1/40 decade; H: 0.01)", None),
+    bind(Main, &[(key(Tab), M::NextView), (shift(BackTab), M::PrevView), (key(BackTab), M::PrevView)], "Tab ⇧Tab", "next / previous view: slopes, indices, map, load", Some("Tab view")),
+    bind(Main, &[(ch('1'), M::LoadPreset(0)), (ch('2'), M::LoadPreset(1)), (ch('3'), M::LoadPreset(2)), (ch('4'), M::LoadPreset(3))], "1 2 3 4", "load the paper's fig1 … fig4", Some("1-4 figs")),
+    bind(Main, &[(ch('x'), M::CycleSweep)], "x", "sweep the next parameter", Some("x sweep")),
+    bind(Main, &[(ch('m'), M::ToggleModel)], "m", "exact / closed-form model", Some("m model")),
+    bind(Main, &[(ch('e'), M::ToggleSizeEffect)], "e", "size effect on / off", Some("e size")),
+    bind(Main, &[(ch('a'), M::ToggleMoments)], "a", "truncated / asymptotic moments (eq. 10)", Some("a moments")),
+    bind(Main, &[(ch('y'), M::NextMapY)], "y", "the regime map's next y parameter", None),
+    bind(Main, &[(ch('s'), M::StartSave)], "s", "save a snapshot here (.ron)", Some("s save")),
+    bind(Main, &[(ch('p'), M::SavePicture)], "p", "save the view as a picture here (.svg)", Some("p picture")),
+    bind(MainAndHelp, &[(ch('?'), M::ToggleHelp)], "?", "show / hide this help", Some("? help")),
+    bind(Help, &[(key(Esc), M::CloseHelp)], "Esc", "close the help", None),
+    bind(MainAndHelp, &[(ch('q'), M::Quit), (ctrl('c'), M::Quit)], "q  Ctrl-C", "quit", Some("q quit")),
+    bind(Prompt, &[(key(Backspace), M::PromptBackspace)], "text ⌫", "edit the snapshot name", None),
+    bind(Prompt, &[(key(Enter), M::PromptAccept)], "Enter", "save under that name", None),
+    bind(Prompt, &[(key(Esc), M::PromptCancel), (ctrl('c'), M::PromptCancel)], "Esc", "cancel the save", None),
 ];
 
 /// The message a key sends in the app's current mode, if any.
@@ -293,11 +180,29 @@ pub fn message_for_event(app: &App, ev: &Event) -> Option<Message> {
     }
 }
 
-/// The footer entries for a mode, in table order.
-pub fn footer(mode: &Mode) -> Vec<&'static str> {
-    BINDINGS
+/// The footer for a mode in `width` columns: the entries in table order,
+/// those that do not fit left out, but the help key's always kept.
+pub fn footer(mode: &Mode, width: usize) -> String {
+    let entries: Vec<(&str, bool)> = BINDINGS
         .iter()
         .filter(|b| b.context.covers(mode))
-        .filter_map(|b| b.footer)
-        .collect()
+        .filter_map(|b| {
+            let help = b.keys.iter().any(|(_, m)| *m == Message::ToggleHelp);
+            b.footer.map(|f| (f, help))
+        })
+        .collect();
+    let len = |e: &str| e.chars().count() + 2;
+    let mut reserved: usize = entries.iter().filter(|e| e.1).map(|e| len(e.0)).sum();
+    let mut used = 0;
+    let mut parts = Vec::new();
+    for (entry, keep) in entries {
+        if keep {
+            reserved -= len(entry);
+        } else if used + len(entry) + reserved > width + 2 {
+            continue;
+        }
+        used += len(entry);
+        parts.push(entry);
+    }
+    parts.join("  ")
 }

@@ -3,11 +3,14 @@
 //! something, so an idle session writes nothing to the terminal.
 
 pub mod app;
+pub mod fmt;
 pub mod keys;
+pub mod layout;
+pub mod plots;
 pub mod session;
 pub mod term;
 pub mod theme;
-pub mod view;
+pub mod views;
 
 use std::io::Write;
 use std::time::Instant;

@@ -26,6 +26,14 @@ pub struct Theme {
     pub persson: CurveStyle,
     /// The vertical line at the swept parameter's current value.
     pub marker_line: CurveStyle,
+    /// The index view's curves and its line at Ψ = 1.
+    pub psi_gw: CurveStyle,
+    pub psi_p: CurveStyle,
+    pub psi_star: CurveStyle,
+    pub psi_asy: CurveStyle,
+    pub psi_one: CurveStyle,
+    /// The load view's initial-slope line from the origin.
+    pub tangent: CurveStyle,
     pub selected: Style,
     pub title: Style,
     pub dim: Style,
@@ -55,6 +63,22 @@ impl Theme {
                 marker: Marker::Custom('│'),
                 sample: "│",
             },
+            psi_gw: curve("Ψ_GW", Color::Magenta),
+            psi_p: curve("Ψ_P", Color::Blue),
+            psi_star: curve("Ψ*", Color::Red),
+            psi_asy: curve("Ψ*asy eq.13", Color::Yellow),
+            psi_one: CurveStyle {
+                name: "Ψ = 1",
+                style: Style::new().fg(Color::DarkGray),
+                marker: Marker::Braille,
+                sample: "··",
+            },
+            tangent: CurveStyle {
+                name: "initial slope",
+                style: Style::new().fg(Color::DarkGray),
+                marker: Marker::Braille,
+                sample: "··",
+            },
             selected: Style::new()
                 .add_modifier(Modifier::REVERSED)
                 .add_modifier(Modifier::BOLD),
@@ -80,6 +104,12 @@ impl Theme {
             total: curve("total", Marker::Braille, "⠒⠒"),
             persson: curve("Persson elastic", Marker::Custom('o'), "oo"),
             marker_line: curve("marker", Marker::Custom('│'), "│"),
+            psi_gw: curve("Ψ_GW", Marker::Custom('x'), "xx"),
+            psi_p: curve("Ψ_P", Marker::Custom('+'), "++"),
+            psi_star: curve("Ψ*", Marker::Braille, "⠒⠒"),
+            psi_asy: curve("Ψ*asy eq.13", Marker::Custom('o'), "oo"),
+            psi_one: curve("Ψ = 1", Marker::Custom('·'), "··"),
+            tangent: curve("initial slope", Marker::Custom('·'), "··"),
             selected: Style::new()
                 .add_modifier(Modifier::REVERSED)
                 .add_modifier(Modifier::BOLD),

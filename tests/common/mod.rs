@@ -45,3 +45,16 @@ pub fn buffer_text(t: &Terminal<TestBackend>) -> String {
     }
     s
 }
+
+/// A key press as crossterm reports it.
+pub fn key(
+    code: crossterm::event::KeyCode,
+    mods: crossterm::event::KeyModifiers,
+) -> crossterm::event::KeyEvent {
+    crossterm::event::KeyEvent {
+        code,
+        modifiers: mods,
+        kind: crossterm::event::KeyEventKind::Press,
+        state: crossterm::event::KeyEventState::NONE,
+    }
+}

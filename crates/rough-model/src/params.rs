@@ -61,6 +61,17 @@ impl Axis {
         }
     }
 
+    /// The parameter's symbol for labels: "H0/E", "h_rms", "ζ", "H", "R*".
+    pub fn symbol(self) -> &'static str {
+        match self {
+            Axis::H0OverE => "H0/E",
+            Axis::HRms => "h_rms",
+            Axis::Zeta => "ζ",
+            Axis::Hurst => "H",
+            Axis::RStar => "R*",
+        }
+    }
+
     /// Whether sweeps along this axis are log-spaced (all but the Hurst exponent).
     pub fn is_log(self) -> bool {
         !matches!(self, Axis::Hurst)

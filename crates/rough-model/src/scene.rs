@@ -140,7 +140,7 @@ impl Sweep {
             }
             (a + (b - a) * t).exp()
         } else {
-            a + (b - a) * t
+            decimal_grid(a + (b - a) * t)
         };
         v.clamp(self.from, self.to)
     }
@@ -149,6 +149,20 @@ impl Sweep {
     pub fn points(&self, n: usize) -> impl Iterator<Item = f64> + '_ {
         let last = n.saturating_sub(1).max(1) as f64;
         (0..n).map(move |i| self.at(i as f64 / last))
+    }
+}
+
+/// `v`, or the 12-digit decimal within 2 ulp of it: the points of a
+/// linear grid between short decimals (0.1 to 0.9) are then those decimals
+/// (0.3, not 0.30000000000000004), and other points move by at most 2 ulp.
+#[cold]
+fn decimal_grid(v: f64) -> f64 {
+    let short: f64 = format!("{v:.11e}").parse().unwrap_or(v);
+    let ulp = f64::EPSILON * v.abs().max(f64::MIN_POSITIVE);
+    if (short - v).abs() <= 2.0 * ulp {
+        short
+    } else {
+        v
     }
 }
 

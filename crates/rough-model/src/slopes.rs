@@ -66,7 +66,15 @@ pub struct Slopes {
     pub total: f64,
 }
 
-/// Contact regime from the plastic share of the initial slope.
+/// Below this plastic share S_pl/S_tot the contact is called elastic: this
+/// program's threshold, not the paper's (the paper sets none).
+pub const ELASTIC_BELOW: f64 = 0.1;
+/// Above this plastic share the contact is called plastic (this program's
+/// threshold, like [`ELASTIC_BELOW`]).
+pub const PLASTIC_ABOVE: f64 = 0.9;
+
+/// Contact regime from the plastic share of the initial slope
+/// ([`ELASTIC_BELOW`], [`PLASTIC_ABOVE`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Regime {
     /// Plastic share below 10 %.
@@ -111,9 +119,9 @@ impl Slopes {
     /// Below 10 % plastic share elastic, above 90 % plastic.
     pub fn regime(&self) -> Regime {
         let s = self.plastic_share();
-        if s < 0.1 {
+        if s < ELASTIC_BELOW {
             Regime::Elastic
-        } else if s > 0.9 {
+        } else if s > PLASTIC_ABOVE {
             Regime::Plastic
         } else {
             Regime::ElastoPlastic

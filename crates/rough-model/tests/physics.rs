@@ -369,3 +369,35 @@ fn sweeps_between_decades_hit_them_exactly() {
     let s = Sweep::new(Axis::Zeta, 2.0, 2e4).unwrap();
     assert!((s.at(0.25) / 20.0 - 1.0).abs() < 1e-15);
 }
+
+/// Linear grids between short decimals hit those decimals (0.3, not
+/// 0.30000000000000004); any other point moves by at most 2 ulp.
+#[test]
+fn linear_sweeps_hit_short_decimals() {
+    let s = Sweep::new(Axis::Hurst, 0.1, 0.9).unwrap();
+    let v: Vec<f64> = s.points(9).collect();
+    assert_eq!(v, [0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9]);
+    let s = Sweep::new(Axis::Hurst, 0.3, 0.9).unwrap();
+    assert_eq!(s.points(41).nth(3), Some(0.345));
+}
+
+proptest! {
+    #[test]
+    fn linear_sweep_points_stay_within_2_ulp_and_in_order(
+        a in 0.001f64..0.5, w in 0.001f64..0.5, n in 2usize..500,
+    ) {
+        let b = a + w;
+        let s = Sweep::new(Axis::Hurst, a, b).unwrap();
+        let v: Vec<f64> = s.points(n).collect();
+        prop_assert_eq!(v[0], a);
+        prop_assert_eq!(v[n - 1], b);
+        for (i, &x) in v.iter().enumerate() {
+            let t = i as f64 / (n - 1) as f64;
+            let plain = (a + (b - a) * t).clamp(a, b);
+            prop_assert!((x - plain).abs() <= 2.0 * f64::EPSILON * plain, "{} vs {}", x, plain);
+            if i > 0 {
+                prop_assert!(x >= v[i - 1]);
+            }
+        }
+    }
+}

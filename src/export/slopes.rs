@@ -1,4 +1,5 @@
-//! `roughtui export`: the scene's curves as CSV.
+//! `roughtui export --view slopes`: the scene's curves as CSV, computed and
+//! formatted on several threads.
 
 use std::io::Write;
 

@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Regenerates the README's pictures in docs/ with the program itself.
+# Run from the repository root: scripts/gen_docs.sh
+set -euo pipefail
+cargo build --release --quiet
+bin=target/release/roughtui
+for view in slopes indices map load; do
+    "$bin" export --preset fig2 --view "$view" --format svg > "docs/fig2-$view.svg"
+done
+"$bin" export --preset fig3 --view map --format svg > docs/fig3-map.svg
+"$bin" export --preset fig4 --view map --format svg > docs/fig4-map.svg
+echo "wrote docs/*.svg" >&2

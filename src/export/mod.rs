@@ -1,0 +1,113 @@
+//! `roughtui export`: any view as CSV or SVG on stdout.
+//!
+//! The state comes from `--preset`/`--load` (fig2 when neither is given)
+//! with `--model`, `--moments`, `--size-effect` and `--sweep` applied on
+//! top. Options that do not apply to the chosen view are refused, so that
+//! a mistyped command never silently prints something else.
+
+mod slopes;
+mod views;
+
+use std::io::Write;
+
+use anyhow::bail;
+use rough_model::Sweep;
+
+pub use slopes::{write_csv, HEADER};
+pub use views::{write_indices, write_load, write_map, INDICES_HEADER, LOAD_HEADER, MAP_HEADER};
+
+use crate::cli::{ExportArgs, FormatArg, OnOff};
+use crate::figure::{render_svg, FigureOptions, View, DEFAULT_GRID};
+use crate::snapshot::State;
+
+/// Points along a curve when `--points` is not given.
+pub const DEFAULT_POINTS: usize = 200;
+
+/// Most points of a curve in a picture (a 900-pixel-wide chart needs far
+/// fewer; more would only make the file large).
+pub const MAX_SVG_POINTS: usize = 20_000;
+
+/// The state `args` describe: the source with every override applied,
+/// checked.
+pub fn state_of(args: &ExportArgs) -> anyhow::Result<State> {
+    let mut state = crate::load_source(&args.source)?;
+    if let Some(m) = args.model {
+        state.model = m.into();
+    }
+    if let Some(m) = args.moments {
+        state.moments = m.into();
+    }
+    let scene = (state.size_effect, state.sweep);
+    if let Some(s) = args.size_effect {
+        state.size_effect = s == OnOff::On;
+    }
+    if let Some((axis, from, to)) = args.sweep {
+        state.sweep = Sweep::new(axis, from, to).map_err(|e| anyhow::anyhow!("--sweep: {e}"))?;
+    }
+    if scene != (state.size_effect, state.sweep) {
+        // The caption describes the scene as saved; a picture of another
+        // one is titled by its name alone (the title names the settings).
+        state.caption = None;
+    }
+    state.check()?;
+    Ok(state)
+}
+
+/// The view's options from `args`, refusing those that do not apply.
+pub fn options_of(args: &ExportArgs) -> anyhow::Result<(View, FigureOptions)> {
+    let view = View::from(args.view);
+    let name = view.name();
+    if view == View::Load && args.sweep.is_some() {
+        bail!(
+            "--sweep does not apply to --view load: it shows the areas at the current parameters"
+        );
+    }
+    if view == View::Map {
+        if args.points.is_some() {
+            bail!("--points does not apply to --view map: its size is --grid COLSxROWS");
+        }
+    } else {
+        for (given, opt) in [
+            (args.grid.is_some(), "--grid"),
+            (args.map_y.is_some(), "--map-y"),
+        ] {
+            if given {
+                bail!("{opt} applies only to --view map, not to --view {name}");
+            }
+        }
+    }
+    Ok((
+        view,
+        FigureOptions {
+            points: args.points.unwrap_or(DEFAULT_POINTS),
+            grid: args.grid.unwrap_or(DEFAULT_GRID),
+            map_y: args.map_y.map(Into::into),
+        },
+    ))
+}
+
+/// Runs `roughtui export`: writes the view to `out`. Every refusal happens
+/// before anything is written.
+pub fn run(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
+    let (view, opts) = options_of(args)?;
+    let state = state_of(args)?;
+    if args.format == FormatArg::Svg {
+        if opts.points > MAX_SVG_POINTS {
+            bail!(
+                "--points {} is too many for --format svg: at most {MAX_SVG_POINTS} \
+                 (CSV takes up to 10000000)",
+                opts.points
+            );
+        }
+        let svg = render_svg(view, &state, &opts)?;
+        out.write_all(svg.as_bytes())?;
+        out.flush()?;
+        return Ok(());
+    }
+    match view {
+        View::Slopes => write_csv(out, &state, opts.points),
+        View::Indices => write_indices(out, &state, opts.points),
+        View::Map => write_map(out, &state, &opts),
+        View::Load => write_load(out, &state, opts.points),
+    }
+}

@@ -1,0 +1,116 @@
+//! CSV of the index, map and load views. Undefined values (eq. 13 at
+//! R* = 0) are empty fields; numbers are in [`crate::csv_number`]'s form.
+
+use std::io::Write;
+
+use crate::csv_number;
+use crate::figure::{FigureOptions, IndexSeries, LoadCurve, MapSpec, RegimeMap};
+use crate::snapshot::State;
+
+/// The index view's CSV header, fixed by the command's contract.
+pub const INDICES_HEADER: &str = "x,psi_gw,psi_p,psi_star,psi_star_asymptotic,hardness_ratio";
+/// The map's CSV header (one row per cell, x fastest).
+pub const MAP_HEADER: &str = "x,y,psi,elastic,plastic,total,plastic_share";
+/// The load view's CSV header.
+pub const LOAD_HEADER: &str = "load,elastic,plastic,total";
+
+/// Rows computed and written at a time, so memory stays bounded.
+const BLOCK: usize = 1 << 14;
+
+/// Appends one CSV line; `None` is an empty field.
+fn push_row(buf: &mut String, fields: &[Option<f64>]) {
+    for (k, v) in fields.iter().enumerate() {
+        if k > 0 {
+            buf.push(',');
+        }
+        if let Some(v) = v {
+            csv_number::push(buf, *v);
+        }
+    }
+    buf.push('\n');
+}
+
+/// Writes `header`, then the rows `block(range, buf)` formats, block by block.
+fn write_blocks(
+    out: &mut impl Write,
+    header: &str,
+    points: usize,
+    mut block: impl FnMut(std::ops::Range<usize>, &mut String) -> anyhow::Result<()>,
+) -> anyhow::Result<()> {
+    // Fail before the header if the request itself is bad.
+    block(0..0, &mut String::new())?;
+    writeln!(out, "{header}")?;
+    let mut buf = String::new();
+    let mut start = 0;
+    while start < points {
+        let end = (start + BLOCK).min(points);
+        buf.clear();
+        block(start..end, &mut buf)?;
+        out.write_all(buf.as_bytes())?;
+        start = end;
+    }
+    out.flush()?;
+    Ok(())
+}
+
+/// The indices of `state` at `points` points of its sweep.
+pub fn write_indices(out: &mut impl Write, state: &State, points: usize) -> anyhow::Result<()> {
+    write_blocks(out, INDICES_HEADER, points, |range, buf| {
+        let s = IndexSeries::compute_range(state, points, range)?;
+        for i in 0..s.len() {
+            push_row(
+                buf,
+                &[
+                    Some(s.x[i]),
+                    Some(s.psi_gw[i]),
+                    Some(s.psi_p[i]),
+                    Some(s.psi_star[i]),
+                    s.psi_star_asymptotic[i],
+                    Some(s.hardness_ratio[i]),
+                ],
+            );
+        }
+        Ok(())
+    })
+}
+
+/// The areas of `state` at `points` loads from 0 to 1.
+pub fn write_load(out: &mut impl Write, state: &State, points: usize) -> anyhow::Result<()> {
+    write_blocks(out, LOAD_HEADER, points, |range, buf| {
+        let c = LoadCurve::compute_range(state, points, range)?;
+        for i in 0..c.load.len() {
+            let row = [c.load[i], c.elastic[i], c.plastic[i], c.total[i]];
+            push_row(buf, &row.map(Some));
+        }
+        Ok(())
+    })
+}
+
+/// The regime map of `state` on `opts.grid` with `opts.map_y` up: rows from
+/// the bottom of the y range, x fastest.
+pub fn write_map(out: &mut impl Write, state: &State, opts: &FigureOptions) -> anyhow::Result<()> {
+    let spec = MapSpec::of(state, opts.grid, opts.map_y)?;
+    let m = RegimeMap::compute(&spec);
+    writeln!(out, "{MAP_HEADER}")?;
+    let mut buf = String::new();
+    for row in 0..spec.rows {
+        buf.clear();
+        let y = spec.y_at(row);
+        for col in 0..spec.cols {
+            let k = row * spec.cols + col;
+            let fields = [
+                spec.x_at(col),
+                y,
+                m.psi[k],
+                m.elastic[k],
+                m.plastic[k],
+                m.total[k],
+                m.share[k],
+            ];
+            push_row(&mut buf, &fields.map(Some));
+        }
+        out.write_all(buf.as_bytes())?;
+    }
+    out.flush()?;
+    Ok(())
+}

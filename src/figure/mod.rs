@@ -1,0 +1,141 @@
+//! What the explorer's views and `roughtui export` show, computed without
+//! any terminal code: the index series, the load curve, the regime map and
+//! the claims a preset's caption makes, plus the SVG picture of any view.
+//!
+//! Every number here comes from the model crate (`rough_model`): this module
+//! only arranges grids and sweeps around it. The views cycle in the order of
+//! [`View::ALL`] (slopes → indices → map → load).
+//!
+//! - [`IndexSeries`]: Ψ_GW, Ψ_P, Ψ*, eq. 13's Ψ*asy and H_y/H0 along the sweep.
+//! - [`LoadCurve`]: A/A0 elastic, plastic, total against p̄/H in [0, 1] at
+//!   the current parameters, with the initial-slope line from the origin.
+//! - [`MapSpec`], [`RegimeMap`], [`MapCache`]: the plastic share S_pl/S_tot
+//!   over the swept parameter (across) and a second parameter (up), cached
+//!   so that it is recomputed only when something it depends on changes.
+//! - [`share_colour`], [`share_char`]: the map's sequential colour scale and
+//!   its NO_COLOR character ramp; [`ELASTIC_BELOW`], [`PLASTIC_ABOVE`]: this
+//!   program's regime thresholds (the paper sets none).
+//! - [`claims`]: where the plastic share passes ½ and where the index in use
+//!   crosses 1 along the sweep, located by bisection.
+//! - [`render_svg`]: any view as a self-contained SVG document (the
+//!   explorer saves it with `snapshot::save_file_new`).
+
+mod claims;
+mod colour;
+mod map;
+mod number;
+mod series;
+mod svg;
+
+pub use claims::{claims, Claim, ClaimKind};
+pub use colour::{share_char, share_colour, RAMP};
+pub use map::{MapCache, MapSpec, RegimeMap, DEFAULT_GRID};
+pub use number::short_number;
+pub use rough_model::slopes::{ELASTIC_BELOW, PLASTIC_ABOVE};
+pub use series::{IndexSeries, LoadCurve};
+pub use svg::render_svg;
+
+use rough_model::Axis;
+
+/// One of the explorer's charts, each exportable as CSV or SVG.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum View {
+    /// Initial slopes of the contact areas against the swept parameter.
+    #[default]
+    Slopes,
+    /// The plasticity indices against the swept parameter.
+    Indices,
+    /// The regime map: plastic share over two parameters.
+    Map,
+    /// Contact areas against the load at the current parameters.
+    Load,
+}
+
+impl View {
+    /// Every view, in Tab order.
+    pub const ALL: [View; 4] = [View::Slopes, View::Indices, View::Map, View::Load];
+
+    /// The view's name on the command line (`--view NAME`).
+    pub fn name(self) -> &'static str {
+        match self {
+            View::Slopes => "slopes",
+            View::Indices => "indices",
+            View::Map => "map",
+            View::Load => "load",
+        }
+    }
+
+    /// The view called `name` (as [`View::name`] gives it).
+    pub fn parse(name: &str) -> Option<View> {
+        View::ALL.into_iter().find(|v| v.name() == name)
+    }
+
+    /// The next view in Tab order (after load comes slopes).
+    pub fn next(self) -> View {
+        let i = View::ALL.iter().position(|&v| v == self).unwrap_or(0);
+        View::ALL[(i + 1) % View::ALL.len()]
+    }
+
+    /// The previous view in Tab order (Shift-Tab).
+    pub fn prev(self) -> View {
+        let i = View::ALL.iter().position(|&v| v == self).unwrap_or(0);
+        View::ALL[(i + View::ALL.len() - 1) % View::ALL.len()]
+    }
+}
+
+/// What a view needs besides the state: grid sizes and the map's y axis.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FigureOptions {
+    /// Points along a curve (slopes, indices, load), both ends included.
+    pub points: usize,
+    /// Map cells across and up.
+    pub grid: (usize, usize),
+    /// The map's y axis; `None` picks [`MapSpec::default_y`].
+    pub map_y: Option<Axis>,
+}
+
+impl Default for FigureOptions {
+    fn default() -> Self {
+        FigureOptions {
+            points: 200,
+            grid: DEFAULT_GRID,
+            map_y: None,
+        }
+    }
+}
+
+/// The unit of a parameter ("m" for lengths, "" for ratios).
+pub fn axis_unit(axis: Axis) -> &'static str {
+    match axis {
+        Axis::HRms | Axis::RStar => "m",
+        _ => "",
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::View;
+
+    #[test]
+    fn views_cycle_in_tab_order_both_ways() {
+        let mut v = View::Slopes;
+        let mut seen = vec![];
+        for _ in 0..4 {
+            seen.push(v.name());
+            assert_eq!(v.next().prev(), v);
+            v = v.next();
+        }
+        assert_eq!(seen, ["slopes", "indices", "map", "load"]);
+        assert_eq!(v, View::Slopes);
+        assert_eq!(View::Slopes.prev(), View::Load);
+    }
+
+    #[test]
+    fn names_parse_back() {
+        for v in View::ALL {
+            assert_eq!(View::parse(v.name()), Some(v));
+        }
+        assert_eq!(View::parse("Map"), None);
+        assert_eq!(View::parse(""), None);
+    }
+}

@@ -1,0 +1,150 @@
+//! Number and name formatting for the explorer's panels and charts: one
+//! formatter per kind of value, shared by every view.
+
+use rough_model::Axis;
+
+/// Three significant digits; scientific outside 1e-3 … 1e5.
+pub fn fmt_num(v: f64) -> String {
+    if v.is_nan() {
+        return "—".into();
+    }
+    if v.is_infinite() {
+        return if v > 0.0 { "∞".into() } else { "-∞".into() };
+    }
+    if v == 0.0 {
+        return "0".into();
+    }
+    let a = v.abs();
+    if (1e-3..1e5).contains(&a) {
+        let decimals = (2 - a.log10().floor() as i32).max(0) as usize;
+        format!("{v:.decimals$}")
+    } else {
+        format!("{v:.2e}")
+    }
+}
+
+fn length_unit(m: f64) -> (f64, &'static str) {
+    let a = m.abs();
+    if a < 1e-6 {
+        (1e9, "nm")
+    } else if a < 1e-3 {
+        (1e6, "µm")
+    } else if a < 1.0 {
+        (1e3, "mm")
+    } else {
+        (1.0, "m")
+    }
+}
+
+/// A length in m with a readable unit: "20.0 nm", "19.7 µm", "1.00 mm".
+pub fn fmt_len(m: f64) -> String {
+    if !m.is_finite() || m == 0.0 {
+        return format!("{} m", fmt_num(m));
+    }
+    let (k, u) = length_unit(m);
+    format!("{} {u}", fmt_num(m * k))
+}
+
+fn is_whole(v: f64) -> bool {
+    (v - v.round()).abs() < 1e-9 * v.abs().max(1.0)
+}
+
+/// A short form for range ends and axis labels: "1 nm", "10 mm", "1e-4", "0.05".
+pub fn fmt_short(axis: Axis, v: f64) -> String {
+    if matches!(axis, Axis::HRms | Axis::RStar) && v.is_finite() && v > 0.0 {
+        let (k, u) = length_unit(v);
+        let s = v * k;
+        return if is_whole(s) {
+            format!("{} {u}", s.round())
+        } else {
+            format!("{} {u}", fmt_num(s))
+        };
+    }
+    let d = v.log10();
+    if v > 0.0 && is_whole(d) && axis.is_log() {
+        return fmt_decade(d.round() as i32);
+    }
+    if is_whole(v) {
+        return format!("{}", v.round());
+    }
+    let s = format!("{v}");
+    if s.len() <= 5 {
+        s
+    } else {
+        fmt_num(v)
+    }
+}
+
+/// A decade label: 0.01, 0.1, 1, 10, 100, else 1e-3, 1e3 ….
+pub fn fmt_decade(d: i32) -> String {
+    match d {
+        -2 => "0.01".into(),
+        -1 => "0.1".into(),
+        0 => "1".into(),
+        1 => "10".into(),
+        2 => "100".into(),
+        _ => format!("1e{d}"),
+    }
+}
+
+/// The parameter's value with its unit.
+pub fn fmt_param(axis: Axis, v: f64) -> String {
+    match axis {
+        Axis::HRms | Axis::RStar => fmt_len(v),
+        _ => fmt_num(v),
+    }
+}
+
+/// How far `other` lies from `this`, in per cent or as a ratio.
+pub fn fmt_rel(other: f64, this: f64) -> String {
+    if other == this {
+        return "±0%".into();
+    }
+    if !(this.is_finite() && other.is_finite()) || this == 0.0 {
+        return "n/a".into();
+    }
+    let d = other / this - 1.0;
+    if d.abs() < 10.0 {
+        format!("{:+.1}%", d * 100.0)
+    } else {
+        format!("×{}", fmt_num(other / this))
+    }
+}
+
+/// `text` word-wrapped into at most `rows` lines of `width` characters; when
+/// it does not fit, the last line ends in "…". Words longer than a line are
+/// cut.
+pub fn wrap(text: &str, width: usize, rows: usize) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    if width == 0 || rows == 0 {
+        return lines;
+    }
+    let mut cur = String::new();
+    let mut cut = false;
+    for word in text.split_whitespace() {
+        let n = cur.chars().count();
+        let w = word.chars().count();
+        if n > 0 && n + 1 + w > width {
+            if lines.len() + 1 == rows {
+                cut = true;
+                break;
+            }
+            lines.push(std::mem::take(&mut cur));
+        }
+        if !cur.is_empty() {
+            cur.push(' ');
+        }
+        cur.extend(word.chars().take(width));
+        cut |= w > width;
+    }
+    if !cur.is_empty() {
+        lines.push(cur);
+    }
+    if cut {
+        if let Some(last) = lines.last_mut() {
+            let keep = last.chars().count().min(width - 1);
+            *last = last.chars().take(keep).collect::<String>() + "…";
+        }
+    }
+    lines
+}

@@ -1,0 +1,168 @@
+//! What the charts draw, computed in `update` (never while drawing): the
+//! curves of each view transformed to the chart's axes, non-finite and
+//! non-positive points on log axes dropped.
+
+use rough_model::{Scene, SceneSpec};
+
+use crate::figure::{IndexSeries, LoadCurve};
+use crate::snapshot::State;
+
+/// The curves as the chart draws them: transformed to the plot's axes
+/// (log10 of both values; Hurst stays linear), non-finite and non-positive
+/// points dropped.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Plot {
+    pub elastic: Vec<(f64, f64)>,
+    pub plastic: Vec<(f64, f64)>,
+    pub total: Vec<(f64, f64)>,
+    pub persson: Vec<(f64, f64)>,
+    /// Transformed x range (the sweep's ends).
+    pub x_bounds: [f64; 2],
+    /// Transformed y range, whole decades.
+    pub y_bounds: [f64; 2],
+    /// Points sampled per curve: the chart's braille dot columns.
+    pub points: usize,
+}
+
+/// Transforms a value for a plot axis: log10 for log axes.
+pub fn to_plot(axis_is_log: bool, v: f64) -> f64 {
+    if axis_is_log {
+        v.log10()
+    } else {
+        v
+    }
+}
+
+/// The smallest and largest decade the y axis may show (1e-3 … 1e2, as in
+/// the paper's figures).
+pub const Y_DECADES: (f64, f64) = (-3.0, 2.0);
+
+/// `(x, y)` pairs on the chart's axes: log10 of y, and of x on log axes;
+/// points that cannot be drawn there dropped.
+fn log_curve(log_x: bool, xs: &[f64], ys: impl IntoIterator<Item = f64>) -> Vec<(f64, f64)> {
+    xs.iter()
+        .zip(ys)
+        .filter(|(x, y)| x.is_finite() && y.is_finite() && *y > 0.0 && (!log_x || **x > 0.0))
+        .map(|(x, y)| (to_plot(log_x, *x), y.log10()))
+        .collect()
+}
+
+/// Whole decades around every y of `curves`, within `limits`, at least one
+/// decade high; `limits` when there is nothing to show.
+fn decade_bounds(curves: &[&Vec<(f64, f64)>], limits: (f64, f64)) -> [f64; 2] {
+    let ys = || curves.iter().copied().flatten().map(|p| p.1);
+    let lo = ys().fold(f64::INFINITY, f64::min);
+    let hi = ys().fold(f64::NEG_INFINITY, f64::max);
+    if !(lo.is_finite() && hi.is_finite()) {
+        return [limits.0, limits.1];
+    }
+    let lo = lo.floor().clamp(limits.0, limits.1 - 1.0);
+    let hi = hi.ceil().clamp(lo + 1.0, limits.1);
+    [lo, hi]
+}
+
+/// The sweep's ends on the chart's x axis.
+fn sweep_bounds(sweep: &rough_model::Sweep) -> [f64; 2] {
+    let log_x = sweep.axis().is_log();
+    [to_plot(log_x, sweep.from()), to_plot(log_x, sweep.to())]
+}
+
+pub fn compute_plot(spec: &SceneSpec) -> Plot {
+    let log_x = spec.sweep.axis().is_log();
+    let mut plot = Plot {
+        x_bounds: sweep_bounds(&spec.sweep),
+        y_bounds: [Y_DECADES.0, Y_DECADES.1],
+        points: spec.points,
+        ..Plot::default()
+    };
+    let Ok(scene) = Scene::compute(spec) else {
+        return plot;
+    };
+    let curve = |ys: &[f64]| log_curve(log_x, &scene.x, ys.iter().copied());
+    plot.elastic = curve(&scene.elastic);
+    plot.plastic = curve(&scene.plastic);
+    plot.total = curve(&scene.total);
+    plot.persson = curve(&scene.persson_elastic);
+    let curves = [&plot.elastic, &plot.plastic, &plot.total, &plot.persson];
+    plot.y_bounds = decade_bounds(&curves, Y_DECADES);
+    plot
+}
+
+/// The decades the index view may show (1e-4 … 1e6): wide enough for Ψ_GW
+/// of a rough soft surface and Ψ* of a smooth hard one.
+pub const INDEX_DECADES: (f64, f64) = (-4.0, 6.0);
+
+/// The index view's curves: Ψ_GW, Ψ_P, Ψ* and eq. 13's Ψ*asy against the
+/// swept parameter, log10 of each.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct IndexPlot {
+    pub psi_gw: Vec<(f64, f64)>,
+    pub psi_p: Vec<(f64, f64)>,
+    pub psi_star: Vec<(f64, f64)>,
+    /// Eq. 13; empty where undefined (R* = 0).
+    pub psi_star_asymptotic: Vec<(f64, f64)>,
+    pub x_bounds: [f64; 2],
+    /// Whole decades, always including Ψ = 1.
+    pub y_bounds: [f64; 2],
+}
+
+pub fn compute_indices(state: &State, points: usize) -> IndexPlot {
+    let log_x = state.sweep.axis().is_log();
+    let mut p = IndexPlot {
+        x_bounds: sweep_bounds(&state.sweep),
+        y_bounds: [-1.0, 1.0],
+        ..IndexPlot::default()
+    };
+    let Ok(s) = IndexSeries::compute(state, points) else {
+        return p;
+    };
+    let curve = |ys: &[f64]| log_curve(log_x, &s.x, ys.iter().copied());
+    p.psi_gw = curve(&s.psi_gw);
+    p.psi_p = curve(&s.psi_p);
+    p.psi_star = curve(&s.psi_star);
+    let asy = s.psi_star_asymptotic.iter().map(|v| v.unwrap_or(f64::NAN));
+    p.psi_star_asymptotic = log_curve(log_x, &s.x, asy);
+    let one = vec![(p.x_bounds[0], 0.0)];
+    let curves = [
+        &p.psi_gw,
+        &p.psi_p,
+        &p.psi_star,
+        &p.psi_star_asymptotic,
+        &one,
+    ];
+    p.y_bounds = decade_bounds(&curves, INDEX_DECADES);
+    p
+}
+
+/// The load view's curves: A/A0 against p̄/H on linear axes from 0 to 1,
+/// and the initial-slope line S_tot·p̄/H from the origin.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct LoadPlot {
+    pub elastic: Vec<(f64, f64)>,
+    pub plastic: Vec<(f64, f64)>,
+    pub total: Vec<(f64, f64)>,
+    pub tangent: Vec<(f64, f64)>,
+    /// The initial slope of the total area (the tangent's slope).
+    pub slope: f64,
+}
+
+pub fn compute_load(state: &State, points: usize) -> LoadPlot {
+    let Ok(c) = LoadCurve::compute(state, points) else {
+        return LoadPlot::default();
+    };
+    let curve = |ys: &[f64]| -> Vec<(f64, f64)> {
+        c.load
+            .iter()
+            .zip(ys)
+            .filter(|(_, y)| y.is_finite())
+            .map(|(x, y)| (*x, *y))
+            .collect()
+    };
+    LoadPlot {
+        elastic: curve(&c.elastic),
+        plastic: curve(&c.plastic),
+        total: curve(&c.total),
+        tangent: vec![(0.0, 0.0), c.tangent_end()],
+        slope: c.slopes.total,
+    }
+}

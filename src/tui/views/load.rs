@@ -1,0 +1,43 @@
+//! The load view: contact areas A/A0 against the load p̄/H from 0 to 1 at
+//! the current parameters (elastic, plastic, total, for the model in use),
+//! with the initial-slope line of the slopes view drawn from the origin.
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::text::Span;
+
+use super::chart::{self, Scale};
+use crate::tui::app::App;
+use crate::tui::fmt::fmt_num;
+
+/// The chart panel `area` with its graph `g`.
+pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
+    let t = &app.theme;
+    let s = &app.state;
+    let p = &app.load;
+    let (h, psi) = if s.size_effect {
+        ("H_y", "Ψ*")
+    } else {
+        ("H0", "Ψ_P")
+    };
+    let title = vec![Span::styled(
+        format!(
+            "A/A0 vs p̄/{h} · {psi} {} · initial slope {}",
+            fmt_num(app.readout.psi),
+            fmt_num(p.slope)
+        ),
+        t.title,
+    )];
+    chart::title(app, title, area, buf);
+    chart::legend(&[&t.elastic, &t.plastic, &t.total, &t.tangent], area, buf);
+    let bounds = [0.0, 1.0];
+    let (x, y) = (Scale::linear(bounds, 5.0), Scale::linear(bounds, 5.0));
+    chart::axes(t, (&x, &y), &format!("p̄/{h}"), (area, g), buf);
+    let sets = vec![
+        chart::dataset(&t.tangent, &p.tangent),
+        chart::dataset(&t.elastic, &p.elastic),
+        chart::dataset(&t.plastic, &p.plastic),
+        chart::dataset(&t.total, &p.total),
+    ];
+    chart::plot(sets, (bounds, bounds), g, buf);
+}

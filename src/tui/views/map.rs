@@ -1,0 +1,160 @@
+//! The regime map view: the plastic share S_pl/S_tot over the swept
+//! parameter (across) and a second one (up), two points per terminal cell
+//! (upper half block ▀ in the upper point's colour over the lower point's),
+//! the Ψ = 1 contour and the current point. Under NO_COLOR one character of
+//! a ramp per cell. Drawing only reads the map `update` computed.
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::style::{Color, Modifier, Style};
+use ratatui::text::{Line, Span};
+use ratatui::widgets::Widget;
+
+use super::chart::{self, Scale};
+use crate::figure::{share_char, share_colour, RegimeMap, ELASTIC_BELOW, PLASTIC_ABOVE, RAMP};
+use crate::tui::app::App;
+use crate::tui::plots::to_plot;
+
+/// The Ψ = 1 contour's colour: white, outside the sequential scale.
+const CONTOUR: Color = Color::Rgb(255, 255, 255);
+/// The contour's and the current point's characters under NO_COLOR.
+const CONTOUR_CHAR: &str = "o";
+const POINT_CHAR: &str = "X";
+
+fn rgb(share: f64) -> Color {
+    let (r, g, b) = share_colour(share);
+    Color::Rgb(r, g, b)
+}
+
+/// The chart panel `area` with its graph `g`.
+pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
+    let t = &app.theme;
+    let Some(map) = app.map.peek().filter(|m| Some(m.spec) == app.map_spec(g)) else {
+        return;
+    };
+    let spec = &map.spec;
+    let (xa, ya) = (spec.x.axis(), spec.y.axis());
+    let psi = if spec.size_effect { "Ψ*" } else { "Ψ_P" };
+    let mut title = vec![Span::styled(
+        format!("plastic share over {} × {}", xa.symbol(), ya.symbol()),
+        t.title,
+    )];
+    let hint = "  (y: another y axis)";
+    let used = title[0].content.chars().count();
+    if used + hint.chars().count() <= usize::from(area.width) {
+        title.push(Span::styled(hint, t.dim));
+    }
+    Line::from(title).render(Rect { height: 1, ..area }, buf);
+    legend(app, psi, Rect::new(area.x, area.y + 1, area.width, 1), buf);
+
+    let bounds = |s: &rough_model::Sweep| {
+        let log = s.axis().is_log();
+        [to_plot(log, s.from()), to_plot(log, s.to())]
+    };
+    let (x, y) = (
+        Scale::of_axis(xa, bounds(&spec.x)),
+        Scale::of_axis(ya, bounds(&spec.y)),
+    );
+    chart::axes(t, (&x, &y), xa.symbol(), (area, g), buf);
+    cells(app, map, g, buf);
+}
+
+/// The scale's legend: its ends with the thresholds, the contour and the
+/// point; in full words where the panel is wide enough.
+fn legend(app: &App, psi: &str, area: Rect, buf: &mut Buffer) {
+    let t = &app.theme;
+    let (el, pl) = (ELASTIC_BELOW * 100.0, PLASTIC_ABOVE * 100.0);
+    let bar: Vec<Span> = if t.color {
+        (0..10)
+            .map(|i| Span::styled("█", Style::new().fg(rgb(f64::from(i) / 9.0))))
+            .collect()
+    } else {
+        vec![Span::raw(format!("'{}'", RAMP.iter().collect::<String>()))]
+    };
+    let (contour, point) = if t.color {
+        (
+            Span::styled("▀", Style::new().fg(CONTOUR).bg(Color::Black)),
+            Span::styled("◆", point_style()),
+        )
+    } else {
+        (Span::raw(CONTOUR_CHAR), Span::raw(POINT_CHAR))
+    };
+    let marks = [
+        contour,
+        Span::raw(format!(" {psi}=1  ")),
+        point,
+        Span::raw(" now"),
+    ];
+    let line = |head: String, tail: String, note: Option<String>| {
+        let mut spans = vec![Span::raw(head)];
+        spans.extend(bar.iter().cloned());
+        spans.push(Span::raw(tail));
+        spans.extend(marks.iter().cloned());
+        spans.extend(note.map(|n| Span::styled(n, t.dim)));
+        Line::from(spans)
+    };
+    let wide = line(
+        "elastic ".into(),
+        " plastic  ".into(),
+        Some(format!(
+            "  (elastic <{el:.0}%, plastic >{pl:.0}%: this program's thresholds)"
+        )),
+    );
+    let narrow = line(format!("el <{el:.0}% "), format!(" >{pl:.0}% pl  "), None);
+    let fits = |l: &Line| l.width() <= usize::from(area.width);
+    if fits(&wide) { wide } else { narrow }.render(area, buf);
+}
+
+/// Whether the Ψ = 1 contour passes this point's right or upper side: one
+/// point thick, where marking both sides would draw a band.
+fn contour(map: &RegimeMap, col: usize, row: usize) -> bool {
+    let (right, up) = map.contour_edges(col, row);
+    right || up
+}
+
+fn point_style() -> Style {
+    Style::new().fg(Color::Red).add_modifier(Modifier::BOLD)
+}
+
+/// The map's cells: terminal row `r` from the top holds map rows
+/// `rows − 1 − 2r` (upper half) and `rows − 2 − 2r` (lower half).
+fn cells(app: &App, map: &RegimeMap, g: Rect, buf: &mut Buffer) {
+    let spec = &map.spec;
+    let (cols, rows) = (spec.cols, spec.rows);
+    if cols != usize::from(g.width) || rows != 2 * usize::from(g.height) {
+        return;
+    }
+    let color = app.theme.color;
+    for r in 0..rows / 2 {
+        let (up, low) = (rows - 1 - 2 * r, rows - 2 - 2 * r);
+        for c in 0..cols {
+            let cell = &mut buf[(g.x + c as u16, g.y + r as u16)];
+            let (su, sl) = (map.share_at(c, up), map.share_at(c, low));
+            let (cu, cl) = (contour(map, c, up), contour(map, c, low));
+            if color {
+                let fg = if cu { CONTOUR } else { rgb(su) };
+                let bg = if cl { CONTOUR } else { rgb(sl) };
+                cell.set_symbol("▀").set_style(Style::new().fg(fg).bg(bg));
+            } else if cu || cl {
+                cell.set_symbol(CONTOUR_CHAR);
+            } else {
+                cell.set_char(share_char(0.5 * (su + sl)));
+            }
+        }
+    }
+    // The current point, when it lies on the map.
+    let (fx, fy) = spec.position();
+    if !((0.0..=1.0).contains(&fx) && (0.0..=1.0).contains(&fy)) {
+        return;
+    }
+    let c = (fx * (cols - 1) as f64).round() as usize;
+    let row = (fy * (rows - 1) as f64).round() as usize;
+    let r = (rows - 1 - row) / 2;
+    let cell = &mut buf[(g.x + c as u16, g.y + r as u16)];
+    if color {
+        let bg = rgb(map.share_at(c, row));
+        cell.set_symbol("◆").set_style(point_style().bg(bg));
+    } else {
+        cell.set_symbol(POINT_CHAR);
+    }
+}

@@ -1,0 +1,151 @@
+//! The left column: the parameter sliders and the readout at the marker.
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::style::Style;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Paragraph, Widget};
+
+use rough_model::Axis;
+
+use crate::tui::app::App;
+use crate::tui::fmt::{fmt_len, fmt_num, fmt_param, fmt_rel, fmt_short};
+use crate::tui::theme::CurveStyle;
+
+pub fn render_sliders(app: &App, area: Rect, rows: u16, buf: &mut Buffer) {
+    let t = &app.theme;
+    Line::styled("Parameters", t.title).render(Rect { height: 1, ..area }, buf);
+    let swept = app.state.sweep.axis();
+    for (i, axis) in Axis::ALL.into_iter().enumerate() {
+        let y = area.y + 1 + i as u16 * rows;
+        if y >= area.bottom() {
+            break;
+        }
+        let selected = i == app.selected;
+        let (lo, hi) = app.range(axis);
+        let v = app.state.params.get(axis);
+        let text = format!(
+            "{}{:<5}{} {:>9}  {}…{}",
+            if selected { "▶ " } else { "  " },
+            axis.symbol(),
+            if axis == swept { "↔" } else { " " },
+            fmt_param(axis, v),
+            fmt_short(axis, lo),
+            fmt_short(axis, hi),
+        );
+        let style = if selected { t.selected } else { Style::new() };
+        let row = Rect::new(area.x, y, area.width, 1);
+        buf.set_style(row, style);
+        Line::styled(format!("{text:<w$}", w = area.width as usize), style).render(row, buf);
+        if rows > 1 && y + 1 < area.bottom() {
+            let bar = slider_bar(axis, v, (lo, hi), area.width.saturating_sub(4) as usize);
+            let bar_style = if selected { t.title } else { t.dim };
+            Line::styled(format!("   {bar}"), bar_style)
+                .render(Rect::new(area.x, y + 1, area.width, 1), buf);
+        }
+    }
+}
+
+/// "├───●────┤", the knob at the value's place in the range.
+fn slider_bar(axis: Axis, v: f64, (lo, hi): (f64, f64), width: usize) -> String {
+    if width < 3 {
+        return String::new();
+    }
+    let inner = width - 2;
+    let f = if axis.is_log() && v > 0.0 {
+        (v.ln() - lo.ln()) / (hi.ln() - lo.ln())
+    } else {
+        (v - lo) / (hi - lo)
+    };
+    let mut cells = vec!['─'; inner];
+    if f.is_nan() || f < 0.0 {
+        cells[0] = '◂';
+    } else if f > 1.0 {
+        cells[inner - 1] = '▸';
+    } else {
+        let k = ((f * (inner - 1) as f64).round() as usize).min(inner - 1);
+        cells[k] = '●';
+    }
+    let mut s = String::with_capacity(width * 3);
+    s.push('├');
+    s.extend(cells);
+    s.push('┤');
+    s
+}
+
+fn pair(l1: &str, v1: String, l2: &str, v2: String) -> String {
+    format!("{l1:<6}{v1:<10}{l2:<7}{v2}")
+}
+
+pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
+    let t = &app.theme;
+    let r = &app.readout;
+    let ix = &r.surface.indices;
+    let sp = &r.surface.spectrum;
+    let s = &app.state;
+    let asym = match (ix.psi_star_asymptotic, ix.asymptotic_deviation()) {
+        (Some(a), Some(d)) => format!("{} ({:+.1}% vs Ψ*)", fmt_num(a), d * 100.0),
+        (Some(a), None) => fmt_num(a),
+        (None, _) => "n/a (R* = 0 or H = 1)".into(),
+    };
+    let sl = &r.slopes;
+    let o = &r.other;
+    let regime = sl.regime();
+    let curve = |c: &CurveStyle, label: &str, v: f64| {
+        vec![
+            Span::styled(format!("{label:<6}"), c.style),
+            Span::raw(format!("{:<10}", fmt_num(v))),
+        ]
+    };
+    let mut slopes1 = curve(&t.elastic, "S_el", sl.elastic);
+    slopes1.extend(curve(&t.plastic, "S_pl", sl.plastic));
+    let mut slopes2 = curve(&t.total, "S_tot", sl.total);
+    slopes2.extend(curve(&t.persson, "S_P", r.persson));
+    let lines = vec![
+        Line::styled("Readout", t.title),
+        Line::raw(pair("Ψ_GW", fmt_num(ix.psi_gw), "Ψ_P", fmt_num(ix.psi_p))),
+        Line::raw(pair(
+            "Ψ*",
+            fmt_num(ix.psi_star),
+            "H_y/H0",
+            fmt_num(ix.hardness_ratio),
+        )),
+        Line::raw(format!("{:<6}{asym}", "Ψ*asy")),
+        Line::raw(pair("R_s", fmt_len(sp.r_s), "λ1", fmt_len(sp.lambda1))),
+        Line::raw(pair(
+            "h_rms",
+            fmt_len(sp.h_rms_actual),
+            "h′",
+            fmt_num(sp.rms_slope),
+        )),
+        Line::raw(pair(
+            "ε",
+            fmt_num(2.0 * sp.rms_slope),
+            "d_rep",
+            fmt_len(4.0 * sp.rms_slope / sp.rms_curvature),
+        )),
+        Line::styled(
+            format!(
+                "marker: {} = {} ({})",
+                if s.size_effect { "Ψ*" } else { "Ψ_P" },
+                fmt_num(r.psi),
+                s.model.label()
+            ),
+            t.title,
+        ),
+        Line::from(slopes1),
+        Line::from(slopes2),
+        Line::from(vec![
+            Span::raw(format!("plastic {:.1}%  ", sl.plastic_share() * 100.0)),
+            Span::styled(regime.label(), t.regime(regime)),
+        ]),
+        Line::raw(format!("{} at the marker:", s.model.other().label())),
+        Line::raw(format!(
+            " el {}  pl {}  tot {}",
+            fmt_rel(o.elastic, sl.elastic),
+            fmt_rel(o.plastic, sl.plastic),
+            fmt_rel(o.total, sl.total)
+        )),
+    ];
+    Paragraph::new(lines).render(area, buf);
+}
