@@ -31,6 +31,8 @@ pub enum Command {
     Export(ExportArgs),
     /// Time each way of computing the initial slopes against the reference data.
     Bench(BenchArgs),
+    /// Serve the explorer over SSH to a class: students `ssh -p PORT HOST`.
+    Serve(ServeArgs),
 }
 
 /// Where the parameter set comes from.
@@ -186,6 +188,51 @@ impl From<AxisArg> for Axis {
 }
 
 #[derive(Debug, Args)]
+pub struct ServeArgs {
+    /// Address and port to listen on (loopback unless given).
+    #[arg(long, default_value = "127.0.0.1:2222", value_name = "ADDR:PORT")]
+    pub listen: std::net::SocketAddr,
+    /// The host key (OpenSSH Ed25519, mode 0600), made if absent [default:
+    /// $XDG_CONFIG_HOME/roughtui/host_ed25519 or ~/.config/roughtui/host_ed25519].
+    #[arg(long, value_name = "PATH")]
+    pub host_key: Option<PathBuf>,
+    /// The lecturer's public keys (authorized_keys format); the lecturer logs
+    /// in as user `lecturer`. Without it everyone explores alone.
+    #[arg(long, value_name = "FILE")]
+    pub lecturer_keys: Option<PathBuf>,
+    #[command(flatten)]
+    pub source: Source,
+    /// Most connections at once.
+    #[arg(long, default_value_t = 64, value_parser = clap::value_parser!(u32).range(1..=10_000))]
+    pub max_sessions: u32,
+    /// Most connections at once from one address.
+    #[arg(long, default_value_t = 64, value_parser = clap::value_parser!(u32).range(1..=10_000))]
+    pub max_per_address: u32,
+    /// A session without a key (or a lecturer's move, when following) for
+    /// this long ends: a number with s, m or h.
+    #[arg(long, default_value = "30m", value_parser = parse_duration, value_name = "TIME")]
+    pub idle_timeout: std::time::Duration,
+}
+
+/// `90s`, `30m`, `2h` (1 s to 24 h).
+pub fn parse_duration(s: &str) -> Result<std::time::Duration, String> {
+    let bad = || format!("{s:?} is not a time like 90s, 30m or 2h");
+    let t = s.trim();
+    let (num, unit) = t.split_at(t.find(|c: char| !c.is_ascii_digit()).unwrap_or(t.len()));
+    let n: u64 = num.parse().map_err(|_| bad())?;
+    let secs = match unit.trim() {
+        "s" => n,
+        "m" => n.saturating_mul(60),
+        "h" => n.saturating_mul(3600),
+        _ => return Err(bad()),
+    };
+    if !(1..=86_400).contains(&secs) {
+        return Err(format!("{s:?} is outside 1s to 24h"));
+    }
+    Ok(std::time::Duration::from_secs(secs))
+}
+
+#[derive(Debug, Args)]
 pub struct BenchArgs {
     /// Timed passes per method (the median is reported).
     #[arg(long, default_value_t = 15)]
@@ -219,5 +266,24 @@ impl From<MomentsArg> for rough_model::Moments {
             MomentsArg::Truncated => rough_model::Moments::Truncated,
             MomentsArg::Asymptotic => rough_model::Moments::Asymptotic,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::parse_duration;
+    use std::time::Duration;
+
+    #[test]
+    fn durations() {
+        assert_eq!(parse_duration("30m"), Ok(Duration::from_secs(1800)));
+        assert_eq!(parse_duration("90s"), Ok(Duration::from_secs(90)));
+        assert_eq!(parse_duration("2h"), Ok(Duration::from_secs(7200)));
+        assert!(parse_duration("0s")
+            .unwrap_err()
+            .contains("outside 1s to 24h"));
+        assert!(parse_duration("25h").unwrap_err().contains("outside"));
+        assert!(parse_duration("5").unwrap_err().contains("not a time"));
+        assert!(parse_duration("-5m").unwrap_err().contains("not a time"));
     }
 }

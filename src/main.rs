@@ -38,6 +38,18 @@ fn run(cli: Cli) -> anyhow::Result<()> {
             export::run(&a, &mut out)
         }
         Some(Command::Bench(a)) => roughtui::bench::run(&a),
+        Some(Command::Serve(a)) => {
+            let state = load_source(&a.source)?;
+            roughtui::serve::run(roughtui::serve::Options {
+                listen: a.listen,
+                host_key: a.host_key,
+                lecturer_keys: a.lecturer_keys,
+                state,
+                max_sessions: a.max_sessions as usize,
+                max_per_address: a.max_per_address as usize,
+                idle_timeout: a.idle_timeout,
+            })
+        }
         None => {
             let state = load_source(&cli.source)?;
             tui::run(state, cli.source.load.as_deref())

@@ -39,7 +39,6 @@ fn no_terminal_says_so_and_points_to_export() {
         "notty",
         dir.path(),
         (80, 24),
-        &[],
         &["--preset", "fig2"],
         " </dev/null",
     );

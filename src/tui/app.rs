@@ -369,7 +369,7 @@ impl App {
         }
     }
 
-    pub(super) fn set_status(&mut self, text: impl Into<String>, error: bool) {
+    pub fn set_status(&mut self, text: impl Into<String>, error: bool) {
         self.status = Some(Status {
             text: text.into(),
             error,
@@ -383,6 +383,23 @@ impl App {
             error: false,
             hint: Some(hint),
         });
+    }
+
+    /// Shows what another session shows (a followed lecturer's explorer):
+    /// its scene, selected slider, view and map axis.
+    pub fn show(&mut self, state: &State, selected: usize, view: View, map_y: Option<Axis>) {
+        let selected = selected % Axis::ALL.len();
+        if self.state != *state
+            || self.selected != selected
+            || self.view != view
+            || self.map_y != map_y
+        {
+            self.state = state.clone();
+            self.selected = selected;
+            self.view = view;
+            self.map_y = map_y;
+            self.refresh();
+        }
     }
 
     fn load(&mut self, state: State) {

@@ -11,6 +11,7 @@ pub mod layout;
 pub mod line_edit;
 pub mod plots;
 pub mod prompt;
+pub mod session;
 pub mod status;
 pub mod term;
 pub mod theme;
@@ -23,7 +24,7 @@ use std::time::Instant;
 use crossterm::event::{self, Event, KeyCode};
 
 use crate::snapshot::State;
-use app::{update, App};
+use session::Session;
 use theme::Theme;
 
 /// Runs the explorer on `state` until `q`. The terminal is restored on every
@@ -47,14 +48,14 @@ pub fn run(state: State, file: Option<&std::path::Path>) -> anyhow::Result<()> {
         .ok()
         .and_then(|s| s.chars().next());
 
-    let mut terminal = term::setup()?;
+    let out = term::setup()?;
     let _guard = term::Guard;
-    let size = terminal.size()?;
-    let mut app = App::new(state, Theme::from_env(), (size.width, size.height));
-    app.file = file
+    let (w, h) = crossterm::terminal::size()?;
+    let mut session = Session::new(out, state, Theme::from_env(), (w, h))?;
+    session.app.file = file
         .and_then(|f| f.file_name())
         .map(|f| f.to_string_lossy().into_owned());
-    draw(&mut terminal, &app)?;
+    draw(&mut session)?;
     loop {
         let (msg, arrived) = loop {
             let ev = event::read()?;
@@ -64,15 +65,15 @@ pub fn run(state: State, file: Option<&std::path::Path>) -> anyhow::Result<()> {
                     panic!("ROUGHTUI_PANIC_KEY pressed");
                 }
             }
-            if let Some(m) = keys::message_for_event(&app, &ev) {
+            if let Some(m) = session.message_for(&ev) {
                 break (m, arrived);
             }
         };
-        update(&mut app, msg);
-        if app.quit {
+        session.update(msg)?;
+        if session.app.quit {
             break;
         }
-        draw(&mut terminal, &app)?;
+        draw(&mut session)?;
         if let Some(log) = frame_log.as_mut() {
             writeln!(log, "{}", arrived.elapsed().as_micros())?;
         }
@@ -81,8 +82,7 @@ pub fn run(state: State, file: Option<&std::path::Path>) -> anyhow::Result<()> {
 }
 
 /// One frame, written whole before a signal may restore the terminal.
-fn draw(terminal: &mut term::Tui, app: &App) -> std::io::Result<()> {
+fn draw(session: &mut Session<std::io::BufWriter<std::io::Stdout>>) -> std::io::Result<()> {
     let _frame = term::drawing();
-    terminal.draw(|f| f.render_widget(app, f.area()))?;
-    Ok(())
+    session.draw()
 }

@@ -16,10 +16,6 @@ use crossterm::execute;
 use crossterm::terminal::{
     disable_raw_mode, enable_raw_mode, EnterAlternateScreen, LeaveAlternateScreen,
 };
-use ratatui::backend::CrosstermBackend;
-use ratatui::Terminal;
-
-pub type Tui = Terminal<CrosstermBackend<BufWriter<Stdout>>>;
 
 /// Whether the terminal is set up, so restoring twice does nothing.
 static ACTIVE: AtomicBool = AtomicBool::new(false);
@@ -38,9 +34,9 @@ pub const NO_TERMINAL: &str = "the explorer needs a terminal (standard input and
                                one); for data use `roughtui export`";
 
 /// Raw mode, alternate screen, hidden cursor; a panic hook and a signal
-/// handler that restore. Without a terminal on standard input and output,
-/// an error saying so.
-pub fn setup() -> anyhow::Result<Tui> {
+/// handler that restore. Returns the buffered stdout to draw into. Without
+/// a terminal on standard input and output, an error saying so.
+pub fn setup() -> anyhow::Result<BufWriter<Stdout>> {
     if !(io::stdin().is_terminal() && io::stdout().is_terminal()) {
         anyhow::bail!(NO_TERMINAL);
     }
@@ -54,8 +50,7 @@ pub fn setup() -> anyhow::Result<Tui> {
         return Err(e.into());
     }
     // One write per frame instead of one per line.
-    let backend = CrosstermBackend::new(BufWriter::with_capacity(1 << 16, io::stdout()));
-    Ok(Terminal::new(backend).inspect_err(|_| restore())?)
+    Ok(BufWriter::with_capacity(1 << 16, io::stdout()))
 }
 
 /// A thread that waits for SIGHUP, SIGTERM, SIGINT or SIGQUIT, restores the

@@ -3,6 +3,8 @@
 #![allow(dead_code)]
 
 pub mod app;
+pub mod client;
+pub mod serve;
 pub mod tmux;
 
 use std::path::Path;

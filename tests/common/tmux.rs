@@ -1,15 +1,11 @@
-//! A real terminal for the tests: tmux runs the binary in a pane of a
-//! given size; the test reads the pane, presses keys, resizes, and checks
-//! the exit status.
-//!
-//! Skipped (with a note) when tmux is missing, unless ROUGHTUI_REQUIRE_TMUX
-//! is set, as `.ci/run` does after installing tmux.
+//! tmux for the real-terminal tests: one tmux server per pane, torn down on
+//! drop; the pane stays after the program exits so its screen can be read.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 use std::time::{Duration, Instant};
 
-const BIN: &str = env!("CARGO_BIN_EXE_roughtui");
+pub const BIN: &str = env!("CARGO_BIN_EXE_roughtui");
 
 pub fn have_tmux() -> bool {
     let ok = Command::new("tmux")
@@ -37,6 +33,19 @@ pub fn sh_quote(s: &str) -> String {
     format!("'{}'", s.replace('\'', r"'\''"))
 }
 
+/// The shell command that runs roughtui in `cwd` with `env` and `args`.
+fn command(cwd: &Path, env: &[(&str, &str)], args: &[&str]) -> String {
+    let mut cmd = format!("cd {} && env", sh_quote(cwd.to_str().unwrap()));
+    for (k, v) in env {
+        cmd.push_str(&format!(" {k}={}", sh_quote(v)));
+    }
+    cmd.push_str(&format!(" {}", sh_quote(BIN)));
+    for a in args {
+        cmd.push_str(&format!(" {}", sh_quote(a)));
+    }
+    cmd
+}
+
 impl Pane {
     pub fn start(
         name: &str,
@@ -45,7 +54,7 @@ impl Pane {
         env: &[(&str, &str)],
         args: &[&str],
     ) -> Pane {
-        Pane::start_redirected(name, cwd, size, env, args, "")
+        Pane::start_shell(name, size, &command(cwd, env, args))
     }
 
     /// As [`Pane::start`], with a shell redirection (`</dev/null`) after the
@@ -54,55 +63,11 @@ impl Pane {
         name: &str,
         cwd: &Path,
         size: (u16, u16),
-        env: &[(&str, &str)],
         args: &[&str],
         redirect: &str,
     ) -> Pane {
-        let scratch = tempfile::tempdir().unwrap();
-        let status = scratch.path().join("status");
-        let socket = format!("roughtui-test-{name}-{}", std::process::id());
-        let mut cmd = format!("cd {} && env", sh_quote(cwd.to_str().unwrap()));
-        for (k, v) in env {
-            cmd.push_str(&format!(" {k}={}", sh_quote(v)));
-        }
-        cmd.push_str(&format!(" {}", sh_quote(BIN)));
-        for a in args {
-            cmd.push_str(&format!(" {}", sh_quote(a)));
-        }
-        cmd.push_str(redirect);
-        // Keep the pane after exit so its screen can be read.
-        cmd.push_str(&format!(
-            "; echo $? > {}; sleep 600",
-            sh_quote(status.to_str().unwrap())
-        ));
-        let p = Pane {
-            socket,
-            status,
-            _scratch: scratch,
-        };
-        let (w, h) = (size.0.to_string(), size.1.to_string());
-        let out = p.tmux(&["new-session", "-d", "-s", "t", "-x", &w, "-y", &h, &cmd]);
-        assert!(out.status.success(), "tmux: {out:?}");
-        p
-    }
-
-    pub fn tmux(&self, args: &[&str]) -> Output {
-        Command::new("tmux")
-            .args(["-L", &self.socket, "-f", "/dev/null"])
-            .args(args)
-            .output()
-            .unwrap()
-    }
-
-    pub fn capture(&self) -> String {
-        let o = self.tmux(&["capture-pane", "-p", "-t", "t"]);
-        String::from_utf8_lossy(&o.stdout).into_owned()
-    }
-
-    pub fn keys(&self, keys: &[&str]) {
-        let mut args = vec!["send-keys", "-t", "t"];
-        args.extend(keys);
-        assert!(self.tmux(&args).status.success());
+        let cmd = format!("{}{redirect}", command(cwd, &[], args));
+        Pane::start_shell(name, size, &cmd)
     }
 
     /// The process id of roughtui (the pane's shell's only child), read
@@ -136,6 +101,46 @@ impl Pane {
             .unwrap()
             .success();
         assert!(ok, "kill -{signal} {pid}");
+    }
+
+    /// A pane running the shell command `cmd`; its exit status is kept.
+    pub fn start_shell(name: &str, size: (u16, u16), cmd: &str) -> Pane {
+        let scratch = tempfile::tempdir().unwrap();
+        let status = scratch.path().join("status");
+        let socket = format!("roughtui-test-{name}-{}", std::process::id());
+        // Keep the pane after exit so its screen can be read.
+        let cmd = format!(
+            "{cmd}; echo $? > {}; sleep 600",
+            sh_quote(status.to_str().unwrap())
+        );
+        let p = Pane {
+            socket,
+            status,
+            _scratch: scratch,
+        };
+        let (w, h) = (size.0.to_string(), size.1.to_string());
+        let out = p.tmux(&["new-session", "-d", "-s", "t", "-x", &w, "-y", &h, &cmd]);
+        assert!(out.status.success(), "tmux: {out:?}");
+        p
+    }
+
+    pub fn tmux(&self, args: &[&str]) -> Output {
+        Command::new("tmux")
+            .args(["-L", &self.socket, "-f", "/dev/null"])
+            .args(args)
+            .output()
+            .unwrap()
+    }
+
+    pub fn capture(&self) -> String {
+        let o = self.tmux(&["capture-pane", "-p", "-t", "t"]);
+        String::from_utf8_lossy(&o.stdout).into_owned()
+    }
+
+    pub fn keys(&self, keys: &[&str]) {
+        let mut args = vec!["send-keys", "-t", "t"];
+        args.extend(keys);
+        assert!(self.tmux(&args).status.success());
     }
 
     pub fn display(&self, format: &str) -> String {
@@ -204,6 +209,7 @@ impl Drop for Pane {
     }
 }
 
+/// Braille cells on a screen: how much of the chart is drawn.
 pub fn braille(s: &str) -> usize {
     s.chars()
         .filter(|c| ('\u{2801}'..='\u{28FF}').contains(c))

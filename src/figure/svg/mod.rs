@@ -46,7 +46,20 @@ pub fn render_svg(view: View, state: &State, opts: &FigureOptions) -> anyhow::Re
         caption(&caption_area, state)?;
         root.present().map_err(plot_err)?;
     }
-    Ok(buf)
+    Ok(crisp_rects(buf))
+}
+
+/// Adjacent filled rectangles (the map's cells) would show hairline seams
+/// where viewers anti-alias their shared edges; rectangles are drawn with
+/// crisp edges, curves and text stay smooth.
+fn crisp_rects(mut svg: String) -> String {
+    if let Some(end) = svg
+        .find("<svg")
+        .and_then(|at| svg[at..].find('>').map(|e| at + e + 1))
+    {
+        svg.insert_str(end, "\n<style>rect{shape-rendering:crispEdges}</style>");
+    }
+    svg
 }
 
 type Area<'a> = DrawingArea<SVGBackend<'a>, plotters::coord::Shift>;

@@ -1,0 +1,181 @@
+//! Following the lecturer. The lecturer's sessions publish what they show
+//! (a [`Shown`]) on a latest-value channel, so a slow student never queues
+//! anything; each student's [`Follow`] decides whether to show it.
+
+use rough_model::Axis;
+
+use crate::figure::View;
+use crate::snapshot::State;
+use crate::tui::app::{App, Message};
+
+/// What a lecturer's explorer shows: the scene (parameters, sweep, model,
+/// moments), the selected slider, the view and the map's y axis.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Shown {
+    pub state: State,
+    pub selected: usize,
+    pub view: View,
+    pub map_y: Option<Axis>,
+}
+
+impl Shown {
+    pub fn of(app: &App) -> Shown {
+        Shown {
+            state: app.state.clone(),
+            selected: app.selected,
+            view: app.view,
+            map_y: app.map_y,
+        }
+    }
+
+    /// Makes `app` show this.
+    pub fn apply(&self, app: &mut App) {
+        app.show(&self.state, self.selected, self.view, self.map_y);
+    }
+}
+
+/// The status line a student sees when leaving the lecturer.
+pub const DETACHED: &str = "exploring on your own — f to follow";
+pub const FOLLOWING: &str = "following the lecturer — any change explores on your own";
+pub const NO_LECTURER: &str = "no lecturer connected: exploring on your own";
+
+/// A student's relation to the lecturer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Follow {
+    /// No lecturer is connected.
+    Alone,
+    /// Showing the lecturer's state.
+    Following,
+    /// A lecturer is connected, the student explores on their own.
+    Detached,
+}
+
+/// What a change of [`Follow`] asks the session to do.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Effect {
+    None,
+    /// Show this status line.
+    Say(&'static str),
+    /// Show the lecturer's latest state (and say so).
+    Catch,
+}
+
+impl Follow {
+    /// The start: following when a lecturer is there.
+    pub fn start(lecturer: bool) -> Follow {
+        if lecturer {
+            Follow::Following
+        } else {
+            Follow::Alone
+        }
+    }
+
+    /// Whether lecturer updates are shown.
+    pub fn following(self) -> bool {
+        self == Follow::Following
+    }
+
+    /// A message the student's keys sent, before it is applied: the first
+    /// editing key detaches.
+    pub fn on_message(&mut self, msg: &Message) -> Effect {
+        if *self == Follow::Following && edits(msg) {
+            *self = Follow::Detached;
+            return Effect::Say(DETACHED);
+        }
+        Effect::None
+    }
+
+    /// The `f` key.
+    pub fn on_follow_key(&mut self) -> Effect {
+        match self {
+            Follow::Alone => Effect::Say(NO_LECTURER),
+            _ => {
+                *self = Follow::Following;
+                Effect::Catch
+            }
+        }
+    }
+
+    /// A lecturer connected (`true`) or the last one left.
+    pub fn on_lecturer(&mut self, present: bool) -> Effect {
+        match (*self, present) {
+            (Follow::Alone, true) => {
+                *self = Follow::Following;
+                Effect::Catch
+            }
+            (Follow::Following | Follow::Detached, false) => {
+                *self = Follow::Alone;
+                Effect::Say(NO_LECTURER)
+            }
+            _ => Effect::None,
+        }
+    }
+}
+
+/// Whether a message changes what the lecturer's state decides.
+fn edits(msg: &Message) -> bool {
+    use Message as M;
+    matches!(
+        msg,
+        M::SelectPrev
+            | M::SelectNext
+            | M::Step { .. }
+            | M::LoadPreset(_)
+            | M::CycleSweep
+            | M::ToggleModel
+            | M::ToggleSizeEffect
+            | M::ToggleMoments
+            | M::NextView
+            | M::PrevView
+            | M::NextMapY
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn follow_detach_refollow() {
+        let mut f = Follow::start(true);
+        assert!(f.following());
+        // Looking around does not detach.
+        assert_eq!(f.on_message(&Message::ToggleHelp), Effect::None);
+        assert_eq!(f.on_message(&Message::Resize(80, 24)), Effect::None);
+        assert_eq!(f.on_message(&Message::StartSave), Effect::None);
+        assert!(f.following());
+        // The first edit detaches, once.
+        let step = Message::Step {
+            up: true,
+            fine: false,
+        };
+        assert_eq!(f.on_message(&step), Effect::Say(DETACHED));
+        assert_eq!(f, Follow::Detached);
+        assert_eq!(f.on_message(&step), Effect::None);
+        assert!(!f.following());
+        // f follows again and catches up.
+        assert_eq!(f.on_follow_key(), Effect::Catch);
+        assert!(f.following());
+        assert_eq!(f.on_message(&Message::SelectNext), Effect::Say(DETACHED));
+        f.on_follow_key();
+        assert_eq!(f.on_message(&Message::NextView), Effect::Say(DETACHED));
+    }
+
+    #[test]
+    fn lecturer_comes_and_goes() {
+        let mut f = Follow::start(false);
+        assert_eq!(f, Follow::Alone);
+        assert_eq!(f.on_message(&Message::ToggleModel), Effect::None);
+        assert_eq!(f.on_follow_key(), Effect::Say(NO_LECTURER));
+        assert_eq!(f.on_lecturer(true), Effect::Catch);
+        assert!(f.following());
+        assert_eq!(f.on_lecturer(true), Effect::None);
+        f.on_message(&Message::CycleSweep);
+        // A detached student stays detached while the lecturer stays.
+        assert_eq!(f.on_lecturer(true), Effect::None);
+        assert_eq!(f, Follow::Detached);
+        assert_eq!(f.on_lecturer(false), Effect::Say(NO_LECTURER));
+        assert_eq!(f, Follow::Alone);
+        assert_eq!(f.on_lecturer(false), Effect::None);
+    }
+}

@@ -1,0 +1,103 @@
+//! Frames to one client. The explorer renders into a [`FrameBuf`] and hands
+//! the bytes to this writer through a one-frame slot (a channel of capacity
+//! one): while the client has not taken a frame, the explorer only notes
+//! that the screen changed and renders the latest state once the slot is
+//! free. So a stalled client holds at most one pending frame, and a client
+//! that takes nothing for [`STALL`] is dropped.
+
+use std::io::{self, Write};
+use std::sync::{Arc, Mutex};
+use std::time::Duration;
+
+use crossterm::cursor::Show;
+use crossterm::terminal::LeaveAlternateScreen;
+use russh::server::{Handle, Msg};
+use russh::{ChannelWriteHalf, Disconnect};
+use tokio::sync::mpsc;
+
+use super::stream::Kill;
+
+/// How long a client may take to accept one frame.
+pub const STALL: Duration = Duration::from_secs(5);
+
+/// A byte sink the explorer's terminal backend writes frames into.
+#[derive(Clone, Debug, Default)]
+pub struct FrameBuf(Arc<Mutex<Vec<u8>>>);
+
+impl FrameBuf {
+    /// The bytes written since the last take.
+    pub fn take(&self) -> Vec<u8> {
+        std::mem::take(&mut *self.0.lock().unwrap_or_else(|p| p.into_inner()))
+    }
+}
+
+impl Write for FrameBuf {
+    fn write(&mut self, b: &[u8]) -> io::Result<usize> {
+        self.0
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .extend_from_slice(b);
+        Ok(b.len())
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        Ok(())
+    }
+}
+
+/// The slot's sending side, for the explorer.
+pub type Slot = mpsc::Sender<Vec<u8>>;
+
+/// Starts the writer of `out`; it ends when the slot's sender is dropped
+/// (then it restores the client's terminal, sends exit status `0`, closes
+/// the channel and the connection, cut after a grace period if the
+/// client does not let go) or when the client stalls or is gone.
+pub fn spawn(out: ChannelWriteHalf<Msg>, conn: Handle, kill: Kill) -> Slot {
+    let (tx, rx) = mpsc::channel(1);
+    tokio::spawn(async move {
+        if !write_frames(out, rx).await {
+            // Stalled or gone: cut the connection now.
+            kill.kill();
+            return;
+        }
+        // The explorer was the connection's only use. A client closes the
+        // connection itself once the channel is closed; one that does not
+        // is disconnected (an earlier disconnect would make OpenSSH report
+        // status 255 instead of the session's 0).
+        tokio::time::sleep(STALL).await;
+        let _ = tokio::time::timeout(
+            STALL,
+            conn.disconnect(
+                Disconnect::ByApplication,
+                "session ended".into(),
+                String::new(),
+            ),
+        )
+        .await;
+        // A client that neither reads nor lets go keeps nothing here.
+        tokio::time::sleep(STALL).await;
+        kill.kill();
+    });
+    tx
+}
+
+/// Whether the session ended normally (not by a stalled or gone client).
+async fn write_frames(out: ChannelWriteHalf<Msg>, mut rx: mpsc::Receiver<Vec<u8>>) -> bool {
+    while let Some(frame) = rx.recv().await {
+        match tokio::time::timeout(STALL, out.data_bytes(frame)).await {
+            Ok(Ok(())) => {}
+            // Gone or stalled: drop the slot, which ends the explorer.
+            _ => return false,
+        }
+    }
+    let mut bye = Vec::new();
+    let _ = crossterm::execute!(bye, LeaveAlternateScreen, Show);
+    let _ = tokio::time::timeout(STALL, async {
+        let _ = out.data_bytes(bye).await;
+        let _ = out.exit_status(0).await;
+        let _ = out.eof().await;
+        let _ = out.close().await;
+    })
+    .await;
+    true
+}
