@@ -80,7 +80,7 @@ fn bad_values_keep_the_prompt_with_the_reason_and_esc_cancels() {
     assert_eq!(prompt_text(&a), "1.5qx");
     enter(&mut a);
     let st = a.status.clone().unwrap();
-    assert!(st.text.contains("hurst takes no unit (\"qx\")"), "{st:?}");
+    assert!(st.text.contains("H takes no unit (\"qx\")"), "{st:?}");
     press(&mut a, KeyCode::Esc, KeyModifiers::NONE);
     assert_eq!(a.mode, Mode::Main);
     assert_eq!(a.state, before);
@@ -89,12 +89,7 @@ fn bad_values_keep_the_prompt_with_the_reason_and_esc_cancels() {
     enter(&mut a);
     type_text(&mut a, "0.5 nm");
     enter(&mut a);
-    assert!(a
-        .status
-        .as_ref()
-        .unwrap()
-        .text
-        .contains("hurst takes no unit"));
+    assert!(a.status.as_ref().unwrap().text.contains("H takes no unit"));
 }
 
 #[test]

@@ -509,3 +509,30 @@ fn a_toggles_the_moments_and_refuses_hurst_one_with_asymptotic() {
     assert_eq!(a.state.params.get(Axis::Hurst), 0.95);
     assert_eq!(a.status.as_ref().unwrap().text, HURST_ONE_ASYMPTOTIC);
 }
+
+#[test]
+fn the_caption_leaves_with_the_scene_it_describes_and_comes_back_with_it() {
+    let mut a = fig("fig2");
+    let caption = a.state.caption.clone().expect("fig2 has a caption");
+    assert!(caption.contains("h_rms 19.8 nm"));
+    // Moving the marker along the sweep or switching the model keeps it.
+    press(&mut a, KeyCode::Right, KeyModifiers::NONE);
+    ch(&mut a, 'm');
+    assert_eq!(a.state.caption.as_deref(), Some(caption.as_str()));
+    // Another h_rms: "h_rms 19.8 nm" is no longer true, on screen or in a save.
+    press(&mut a, KeyCode::Up, KeyModifiers::NONE);
+    assert_eq!(a.selected_axis(), Axis::HRms);
+    press(&mut a, KeyCode::Right, KeyModifiers::NONE);
+    assert_eq!(a.state.caption, None);
+    assert!(!screen(&a).contains("19.8 nm, H0/E"));
+    ch(&mut a, '2');
+    assert_eq!(a.state.caption.as_deref(), Some(caption.as_str()));
+    ch(&mut a, 'e');
+    assert_eq!(a.state.caption, None);
+    ch(&mut a, 'e');
+    assert_eq!(a.state.caption.as_deref(), Some(caption.as_str()));
+    ch(&mut a, 'x');
+    assert_eq!(a.state.caption, None);
+    ch(&mut a, '2');
+    assert_eq!(a.state.caption.as_deref(), Some(caption.as_str()));
+}

@@ -83,9 +83,12 @@ fn the_claims_line_states_where_the_figures_claims_hold() {
     let mut a = a;
     update(&mut a, Message::ToggleSizeEffect);
     assert!(a.claims.is_empty(), "{:?}", a.claims);
-    // The caption stays; the claims row is empty.
+    // The caption ("with the size effect") leaves with the scene it
+    // describes; the claims row is empty.
     let s = text(&a);
-    assert!(s.contains("Fig. 4: rougher") && !s.contains("falls below ½"));
+    assert!(!s.contains("Fig. 4: rougher") && !s.contains("falls below ½"));
+    update(&mut a, Message::ToggleSizeEffect);
+    assert!(text(&a).contains("Fig. 4: rougher"));
 }
 
 #[test]
@@ -382,4 +385,27 @@ fn no_color_load_view_tells_the_tangent_from_the_elastic_curve() {
     // The tangent's dots and the elastic curve's bullets both show.
     assert!(s.matches('·').count() > 10 + 1, "{s}");
     assert!(s.matches('•').count() > 10 + 2, "{s}");
+}
+
+#[test]
+fn at_80_columns_header_and_claims_are_never_cut_inside_a_word_or_number() {
+    // fig1 sweeps H0/E: both claims together are 84 characters.
+    let a = app("fig1", (80, 24), Theme::colored());
+    let s = text(&a);
+    let lines: Vec<&str> = s.lines().collect();
+    assert!(
+        lines[0]
+            .trim_end()
+            .ends_with("asymptotic · size effect off"),
+        "{s}"
+    );
+    assert_eq!(
+        lines[2].trim_end(),
+        "plastic share falls below ½ at H0/E = 0.008318"
+    );
+    // Room enough: the header keeps the word "moments", both claims show.
+    let a = app("fig1", (160, 48), Theme::colored());
+    let s = text(&a);
+    assert!(s.contains("asymptotic moments · size effect off"), "{s}");
+    assert!(s.contains("0.008318 · Ψ_P falls below 1 at H0/E = "), "{s}");
 }

@@ -170,6 +170,18 @@ pub struct App {
     indices_key: Option<CurveKey>,
     load_key: Option<LoadKey>,
     claims_key: Option<CurveKey>,
+    /// The loaded scene's caption and the scene it describes.
+    captioned: Option<(Scene, String)>,
+}
+
+/// What a caption describes: the parameters (the swept one, which only
+/// moves the marker, normalized out), the size effect and the sweep.
+type Scene = (rough_model::Params, bool, Sweep);
+
+fn scene_of(s: &State) -> Scene {
+    let (axis, from) = (s.sweep.axis(), s.sweep.from());
+    let params = s.params.with(axis, from).unwrap_or(s.params);
+    (params, s.size_effect, s.sweep)
 }
 
 /// The default range of each parameter, for its slider and when `x` makes it
@@ -249,13 +261,32 @@ impl App {
             indices_key: None,
             load_key: None,
             claims_key: None,
+            captioned: None,
         };
+        app.keep_caption();
         app.selected = Axis::ALL
             .iter()
             .position(|a| *a == app.state.sweep.axis())
             .unwrap_or(0);
         app.refresh();
         app
+    }
+
+    /// Remembers the loaded scene's caption, shown while the scene is that one.
+    fn keep_caption(&mut self) {
+        let s = &self.state;
+        self.captioned = s.caption.clone().map(|c| (scene_of(s), c));
+    }
+
+    /// The caption, kept only while the scene is the one it describes: a
+    /// changed surface, size effect or sweep is shown (and saved) without it.
+    fn sync_caption(&mut self) {
+        let scene = scene_of(&self.state);
+        self.state.caption = self
+            .captioned
+            .as_ref()
+            .filter(|(s, _)| *s == scene)
+            .map(|(_, c)| c.clone());
     }
 
     /// Whether the terminal is below the smallest size the explorer draws in.
@@ -398,6 +429,7 @@ impl App {
             self.selected = selected;
             self.view = view;
             self.map_y = map_y;
+            self.keep_caption();
             self.refresh();
         }
     }
@@ -407,6 +439,7 @@ impl App {
         self.state = state;
         self.modified = false;
         self.file = None;
+        self.keep_caption();
         self.selected = Axis::ALL.iter().position(|a| *a == axis).unwrap_or(0);
     }
 }
@@ -560,5 +593,6 @@ pub fn update(app: &mut App, msg: Message) {
         Message::Resize(w, h) => app.size = (w, h),
         Message::Quit => app.quit = true,
     }
+    app.sync_caption();
     app.refresh();
 }

@@ -52,7 +52,7 @@ pub fn parse_value(axis: Axis, text: &str) -> Result<f64, String> {
         return Ok(v);
     }
     if !is_length(axis) {
-        return Err(format!("{} takes no unit (\"{unit}\")", axis.field()));
+        return Err(format!("{} takes no unit (\"{unit}\")", axis.symbol()));
     }
     let Some((_, power)) = LENGTH_UNITS.iter().find(|(u, _)| *u == unit) else {
         return Err(format!(
@@ -114,7 +114,7 @@ mod tests {
         assert_eq!(err(Axis::Zeta, "inf"), "\"inf\" is not a number");
         assert_eq!(err(Axis::Zeta, "1e999"), "\"1e999\" is not a finite number");
         assert_eq!(err(Axis::Zeta, "1,5"), "\"1,5\" is not a number");
-        assert_eq!(err(Axis::Zeta, "30 nm"), "zeta takes no unit (\"nm\")");
+        assert_eq!(err(Axis::Zeta, "30 nm"), "ζ takes no unit (\"nm\")");
         assert_eq!(
             err(Axis::HRms, "3 ft"),
             "unknown unit \"ft\": use m, cm, mm, µm (um), nm or pm"

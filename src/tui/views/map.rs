@@ -39,7 +39,7 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         format!("plastic share over {} × {}", xa.symbol(), ya.symbol()),
         t.title,
     )];
-    let hint = "  (y: another y axis)";
+    let hint = "  (key y: next y axis)";
     let used = title[0].content.chars().count();
     if used + hint.chars().count() <= usize::from(area.width) {
         title.push(Span::styled(hint, t.dim));

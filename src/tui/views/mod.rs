@@ -80,18 +80,29 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
     if app.modified {
         name.push('*');
     }
-    let line = Line::from(vec![
-        Span::styled(" roughtui ", t.title),
-        Span::styled(format!("[{name}]"), t.selected),
-        Span::raw(format!(
-            "  {} {}…{} · {} · {} moments · size effect {}",
+    let name = format!("[{name}]");
+    let scene = |moments: &str| {
+        format!(
+            "  {} {}…{} · {} · {}{moments} · size effect {}",
             axis.symbol(),
             fmt_short(axis, s.sweep.from()),
             fmt_short(axis, s.sweep.to()),
             s.model.label(),
             s.moments.label(),
             if s.size_effect { "on" } else { "off" },
-        )),
+        )
+    };
+    // At 80 columns a long sweep (h_rms 1 nm…10 µm) leaves no room for the
+    // word "moments": drop it rather than cut the size effect's state.
+    let room = usize::from(area.width).saturating_sub(" roughtui ".len() + name.chars().count());
+    let mut rest = scene(" moments");
+    if rest.chars().count() > room {
+        rest = scene("");
+    }
+    let line = Line::from(vec![
+        Span::styled(" roughtui ", t.title),
+        Span::styled(name, t.selected),
+        Span::raw(rest),
     ]);
     line.render(area, buf);
 }
@@ -107,8 +118,20 @@ fn render_caption(app: &App, area: Rect, buf: &mut Buffer) {
         .map(|l| Line::styled(l, t.dim))
         .collect();
     lines.resize(rows, Line::raw(""));
-    let claims: Vec<String> = app.claims.iter().map(|c| c.text()).collect();
-    lines.push(Line::styled(claims.join(" · "), t.ok));
+    // Whole claims only: one that does not fit is left out, never cut
+    // inside its number.
+    let mut claims = String::new();
+    for c in &app.claims {
+        let next = if claims.is_empty() {
+            c.text()
+        } else {
+            format!("{claims} · {}", c.text())
+        };
+        if next.chars().count() <= usize::from(area.width) {
+            claims = next;
+        }
+    }
+    lines.push(Line::styled(claims, t.ok));
     Paragraph::new(lines).render(area, buf);
 }
 
