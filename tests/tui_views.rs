@@ -409,3 +409,23 @@ fn at_80_columns_header_and_claims_are_never_cut_inside_a_word_or_number() {
     assert!(s.contains("asymptotic moments · size effect off"), "{s}");
     assert!(s.contains("0.008318 · Ψ_P falls below 1 at H0/E = "), "{s}");
 }
+
+#[test]
+fn at_80_columns_the_load_title_keeps_its_numbers_whole() {
+    // fig3 at ζ = 128: Ψ* 0.0798 and a slope of 10.0 do not fit the long
+    // form, which showed "initial slope 10." here.
+    let mut a = app("fig3", (80, 24), Theme::colored());
+    show(&mut a, View::Load);
+    let s = text(&a);
+    let title = s.lines().nth(3).unwrap().trim_end();
+    assert!(
+        title.ends_with("A/A0 vs p̄/H_y · Ψ* 0.0798 · S_tot 10.0"),
+        "{s}"
+    );
+    // fig4 still fits the long form; its marker value is left out, not cut.
+    let mut a = app("fig4", (80, 24), Theme::colored());
+    show(&mut a, View::Load);
+    let s = text(&a);
+    let title = s.lines().nth(3).unwrap().trim_end();
+    assert!(title.ends_with("Ψ* 0.777 · initial slope 1.11"), "{s}");
+}

@@ -56,13 +56,15 @@ pub fn title(app: &App, mut spans: Vec<Span<'static>>, area: Rect, buf: &mut Buf
     let t = &app.theme;
     let axis = app.state.sweep.axis();
     if let Some(m) = app.marker() {
-        spans.push(Span::raw("  "));
-        spans.push(Span::styled(t.marker_line.sample, t.marker_line.style));
-        spans.push(Span::raw(format!(
-            " {} = {}",
-            axis.symbol(),
-            fmt_param(axis, m)
-        )));
+        let value = format!(" {} = {}", axis.symbol(), fmt_param(axis, m));
+        // The marker's value whole or not at all, never cut inside a number.
+        let used: usize = spans.iter().map(Span::width).sum();
+        let len = 2 + Span::raw(t.marker_line.sample).width() + Span::raw(&value).width();
+        if used + len <= usize::from(area.width) {
+            spans.push(Span::raw("  "));
+            spans.push(Span::styled(t.marker_line.sample, t.marker_line.style));
+            spans.push(Span::raw(value));
+        }
     }
     Line::from(spans).render(Rect::new(area.x, area.y, area.width, 1), buf);
 }

@@ -15,19 +15,18 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     let t = &app.theme;
     let s = &app.state;
     let p = &app.load;
-    let (h, psi) = if s.size_effect {
+    let (h, psi_name) = if s.size_effect {
         ("H_y", "Ψ*")
     } else {
         ("H0", "Ψ_P")
     };
-    let title = vec![Span::styled(
-        format!(
-            "A/A0 vs p̄/{h} · {psi} {} · initial slope {}",
-            fmt_num(app.readout.psi),
-            fmt_num(p.slope)
-        ),
-        t.title,
-    )];
+    let (psi, slope) = (fmt_num(app.readout.psi), fmt_num(p.slope));
+    let mut title = format!("A/A0 vs p̄/{h} · {psi_name} {psi} · initial slope {slope}");
+    if Span::raw(&title).width() > usize::from(area.width) {
+        // At 80 columns: the legend's "initial slope" is S_tot, named short.
+        title = format!("A/A0 vs p̄/{h} · {psi_name} {psi} · S_tot {slope}");
+    }
+    let title = vec![Span::styled(title, t.title)];
     chart::title(app, title, area, buf);
     chart::legend(&[&t.elastic, &t.plastic, &t.total, &t.tangent], area, buf);
     let bounds = [0.0, 1.0];

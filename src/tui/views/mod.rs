@@ -94,9 +94,10 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
     };
     // At 80 columns a long sweep (h_rms 1 nm…10 µm) leaves no room for the
     // word "moments": drop it rather than cut the size effect's state.
-    let room = usize::from(area.width).saturating_sub(" roughtui ".len() + name.chars().count());
+    let room =
+        usize::from(area.width).saturating_sub(" roughtui ".len() + Span::raw(&name).width());
     let mut rest = scene(" moments");
-    if rest.chars().count() > room {
+    if Span::raw(&rest).width() > room {
         rest = scene("");
     }
     let line = Line::from(vec![
@@ -127,7 +128,7 @@ fn render_caption(app: &App, area: Rect, buf: &mut Buffer) {
         } else {
             format!("{claims} · {}", c.text())
         };
-        if next.chars().count() <= usize::from(area.width) {
+        if Span::raw(&next).width() <= usize::from(area.width) {
             claims = next;
         }
     }
