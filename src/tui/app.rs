@@ -7,6 +7,7 @@ use std::time::SystemTime;
 
 use rough_model::{persson_elastic, slopes, Axis, Curves, SceneSpec, Slopes, Surface, Sweep};
 
+use super::caption::{self, KeptCaption};
 use super::ghost::Ghost;
 use super::layout::Regions;
 use super::line_edit::{Edit, LineEdit};
@@ -171,17 +172,7 @@ pub struct App {
     load_key: Option<LoadKey>,
     claims_key: Option<CurveKey>,
     /// The loaded scene's caption and the scene it describes.
-    captioned: Option<(Scene, String)>,
-}
-
-/// What a caption describes: the parameters (the swept one, which only
-/// moves the marker, normalized out), the size effect and the sweep.
-type Scene = (rough_model::Params, bool, Sweep);
-
-fn scene_of(s: &State) -> Scene {
-    let (axis, from) = (s.sweep.axis(), s.sweep.from());
-    let params = s.params.with(axis, from).unwrap_or(s.params);
-    (params, s.size_effect, s.sweep)
+    captioned: KeptCaption,
 }
 
 /// The default range of each parameter, for its slider and when `x` makes it
@@ -261,32 +252,15 @@ impl App {
             indices_key: None,
             load_key: None,
             claims_key: None,
-            captioned: None,
+            captioned: KeptCaption::default(),
         };
-        app.keep_caption();
+        app.captioned = KeptCaption::of(&app.state);
         app.selected = Axis::ALL
             .iter()
             .position(|a| *a == app.state.sweep.axis())
             .unwrap_or(0);
         app.refresh();
         app
-    }
-
-    /// Remembers the loaded scene's caption, shown while the scene is that one.
-    fn keep_caption(&mut self) {
-        let s = &self.state;
-        self.captioned = s.caption.clone().map(|c| (scene_of(s), c));
-    }
-
-    /// The caption, kept only while the scene is the one it describes: a
-    /// changed surface, size effect or sweep is shown (and saved) without it.
-    fn sync_caption(&mut self) {
-        let scene = scene_of(&self.state);
-        self.state.caption = self
-            .captioned
-            .as_ref()
-            .filter(|(s, _)| *s == scene)
-            .map(|(_, c)| c.clone());
     }
 
     /// Whether the terminal is below the smallest size the explorer draws in.
@@ -317,9 +291,7 @@ impl App {
 
     fn curve_key(&self, points: usize) -> CurveKey {
         let mut spec = self.state.scene_spec(Curves::ALL, points);
-        // The swept value only moves the marker: normalize it out of the key.
-        let s = &self.state.sweep;
-        spec.base = spec.base.with(s.axis(), s.from()).unwrap_or(spec.base);
+        spec.base = caption::swept_out(&self.state, spec.base);
         CurveKey { spec }
     }
 
@@ -429,7 +401,7 @@ impl App {
             self.selected = selected;
             self.view = view;
             self.map_y = map_y;
-            self.keep_caption();
+            self.captioned = KeptCaption::of(&self.state);
             self.refresh();
         }
     }
@@ -439,7 +411,7 @@ impl App {
         self.state = state;
         self.modified = false;
         self.file = None;
-        self.keep_caption();
+        self.captioned = KeptCaption::of(&self.state);
         self.selected = Axis::ALL.iter().position(|a| *a == axis).unwrap_or(0);
     }
 }
@@ -593,6 +565,6 @@ pub fn update(app: &mut App, msg: Message) {
         Message::Resize(w, h) => app.size = (w, h),
         Message::Quit => app.quit = true,
     }
-    app.sync_caption();
+    app.captioned.apply(&mut app.state);
     app.refresh();
 }

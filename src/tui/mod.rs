@@ -3,6 +3,7 @@
 //! something, so an idle session writes nothing to the terminal.
 
 pub mod app;
+pub mod caption;
 pub mod fmt;
 pub mod ghost;
 pub mod help;
