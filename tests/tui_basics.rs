@@ -70,10 +70,10 @@ fn bad_values_keep_the_prompt_with_the_reason_and_esc_cancels() {
     );
     let st = a.status.clone().unwrap();
     assert!(
-        st.error && st.text.contains("hurst = 1.5 is out of range"),
+        st.error && st.text.contains("H = 1.5 is out of range"),
         "{st:?}"
     );
-    assert!(screen(&a).contains("hurst = 1.5 is out of range"));
+    assert!(screen(&a).contains("H = 1.5 is out of range"));
     // q and other command keys are text in the prompt.
     type_text(&mut a, "qx");
     assert!(!a.quit);

@@ -2,7 +2,7 @@
 //! unit (`25nm`, `2 mm`, `1e-3`, `0.5 µm`); a bare number is in metres. The
 //! model's own range check decides whether the value may be used.
 
-use rough_model::{Axis, Params};
+use rough_model::{Axis, ParamError, Params};
 
 /// The length units the prompt knows, with their power of ten in metres.
 /// The unit goes into the decimal exponent before the one rounding to
@@ -77,7 +77,15 @@ pub fn parse_value(axis: Axis, text: &str) -> Result<f64, String> {
 /// range message).
 pub fn apply_value(params: &Params, axis: Axis, text: &str) -> Result<Params, String> {
     let v = parse_value(axis, text)?;
-    params.with(axis, v).map_err(|e| e.to_string())
+    params.with(axis, v).map_err(|e| match e {
+        // In the prompt's words: its symbol and the value as typed.
+        ParamError::OutOfDomain { valid, .. } => format!(
+            "{} = {} is out of range: it must be {valid}",
+            axis.symbol(),
+            text.trim()
+        ),
+        e => e.to_string(),
+    })
 }
 
 #[cfg(test)]
@@ -127,8 +135,11 @@ mod tests {
         let q = apply_value(&p, Axis::HRms, "25nm").unwrap();
         assert_eq!(q.get(Axis::HRms), 25e-9);
         let e = apply_value(&p, Axis::Hurst, "1.5").unwrap_err();
-        assert!(e.starts_with("hurst = 1.5 is out of range"), "{e}");
-        let e = apply_value(&p, Axis::HRms, "-2 nm").unwrap_err();
-        assert!(e.contains("out of range"), "{e}");
+        assert_eq!(e, "H = 1.5 is out of range: it must be in (0, 1]");
+        let e = apply_value(&p, Axis::HRms, " -2 nm").unwrap_err();
+        assert_eq!(
+            e,
+            "h_rms = -2 nm is out of range: it must be finite and > 0"
+        );
     }
 }
