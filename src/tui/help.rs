@@ -68,7 +68,7 @@ pub fn lines(app: &App) -> Vec<(bool, Line<'static>)> {
         lines.push((
             false,
             Line::from(vec![
-                Span::styled(format!(" {:<15}", b.label), t.title),
+                Span::styled(padded(b.label, 15), t.title),
                 Span::raw(b.help),
             ]),
         ));
@@ -78,12 +78,19 @@ pub fn lines(app: &App) -> Vec<(bool, Line<'static>)> {
         lines.push((
             false,
             Line::from(vec![
-                Span::styled(format!(" {sym:<10}"), t.title),
+                Span::styled(padded(sym, 10), t.title),
                 Span::raw(*what),
             ]),
         ));
     }
     lines
+}
+
+/// ` text` padded to `width` columns: by display width, so that a
+/// combining mark (the bar of p̄) takes no column of its own.
+fn padded(text: &str, width: usize) -> String {
+    let pad = width.saturating_sub(Span::raw(text).width());
+    format!(" {text}{}", " ".repeat(pad))
 }
 
 /// `lines` in pages of `per_page`; a heading never ends a page.
