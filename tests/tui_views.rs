@@ -429,3 +429,26 @@ fn at_80_columns_the_load_title_keeps_its_numbers_whole() {
     let title = s.lines().nth(3).unwrap().trim_end();
     assert!(title.ends_with("Ψ* 0.777 · initial slope 1.11"), "{s}");
 }
+
+#[test]
+fn at_80_columns_a_long_name_gives_way_to_the_scene_in_the_header() {
+    let header = |name: &str, file: &str| {
+        let mut a = app("fig2", (80, 24), Theme::colored());
+        a.state.name = name.into();
+        a.file = Some(file.into());
+        let s = text(&a);
+        s.lines().next().unwrap().trim_end().to_string()
+    };
+    // A file saved under the scene's name is named once, cut at its end.
+    let h = header("fig2-20261123-205916", "fig2-20261123-205916.ron");
+    let scene = "]  ζ 1…1e4 · closed form · asymptotic · size effect off";
+    assert_eq!(h, format!(" roughtui [fig2-20261123…{scene}"));
+    let h = header("mine", "mine.ron");
+    assert_eq!(h, format!(" roughtui [mine.ron{scene}"));
+    // Another name and file: the file alone, cut if need be, not the scene.
+    let h = header("a long scene name for the Monday lecture", "lecture.ron");
+    assert_eq!(h, format!(" roughtui [lecture.ron{scene}"));
+    let h = header("fig2", "a-long-file-name-for-the-monday-lecture.ron");
+    assert!(h.starts_with(" roughtui [a-long-file-n"), "{h}");
+    assert!(h.ends_with(&format!("…{scene}")), "{h}");
+}

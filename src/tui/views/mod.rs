@@ -74,13 +74,20 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
             .collect()
     };
     let mut name = clean(&s.name);
+    // Where the name and file do not both fit, the file alone.
+    let mut file_only = None;
     if let Some(f) = &app.file {
-        name = format!("{name} · {}", clean(f));
+        // A file saved under the scene's name is named once.
+        let f = clean(f);
+        let stem = std::path::Path::new(&f).file_stem();
+        if stem.and_then(|x| x.to_str()) != Some(name.as_str()) {
+            name = format!("{name} · {f}");
+            file_only = Some(f);
+        } else {
+            name = f;
+        }
     }
-    if app.modified {
-        name.push('*');
-    }
-    let name = format!("[{name}]");
+    let star = if app.modified { "*" } else { "" };
     let scene = |moments: &str| {
         format!(
             "  {} {}…{} · {} · {}{moments} · size effect {}",
@@ -92,14 +99,25 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
             if s.size_effect { "on" } else { "off" },
         )
     };
-    // At 80 columns a long sweep (h_rms 1 nm…10 µm) leaves no room for the
-    // word "moments": drop it rather than cut the size effect's state.
-    let room =
-        usize::from(area.width).saturating_sub(" roughtui ".len() + Span::raw(&name).width());
+    // At 80 columns: first the word "moments" goes, then the end of a long
+    // name, rather than the end of the scene (the size effect's state).
+    let width = |text: &str| Span::raw(text).width();
+    let room = |rest: &str| {
+        usize::from(area.width).saturating_sub(" roughtui []".len() + star.len() + width(rest))
+    };
     let mut rest = scene(" moments");
-    if Span::raw(&rest).width() > room {
+    if width(&name) > room(&rest) {
         rest = scene("");
     }
+    let room = room(&rest);
+    if width(&name) > room {
+        name = file_only.unwrap_or(name);
+    }
+    if width(&name) > room {
+        let keep = room.saturating_sub(1);
+        name = name.chars().take(keep).chain(['…']).collect();
+    }
+    let name = format!("[{name}{star}]");
     let line = Line::from(vec![
         Span::styled(" roughtui ", t.title),
         Span::styled(name, t.selected),
