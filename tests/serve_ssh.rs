@@ -138,6 +138,13 @@ fn students_follow_the_lecturer_until_they_explore() {
     let stud = Pane::start_shell("serve-stud", (100, 30), &srv.ssh_line("bob", &["-t"]));
     stud.wait_text("Readout");
     stud.wait_text("following the lecturer");
+    // The student's help and footer name f; the lecturer's do not.
+    assert!(stud.capture().contains("f follow"));
+    stud.keys(&["?"]);
+    stud.wait_text("follow the lecturer again");
+    stud.keys(&["Escape"]);
+    stud.wait_for("help closed", |s| !s.contains("Esc or ? closes"));
+    assert!(!lect.capture().contains("f follow"));
     lect.keys(&["Right"]);
     lect.wait_for("lecturer moved", |s| zeta(s) == "178");
     stud.wait_for("student follows", |s| zeta(s) == "178");

@@ -445,3 +445,48 @@ fn g_pins_a_ghost_that_stays_while_parameters_change() {
     assert!(a.ghost.is_none());
     assert!(a.status.as_ref().unwrap().text.contains("ghost cleared"));
 }
+
+/// All pages of the help, as text.
+fn help_pages(a: &mut roughtui::tui::app::App) -> String {
+    ch(a, '?');
+    let mut seen = String::new();
+    for _ in 0..6 {
+        seen.push_str(&screen(a));
+        press(a, KeyCode::Right, KeyModifiers::NONE);
+    }
+    ch(a, '?');
+    seen
+}
+
+#[test]
+fn only_a_served_student_has_the_follow_key() {
+    use roughtui::tui::keys::{footer, message_for_key};
+    let f = common::key(KeyCode::Char('f'), KeyModifiers::NONE);
+
+    let mut local = fig("fig2");
+    assert_eq!(message_for_key(&local, &f), None);
+    assert!(!footer(&local, 200).contains("f follow"));
+    let help = help_pages(&mut local);
+    assert!(help.contains("Esc or ? closes"), "{help}");
+    assert!(!help.contains("follow the lecturer"), "{help}");
+
+    let mut student = fig("fig2");
+    student.student = true;
+    assert_eq!(message_for_key(&student, &f), Some(Message::Follow));
+    // First in the footer, so that 80 columns keep it.
+    assert!(footer(&student, 78).starts_with("f follow  "));
+    assert!(screen(&student).contains("f follow"));
+    let help = help_pages(&mut student);
+    assert!(help.contains(" f ") && help.contains("follow the lecturer again"));
+    // Under the help or in a prompt, f is not the follow key.
+    ch(&mut student, '?');
+    assert_eq!(message_for_key(&student, &f), None);
+    ch(&mut student, '?');
+    press(&mut student, KeyCode::Enter, KeyModifiers::NONE);
+    assert!(matches!(student.mode, Mode::Value(..)));
+    assert_ne!(message_for_key(&student, &f), Some(Message::Follow));
+    // The explorer itself leaves the scene alone on Follow.
+    let before = student.state.clone();
+    update(&mut student, Message::Follow);
+    assert_eq!(student.state, before);
+}

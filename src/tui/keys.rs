@@ -17,16 +17,23 @@ pub enum Context {
     MainAndHelp,
     /// A prompt (the save name, a slider's value) is open.
     Prompt,
+    /// The explorer of a student in a served class (`roughtui serve`).
+    Student,
 }
 
 impl Context {
-    fn covers(self, mode: &Mode) -> bool {
+    fn covers(self, app: &App) -> bool {
         matches!(
-            (self, mode),
+            (self, &app.mode),
             (Context::Main | Context::MainAndHelp, Mode::Main)
                 | (Context::Help | Context::MainAndHelp, Mode::Help)
                 | (Context::Prompt, Mode::Prompt(_) | Mode::Value(..))
-        )
+        ) || (self == Context::Student && app.student && app.mode == Mode::Main)
+    }
+
+    /// Whether the help overlay of `app` lists bindings of this context.
+    pub fn listed(self, app: &App) -> bool {
+        self != Context::Student || app.student
     }
 }
 
@@ -92,7 +99,7 @@ pub struct Binding {
     pub footer: Option<&'static str>,
 }
 
-use Context::{Help, Main, MainAndHelp, Prompt};
+use Context::{Help, Main, MainAndHelp, Prompt, Student};
 use KeyCode::{
     BackTab, Backspace, Delete, Down, End, Enter, Esc, Home, Left, PageDown, PageUp, Right, Tab, Up,
 };
@@ -137,6 +144,7 @@ const FINE_UP: Message = M::Step {
 
 #[rustfmt::skip]
 pub const BINDINGS: &[Binding] = &[
+    bind(Student, &[(ch('f'), M::Follow)], "f", "follow the lecturer again", Some("f follow")),
     bind(Main, &[(key(Up), M::SelectPrev), (ch('k'), M::SelectPrev), (key(Down), M::SelectNext), (ch('j'), M::SelectNext)], "↑ ↓  k j", "select a slider", Some("↑↓ select")),
     bind(Main, &[(key(Left), DOWN), (ch('h'), DOWN), (key(Right), UP), (ch('l'), UP)], "← →  h l", "change it (¼ decade; H: 0.05)", Some("←→ change")),
     bind(Main, &[(shift(Left), FINE_DOWN), (ch('H'), FINE_DOWN), (shift(Right), FINE_UP), (ch('L'), FINE_UP)], "⇧← ⇧→  H L", "fine step (1/40 decade; H: 0.01)", None),
@@ -176,7 +184,7 @@ pub fn message_for_key(app: &App, ev: &KeyEvent) -> Option<Message> {
             .any(|(k, m)| *m == M::Quit && k.matches(ev));
         return quits.then_some(M::Quit);
     }
-    for b in BINDINGS.iter().filter(|b| b.context.covers(&app.mode)) {
+    for b in BINDINGS.iter().filter(|b| b.context.covers(app)) {
         if let Some((_, m)) = b.keys.iter().find(|(k, _)| k.matches(ev)) {
             return Some(*m);
         }
@@ -201,12 +209,12 @@ pub fn message_for_event(app: &App, ev: &Event) -> Option<Message> {
     }
 }
 
-/// The footer for a mode in `width` columns: the entries in table order,
-/// those that do not fit left out, but the help key's always kept.
-pub fn footer(mode: &Mode, width: usize) -> String {
+/// The footer for the app's mode in `width` columns: the entries in table
+/// order, those that do not fit left out, but the help key's always kept.
+pub fn footer(app: &App, width: usize) -> String {
     let entries: Vec<(&str, bool)> = BINDINGS
         .iter()
-        .filter(|b| b.context.covers(mode))
+        .filter(|b| b.context.covers(app))
         .filter_map(|b| {
             let help = b.keys.iter().any(|(_, m)| *m == Message::ToggleHelp);
             b.footer.map(|f| (f, help))
