@@ -9,13 +9,16 @@ use crate::snapshot::State;
 use crate::tui::app::{App, Message};
 
 /// What a lecturer's explorer shows: the scene (parameters, sweep, model,
-/// moments), the selected slider, the view and the map's y axis.
+/// moments), the selected slider, the view, the map's y axis, and the
+/// header's file name and modified mark.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Shown {
     pub state: State,
     pub selected: usize,
     pub view: View,
     pub map_y: Option<Axis>,
+    pub modified: bool,
+    pub file: Option<String>,
 }
 
 impl Shown {
@@ -25,12 +28,16 @@ impl Shown {
             selected: app.selected,
             view: app.view,
             map_y: app.map_y,
+            modified: app.modified,
+            file: app.file.clone(),
         }
     }
 
     /// Makes `app` show this.
     pub fn apply(&self, app: &mut App) {
         app.show(&self.state, self.selected, self.view, self.map_y);
+        app.modified = self.modified;
+        app.file.clone_from(&self.file);
     }
 }
 
@@ -134,6 +141,39 @@ fn edits(msg: &Message) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::presets;
+    use crate::tui::app::update;
+    use crate::tui::theme::Theme;
+
+    fn fig(name: &str) -> App {
+        App::new(presets::load(name).unwrap(), Theme::colored(), (80, 24))
+    }
+
+    #[test]
+    fn catching_up_takes_the_header_marks_too() {
+        // A detached student changed fig2; the lecturer loads fig1 afresh.
+        let mut student = fig("fig2");
+        update(
+            &mut student,
+            Message::Step {
+                up: true,
+                fine: false,
+            },
+        );
+        assert!(student.modified);
+        let mut lecturer = fig("fig2");
+        update(&mut lecturer, Message::LoadPreset(0));
+        assert!(!lecturer.modified);
+        Shown::of(&lecturer).apply(&mut student);
+        assert_eq!(student.state, lecturer.state);
+        assert!(!student.modified, "stale modified mark after re-follow");
+        // A lecturer's change marks the student's header as well.
+        update(&mut lecturer, Message::ToggleModel);
+        lecturer.file = Some("class.ron".into());
+        Shown::of(&lecturer).apply(&mut student);
+        assert!(student.modified);
+        assert_eq!(student.file.as_deref(), Some("class.ron"));
+    }
 
     #[test]
     fn follow_detach_refollow() {
