@@ -469,6 +469,8 @@ fn only_a_served_student_has_the_follow_key() {
     let help = help_pages(&mut local);
     assert!(help.contains("Esc or ? closes"), "{help}");
     assert!(!help.contains("follow the lecturer"), "{help}");
+    assert!(help.contains("save a snapshot here (.ron)"), "{help}");
+    assert!(!help.contains("snapshot (.ron text) to copy"), "{help}");
 
     let mut student = fig("fig2");
     student.student = true;
@@ -478,6 +480,21 @@ fn only_a_served_student_has_the_follow_key() {
     assert!(screen(&student).contains("f follow"));
     let help = help_pages(&mut student);
     assert!(help.contains(" f ") && help.contains("follow the lecturer again"));
+    // A student's s and p write nothing on the server; the help says so.
+    assert!(
+        help.contains("show the snapshot (.ron text) to copy"),
+        "{help}"
+    );
+    assert!(help.contains("no pictures over SSH"), "{help}");
+    assert!(!help.contains("save a snapshot here"), "{help}");
+    assert!(!help.contains("as a picture here"), "{help}");
+    assert_eq!(
+        message_for_key(
+            &student,
+            &common::key(KeyCode::Char('s'), KeyModifiers::NONE)
+        ),
+        Some(Message::StartSave)
+    );
     // Under the help or in a prompt, f is not the follow key.
     ch(&mut student, '?');
     assert_eq!(message_for_key(&student, &f), None);

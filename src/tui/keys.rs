@@ -19,6 +19,8 @@ pub enum Context {
     Prompt,
     /// The explorer of a student in a served class (`roughtui serve`).
     Student,
+    /// The explorer of anyone else: it writes files where it runs.
+    NotStudent,
 }
 
 impl Context {
@@ -28,12 +30,20 @@ impl Context {
             (Context::Main | Context::MainAndHelp, Mode::Main)
                 | (Context::Help | Context::MainAndHelp, Mode::Help)
                 | (Context::Prompt, Mode::Prompt(_) | Mode::Value(..))
-        ) || (self == Context::Student && app.student && app.mode == Mode::Main)
+        ) || (app.mode == Mode::Main && self.listed(app) && self.is_role())
+    }
+
+    fn is_role(self) -> bool {
+        matches!(self, Context::Student | Context::NotStudent)
     }
 
     /// Whether the help overlay of `app` lists bindings of this context.
     pub fn listed(self, app: &App) -> bool {
-        self != Context::Student || app.student
+        match self {
+            Context::Student => app.student,
+            Context::NotStudent => !app.student,
+            _ => true,
+        }
     }
 }
 
@@ -99,7 +109,7 @@ pub struct Binding {
     pub footer: Option<&'static str>,
 }
 
-use Context::{Help, Main, MainAndHelp, Prompt, Student};
+use Context::{Help, Main, MainAndHelp, NotStudent, Prompt, Student};
 use KeyCode::{
     BackTab, Backspace, Delete, Down, End, Enter, Esc, Home, Left, PageDown, PageUp, Right, Tab, Up,
 };
@@ -156,9 +166,11 @@ pub const BINDINGS: &[Binding] = &[
     bind(Main, &[(ch('e'), M::ToggleSizeEffect)], "e", "size effect on / off", Some("e size")),
     bind(Main, &[(ch('a'), M::ToggleMoments)], "a", "truncated / asymptotic moments (eq. 10)", Some("a moments")),
     bind(Main, &[(ch('y'), M::NextMapY)], "y", "the regime map's next y parameter", None),
-    bind(Main, &[(ch('s'), M::StartSave)], "s", "save a snapshot here (.ron)", Some("s save")),
+    bind(NotStudent, &[(ch('s'), M::StartSave)], "s", "save a snapshot here (.ron)", Some("s save")),
+    bind(Student, &[(ch('s'), M::StartSave)], "s", "show the snapshot (.ron text) to copy", Some("s snapshot")),
     bind(Main, &[(ch('g'), M::ToggleGhost)], "g", "pin the curves as a dim ghost / clear it", None),
-    bind(Main, &[(ch('p'), M::SavePicture)], "p", "save the view as a picture here (.svg)", Some("p picture")),
+    bind(NotStudent, &[(ch('p'), M::SavePicture)], "p", "save the view as a picture here (.svg)", Some("p picture")),
+    bind(Student, &[(ch('p'), M::SavePicture)], "p", "no pictures over SSH: s shows the snapshot", None),
     bind(MainAndHelp, &[(ch('?'), M::ToggleHelp)], "?", "show / hide this help", Some("? help")),
     bind(Help, &[(key(Esc), M::CloseHelp)], "Esc", "close the help", None),
     bind(Help, &[(key(Right), M::HelpPage { next: true }), (key(PageDown), M::HelpPage { next: true }), (ch(' '), M::HelpPage { next: true }), (key(Left), M::HelpPage { next: false }), (key(PageUp), M::HelpPage { next: false })], "→ ←  PgDn PgUp", "next / previous page of the help", None),
