@@ -168,6 +168,18 @@ fn students_follow_the_lecturer_until_they_explore() {
     lect.keys(&["q"]);
     assert_eq!(lect.exit_status(), 0);
     stud.wait_text("no lecturer connected");
+    // The lecturer comes back where they left, and the student follows.
+    let lect = Pane::start_shell(
+        "serve-lect2",
+        (100, 30),
+        &srv.ssh_line("lecturer", &["-t", "-i", key, "-o", "IdentitiesOnly=yes"]),
+    );
+    let s = lect.wait_text("Readout");
+    assert_eq!(zeta(&s), l, "{s}");
+    stud.wait_text("following the lecturer");
+    assert_eq!(zeta(&stud.capture()), l);
+    lect.keys(&["q"]);
+    assert_eq!(lect.exit_status(), 0);
     stud.keys(&["C-c"]);
     assert_eq!(stud.exit_status(), 0);
 }

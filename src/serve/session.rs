@@ -73,7 +73,7 @@ async fn run(start: Start) {
     let is_lecturer = role == Role::Lecturer;
     ex.app.student = !is_lecturer;
     if is_lecturer {
-        shared.lecturer_joined(&ex.app);
+        shared.lecturer_joined(&mut ex.app);
     } else if follow.following() {
         catch_up(&mut ex, &lecturer.borrow());
         ex.app.set_status(FOLLOWING, false);
