@@ -45,6 +45,7 @@ impl Shown {
 pub const DETACHED: &str = "exploring on your own — f to follow";
 pub const FOLLOWING: &str = "following the lecturer — any change explores on your own";
 pub const NO_LECTURER: &str = "no lecturer connected: exploring on your own";
+pub const LECTURER_BACK: &str = "the lecturer is back — f to follow";
 
 /// A student's relation to the lecturer.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -55,6 +56,9 @@ pub enum Follow {
     Following,
     /// A lecturer is connected, the student explores on their own.
     Detached,
+    /// No lecturer is connected, and the student had left the lecturer to
+    /// explore: a lecturer who comes (back) does not take their scene.
+    Away,
 }
 
 /// What a change of [`Follow`] asks the session to do.
@@ -95,7 +99,7 @@ impl Follow {
     /// The `f` key.
     pub fn on_follow_key(&mut self) -> Effect {
         match self {
-            Follow::Alone => Effect::Say(NO_LECTURER),
+            Follow::Alone | Follow::Away => Effect::Say(NO_LECTURER),
             _ => {
                 *self = Follow::Following;
                 Effect::Catch
@@ -110,8 +114,16 @@ impl Follow {
                 *self = Follow::Following;
                 Effect::Catch
             }
-            (Follow::Following | Follow::Detached, false) => {
+            (Follow::Away, true) => {
+                *self = Follow::Detached;
+                Effect::Say(LECTURER_BACK)
+            }
+            (Follow::Following, false) => {
                 *self = Follow::Alone;
+                Effect::Say(NO_LECTURER)
+            }
+            (Follow::Detached, false) => {
+                *self = Follow::Away;
                 Effect::Say(NO_LECTURER)
             }
             _ => Effect::None,
@@ -215,7 +227,27 @@ mod tests {
         assert_eq!(f.on_lecturer(true), Effect::None);
         assert_eq!(f, Follow::Detached);
         assert_eq!(f.on_lecturer(false), Effect::Say(NO_LECTURER));
-        assert_eq!(f, Follow::Alone);
+        assert_eq!(f, Follow::Away);
         assert_eq!(f.on_lecturer(false), Effect::None);
+        // A following student left alone follows the next lecturer.
+        let mut f = Follow::start(true);
+        assert_eq!(f.on_lecturer(false), Effect::Say(NO_LECTURER));
+        assert_eq!(f, Follow::Alone);
+        assert_eq!(f.on_lecturer(true), Effect::Catch);
+    }
+
+    #[test]
+    fn a_detached_student_keeps_their_scene_when_the_lecturer_returns() {
+        let mut f = Follow::start(true);
+        f.on_message(&Message::ToggleModel);
+        assert_eq!(f.on_lecturer(false), Effect::Say(NO_LECTURER));
+        assert!(!f.following());
+        assert_eq!(f.on_message(&Message::ToggleModel), Effect::None);
+        assert_eq!(f.on_follow_key(), Effect::Say(NO_LECTURER));
+        assert_eq!(f.on_lecturer(true), Effect::Say(LECTURER_BACK));
+        assert_eq!(f, Follow::Detached);
+        assert!(!f.following());
+        assert_eq!(f.on_follow_key(), Effect::Catch);
+        assert!(f.following());
     }
 }
