@@ -147,6 +147,9 @@ fn edits(msg: &Message) -> bool {
             | M::NextView
             | M::PrevView
             | M::NextMapY
+            // Typing a slider's value: the lecturer's next move would
+            // overwrite it.
+            | M::StartValue
     )
 }
 
@@ -234,6 +237,13 @@ mod tests {
         assert_eq!(f.on_lecturer(false), Effect::Say(NO_LECTURER));
         assert_eq!(f, Follow::Alone);
         assert_eq!(f.on_lecturer(true), Effect::Catch);
+    }
+
+    #[test]
+    fn typing_a_value_detaches() {
+        let mut f = Follow::start(true);
+        assert_eq!(f.on_message(&Message::StartValue), Effect::Say(DETACHED));
+        assert!(!f.following());
     }
 
     #[test]
