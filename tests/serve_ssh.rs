@@ -88,6 +88,8 @@ fn student_explores_over_ssh() {
     let p = Pane::start_shell("serve-student", (100, 30), &srv.ssh_line("alice", &["-t"]));
     let s = p.wait_text("Readout");
     assert!(s.contains("[fig2]"), "{s}");
+    // Without --lecturer-keys there is nobody to follow: no f in the footer.
+    assert!(!s.contains("f follow"), "{s}");
     assert!(braille(&s) > 100, "{} braille cells:\n{s}", braille(&s));
     assert_eq!(zeta(&s), "128");
     p.keys(&["Right"]);

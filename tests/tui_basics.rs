@@ -474,6 +474,11 @@ fn only_a_served_student_has_the_follow_key() {
 
     let mut student = fig("fig2");
     student.student = true;
+    // Without --lecturer-keys there is nobody to follow.
+    assert_eq!(message_for_key(&student, &f), None);
+    assert!(!footer(&student, 200).contains("f follow"));
+    assert!(!help_pages(&mut student).contains("follow the lecturer"));
+    student.lecturer_keys = true;
     assert_eq!(message_for_key(&student, &f), Some(Message::Follow));
     // First in the footer, so that 80 columns keep it.
     assert!(footer(&student, 78).starts_with("f follow  "));

@@ -72,6 +72,7 @@ async fn run(start: Start) {
     let mut follow = Follow::start(lecturer.borrow_and_update().is_some());
     let is_lecturer = role == Role::Lecturer;
     ex.app.student = !is_lecturer;
+    ex.app.lecturer_keys = shared.lecturer_keys.any();
     if is_lecturer {
         shared.lecturer_joined(&mut ex.app);
     } else if follow.following() {

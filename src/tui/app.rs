@@ -169,6 +169,8 @@ pub struct App {
     /// Whether this is a student's explorer in a served class: its keys,
     /// help and footer then include following the lecturer.
     pub student: bool,
+    /// Whether the class has a lecturer to follow (`--lecturer-keys`).
+    pub lecturer_keys: bool,
     pub quit: bool,
     /// How many times the curves were computed (for tests of the cache).
     pub recomputes: usize,
@@ -250,6 +252,7 @@ impl App {
             file: None,
             ghost: None,
             student: false,
+            lecturer_keys: false,
             quit: false,
             recomputes: 0,
             key: None,

@@ -21,6 +21,8 @@ pub enum Context {
     Student,
     /// The explorer of anyone else: it writes files where it runs.
     NotStudent,
+    /// A student's explorer in a class with a lecturer to follow.
+    Follower,
 }
 
 impl Context {
@@ -34,7 +36,10 @@ impl Context {
     }
 
     fn is_role(self) -> bool {
-        matches!(self, Context::Student | Context::NotStudent)
+        matches!(
+            self,
+            Context::Student | Context::NotStudent | Context::Follower
+        )
     }
 
     /// Whether the help overlay of `app` lists bindings of this context.
@@ -42,6 +47,7 @@ impl Context {
         match self {
             Context::Student => app.student,
             Context::NotStudent => !app.student,
+            Context::Follower => app.student && app.lecturer_keys,
             _ => true,
         }
     }
@@ -109,7 +115,7 @@ pub struct Binding {
     pub footer: Option<&'static str>,
 }
 
-use Context::{Help, Main, MainAndHelp, NotStudent, Prompt, Student};
+use Context::{Follower, Help, Main, MainAndHelp, NotStudent, Prompt, Student};
 use KeyCode::{
     BackTab, Backspace, Delete, Down, End, Enter, Esc, Home, Left, PageDown, PageUp, Right, Tab, Up,
 };
@@ -154,7 +160,7 @@ const FINE_UP: Message = M::Step {
 
 #[rustfmt::skip]
 pub const BINDINGS: &[Binding] = &[
-    bind(Student, &[(ch('f'), M::Follow)], "f", "follow the lecturer again", Some("f follow")),
+    bind(Follower, &[(ch('f'), M::Follow)], "f", "follow the lecturer again", Some("f follow")),
     bind(Main, &[(key(Up), M::SelectPrev), (ch('k'), M::SelectPrev), (key(Down), M::SelectNext), (ch('j'), M::SelectNext)], "↑ ↓  k j", "select a slider", Some("↑↓ select")),
     bind(Main, &[(key(Left), DOWN), (ch('h'), DOWN), (key(Right), UP), (ch('l'), UP)], "← →  h l", "change it (¼ decade; H: 0.05)", Some("←→ change")),
     bind(Main, &[(shift(Left), FINE_DOWN), (ch('H'), FINE_DOWN), (shift(Right), FINE_UP), (ch('L'), FINE_UP)], "⇧← ⇧→  H L", "fine step (1/40 decade; H: 0.01)", None),
