@@ -88,6 +88,8 @@ fn student_explores_over_ssh() {
     let p = Pane::start_shell("serve-student", (100, 30), &srv.ssh_line("alice", &["-t"]));
     let s = p.wait_text("Readout");
     assert!(s.contains("[fig2]"), "{s}");
+    // Without --lecturer-keys there is nobody to follow: no f in the footer.
+    assert!(!s.contains("f follow"), "{s}");
     assert!(braille(&s) > 100, "{} braille cells:\n{s}", braille(&s));
     assert_eq!(zeta(&s), "128");
     p.keys(&["Right"]);
@@ -138,6 +140,13 @@ fn students_follow_the_lecturer_until_they_explore() {
     let stud = Pane::start_shell("serve-stud", (100, 30), &srv.ssh_line("bob", &["-t"]));
     stud.wait_text("Readout");
     stud.wait_text("following the lecturer");
+    // The student's help and footer name f; the lecturer's do not.
+    assert!(stud.capture().contains("f follow"));
+    stud.keys(&["?"]);
+    stud.wait_text("follow the lecturer again");
+    stud.keys(&["Escape"]);
+    stud.wait_for("help closed", |s| !s.contains("Esc or ? closes"));
+    assert!(!lect.capture().contains("f follow"));
     lect.keys(&["Right"]);
     lect.wait_for("lecturer moved", |s| zeta(s) == "178");
     stud.wait_for("student follows", |s| zeta(s) == "178");
@@ -161,6 +170,18 @@ fn students_follow_the_lecturer_until_they_explore() {
     lect.keys(&["q"]);
     assert_eq!(lect.exit_status(), 0);
     stud.wait_text("no lecturer connected");
+    // The lecturer comes back where they left, and the student follows.
+    let lect = Pane::start_shell(
+        "serve-lect2",
+        (100, 30),
+        &srv.ssh_line("lecturer", &["-t", "-i", key, "-o", "IdentitiesOnly=yes"]),
+    );
+    let s = lect.wait_text("Readout");
+    assert_eq!(zeta(&s), l, "{s}");
+    stud.wait_text("following the lecturer");
+    assert_eq!(zeta(&stud.capture()), l);
+    lect.keys(&["q"]);
+    assert_eq!(lect.exit_status(), 0);
     stud.keys(&["C-c"]);
     assert_eq!(stud.exit_status(), 0);
 }

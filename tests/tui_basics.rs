@@ -444,3 +444,70 @@ fn g_pins_a_ghost_that_stays_while_parameters_change() {
     assert!(a.ghost.is_none());
     assert!(a.status.as_ref().unwrap().text.contains("ghost cleared"));
 }
+
+/// All pages of the help, as text.
+fn help_pages(a: &mut roughtui::tui::app::App) -> String {
+    ch(a, '?');
+    let mut seen = String::new();
+    for _ in 0..6 {
+        seen.push_str(&screen(a));
+        press(a, KeyCode::Right, KeyModifiers::NONE);
+    }
+    ch(a, '?');
+    seen
+}
+
+#[test]
+fn only_a_served_student_has_the_follow_key() {
+    use roughtui::tui::keys::{footer, message_for_key};
+    let f = common::key(KeyCode::Char('f'), KeyModifiers::NONE);
+
+    let mut local = fig("fig2");
+    assert_eq!(message_for_key(&local, &f), None);
+    assert!(!footer(&local, 200).contains("f follow"));
+    let help = help_pages(&mut local);
+    assert!(help.contains("Esc or ? closes"), "{help}");
+    assert!(!help.contains("follow the lecturer"), "{help}");
+    assert!(help.contains("save a snapshot here (.ron)"), "{help}");
+    assert!(!help.contains("snapshot (.ron text) to copy"), "{help}");
+
+    let mut student = fig("fig2");
+    student.student = true;
+    // Without --lecturer-keys there is nobody to follow.
+    assert_eq!(message_for_key(&student, &f), None);
+    assert!(!footer(&student, 200).contains("f follow"));
+    assert!(!help_pages(&mut student).contains("follow the lecturer"));
+    student.lecturer_keys = true;
+    assert_eq!(message_for_key(&student, &f), Some(Message::Follow));
+    // First in the footer, so that 80 columns keep it.
+    assert!(footer(&student, 78).starts_with("f follow  "));
+    assert!(screen(&student).contains("f follow"));
+    let help = help_pages(&mut student);
+    assert!(help.contains(" f ") && help.contains("follow the lecturer again"));
+    // A student's s and p write nothing on the server; the help says so.
+    assert!(
+        help.contains("show the snapshot (.ron text) to copy"),
+        "{help}"
+    );
+    assert!(help.contains("no pictures over SSH"), "{help}");
+    assert!(!help.contains("save a snapshot here"), "{help}");
+    assert!(!help.contains("as a picture here"), "{help}");
+    assert_eq!(
+        message_for_key(
+            &student,
+            &common::key(KeyCode::Char('s'), KeyModifiers::NONE)
+        ),
+        Some(Message::StartSave)
+    );
+    // Under the help or in a prompt, f is not the follow key.
+    ch(&mut student, '?');
+    assert_eq!(message_for_key(&student, &f), None);
+    ch(&mut student, '?');
+    press(&mut student, KeyCode::Enter, KeyModifiers::NONE);
+    assert!(matches!(student.mode, Mode::Value(..)));
+    assert_ne!(message_for_key(&student, &f), Some(Message::Follow));
+    // The explorer itself leaves the scene alone on Follow.
+    let before = student.state.clone();
+    update(&mut student, Message::Follow);
+    assert_eq!(student.state, before);
+}

@@ -9,13 +9,16 @@ use crate::snapshot::State;
 use crate::tui::app::{App, Message};
 
 /// What a lecturer's explorer shows: the scene (parameters, sweep, model,
-/// moments), the selected slider, the view and the map's y axis.
+/// moments), the selected slider, the view, the map's y axis, and the
+/// header's file name and modified mark.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Shown {
     pub state: State,
     pub selected: usize,
     pub view: View,
     pub map_y: Option<Axis>,
+    pub modified: bool,
+    pub file: Option<String>,
 }
 
 impl Shown {
@@ -25,12 +28,16 @@ impl Shown {
             selected: app.selected,
             view: app.view,
             map_y: app.map_y,
+            modified: app.modified,
+            file: app.file.clone(),
         }
     }
 
     /// Makes `app` show this.
     pub fn apply(&self, app: &mut App) {
         app.show(&self.state, self.selected, self.view, self.map_y);
+        app.modified = self.modified;
+        app.file.clone_from(&self.file);
     }
 }
 
@@ -38,6 +45,7 @@ impl Shown {
 pub const DETACHED: &str = "exploring on your own — f to follow";
 pub const FOLLOWING: &str = "following the lecturer — any change explores on your own";
 pub const NO_LECTURER: &str = "no lecturer connected: exploring on your own";
+pub const LECTURER_BACK: &str = "the lecturer is back — f to follow";
 
 /// A student's relation to the lecturer.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -48,6 +56,9 @@ pub enum Follow {
     Following,
     /// A lecturer is connected, the student explores on their own.
     Detached,
+    /// No lecturer is connected, and the student had left the lecturer to
+    /// explore: a lecturer who comes (back) does not take their scene.
+    Away,
 }
 
 /// What a change of [`Follow`] asks the session to do.
@@ -88,7 +99,7 @@ impl Follow {
     /// The `f` key.
     pub fn on_follow_key(&mut self) -> Effect {
         match self {
-            Follow::Alone => Effect::Say(NO_LECTURER),
+            Follow::Alone | Follow::Away => Effect::Say(NO_LECTURER),
             _ => {
                 *self = Follow::Following;
                 Effect::Catch
@@ -103,8 +114,16 @@ impl Follow {
                 *self = Follow::Following;
                 Effect::Catch
             }
-            (Follow::Following | Follow::Detached, false) => {
+            (Follow::Away, true) => {
+                *self = Follow::Detached;
+                Effect::Say(LECTURER_BACK)
+            }
+            (Follow::Following, false) => {
                 *self = Follow::Alone;
+                Effect::Say(NO_LECTURER)
+            }
+            (Follow::Detached, false) => {
+                *self = Follow::Away;
                 Effect::Say(NO_LECTURER)
             }
             _ => Effect::None,
@@ -128,12 +147,48 @@ fn edits(msg: &Message) -> bool {
             | M::NextView
             | M::PrevView
             | M::NextMapY
+            // Typing a slider's value: the lecturer's next move would
+            // overwrite it.
+            | M::StartValue
     )
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::presets;
+    use crate::tui::app::update;
+    use crate::tui::theme::Theme;
+
+    fn fig(name: &str) -> App {
+        App::new(presets::load(name).unwrap(), Theme::colored(), (80, 24))
+    }
+
+    #[test]
+    fn catching_up_takes_the_header_marks_too() {
+        // A detached student changed fig2; the lecturer loads fig1 afresh.
+        let mut student = fig("fig2");
+        update(
+            &mut student,
+            Message::Step {
+                up: true,
+                fine: false,
+            },
+        );
+        assert!(student.modified);
+        let mut lecturer = fig("fig2");
+        update(&mut lecturer, Message::LoadPreset(0));
+        assert!(!lecturer.modified);
+        Shown::of(&lecturer).apply(&mut student);
+        assert_eq!(student.state, lecturer.state);
+        assert!(!student.modified, "stale modified mark after re-follow");
+        // A lecturer's change marks the student's header as well.
+        update(&mut lecturer, Message::ToggleModel);
+        lecturer.file = Some("class.ron".into());
+        Shown::of(&lecturer).apply(&mut student);
+        assert!(student.modified);
+        assert_eq!(student.file.as_deref(), Some("class.ron"));
+    }
 
     #[test]
     fn follow_detach_refollow() {
@@ -175,7 +230,34 @@ mod tests {
         assert_eq!(f.on_lecturer(true), Effect::None);
         assert_eq!(f, Follow::Detached);
         assert_eq!(f.on_lecturer(false), Effect::Say(NO_LECTURER));
-        assert_eq!(f, Follow::Alone);
+        assert_eq!(f, Follow::Away);
         assert_eq!(f.on_lecturer(false), Effect::None);
+        // A following student left alone follows the next lecturer.
+        let mut f = Follow::start(true);
+        assert_eq!(f.on_lecturer(false), Effect::Say(NO_LECTURER));
+        assert_eq!(f, Follow::Alone);
+        assert_eq!(f.on_lecturer(true), Effect::Catch);
+    }
+
+    #[test]
+    fn typing_a_value_detaches() {
+        let mut f = Follow::start(true);
+        assert_eq!(f.on_message(&Message::StartValue), Effect::Say(DETACHED));
+        assert!(!f.following());
+    }
+
+    #[test]
+    fn a_detached_student_keeps_their_scene_when_the_lecturer_returns() {
+        let mut f = Follow::start(true);
+        f.on_message(&Message::ToggleModel);
+        assert_eq!(f.on_lecturer(false), Effect::Say(NO_LECTURER));
+        assert!(!f.following());
+        assert_eq!(f.on_message(&Message::ToggleModel), Effect::None);
+        assert_eq!(f.on_follow_key(), Effect::Say(NO_LECTURER));
+        assert_eq!(f.on_lecturer(true), Effect::Say(LECTURER_BACK));
+        assert_eq!(f, Follow::Detached);
+        assert!(!f.following());
+        assert_eq!(f.on_follow_key(), Effect::Catch);
+        assert!(f.following());
     }
 }

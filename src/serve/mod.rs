@@ -17,7 +17,7 @@ pub mod stream;
 use std::net::SocketAddr;
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::Arc;
+use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
 use anyhow::Context;
@@ -65,17 +65,27 @@ pub struct Shared {
     pub idle_timeout: Duration,
     /// The lecturer's latest state; `None` while no lecturer is connected.
     pub follow: watch::Sender<Option<Shown>>,
+    /// What the lecturer showed last, kept after they leave: a lecturer who
+    /// connects (again, or a second time) starts from it.
+    last: Mutex<Option<Shown>>,
     lecturers: AtomicUsize,
 }
 
 impl Shared {
-    fn lecturer_joined(&self, app: &crate::tui::app::App) {
+    fn lecturer_joined(&self, app: &mut crate::tui::app::App) {
         self.lecturers.fetch_add(1, Ordering::SeqCst);
+        let last = self.last.lock().ok().and_then(|l| l.clone());
+        if let Some(shown) = last {
+            shown.apply(app);
+        }
         self.publish(app);
     }
 
     fn publish(&self, app: &crate::tui::app::App) {
         let shown = Shown::of(app);
+        if let Ok(mut last) = self.last.lock() {
+            *last = Some(shown.clone());
+        }
         self.follow.send_if_modified(|cur| {
             if cur.as_ref() == Some(&shown) {
                 return false;
@@ -155,6 +165,7 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         lecturer_keys,
         idle_timeout: opts.idle_timeout,
         follow: watch::Sender::new(None),
+        last: Mutex::new(None),
         lecturers: AtomicUsize::new(0),
     });
     let limits = Limits::new(opts.max_sessions, opts.max_per_address);

@@ -6,7 +6,7 @@
 use std::sync::Arc;
 
 use crossterm::cursor::Hide;
-use crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
+use crossterm::event::{Event, KeyEvent};
 use crossterm::terminal::EnterAlternateScreen;
 use ratatui::layout::Rect;
 use ratatui::text::Line;
@@ -24,7 +24,7 @@ use super::limits::clamp_size;
 use super::output::{self, FrameBuf};
 use super::stream::Kill;
 use super::Shared;
-use crate::tui::app::{Message, Mode};
+use crate::tui::app::Message;
 use crate::tui::session::Session;
 use crate::tui::theme::Theme;
 
@@ -71,8 +71,10 @@ async fn run(start: Start) {
     let mut lecturer = shared.follow.subscribe();
     let mut follow = Follow::start(lecturer.borrow_and_update().is_some());
     let is_lecturer = role == Role::Lecturer;
+    ex.app.student = !is_lecturer;
+    ex.app.lecturer_keys = shared.lecturer_keys.any();
     if is_lecturer {
-        shared.lecturer_joined(&ex.app);
+        shared.lecturer_joined(&mut ex.app);
     } else if follow.following() {
         catch_up(&mut ex, &lecturer.borrow());
         ex.app.set_status(FOLLOWING, false);
@@ -173,8 +175,10 @@ fn on_key(
     lecturer: &watch::Receiver<Option<Shown>>,
     key: KeyEvent,
 ) -> bool {
-    let plain_f = key.code == KeyCode::Char('f') && key.modifiers == KeyModifiers::NONE;
-    if role == Role::Student && plain_f && ex.app.mode == Mode::Main {
+    let Some(msg) = ex.message_for(&Event::Key(key)) else {
+        return false;
+    };
+    if msg == Message::Follow {
         match follow.on_follow_key() {
             Effect::Say(s) => ex.app.set_status(s, false),
             Effect::Catch => {
@@ -185,9 +189,6 @@ fn on_key(
         }
         return true;
     }
-    let Some(msg) = ex.message_for(&Event::Key(key)) else {
-        return false;
-    };
     if role == Role::Student {
         if msg == Message::StartSave {
             *panel = Some(Panel(ex.app.state.to_ron()));

@@ -59,6 +59,9 @@ pub enum Message {
     PromptCancel,
     PromptAccept,
     Resize(u16, u16),
+    /// A served student's `f`: show the lecturer's scene again (the serve
+    /// session acts on it; the explorer alone has nothing to follow).
+    Follow,
     Quit,
 }
 
@@ -164,6 +167,11 @@ pub struct App {
     pub file: Option<String>,
     /// Curves pinned with `g`, drawn dim under the current ones.
     pub ghost: Option<Ghost>,
+    /// Whether this is a student's explorer in a served class: its keys,
+    /// help and footer then include following the lecturer.
+    pub student: bool,
+    /// Whether the class has a lecturer to follow (`--lecturer-keys`).
+    pub lecturer_keys: bool,
     pub quit: bool,
     /// How many times the curves were computed (for tests of the cache).
     pub recomputes: usize,
@@ -246,6 +254,8 @@ impl App {
             modified: false,
             file: None,
             ghost: None,
+            student: false,
+            lecturer_keys: false,
             quit: false,
             recomputes: 0,
             key: None,
@@ -563,6 +573,7 @@ pub fn update(app: &mut App, msg: Message) {
         },
         Message::PromptAccept => prompt::accept(app),
         Message::Resize(w, h) => app.size = (w, h),
+        Message::Follow => {}
         Message::Quit => app.quit = true,
     }
     app.captioned.apply(&mut app.state);

@@ -57,7 +57,7 @@ pub fn lines(app: &App) -> Vec<(bool, Line<'static>)> {
     let t = &app.theme;
     let mut lines = Vec::new();
     let mut prompt_heading = false;
-    for b in keys::BINDINGS {
+    for b in keys::BINDINGS.iter().filter(|b| b.context.listed(app)) {
         if b.context == Context::Prompt && !prompt_heading {
             lines.push((
                 true,

@@ -17,16 +17,39 @@ pub enum Context {
     MainAndHelp,
     /// A prompt (the save name, a slider's value) is open.
     Prompt,
+    /// The explorer of a student in a served class (`roughtui serve`).
+    Student,
+    /// The explorer of anyone else: it writes files where it runs.
+    NotStudent,
+    /// A student's explorer in a class with a lecturer to follow.
+    Follower,
 }
 
 impl Context {
-    fn covers(self, mode: &Mode) -> bool {
+    fn covers(self, app: &App) -> bool {
         matches!(
-            (self, mode),
+            (self, &app.mode),
             (Context::Main | Context::MainAndHelp, Mode::Main)
                 | (Context::Help | Context::MainAndHelp, Mode::Help)
                 | (Context::Prompt, Mode::Prompt(_) | Mode::Value(..))
+        ) || (app.mode == Mode::Main && self.listed(app) && self.is_role())
+    }
+
+    fn is_role(self) -> bool {
+        matches!(
+            self,
+            Context::Student | Context::NotStudent | Context::Follower
         )
+    }
+
+    /// Whether the help overlay of `app` lists bindings of this context.
+    pub fn listed(self, app: &App) -> bool {
+        match self {
+            Context::Student => app.student,
+            Context::NotStudent => !app.student,
+            Context::Follower => app.student && app.lecturer_keys,
+            _ => true,
+        }
     }
 }
 
@@ -92,7 +115,7 @@ pub struct Binding {
     pub footer: Option<&'static str>,
 }
 
-use Context::{Help, Main, MainAndHelp, Prompt};
+use Context::{Follower, Help, Main, MainAndHelp, NotStudent, Prompt, Student};
 use KeyCode::{
     BackTab, Backspace, Delete, Down, End, Enter, Esc, Home, Left, PageDown, PageUp, Right, Tab, Up,
 };
@@ -137,6 +160,7 @@ const FINE_UP: Message = M::Step {
 
 #[rustfmt::skip]
 pub const BINDINGS: &[Binding] = &[
+    bind(Follower, &[(ch('f'), M::Follow)], "f", "follow the lecturer again", Some("f follow")),
     bind(Main, &[(key(Up), M::SelectPrev), (ch('k'), M::SelectPrev), (key(Down), M::SelectNext), (ch('j'), M::SelectNext)], "↑ ↓  k j", "select a slider", Some("↑↓ select")),
     bind(Main, &[(key(Left), DOWN), (ch('h'), DOWN), (key(Right), UP), (ch('l'), UP)], "← →  h l", "change it (¼ decade; H: 0.05)", Some("←→ change")),
     bind(Main, &[(shift(Left), FINE_DOWN), (ch('H'), FINE_DOWN), (shift(Right), FINE_UP), (ch('L'), FINE_UP)], "⇧← ⇧→  H L", "fine step (1/40 decade; H: 0.01)", None),
@@ -148,9 +172,11 @@ pub const BINDINGS: &[Binding] = &[
     bind(Main, &[(ch('e'), M::ToggleSizeEffect)], "e", "size effect on / off", Some("e size")),
     bind(Main, &[(ch('a'), M::ToggleMoments)], "a", "truncated / asymptotic moments (eq. 10)", Some("a moments")),
     bind(Main, &[(ch('y'), M::NextMapY)], "y", "the regime map's next y parameter", None),
-    bind(Main, &[(ch('s'), M::StartSave)], "s", "save a snapshot here (.ron)", Some("s save")),
+    bind(NotStudent, &[(ch('s'), M::StartSave)], "s", "save a snapshot here (.ron)", Some("s save")),
+    bind(Student, &[(ch('s'), M::StartSave)], "s", "show the snapshot (.ron text) to copy", Some("s snapshot")),
     bind(Main, &[(ch('g'), M::ToggleGhost)], "g", "pin the curves as a dim ghost / clear it", None),
-    bind(Main, &[(ch('p'), M::SavePicture)], "p", "save the view as a picture here (.svg)", Some("p picture")),
+    bind(NotStudent, &[(ch('p'), M::SavePicture)], "p", "save the view as a picture here (.svg)", Some("p picture")),
+    bind(Student, &[(ch('p'), M::SavePicture)], "p", "no pictures over SSH: s shows the snapshot", None),
     bind(MainAndHelp, &[(ch('?'), M::ToggleHelp)], "?", "show / hide this help", Some("? help")),
     bind(Help, &[(key(Esc), M::CloseHelp)], "Esc", "close the help", None),
     bind(Help, &[(key(Right), M::HelpPage { next: true }), (key(PageDown), M::HelpPage { next: true }), (ch(' '), M::HelpPage { next: true }), (key(Left), M::HelpPage { next: false }), (key(PageUp), M::HelpPage { next: false })], "→ ←  PgDn PgUp", "next / previous page of the help", None),
@@ -176,7 +202,7 @@ pub fn message_for_key(app: &App, ev: &KeyEvent) -> Option<Message> {
             .any(|(k, m)| *m == M::Quit && k.matches(ev));
         return quits.then_some(M::Quit);
     }
-    for b in BINDINGS.iter().filter(|b| b.context.covers(&app.mode)) {
+    for b in BINDINGS.iter().filter(|b| b.context.covers(app)) {
         if let Some((_, m)) = b.keys.iter().find(|(k, _)| k.matches(ev)) {
             return Some(*m);
         }
@@ -201,12 +227,12 @@ pub fn message_for_event(app: &App, ev: &Event) -> Option<Message> {
     }
 }
 
-/// The footer for a mode in `width` columns: the entries in table order,
-/// those that do not fit left out, but the help key's always kept.
-pub fn footer(mode: &Mode, width: usize) -> String {
+/// The footer for the app's mode in `width` columns: the entries in table
+/// order, those that do not fit left out, but the help key's always kept.
+pub fn footer(app: &App, width: usize) -> String {
     let entries: Vec<(&str, bool)> = BINDINGS
         .iter()
-        .filter(|b| b.context.covers(mode))
+        .filter(|b| b.context.covers(app))
         .filter_map(|b| {
             let help = b.keys.iter().any(|(_, m)| *m == Message::ToggleHelp);
             b.footer.map(|f| (f, help))

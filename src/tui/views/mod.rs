@@ -155,6 +155,6 @@ fn render_caption(app: &App, area: Rect, buf: &mut Buffer) {
 }
 
 fn render_footer(app: &App, area: Rect, buf: &mut Buffer) {
-    let text = keys::footer(&app.mode, usize::from(area.width));
+    let text = keys::footer(app, usize::from(area.width));
     Line::styled(text, app.theme.dim).render(area, buf);
 }
