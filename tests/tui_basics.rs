@@ -511,3 +511,24 @@ fn only_a_served_student_has_the_follow_key() {
     update(&mut student, Message::Follow);
     assert_eq!(student.state, before);
 }
+
+#[test]
+fn a_swept_value_typed_outside_the_sweep_says_where_the_marker_went() {
+    let mut a = fig("fig2");
+    assert_eq!(a.selected_axis(), Axis::Zeta);
+    enter(&mut a);
+    ctrl(&mut a, 'u');
+    type_text(&mut a, "1e5");
+    enter(&mut a);
+    assert_eq!(a.state.params.get(Axis::Zeta), 1e5);
+    assert_eq!(a.marker(), None);
+    let s = screen(&a);
+    assert!(
+        s.contains("outside the sweep: no marker on the chart"),
+        "{s}"
+    );
+    // A step brings the value back into the sweep, and the hint goes.
+    press(&mut a, KeyCode::Left, KeyModifiers::NONE);
+    assert!(a.marker().is_some());
+    assert_eq!(a.status, None);
+}

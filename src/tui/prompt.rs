@@ -1,7 +1,7 @@
 //! Enter in a prompt: the save prompt writes a snapshot named as typed; the
 //! value prompt sets the selected parameter, checked by the model.
 
-use super::app::{App, Mode};
+use super::app::{App, Hint, Mode};
 use super::value_input;
 use crate::snapshot;
 
@@ -29,6 +29,9 @@ pub fn accept(app: &mut App) {
                         app.modified = true;
                     }
                     app.status = None;
+                    if Hint::MarkerOffSweep.applies(&app.state) {
+                        app.set_hint(Hint::MarkerOffSweep);
+                    }
                 }
                 Err(e) => app.set_status(e, true),
             }

@@ -20,12 +20,17 @@ use rough_model::Axis;
 pub enum Hint {
     /// R* is swept while the size effect is off, so the curves are flat.
     RStarNeedsSizeEffect,
+    /// The swept parameter was typed outside the sweep: no marker shows.
+    MarkerOffSweep,
 }
 
 impl Hint {
     pub fn text(self) -> &'static str {
         match self {
             Hint::RStarNeedsSizeEffect => "R* acts only with the size effect: press e",
+            Hint::MarkerOffSweep => {
+                "outside the sweep: no marker on the chart; the readout is there"
+            }
         }
     }
 
@@ -33,6 +38,11 @@ impl Hint {
     pub fn applies(self, state: &State) -> bool {
         match self {
             Hint::RStarNeedsSizeEffect => state.sweep.axis() == Axis::RStar && !state.size_effect,
+            Hint::MarkerOffSweep => {
+                let s = &state.sweep;
+                let v = state.params.get(s.axis());
+                !(v >= s.from() && v <= s.to())
+            }
         }
     }
 }
