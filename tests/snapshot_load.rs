@@ -267,6 +267,11 @@ fn empty_or_out_of_domain_sweep() {
         message(&with("to: 10000.0", "to: inf")),
         "bad snapshot DIR/case.ron: sweep to = inf is outside the domain of zeta: it must be finite and >= 1"
     );
+    // A zero outside the axis's domain names the domain, not the log rule.
+    assert_eq!(
+        message(&with("from: 1.0", "from: 0.0")),
+        "bad snapshot DIR/case.ron: sweep from = 0 is outside the domain of zeta: it must be finite and >= 1"
+    );
     assert_eq!(
         message(&with("axis: Zeta, from: 1.0", "axis: RStar, from: 0.0")),
         "bad snapshot DIR/case.ron: sweep from = 0 is outside the domain of r_star: \

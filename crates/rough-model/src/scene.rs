@@ -80,7 +80,10 @@ impl Sweep {
                     end,
                     field: axis.field(),
                     value: v,
-                    valid: if log_zero {
+                    // The axis's own domain when the value is outside it
+                    // (ζ = 0 must read "≥ 1"); the log-spacing rule only
+                    // for a zero the axis itself accepts (R* = 0).
+                    valid: if axis.accepts(v) {
                         "finite and > 0 (the sweep is log-spaced)"
                     } else {
                         axis.domain()
