@@ -5,23 +5,16 @@ use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
 
-use super::tmux::BIN;
+use super::tmux::{have_tool, BIN};
 
-/// Whether the OpenSSH client is here; when it is not, the test says so and
-/// passes, unless ROUGHTUI_REQUIRE_SSH is set (as in CI), when it fails.
+/// Whether the OpenSSH client is here (see [`have_tool`]; CI sets
+/// ROUGHTUI_REQUIRE_SSH and installs openssh-client).
 pub fn have_ssh() -> bool {
-    let ok = Command::new("ssh")
-        .arg("-V")
-        .output()
-        .is_ok_and(|o| o.status.success());
-    if !ok {
-        assert!(
-            std::env::var_os("ROUGHTUI_REQUIRE_SSH").is_none(),
-            "the OpenSSH client is required (ROUGHTUI_REQUIRE_SSH is set) but missing"
-        );
-        eprintln!("ssh not found: skipping the SSH test (apt-get install openssh-client)");
-    }
-    ok
+    have_tool(
+        "ssh",
+        "ROUGHTUI_REQUIRE_SSH",
+        "the SSH test (apt-get install openssh-client)",
+    )
 }
 
 pub struct Server {

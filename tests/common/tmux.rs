@@ -8,16 +8,23 @@ use std::time::{Duration, Instant};
 pub const BIN: &str = env!("CARGO_BIN_EXE_roughtui");
 
 pub fn have_tmux() -> bool {
-    let ok = Command::new("tmux")
+    have_tool("tmux", "ROUGHTUI_REQUIRE_TMUX", "the real-terminal test")
+}
+
+/// Whether `tool -V` runs here. When it does not, the test says so and
+/// passes, unless `require` is set in the environment (as in CI): then it
+/// fails, so CI never skips a test for a missing tool.
+pub fn have_tool(tool: &str, require: &str, what: &str) -> bool {
+    let ok = Command::new(tool)
         .arg("-V")
         .output()
         .is_ok_and(|o| o.status.success());
     if !ok {
         assert!(
-            std::env::var_os("ROUGHTUI_REQUIRE_TMUX").is_none(),
-            "tmux is required (ROUGHTUI_REQUIRE_TMUX is set) but missing"
+            std::env::var_os(require).is_none(),
+            "{tool} is required ({require} is set) but missing"
         );
-        eprintln!("tmux not found: skipping the real-terminal test");
+        eprintln!("{tool} not found: skipping {what}");
     }
     ok
 }
