@@ -1,7 +1,8 @@
 //! `roughtui export --view slopes`: the scene's curves as CSV, computed and
-//! formatted on several threads.
+//! formatted on several threads while the main thread writes.
 
 use std::io::Write;
+use std::sync::mpsc;
 
 use rough_model::{Curves, Scene, SceneSpec};
 
@@ -11,54 +12,66 @@ use crate::snapshot::State;
 /// The CSV header, fixed by the command's contract.
 pub const HEADER: &str = "x,psi,hardness_ratio,elastic,plastic,total,persson_elastic";
 
-/// Rows per block: each block is split among the threads, computed and
-/// formatted there, and written in order, so memory stays bounded however
-/// many points are asked for.
-const BLOCK: usize = 1 << 14;
+/// Rows per block: blocks are computed and formatted on worker threads and
+/// written in order, so memory stays bounded however many points are asked
+/// for (a block's text is ~1 MB).
+const BLOCK: usize = 1 << 13;
 
 /// Writes the CSV of `state` at `points` points (both ends included).
+///
+/// Formatting the numbers costs more than computing them, so both run on
+/// every core: worker k takes blocks k, k + T, k + 2T, … and hands each to
+/// this thread, which writes them in order while the workers go on, and
+/// hands the buffers back for reuse (one channel each way per worker, one
+/// block in flight: at most ~3 blocks per worker exist at once).
 pub fn write_csv(out: &mut impl Write, state: &State, points: usize) -> anyhow::Result<()> {
     let spec = state.scene_spec(Curves::ALL, points);
     // Fail before the header if the request itself is bad.
     Scene::compute_range(&spec, 0..0)?;
     writeln!(out, "{HEADER}")?;
-    // Formatting floats costs ~5x computing them: spread both over the cores.
+    let blocks = points.div_ceil(BLOCK);
+    let block = |b: usize| b * BLOCK..((b + 1) * BLOCK).min(points);
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get().min(8));
-    let mut bufs = vec![String::new(); threads];
-    let mut start = 0;
-    while start < points {
-        let end = (start + BLOCK).min(points);
-        let per = (end - start).div_ceil(threads);
-        if threads == 1 || end - start < 1024 {
-            bufs[0].clear();
-            format_rows(&spec, start..end, &mut bufs[0])?;
-            out.write_all(bufs[0].as_bytes())?;
-        } else {
-            std::thread::scope(|scope| -> anyhow::Result<()> {
-                let jobs: Vec<_> = bufs
-                    .iter_mut()
-                    .enumerate()
-                    .map(|(k, buf)| {
-                        let spec = &spec;
-                        let lo = (start + k * per).min(end);
-                        let hi = (lo + per).min(end);
-                        scope.spawn(move || {
-                            buf.clear();
-                            format_rows(spec, lo..hi, buf)
-                        })
-                    })
-                    .collect();
-                for j in jobs {
-                    j.join()
-                        .map_err(|_| anyhow::anyhow!("a formatting thread panicked"))??;
-                }
-                Ok(())
-            })?;
-            for buf in &bufs {
-                out.write_all(buf.as_bytes())?;
-            }
+    if threads == 1 || blocks == 1 {
+        let mut buf = String::new();
+        for b in 0..blocks {
+            buf.clear();
+            format_rows(&spec, block(b), &mut buf)?;
+            out.write_all(buf.as_bytes())?;
         }
-        start = end;
+    } else {
+        let workers = threads.min(blocks);
+        std::thread::scope(|scope| -> anyhow::Result<()> {
+            let mut done = Vec::with_capacity(workers);
+            let mut spare = Vec::with_capacity(workers);
+            for k in 0..workers {
+                let (tx, rx) = mpsc::sync_channel::<anyhow::Result<String>>(1);
+                let (back_tx, back_rx) = mpsc::channel::<String>();
+                let spec = &spec;
+                scope.spawn(move || {
+                    for b in (k..blocks).step_by(workers) {
+                        let mut buf = back_rx.try_recv().unwrap_or_default();
+                        buf.clear();
+                        let r = format_rows(spec, block(b), &mut buf).map(|()| buf);
+                        // The writer has stopped (an error): stop too.
+                        if tx.send(r).is_err() {
+                            return;
+                        }
+                    }
+                });
+                done.push(rx);
+                spare.push(back_tx);
+            }
+            for b in 0..blocks {
+                let buf = done[b % workers]
+                    .recv()
+                    .map_err(|_| anyhow::anyhow!("a formatting thread stopped"))??;
+                out.write_all(buf.as_bytes())?;
+                // A worker that has finished no longer takes buffers back.
+                let _ = spare[b % workers].send(buf);
+            }
+            Ok(())
+        })?;
     }
     out.flush()?;
     Ok(())
