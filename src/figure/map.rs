@@ -3,6 +3,8 @@
 //! without) per cell for the Ψ = 1 contour.
 
 use std::fmt;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Mutex;
 
 use rough_model::{Axis, Curves, Model, Moments, Params, Scene, SceneSpec, Slopes, Sweep};
 
@@ -197,90 +199,85 @@ pub struct RegimeMap {
 }
 
 impl RegimeMap {
-    /// Computes every cell: one sweep of the model per row, the rows
-    /// shared among the cores for maps of more than a few thousand cells.
+    /// Computes every cell: one sweep of the model per row. Maps of more
+    /// than a few thousand cells share their rows among the cores, handed
+    /// out in bands of [`BAND`] rows as threads ask for work, so that a
+    /// thread the OS sets aside (the machine is shared) holds up at most
+    /// one band; each band is written in place.
     pub fn compute(spec: &MapSpec) -> RegimeMap {
-        let threads = if spec.cols * spec.rows < 4096 {
+        let n = spec.cols * spec.rows;
+        let mut m = RegimeMap {
+            spec: *spec,
+            psi: vec![0.0; n],
+            elastic: vec![0.0; n],
+            plastic: vec![0.0; n],
+            total: vec![0.0; n],
+            share: vec![0.0; n],
+        };
+        let threads = if n < 4096 {
             1
         } else {
             std::thread::available_parallelism().map_or(1, |n| n.get().min(8))
         };
-        let per = spec.rows.div_ceil(threads);
-        let parts: Vec<RegimeMap> = if threads == 1 {
-            vec![RegimeMap::rows(spec, 0..spec.rows)]
-        } else {
-            std::thread::scope(|scope| {
-                let jobs: Vec<_> = (0..threads)
-                    .map(|k| {
-                        let lo = (k * per).min(spec.rows);
-                        let hi = (lo + per).min(spec.rows);
-                        scope.spawn(move || RegimeMap::rows(spec, lo..hi))
-                    })
-                    .collect();
-                jobs.into_iter()
-                    // A row computation does not panic; if one did, its
-                    // rows are recomputed here.
-                    .enumerate()
-                    .map(|(k, j)| {
-                        j.join().unwrap_or_else(|_| {
-                            let lo = (k * per).min(spec.rows);
-                            RegimeMap::rows(spec, lo..(lo + per).min(spec.rows))
-                        })
-                    })
-                    .collect()
-            })
-        };
-        let mut parts = parts.into_iter();
-        let mut m = parts.next().unwrap_or_else(|| RegimeMap::rows(spec, 0..0));
-        for p in parts {
-            m.psi.extend(p.psi);
-            m.elastic.extend(p.elastic);
-            m.plastic.extend(p.plastic);
-            m.total.extend(p.total);
-            m.share.extend(p.share);
-        }
-        m
-    }
-
-    /// Rows `rows` of the map (a partial map: only those rows' cells).
-    fn rows(spec: &MapSpec, rows: std::ops::Range<usize>) -> RegimeMap {
-        let n = spec.cols * rows.len();
-        let mut m = RegimeMap {
-            spec: *spec,
-            psi: Vec::with_capacity(n),
-            elastic: Vec::with_capacity(n),
-            plastic: Vec::with_capacity(n),
-            total: Vec::with_capacity(n),
-            share: Vec::with_capacity(n),
-        };
-        let curves = Curves {
-            persson_elastic: false,
-            ..Curves::ALL
-        };
-        for row in rows {
-            let scene_spec = SceneSpec {
-                base: at(&spec.base, spec.y.axis(), spec.y_at(row)),
-                sweep: spec.x,
-                size_effect: spec.size_effect,
-                model: spec.model,
-                moments: spec.moments,
-                curves,
-                points: spec.cols,
-            };
-            // Only fewer than two points fail, which MapSpec::of refuses.
-            let s = Scene::compute(&scene_spec).unwrap_or_default();
-            for col in 0..spec.cols {
-                let get = |v: &Vec<f64>| v.get(col).copied().unwrap_or(f64::NAN);
-                let sl = Slopes {
-                    elastic: get(&s.elastic),
-                    plastic: get(&s.plastic),
-                    total: get(&s.total),
+        let band = BAND * spec.cols;
+        let bands = spec.rows.div_ceil(BAND);
+        let done: Vec<AtomicBool> = (0..bands).map(|_| AtomicBool::new(false)).collect();
+        {
+            let queue = Mutex::new(
+                m.psi
+                    .chunks_mut(band)
+                    .zip(m.elastic.chunks_mut(band))
+                    .zip(m.plastic.chunks_mut(band))
+                    .zip(m.total.chunks_mut(band))
+                    .zip(m.share.chunks_mut(band))
+                    .enumerate(),
+            );
+            let work = || loop {
+                let next = queue.lock().unwrap_or_else(|e| e.into_inner()).next();
+                let Some((b, ((((psi, el), pl), tot), share))) = next else {
+                    return;
                 };
-                m.psi.push(get(&s.psi));
-                m.elastic.push(sl.elastic);
-                m.plastic.push(sl.plastic);
-                m.total.push(sl.total);
-                m.share.push(sl.plastic_share());
+                let rows = b * BAND..((b + 1) * BAND).min(spec.rows);
+                fill_rows(spec, rows, [psi, el, pl, tot, share]);
+                done[b].store(true, Ordering::Release);
+            };
+            if threads == 1 {
+                work();
+            } else {
+                std::thread::scope(|scope| {
+                    let helpers: Vec<_> = (1..threads).map(|_| scope.spawn(work)).collect();
+                    work();
+                    for h in helpers {
+                        // A band's computation does not panic; if one did,
+                        // its rows are recomputed below.
+                        let _ = h.join();
+                    }
+                });
+            }
+        }
+        for (b, d) in done.iter().enumerate() {
+            if !d.load(Ordering::Acquire) {
+                let (lo, hi) = (b * band, ((b + 1) * band).min(n));
+                let rows = b * BAND..((b + 1) * BAND).min(spec.rows);
+                let RegimeMap {
+                    psi,
+                    elastic,
+                    plastic,
+                    total,
+                    share,
+                    ..
+                } = &mut m;
+                fill_rows(
+                    spec,
+                    rows,
+                    [
+                        &mut psi[lo..hi],
+                        &mut elastic[lo..hi],
+                        &mut plastic[lo..hi],
+                        &mut total[lo..hi],
+                        &mut share[lo..hi],
+                    ],
+                );
             }
         }
         m
@@ -316,6 +313,54 @@ impl RegimeMap {
         r || u
             || (col > 0 && self.contour_edges(col - 1, row).0)
             || (row > 0 && self.contour_edges(col, row - 1).1)
+    }
+}
+
+/// Rows handed to a thread at a time by [`RegimeMap::compute`] (60 rows:
+/// 15 bands).
+const BAND: usize = 4;
+
+/// Rows `rows` of the map into `out` (ψ, elastic, plastic, total, share;
+/// each `cols × rows.len()` cells, row-major).
+fn fill_rows(spec: &MapSpec, rows: std::ops::Range<usize>, out: [&mut [f64]; 5]) {
+    let [psi, elastic, plastic, total, share] = out;
+    let curves = Curves {
+        persson_elastic: false,
+        ..Curves::ALL
+    };
+    for (k, row) in rows.enumerate() {
+        let scene_spec = SceneSpec {
+            base: at(&spec.base, spec.y.axis(), spec.y_at(row)),
+            sweep: spec.x,
+            size_effect: spec.size_effect,
+            model: spec.model,
+            moments: spec.moments,
+            curves,
+            points: spec.cols,
+        };
+        // Only fewer than two points fail, which MapSpec::of refuses.
+        let s = Scene::compute(&scene_spec).unwrap_or_default();
+        let cells = k * spec.cols..(k + 1) * spec.cols;
+        let put = |to: &mut [f64], from: &[f64]| {
+            for (t, f) in to
+                .iter_mut()
+                .zip(from.iter().chain(std::iter::repeat(&f64::NAN)))
+            {
+                *t = *f;
+            }
+        };
+        put(&mut psi[cells.clone()], &s.psi);
+        put(&mut elastic[cells.clone()], &s.elastic);
+        put(&mut plastic[cells.clone()], &s.plastic);
+        put(&mut total[cells.clone()], &s.total);
+        for (c, sh) in share[cells].iter_mut().enumerate() {
+            *sh = Slopes {
+                elastic: elastic[k * spec.cols + c],
+                plastic: plastic[k * spec.cols + c],
+                total: total[k * spec.cols + c],
+            }
+            .plastic_share();
+        }
     }
 }
 
@@ -456,7 +501,21 @@ mod tests {
         let s = fig("fig4");
         let spec = MapSpec::of(&s, (100, 61), None).unwrap();
         let whole = RegimeMap::compute(&spec);
-        assert_eq!(whole, RegimeMap::rows(&spec, 0..61));
+        let n = 100 * 61;
+        let mut one = vec![vec![0.0; n]; 5];
+        if let [a, b, c, d, e] = one.as_mut_slice() {
+            fill_rows(&spec, 0..61, [a, b, c, d, e]);
+        }
+        assert_eq!(
+            [
+                &whole.psi,
+                &whole.elastic,
+                &whole.plastic,
+                &whole.total,
+                &whole.share
+            ],
+            [&one[0], &one[1], &one[2], &one[3], &one[4]]
+        );
         assert_eq!(whole.share.len(), 6100);
     }
 

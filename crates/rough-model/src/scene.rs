@@ -442,20 +442,34 @@ impl Kernel {
                     let ze4 = if b.is_some() { e4l.exp() } else { 0.0 };
                     let fast = eval(Dd::from_f64(e2l.exp()), Dd::from_f64(ze4));
                     // ... which the slopes amplify by about max(π²ψ²/2,
-                    // 1/(2ψ²)). Where that could cost 1e-13, form ζ^e as
-                    // ζ^n·ζ^(−2H) with an exact product instead; for
-                    // asymptotic moments, whose ζ^e below e·ln ζ = ½ has no
-                    // such form, take the pointwise path, so that both agree.
+                    // 1/(2ψ²)) for the exact model; the closed form's
+                    // exponents are −1/(2ψ²) and its polynomials in 1/ψ² have
+                    // degree ≤ 3 where ψ is large, so 4 + 1/(2ψ²) bounds it.
+                    // Where that could cost 1e-13, form ζ^e as the pointwise
+                    // path does (`spectrum::g`): ζ^n·ζ^(−2H) with an exact
+                    // product; for asymptotic moments ψ² is proportional to
+                    // ζ^e, so e^(e·ln ζ) itself is as good where e·ln ζ ≤ ½.
                     let sq = fast.0.hi;
-                    let amp = 1.0 + (PI2_HALF.hi * sq).max(0.5 / sq);
+                    let amp = match spec.model {
+                        Model::Exact => 1.0 + (PI2_HALF.hi * sq).max(0.5 / sq),
+                        Model::ClosedForm => 4.0 + 0.5 / sq,
+                    };
                     if amp * (e4l + 1.0) * 4.4e-16 <= 1e-13 {
                         fast
-                    } else if *asymptotic {
-                        pointwise()
                     } else {
                         let pw = x.powf(-2.0 * spec.base.hurst());
                         let z2 = Dd::prod(x, x);
-                        eval(z2.mul_f64(pw), z2.mul(z2).mul_f64(pw))
+                        let near_one = |el: f64, ze: Dd| {
+                            if *asymptotic && el <= 0.5 {
+                                Dd::from_f64(el.exp())
+                            } else {
+                                ze
+                            }
+                        };
+                        eval(
+                            near_one(e2l, z2.mul_f64(pw)),
+                            near_one(e4l, z2.mul(z2).mul_f64(pw)),
+                        )
                     }
                 };
                 if !(out.0.hi.is_finite() && out.1.is_finite()) {
