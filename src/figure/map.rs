@@ -6,7 +6,9 @@ use std::fmt;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Mutex;
 
-use rough_model::{Axis, Curves, Model, Moments, Params, Scene, SceneSpec, Slopes, Sweep};
+use rough_model::{
+    psi_in_use, slopes, Axis, Curves, Dd, Model, Moments, Params, Scene, SceneSpec, Slopes, Sweep,
+};
 
 use super::series::at;
 use crate::snapshot::State;
@@ -219,6 +221,8 @@ impl RegimeMap {
         } else {
             std::thread::available_parallelism().map_or(1, |n| n.get().min(8))
         };
+        let scaled = scaled_psi(spec);
+        let scaled = scaled.as_deref();
         let band = BAND * spec.cols;
         let bands = spec.rows.div_ceil(BAND);
         let done: Vec<AtomicBool> = (0..bands).map(|_| AtomicBool::new(false)).collect();
@@ -238,7 +242,7 @@ impl RegimeMap {
                     return;
                 };
                 let rows = b * BAND..((b + 1) * BAND).min(spec.rows);
-                fill_rows(spec, rows, [psi, el, pl, tot, share]);
+                fill_rows(spec, rows, scaled, [psi, el, pl, tot, share]);
                 done[b].store(true, Ordering::Release);
             };
             if threads == 1 {
@@ -270,6 +274,7 @@ impl RegimeMap {
                 fill_rows(
                     spec,
                     rows,
+                    scaled,
                     [
                         &mut psi[lo..hi],
                         &mut elastic[lo..hi],
@@ -321,14 +326,39 @@ impl RegimeMap {
 const BAND: usize = 4;
 
 /// Rows `rows` of the map into `out` (ψ, elastic, plastic, total, share;
-/// each `cols × rows.len()` cells, row-major).
-fn fill_rows(spec: &MapSpec, rows: std::ops::Range<usize>, out: [&mut [f64]; 5]) {
+/// each `cols × rows.len()` cells, row-major). With `scaled`, the ψ of row
+/// 0 (see [`scaled_psi`]), each row's ψ is that row's scaled; otherwise each
+/// row is a sweep of the model of its own.
+fn fill_rows(
+    spec: &MapSpec,
+    rows: std::ops::Range<usize>,
+    scaled: Option<&[Dd]>,
+    out: [&mut [f64]; 5],
+) {
     let [psi, elastic, plastic, total, share] = out;
     let curves = Curves {
         persson_elastic: false,
         ..Curves::ALL
     };
     for (k, row) in rows.enumerate() {
+        let cells = k * spec.cols..(k + 1) * spec.cols;
+        if let Some(psi0) = scaled {
+            // ψ(y) = ψ(y₀)·(y₀/y) in double-double (the product's
+            // lo·lo term is below 1e-32 relative).
+            let ratio = Dd::from_f64(spec.y_at(row)).recip().mul_f64(spec.y_at(0));
+            for (c, &p0) in psi0.iter().enumerate() {
+                let hi = ratio.mul_f64(p0.hi);
+                let p = Dd::sum(hi.hi, hi.lo + ratio.hi * p0.lo);
+                let sl = slopes(spec.model, p);
+                let i = cells.start + c;
+                psi[i] = p.to_f64();
+                elastic[i] = sl.elastic;
+                plastic[i] = sl.plastic;
+                total[i] = sl.total;
+                share[i] = sl.plastic_share();
+            }
+            continue;
+        }
         let scene_spec = SceneSpec {
             base: at(&spec.base, spec.y.axis(), spec.y_at(row)),
             sweep: spec.x,
@@ -340,7 +370,6 @@ fn fill_rows(spec: &MapSpec, rows: std::ops::Range<usize>, out: [&mut [f64]; 5])
         };
         // Only fewer than two points fail, which MapSpec::of refuses.
         let s = Scene::compute(&scene_spec).unwrap_or_default();
-        let cells = k * spec.cols..(k + 1) * spec.cols;
         let put = |to: &mut [f64], from: &[f64]| {
             for (t, f) in to
                 .iter_mut()
@@ -362,6 +391,35 @@ fn fill_rows(spec: &MapSpec, rows: std::ops::Range<usize>, out: [&mut [f64]; 5])
             .plastic_share();
         }
     }
+}
+
+/// The ψ of row 0 when the map's rows differ only in H0/E: the model's ψ
+/// is inversely proportional to H0/E (Ψ_P = h_rms q0 √(H m2/2)/(H0/E), and
+/// H_y/H0 does not involve H0/E), so the other rows are this one scaled and
+/// the map costs one row of ψ plus the slopes of each cell. Row 0 is
+/// computed point by point ([`psi_in_use`], double-double), so that the
+/// scaled rows keep ψ's low part (the slopes amplify ψ's rounding up to
+/// ~1/ψ² where ψ is small). `None` (each row its own sweep) for another y
+/// axis, or where a ψ of row 0 other than 0 (ζ = 1 with truncated moments)
+/// lies so near the ends of f64 that scaling could leave them.
+fn scaled_psi(spec: &MapSpec) -> Option<Vec<Dd>> {
+    if spec.y.axis() != Axis::H0OverE {
+        return None;
+    }
+    let base = at(&spec.base, Axis::H0OverE, spec.y_at(0));
+    let psi: Vec<Dd> = (0..spec.cols)
+        .map(|c| {
+            psi_in_use(
+                &at(&base, spec.x.axis(), spec.x_at(c)),
+                spec.size_effect,
+                spec.moments,
+            )
+            .0
+        })
+        .collect();
+    psi.iter()
+        .all(|p| p.hi == 0.0 || (1e-290..1e290).contains(&p.hi))
+        .then_some(psi)
 }
 
 /// The last map computed, recomputed only when its spec changes in a way
@@ -504,7 +562,7 @@ mod tests {
         let n = 100 * 61;
         let mut one = vec![vec![0.0; n]; 5];
         if let [a, b, c, d, e] = one.as_mut_slice() {
-            fill_rows(&spec, 0..61, [a, b, c, d, e]);
+            fill_rows(&spec, 0..61, scaled_psi(&spec).as_deref(), [a, b, c, d, e]);
         }
         assert_eq!(
             [
@@ -517,6 +575,48 @@ mod tests {
             [&one[0], &one[1], &one[2], &one[3], &one[4]]
         );
         assert_eq!(whole.share.len(), 6100);
+    }
+
+    #[test]
+    fn scaled_rows_agree_with_pointwise_values() {
+        // Both models, both moment conventions, with and without the size
+        // effect: H0/E up (rows scaled from row 0) and h_rms up (each row a
+        // sweep of its own) against ψ and the slopes computed cell by cell,
+        // under the scenes' own bound against pointwise values (1e-13).
+        for (name, model, moments) in [
+            ("fig2", Model::ClosedForm, Moments::Asymptotic),
+            ("fig4", Model::ClosedForm, Moments::Asymptotic),
+            ("fig2", Model::Exact, Moments::Truncated),
+            ("fig4", Model::Exact, Moments::Truncated),
+        ] {
+            let mut s = fig(name);
+            s.model = model;
+            s.moments = moments;
+            for (y, scaled, bound) in [(None, true, 4.5e-16), (Some(Axis::HRms), false, 1e-13)] {
+                let spec = MapSpec::of(&s, (120, 30), y).unwrap();
+                assert_eq!(scaled_psi(&spec).is_some(), scaled);
+                let m = RegimeMap::compute(&spec);
+                let mut worst = [0.0f64; 4];
+                for row in 0..spec.rows {
+                    let p = at(&spec.base, spec.y.axis(), spec.y_at(row));
+                    for col in 0..spec.cols {
+                        let p = at(&p, spec.x.axis(), spec.x_at(col));
+                        let psi = psi_in_use(&p, s.size_effect, moments).0;
+                        let sl = slopes(model, psi);
+                        let k = m.index(col, row);
+                        let got = [m.psi[k], m.elastic[k], m.plastic[k], m.total[k]];
+                        let want = [psi.to_f64(), sl.elastic, sl.plastic, sl.total];
+                        for i in 0..4 {
+                            if got[i] != want[i] {
+                                worst[i] = worst[i].max((got[i] / want[i] - 1.0).abs());
+                            }
+                        }
+                    }
+                }
+                let w = worst.iter().copied().fold(0.0, f64::max);
+                assert!(w <= bound, "{name} {model:?} y {y:?}: {worst:?}");
+            }
+        }
     }
 
     #[test]
