@@ -8,6 +8,7 @@
 //! computations follow the table, one line each ([`timings`]).
 
 mod table;
+mod targets;
 
 use std::fmt::Write as _;
 use std::hint::black_box;
@@ -15,7 +16,6 @@ use std::time::Instant;
 
 use rough_model::{Curves, Scene, SceneSpec};
 
-use crate::figure::{MapSpec, RegimeMap};
 use rough_study::compare::{accurate_range, max_error, methods, shipped_closed};
 use rough_study::{rel_err, slopes_reference, SLOPES_CSV};
 
@@ -80,34 +80,19 @@ fn time_scene(passes: u32) -> anyhow::Result<f64> {
     }))
 }
 
-/// Median µs of one regime map of `preset` at 200 × 60 cells (a
-/// 200-column terminal's map), computed afresh each time.
-fn time_map(preset: &str, passes: u32) -> anyhow::Result<f64> {
-    let state = crate::presets::load(preset)?;
-    let spec = MapSpec::of(&state, (200, 60), None)?;
-    Ok(time_call(passes.max(1), || {
-        RegimeMap::compute(black_box(&spec))
-    }))
-}
-
 /// The lines after the table that time whole computations, one each.
 fn timings(passes: u32) -> anyhow::Result<Vec<String>> {
-    Ok(vec![
-        format!(
-            "scene fig2, exact, 4 curves × 400 points: {:.1} µs (median).",
-            time_scene(passes)?
-        ),
-        format!(
-            "regime map 200 × 60 cells, closed form: fig2 {:.2} ms, fig4 (size effect) {:.2} ms \
-             (median).",
-            time_map("fig2", passes)? / 1e3,
-            time_map("fig4", passes)? / 1e3
-        ),
-    ])
+    Ok(vec![format!(
+        "scene fig2, exact, 4 curves × 400 points: {:.1} µs (median).",
+        time_scene(passes)?
+    )])
 }
 
-/// Measures every method and renders the table and its notes.
-pub fn report(passes: u32) -> anyhow::Result<String> {
+/// Measures every method and renders the table and its notes, then the
+/// speed targets ([`targets::table`]; with `whole_commands`, also
+/// `roughtui export` as a command of this executable against the NumPy
+/// peer).
+pub fn report(passes: u32, whole_commands: bool) -> anyhow::Result<String> {
     let reference = slopes_reference(SLOPES_CSV)?;
     let grid: Vec<f64> = reference
         .iter()
@@ -184,12 +169,18 @@ pub fn report(passes: u32) -> anyhow::Result<String> {
     for line in timings(passes)? {
         let _ = writeln!(out, "{line}");
     }
+    let _ = writeln!(
+        out,
+        "\nSpeed targets, measured in this run (times are wall clock on a machine that may \
+         be shared: compare the ratios):"
+    );
+    out.push_str(&targets::table(&rows, passes, whole_commands)?);
     Ok(out)
 }
 
 /// `roughtui bench`.
 pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
-    print!("{}", report(args.passes)?);
+    print!("{}", report(args.passes, true)?);
     Ok(())
 }
 
@@ -199,7 +190,7 @@ mod tests {
 
     #[test]
     fn report_measures_every_method() {
-        let out = report(1).unwrap();
+        let out = report(1, false).unwrap();
         let lines: Vec<&str> = out.lines().collect();
         assert_eq!(lines[0], HEADER);
         let rows: Vec<&str> = lines
@@ -218,6 +209,20 @@ mod tests {
         let shipped = rows.iter().find(|r| r.contains("shipped")).unwrap();
         assert!(shipped.contains("exact"));
         assert!(out.contains("scene fig2, exact, 4 curves × 400 points: "));
-        assert!(out.contains("regime map 200 × 60 cells, closed form: fig2 "));
+        let targets: Vec<&str> = out
+            .lines()
+            .skip_while(|l| !l.starts_with("| target |"))
+            .skip(2)
+            .collect();
+        assert_eq!(targets.len(), 4, "{out}");
+        for (t, want) in targets.iter().zip([
+            "| closed (shipped) / exact (shipped), ns/point |",
+            "| regime map 200 × 60, fig2",
+            "| regime map 200 × 60, fig4",
+            "| slopes view, which cells each curve covers |",
+        ]) {
+            assert!(t.starts_with(want), "{t}");
+            assert!(t.ends_with("| yes |") || t.ends_with("| no |"), "{t}");
+        }
     }
 }

@@ -15,6 +15,7 @@ use super::plots::{compute_indices, compute_load, compute_plot, IndexPlot, LoadP
 use super::prompt;
 pub use super::status::Hint;
 use super::theme::Theme;
+use super::views::overlap::Cover;
 use crate::figure::{claims, render_svg, Claim, FigureOptions, MapCache, MapSpec, View};
 use crate::presets;
 use crate::snapshot::{self, State};
@@ -158,6 +159,8 @@ pub struct App {
     pub map_y: Option<Axis>,
     /// The slopes view's curves.
     pub plot: Plot,
+    /// Which of them lie under another on the graph, computed with them.
+    pub plot_cover: Option<Cover>,
     pub indices: IndexPlot,
     pub load: LoadPlot,
     /// The regime map, computed only when something it depends on changes.
@@ -252,6 +255,7 @@ impl App {
             view: View::Slopes,
             map_y: None,
             plot: Plot::default(),
+            plot_cover: None,
             indices: IndexPlot::default(),
             load: LoadPlot::default(),
             map: MapCache::new(),
@@ -346,10 +350,15 @@ impl App {
             self.claims_key = Some(claims_key);
         }
         match self.view {
-            View::Slopes if self.key != Some(key) => {
-                self.plot = compute_plot(&key.spec);
-                self.key = Some(key);
-                self.recomputes += 1;
+            View::Slopes => {
+                if self.key != Some(key) {
+                    self.plot = compute_plot(&key.spec);
+                    self.key = Some(key);
+                    self.recomputes += 1;
+                    self.plot_cover = None;
+                }
+                let dots = self.theme.glyphs.dots();
+                Cover::keep(&mut self.plot_cover, &self.plot, regions.graph, dots);
             }
             View::Indices if self.indices_key != Some(key) => {
                 self.indices = compute_indices(&self.state, points);

@@ -6,7 +6,7 @@ mod chart;
 mod indices;
 mod load;
 mod map;
-mod overlap;
+pub(crate) mod overlap;
 mod side;
 mod slopes;
 

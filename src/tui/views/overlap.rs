@@ -7,6 +7,51 @@ use std::collections::HashSet;
 use ratatui::layout::Rect;
 
 use super::chart::{col_of, row_of};
+use crate::tui::plots::Plot;
+
+/// What the slopes view's legend needs of where its curves lie: for each
+/// curve (elastic, plastic, total, Persson's, in drawing order) the later
+/// curve it lies under ([`hidden_under`]) and whether it shows at all.
+/// Tracing the curves through the cells takes ~70 µs, so it is computed
+/// with the curves ([`crate::tui::app::App`] keeps it next to the plot)
+/// and only for the graph and dot grid it was made for.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Cover {
+    pub graph: Rect,
+    pub dots: (f64, f64),
+    pub under: Vec<Option<usize>>,
+    pub empty: Vec<bool>,
+}
+
+impl Cover {
+    /// The cover of `p`'s four curves on graph `g` with `dots` per cell.
+    pub fn of(p: &Plot, g: Rect, dots: (f64, f64)) -> Cover {
+        let bounds = (p.x_bounds, p.y_bounds);
+        let cells: Vec<_> = [&p.elastic, &p.plastic, &p.total, &p.persson]
+            .iter()
+            .map(|data| cells(data, bounds, g, dots))
+            .collect();
+        Cover {
+            graph: g,
+            dots,
+            under: hidden_under(&cells),
+            empty: cells.iter().map(HashSet::is_empty).collect(),
+        }
+    }
+
+    /// Makes `kept` the cover of `p` on `g` with `dots` per cell, unless it
+    /// already is (`kept` is cleared whenever `p` changes).
+    pub fn keep(kept: &mut Option<Cover>, p: &Plot, g: Rect, dots: (f64, f64)) {
+        if !kept.as_ref().is_some_and(|c| c.fits(g, dots)) {
+            *kept = Some(Cover::of(p, g, dots));
+        }
+    }
+
+    /// Whether this cover was made for graph `g` with `dots` per cell.
+    pub fn fits(&self, g: Rect, dots: (f64, f64)) -> bool {
+        self.graph == g && self.dots == dots
+    }
+}
 
 /// The cells (column, row) the line through `points` passes through, with
 /// the canvas's own arithmetic on a grid of `dots` points per cell;
@@ -73,6 +118,45 @@ pub fn hidden_under(curves: &[HashSet<(u16, u16)>]) -> Vec<Option<usize>> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::tui::app::{update, App, Message};
+    use crate::tui::layout::Regions;
+    use crate::tui::theme::Theme;
+
+    #[test]
+    fn the_cover_is_kept_with_the_curves() {
+        let preset = crate::presets::load("fig3").unwrap();
+        let mut app = App::new(preset, Theme::colored(), (120, 40));
+        let g = Regions::of_size(app.size).unwrap().graph;
+        let fits = |app: &App| {
+            let dots = app.theme.glyphs.dots();
+            let c = app.plot_cover.clone().unwrap();
+            assert!(c.fits(g, dots));
+            assert_eq!(c, Cover::of(&app.plot, g, dots));
+            c
+        };
+        // fig3: elastic and total equal Persson's slope, drawn over them;
+        // the plastic slope lies below the chart.
+        let c = fits(&app);
+        assert_eq!(c.under, vec![Some(3), None, Some(3), None]);
+        assert_eq!(c.empty, vec![false, true, false, false]);
+        // Kept while nothing it depends on changes ...
+        update(&mut app, Message::SelectNext);
+        assert_eq!(app.plot_cover, Some(c.clone()));
+        // ... and made again for other glyphs, another size, other curves.
+        update(&mut app, Message::CycleGlyphs);
+        assert_ne!(app.plot_cover.as_ref().unwrap().dots, c.dots);
+        fits(&app);
+        update(&mut app, Message::Resize(100, 30));
+        let g2 = Regions::of_size(app.size).unwrap().graph;
+        assert!(app
+            .plot_cover
+            .as_ref()
+            .unwrap()
+            .fits(g2, app.theme.glyphs.dots()));
+        update(&mut app, Message::Resize(120, 40));
+        update(&mut app, Message::ToggleSizeEffect);
+        fits(&app);
+    }
 
     #[test]
     fn a_curve_under_another_is_found() {

@@ -30,17 +30,25 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     // that it shows even where it equals the total (fig3) or the elastic
     // curve; a curve left with under a quarter of its cells visible is
     // named in the legend as lying under the one that hides it.
+    // (The order of `overlap::Cover::of`.)
     let curves = [
         (&t.elastic, &p.elastic),
         (&t.plastic, &p.plastic),
         (&t.total, &p.total),
         (&t.persson, &p.persson),
     ];
-    let cells: Vec<_> = curves
-        .iter()
-        .map(|(_, data)| overlap::cells(data, bounds, g, t.glyphs.dots()))
-        .collect();
-    let under = overlap::hidden_under(&cells);
+    // The cover computed with the curves; traced here only if the graph or
+    // the glyphs changed since (the app refreshes it on every update).
+    let dots = t.glyphs.dots();
+    let fresh;
+    let cover = match app.plot_cover.as_ref().filter(|c| c.fits(g, dots)) {
+        Some(c) => c,
+        None => {
+            fresh = overlap::Cover::of(p, g, dots);
+            &fresh
+        }
+    };
+    let under = &cover.under;
     // A hidden curve joins the entry of the curve on top of it.
     let top = |mut i: usize| {
         while let Some(j) = under[i] {
@@ -57,7 +65,7 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
                 .map(|k| short_name(curves[k].0))
                 .collect();
             let (data, yb) = (curves[i].1, p.y_bounds);
-            if cells[i].is_empty() {
+            if cover.empty[i] {
                 // Nothing on the chart: say where the curve went.
                 let name = if data.is_empty() {
                     format!("{} = 0", c.name)
