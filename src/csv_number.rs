@@ -2,12 +2,12 @@
 //! back to the same double, in exponent form outside 1e-5 ≤ |v| < 1e16
 //! (`8.181099614926789e-166`, never 160 zeros), `inf` for infinity.
 //!
-//! The digits come from `ryu` (already in the build through ratatui), ~4×
-//! faster than `{}`: a 200 000-point export prints 1.4 million numbers, and
-//! their formatting was most of its time. Ryū lays the digits out exactly as
+//! The digits come from `zmij` (shortest round-trip digits, several times
+//! faster than `{}`): a 200 000-point export prints 1.4 million numbers, and
+//! their formatting is most of its time. zmij lays the digits out exactly as
 //! `{}`/`{:e}` do here except for integers (`128.0` for `128`), whose `.0` is
 //! dropped; its digits are the standard formatter's too, except where a
-//! double lies exactly halfway between two shortest decimals, which Ryū
+//! double lies exactly halfway between two shortest decimals, which zmij
 //! rounds to even (as Python's repr does) and `{}` up.
 
 /// Appends `v` to `out` in the CSV number form.
@@ -67,7 +67,7 @@ mod tests {
     }
 
     /// The form `{}` gives inside 1e-5 ≤ |v| < 1e16 and `{:e}` outside: what
-    /// the exports printed before the digits came from ryu.
+    /// the exports printed before the digits came from zmij.
     fn std_form(v: f64) -> String {
         let a = v.abs();
         if a == 0.0 || !a.is_finite() || (1e-5..1e16).contains(&a) {
@@ -79,7 +79,7 @@ mod tests {
 
     /// `format(v)` is the standard formatter's text, or, where the double
     /// lies exactly halfway between two shortest decimals (…094.25), the
-    /// other one (ryu rounds such ties to even, as Python's repr does; the
+    /// other one (zmij rounds such ties to even, as Python's repr does; the
     /// standard library rounds them up): as short, as close, same layout.
     fn same_as_std(v: f64) -> Result<(), String> {
         let (ours, std) = (format(v), std_form(v));
