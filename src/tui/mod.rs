@@ -4,6 +4,7 @@
 
 pub mod app;
 pub mod caption;
+pub mod class;
 pub mod fmt;
 pub mod ghost;
 pub mod help;
@@ -14,6 +15,7 @@ pub mod plots;
 pub mod prompt;
 pub mod session;
 pub mod status;
+pub mod steps;
 pub mod term;
 pub mod theme;
 pub mod value_input;

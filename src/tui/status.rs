@@ -132,7 +132,24 @@ pub fn render_status(app: &App, status: Rect, below: Rect, buf: &mut Buffer) {
             ));
             Line::from(spans)
         }
-        Mode::Main | Mode::Help => {
+        Mode::Truth(axis, line) => {
+            let mut spans = vec![Span::styled(
+                format!("poll: the true {} = ", axis.symbol()),
+                t.title,
+            )];
+            spans.extend(field(line, usize::from(status.width) / 3));
+            let s = &app.state.sweep;
+            spans.push(Span::styled(
+                format!(
+                    "   the class answers with the marker, {}…{}",
+                    fmt_short(*axis, s.from()),
+                    fmt_short(*axis, s.to())
+                ),
+                t.dim,
+            ));
+            Line::from(spans)
+        }
+        Mode::Main | Mode::Help | Mode::Class => {
             let w = usize::from(status.width);
             let (text, style) = match &app.status {
                 Some(s) => (s.text.clone(), if s.error { t.error } else { t.ok }),
