@@ -195,7 +195,14 @@ impl russh::server::Handler for Handler {
         }
         self.wrong += 1;
         let now = std::time::Instant::now();
+        let was = wrongs.waiting(ip, now);
         if wrongs.wrong(ip, now) {
+            if !was {
+                self.shared.log.line(&format!(
+                    "{ip} sent {} wrong class codes in a minute: its codes wait their turn",
+                    super::code::WRONG_PER_MINUTE
+                ));
+            }
             // The address waits: this connection tries no more.
             self.disconnect(wait);
         }
