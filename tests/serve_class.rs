@@ -669,3 +669,62 @@ fn thirty_students_predict_then_the_model_answers() {
     let rows = page.lines().filter(|l| l.contains("100×30")).count();
     assert_eq!(rows, 3, "{page}");
 }
+
+#[test]
+fn a_scene_without_claims_polls_a_value_the_lecturer_types() {
+    if !(have_ssh() && have_tmux()) {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let key = dir.path().join("lect");
+    assert!(Command::new("ssh-keygen")
+        .args(["-q", "-t", "ed25519", "-N", "", "-f"])
+        .arg(&key)
+        .status()
+        .unwrap()
+        .success());
+    let keys = key.with_extension("pub");
+    let srv = Server::start(
+        dir.path(),
+        &[
+            "--lecturer-keys",
+            keys.to_str().unwrap(),
+            "--preset",
+            "fig3",
+        ],
+    );
+    let room = Room::new("typed", (100, 30));
+    let k = key.to_str().unwrap();
+    room.open(
+        "lect",
+        &srv.ssh_line("lecturer", &["-t", "-i", k, "-o", "IdentitiesOnly=yes"]),
+    );
+    room.wait("lect", "the lecturer's explorer", 30, |s| {
+        s.contains("Readout")
+    });
+    room.open("ann", &srv.ssh_line("ann", &["-t"]));
+    room.wait("ann", "following", 30, |s| {
+        s.contains("following the lecturer")
+    });
+    // fig3 makes no claim: v asks the lecturer for the value.
+    room.keys("lect", &["v"]);
+    room.wait("lect", "the truth prompt", 20, |s| {
+        s.contains("poll: the true ζ = ")
+    });
+    room.keys("lect", &["1", "0", "0", "Enter"]);
+    room.wait("ann", "the question", 30, |s| {
+        s.contains("Predict: which ζ is it? Move the marker and press Enter")
+    });
+    room.keys("ann", &["Right", "Enter"]);
+    room.wait("lect", "1/1 answered", 30, |s| {
+        s.contains("1 student · 1/1 answered")
+    });
+    room.keys("lect", &["v"]);
+    let want = roughtui::figure::short_number(stepped(
+        roughtui::presets::load("fig3").unwrap().params.zeta(),
+        1,
+    ));
+    room.wait("ann", "the reveal", 30, |s| {
+        s.contains(&format!("the model: ζ = 100 · you: {want} · "))
+    });
+}
