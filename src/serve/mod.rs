@@ -18,6 +18,7 @@ pub mod poll;
 pub mod session;
 pub mod stream;
 
+use std::io::Write;
 use std::net::SocketAddr;
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -152,16 +153,24 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         .with_context(|| format!("cannot listen on {}", opts.listen))?;
     let addr = listener.local_addr()?;
     let fingerprint = host_key::fingerprint(&key);
-    println!("roughtui serve: listening on {addr}");
-    println!(
+    // The banner; a console that is gone (a closed pipe) does not stop the
+    // server.
+    let mut out = std::io::stdout().lock();
+    macro_rules! say {
+        ($($t:tt)*) => {
+            let _ = writeln!(out, $($t)*);
+        };
+    }
+    say!("roughtui serve: listening on {addr}");
+    say!(
         "host key {} ({}): {fingerprint}",
         key_path.display(),
         if generated { "new" } else { "reused" }
     );
     if lecturer_keys.any() {
-        println!("lecturer: ssh -p {} {}@HOST", addr.port(), auth::LECTURER);
+        say!("lecturer: ssh -p {} {}@HOST", addr.port(), auth::LECTURER);
     } else {
-        println!("no --lecturer-keys: everyone explores alone");
+        say!("no --lecturer-keys: everyone explores alone");
     }
     // On all interfaces the students need the machine's own name.
     let host = if addr.ip().is_unspecified() {
@@ -170,14 +179,14 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         addr.ip().to_string()
     };
     if opts.class_code.is_some() {
-        println!("class code: on (students type it at \"class code:\")");
+        say!("class code: on (students type it at \"class code:\")");
     }
     if !opts.quiet {
-        println!("log: a line per join and leave (times UTC), a summary each minute");
+        say!("log: a line per join and leave (times UTC), a summary each minute");
     }
-    println!("students: ssh -p {} {host}", addr.port());
-    use std::io::Write;
-    std::io::stdout().flush()?;
+    say!("students: ssh -p {} {host}", addr.port());
+    let _ = out.flush();
+    drop(out);
 
     let mut methods = vec![MethodKind::None, MethodKind::PublicKey];
     if opts.class_code.is_some() {
