@@ -2,7 +2,7 @@
 //! lecturer and 100 students — 50 pressing a key every 100 ms for 20 s, 30
 //! who answer a poll all at once, 20 idle. 5 s in, the lecturer opens a
 //! poll (`v`); 3 s later the 30 press Enter together; 4 s later the
-//! lecturer reveals (`v`); at the end saves the answers (`c`), which must
+//! lecturer reveals (`v`); at the end saves the answers (`S`), which must
 //! count 30. Reports key-to-frame p50/p99 of the typing students, the
 //! poll's delivery times, the server's RSS (per idle session), its CPU, and
 //! the bytes sent to idle sessions (outside the poll's question and reveal
@@ -143,6 +143,18 @@ async fn main() -> anyhow::Result<()> {
         idle.push((h, ch));
     }
     let rss_idle = proc_status(pid, "VmRSS");
+    let mut polled = Vec::new();
+    for i in 0..POLLED {
+        let (h, mut ch) = connect(port, format!("p{i}")).await?;
+        drain(&mut ch, Duration::from_millis(300)).await;
+        polled.push((h, ch));
+    }
+    // The first screen's line on switching the drawing goes after
+    // HINT_FOR: that frame belongs to the session's start, not to idling.
+    tokio::time::sleep(roughtui::serve::term::HINT_FOR).await;
+    for (_, ch) in idle.iter_mut().chain(polled.iter_mut()) {
+        drain(ch, Duration::from_millis(300)).await;
+    }
     let idle: Vec<_> = idle
         .into_iter()
         .map(|(h, ch)| {
@@ -150,13 +162,6 @@ async fn main() -> anyhow::Result<()> {
             (h, write, record(read))
         })
         .collect();
-
-    let mut polled = Vec::new();
-    for i in 0..POLLED {
-        let (h, mut ch) = connect(port, format!("p{i}")).await?;
-        drain(&mut ch, Duration::from_millis(300)).await;
-        polled.push((h, ch));
-    }
 
     let cpu0 = cpu_ticks(pid);
     let t0 = Instant::now();
@@ -244,7 +249,7 @@ async fn main() -> anyhow::Result<()> {
         keep.push(ch);
     }
     // The lecturer saves the answers: 30 rows.
-    lect.data(&b"c"[..]).await?;
+    lect.data(&b"S"[..]).await?;
     let mut rows = 0;
     for _ in 0..50 {
         tokio::time::sleep(Duration::from_millis(100)).await;

@@ -57,11 +57,16 @@ fn run(cli: Cli) -> anyhow::Result<()> {
                 idle_timeout: a.idle_timeout,
                 class_code,
                 quiet: a.quiet,
+                marker: a.marker.map(Into::into),
             })
         }
         None => {
             let state = load_source(&cli.source)?;
-            tui::run(state, cli.source.load.as_deref())
+            tui::run(
+                state,
+                cli.source.load.as_deref(),
+                cli.marker.map(Into::into),
+            )
         }
     }
 }

@@ -602,8 +602,8 @@ fn thirty_students_predict_then_the_model_answers() {
         s.contains("30 students · revealed ζ = 321.5 (30 answers)")
     });
 
-    // c: the answers as CSV, name,answer,truth.
-    room.keys("lect", &["c"]);
+    // S: the answers as CSV, name,answer,truth.
+    room.keys("lect", &["S"]);
     let saved = room.wait("lect", "the CSV saved", 30, |s| s.contains("saved "));
     let csvs = |dir: &Path| -> Vec<PathBuf> {
         let mut v: Vec<PathBuf> = std::fs::read_dir(dir)
@@ -640,7 +640,7 @@ fn thirty_students_predict_then_the_model_answers() {
         s.contains("ζ = ") && s.contains("now ")
     });
     room.keys(&names[0], &["5", "0", "0", "Enter"]);
-    room.keys("lect", &["c"]);
+    room.keys("lect", &["S"]);
     room.wait("lect", "a second CSV", 30, |_| csvs(dir.path()).len() == 2);
     for f in csvs(dir.path()) {
         assert_eq!(std::fs::read_to_string(&f).unwrap(), text);

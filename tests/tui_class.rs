@@ -35,14 +35,14 @@ fn seat(name: &str, state: SeatState, size: (u16, u16)) -> Seat {
 #[test]
 fn only_the_lecturer_has_the_poll_and_class_keys() {
     let plain = fig("fig2");
-    for c in ['v', 'V', 'w', 'c'] {
+    for c in ['v', 'V', 'w', 'S'] {
         assert_eq!(key(&plain, KeyCode::Char(c)), None, "{c}");
     }
     let l = lecturer("fig2");
     assert_eq!(key(&l, KeyCode::Char('v')), Some(Message::Poll));
     assert_eq!(key(&l, KeyCode::Char('V')), Some(Message::PollTyped));
     assert_eq!(key(&l, KeyCode::Char('w')), Some(Message::ToggleClass));
-    assert_eq!(key(&l, KeyCode::Char('c')), Some(Message::SavePoll));
+    assert_eq!(key(&l, KeyCode::Char('S')), Some(Message::SavePoll));
     let mut s = fig("fig2");
     s.student = true;
     s.lecturer_keys = true;

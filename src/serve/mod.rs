@@ -17,6 +17,7 @@ pub mod output;
 pub mod poll;
 pub mod session;
 pub mod stream;
+pub mod term;
 
 use std::io::Write;
 use std::net::SocketAddr;
@@ -67,6 +68,8 @@ pub struct Options {
     pub class_code: Option<ClassCode>,
     /// No join, leave or summary lines on the console.
     pub quiet: bool,
+    /// `--marker`: every session's glyphs, instead of each client's own.
+    pub marker: Option<crate::tui::glyphs::Glyphs>,
 }
 
 /// Connections over a limit that are still told so (the class is full),
@@ -87,6 +90,8 @@ pub struct Shared {
     /// The roster and the poll.
     pub class: Class,
     pub log: Log,
+    /// `--marker`, if given.
+    pub marker: Option<crate::tui::glyphs::Glyphs>,
     /// The lecturer's latest state; `None` while no lecturer is connected.
     pub follow: watch::Sender<Option<Shown>>,
     /// What the lecturer showed last, kept after they leave: a lecturer who
@@ -212,6 +217,7 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         wrong_codes: WrongCodes::default(),
         class: Class::default(),
         log: Log::new(opts.quiet),
+        marker: opts.marker,
         follow: watch::Sender::new(None),
         last: Mutex::new(None),
         lecturers: AtomicUsize::new(0),

@@ -3,7 +3,7 @@
 //! on a value the lecturer types); every student is put on the poll's scene
 //! with the marker theirs to move, Enter sends their answer, and the
 //! lecturer's `v` again reveals the model's answer to all, who then follow
-//! again. `c` saves the answers as CSV. The poll ends when the lecturer
+//! again. `S` saves the answers as CSV. The poll ends when the lecturer
 //! moves on from the revealed scene, opens another, or leaves.
 
 use std::sync::Arc;
@@ -67,7 +67,7 @@ pub(super) fn on_poll(s: &mut Seat, poll: Option<Arc<Poll>>) -> bool {
     true
 }
 
-/// The poll keys: the lecturer's `v` and `c`, a student's Enter.
+/// The poll keys: the lecturer's `v` and `S`, a student's Enter.
 pub(super) fn on_key(s: &mut Seat, msg: Message) {
     match msg {
         Message::Answer => answer(s),
@@ -80,7 +80,7 @@ pub(super) fn on_key(s: &mut Seat, msg: Message) {
                     let q = &p.question;
                     app.set_status(
                         format!(
-                            "revealed: {} · c saves the answers · v asks again",
+                            "revealed: {} · S saves the answers · v asks again",
                             q.value(q.truth)
                         ),
                         false,
@@ -154,7 +154,7 @@ fn answer(s: &mut Seat) {
     }
 }
 
-/// `c`: the answers as CSV in the lecturer's save folder, never over a file.
+/// `S`: the answers as CSV in the lecturer's save folder, never over a file.
 fn save(s: &mut Seat) {
     let app = &mut s.ex.app;
     let Some(csv) = s.shared.class.csv() else {

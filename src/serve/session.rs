@@ -17,6 +17,7 @@ use ratatui::widgets::{Block, Borders, Clear, Paragraph, Wrap};
 use ratatui::Frame;
 use russh::server::Msg;
 use russh::{Channel, ChannelMsg};
+use std::io::Write;
 use tokio::sync::watch;
 use tokio::time::{sleep_until, Instant};
 
@@ -28,10 +29,11 @@ use super::limits::clamp_size;
 use super::output::{self, FrameBuf};
 use super::poll;
 use super::stream::Kill;
+use super::term::{self, ClientTerm};
 use super::Shared;
 use crate::tui::app::{Message, Mode};
+use crate::tui::glyphs::Glyphs;
 use crate::tui::session::Session;
-use crate::tui::theme::Theme;
 
 /// What a shell request hands over.
 pub struct Start {
@@ -44,6 +46,8 @@ pub struct Start {
     /// The SSH user name (a student's name in the class).
     pub name: String,
     pub addr: IpAddr,
+    /// The client's TERM and locale: the session's glyphs and colours.
+    pub client: ClientTerm,
 }
 
 pub fn spawn(start: Start) {
@@ -104,8 +108,8 @@ impl Seat {
     }
 
     /// The marker set the class list shows.
-    fn marker(&self) -> String {
-        "braille".into()
+    fn marker(&self) -> Glyphs {
+        self.ex.app.theme.glyphs
     }
 }
 
@@ -119,6 +123,7 @@ async fn run(start: Start) {
         size,
         name,
         addr,
+        client,
     } = start;
     let (mut read, write) = channel.split();
     let slot = output::spawn(write, conn, kill);
@@ -127,9 +132,16 @@ async fn run(start: Start) {
     let _ = crossterm::execute!(prelude, EnterAlternateScreen, Hide);
     let _ = slot.send(prelude).await;
 
-    let Ok(ex) = Session::new(buf.clone(), shared.state.clone(), Theme::from_env(), size) else {
+    let (mut caps, why) = client.caps(shared.marker);
+    // The server's own NO_COLOR turns colour off for everyone.
+    caps.color &= std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty());
+    let Ok(ex) = Session::new(buf.clone(), shared.state.clone(), caps.theme(), size) else {
         return;
     };
+    // The first screen's line on switching the drawing, until the first
+    // key or HINT_FOR.
+    let mut hint = Some(term::hint(caps.glyphs, why.as_deref()));
+    let hint_until = Instant::now() + term::HINT_FOR;
     let mut lecturer = shared.follow.subscribe();
     let follow = Follow::start(lecturer.borrow_and_update().is_some());
     let mut s = Seat {
@@ -146,12 +158,13 @@ async fn run(start: Start) {
     s.ex.app.lecturer_keys = shared.lecturer_keys.any();
     let name = clean_name(&name);
     let joined = Instant::now();
-    let marker = s.marker();
+    let mut marker = s.marker();
     shared.log.line(&format!(
-        "join  {name}{} from {addr}, {}x{}, {marker}",
+        "join  {name}{} from {addr}, {}x{}, {}",
         if is_lecturer { " (lecturer)" } else { "" },
         size.0,
-        size.1
+        size.1,
+        marker.name()
     ));
     let mut roster = shared.class.watch_roster();
     let mut polls = shared.class.watch_poll();
@@ -165,7 +178,11 @@ async fn run(start: Start) {
             s.ex.app.set_status(FOLLOWING, false);
         }
         let following = s.follow.following();
-        s.seat = Some(shared.class.join(&name, addr, size, &marker, following));
+        s.seat = Some(
+            shared
+                .class
+                .join(&name, addr, size, marker.name(), following),
+        );
         polls.mark_changed();
     }
     let mut decoder = Decoder::new();
@@ -184,13 +201,35 @@ async fn run(start: Start) {
                     ChannelMsg::Data { data } => {
                         deadline = Instant::now() + idle;
                         s.note(Note::Key);
-                        let keys = decoder.feed(&data[..data.len().min(input::MAX_READ)]);
-                        for key in keys {
+                        let events = decoder.feed(&data[..data.len().min(input::MAX_READ)]);
+                        for ev in events {
+                            let key = match ev {
+                                Event::Key(k) => k,
+                                // The terminal's answer to Ctrl-L's question.
+                                Event::Resize(w, h) => {
+                                    if (w, h) != s.ex.app.size {
+                                        if s.ex.update(Message::Resize(w, h)).is_err() {
+                                            s.ex.app.quit = true;
+                                            break;
+                                        }
+                                        s.note(Note::Size(w, h));
+                                    }
+                                    dirty = true;
+                                    continue;
+                                }
+                                _ => continue,
+                            };
+                            if hint.take().is_some() {
+                                dirty = true;
+                            }
                             if panel.is_some() {
                                 // Any key closes the snapshot panel.
                                 panel = None;
                                 dirty = true;
                                 continue;
+                            }
+                            if s.ex.message_for(&Event::Key(key)) == Some(Message::Redraw) {
+                                decoder.expect_size();
                             }
                             if on_key(&mut s, &mut panel, key) {
                                 dirty = true;
@@ -201,6 +240,10 @@ async fn run(start: Start) {
                         }
                         if s.ex.app.quit {
                             break;
+                        }
+                        if s.marker() != marker {
+                            marker = s.marker();
+                            s.note(Note::Marker(marker.name().into()));
                         }
                         if is_lecturer && dirty {
                             shared.publish(&s.ex.app);
@@ -258,11 +301,19 @@ async fn run(start: Start) {
                 dirty = true;
             }
             () = sleep_until(deadline) => break,
+            () = sleep_until(hint_until), if hint.is_some() => {
+                hint = None;
+                dirty = true;
+            }
             permit = slot.reserve(), if dirty => {
                 let Ok(permit) = permit else { break };
-                let drawn = s.ex.draw_with(|_, f| {
+                let drawn = s.ex.draw_with(|app, f| {
+                    let glyphs = app.theme.glyphs;
+                    if let Some(h) = &hint {
+                        term::draw_hint(f, h, glyphs);
+                    }
                     if let Some(p) = &panel {
-                        draw_panel(f, &p.0);
+                        draw_panel(f, &p.0, glyphs);
                     }
                 });
                 if drawn.is_err() {
@@ -294,6 +345,12 @@ fn on_key(s: &mut Seat, panel: &mut Option<Panel>, key: KeyEvent) -> bool {
     let Some(msg) = s.ex.message_for(&Event::Key(key)) else {
         return false;
     };
+    if msg == Message::Redraw {
+        // Ask the terminal for its size (a client that sends no window
+        // change, as Windows' OpenSSH often does not), then repaint; the
+        // answer, if any, resizes.
+        let _ = s.ex.writer().write_all(input::ASK_SIZE);
+    }
     match msg {
         Message::Follow => {
             let e = s.follow.on_follow_key();
@@ -329,8 +386,9 @@ fn on_key(s: &mut Seat, panel: &mut Option<Panel>, key: KeyEvent) -> bool {
     s.ex.update(msg).is_ok()
 }
 
-fn draw_panel(f: &mut Frame, ron: &str) {
+fn draw_panel(f: &mut Frame, ron: &str, glyphs: Glyphs) {
     let area = f.area();
+    let ron = glyphs.text(ron);
     let lines: Vec<Line> = ron.lines().map(Line::raw).collect();
     // As wide as the longest line where the screen allows, so that a copy
     // gets each line whole.
@@ -351,7 +409,8 @@ fn draw_panel(f: &mut Frame, ron: &str) {
         Paragraph::new(lines).wrap(Wrap { trim: false }).block(
             Block::default()
                 .borders(Borders::ALL)
-                .title(" snapshot: copy it into a .ron file · any key closes "),
+                .border_set(glyphs.border())
+                .title(glyphs.text(" snapshot: copy it into a .ron file · any key closes ")),
         ),
         r,
     );

@@ -65,7 +65,7 @@ pub enum Message {
     /// session acts on it; the explorer alone has nothing to follow).
     Follow,
     /// In a served class (the serve session acts on these): the lecturer's
-    /// `v` (open a poll, or reveal the open one) and `c` (save its answers),
+    /// `v` (open a poll, or reveal the open one) and `S` (save its answers),
     /// a student's Enter (answer with the marker's value).
     Poll,
     SavePoll,
@@ -74,6 +74,13 @@ pub enum Message {
     PollTyped,
     /// The lecturer's class list, open or closed.
     ToggleClass,
+    /// The next glyph set: braille, half blocks, blocks, ASCII (`M`).
+    CycleGlyphs,
+    /// Colour off (as under NO_COLOR) or on again (`c`).
+    ToggleColor,
+    /// Ctrl-L: paint the whole screen again (the session acts on it; over
+    /// SSH after asking the terminal for its size).
+    Redraw,
     Quit,
 }
 
@@ -546,7 +553,8 @@ pub fn update(app: &mut App, msg: Message) {
         },
         Message::PromptAccept => prompt::accept(app),
         Message::Resize(w, h) => app.size = (w, h),
-        Message::Follow | Message::Poll | Message::SavePoll | Message::Answer => {}
+        Message::Follow | Message::Redraw | Message::Poll | Message::SavePoll | Message::Answer => {
+        }
         Message::PollTyped => {
             let axis = app.state.sweep.axis();
             app.mode = Mode::Truth(axis, LineEdit::new("", PROMPT_MAX_CHARS));
@@ -557,6 +565,20 @@ pub fn update(app: &mut App, msg: Message) {
                 Mode::Class => Mode::Main,
                 _ => Mode::Class,
             }
+        }
+        Message::CycleGlyphs => {
+            let g = app.theme.glyphs.next();
+            app.theme = app.theme.with_glyphs(g);
+            app.set_status(format!("drawing in {} (M: next)", g.describe()), false);
+        }
+        Message::ToggleColor => {
+            app.theme = app.theme.with_color(!app.theme.color);
+            let text = if app.theme.color {
+                format!("colour on ({}) (c: off)", app.theme.palette.name())
+            } else {
+                "colour off, as under NO_COLOR (c: on)".to_string()
+            };
+            app.set_status(text, false);
         }
         Message::Quit => app.quit = true,
     }

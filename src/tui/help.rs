@@ -46,18 +46,33 @@ pub const SYMBOLS: &[(&str, &str)] = &[
         "plastic: this program's thresholds (the paper sets none)",
     ),
     (
-        "ψ ◦ ●",
+        MARKS,
         "on the x axis: ψ = 1; plastic share 10 %; plastic share 90 %",
     ),
 ];
+
+/// Where [`SYMBOLS`] names the regime marks: the glyph set's own.
+const MARKS: &str = "ψ ◦ ●";
 
 /// The help's lines, all pages together, each marked whether it is a
 /// heading.
 pub fn lines(app: &App) -> Vec<(bool, Line<'static>)> {
     let t = &app.theme;
+    let g = t.glyphs;
     let mut lines = Vec::new();
     let mut prompt_heading = false;
-    for b in keys::BINDINGS.iter().filter(|b| b.context.listed(app)) {
+    let bindings: Vec<_> = keys::BINDINGS
+        .iter()
+        .filter(|b| b.context.listed(app))
+        .collect();
+    // The keys' column: as wide as the longest label, at least 15.
+    let width = bindings
+        .iter()
+        .map(|b| Span::raw(keys::key_text(g, b.label)).width() + 1)
+        .max()
+        .unwrap_or(0)
+        .max(15);
+    for b in bindings {
         if b.context == Context::Prompt && !prompt_heading {
             lines.push((
                 true,
@@ -68,18 +83,26 @@ pub fn lines(app: &App) -> Vec<(bool, Line<'static>)> {
         lines.push((
             false,
             Line::from(vec![
-                Span::styled(padded(b.label, 15), t.title),
-                Span::raw(b.help),
+                Span::styled(padded(&keys::key_text(g, b.label), width), t.title),
+                Span::raw(g.text(b.help).into_owned()),
             ]),
         ));
     }
     lines.push((true, Line::styled("symbols:", t.title)));
-    for (sym, what) in SYMBOLS {
+    for &(sym, what) in SYMBOLS {
+        let sym = if sym == MARKS {
+            use super::glyphs::Mark;
+            [Mark::PsiOne, Mark::ShareLow, Mark::ShareHigh]
+                .map(|m| g.mark(m))
+                .join(" ")
+        } else {
+            g.text(sym).into_owned()
+        };
         lines.push((
             false,
             Line::from(vec![
-                Span::styled(padded(sym, 10), t.title),
-                Span::raw(*what),
+                Span::styled(padded(&sym, 10), t.title),
+                Span::raw(g.text(what).into_owned()),
             ]),
         ));
     }
@@ -130,8 +153,15 @@ pub fn render_help(app: &App, area: Rect, buf: &mut Buffer) {
     } else {
         " help · Esc or ? closes ".to_string()
     };
+    let g = app.theme.glyphs;
+    let title = g.text(&title).into_owned();
     Clear.render(r, buf);
     Paragraph::new(std::mem::take(&mut pages[page]))
-        .block(Block::default().borders(Borders::ALL).title(title))
+        .block(
+            Block::default()
+                .borders(Borders::ALL)
+                .border_set(g.border())
+                .title(title),
+        )
         .render(r, buf);
 }

@@ -1,7 +1,9 @@
 //! The class, drawn like any other panel: the lecturer's class line over
 //! the caption, a student's poll line in place of the claims, the poll's
 //! answers as a histogram along the chart's x axis, and the class list.
-//! Every character they add that is not ASCII comes from [`ClassGlyphs`].
+//! Their text goes through the session's [`Glyphs`] (ASCII names outside
+//! braille), their drawing characters come from a [`ClassGlyphs`] chosen
+//! by it, so the ASCII set stays all ASCII.
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
@@ -12,29 +14,36 @@ use ratatui::widgets::{Block, Borders, Clear, Paragraph, Widget};
 use super::chart;
 use crate::figure::View;
 use crate::tui::app::App;
-use crate::tui::class::{duration, ClassGlyphs, Tally, UNICODE};
+use crate::tui::class::{duration, ClassGlyphs, Tally, ASCII, UNICODE};
+use crate::tui::glyphs::Glyphs;
 use crate::tui::plots::to_plot;
 
-/// The class panels' characters for this explorer.
-pub fn glyphs(_app: &App) -> &'static ClassGlyphs {
-    &UNICODE
+/// The histogram's characters in the half-block and block sets: only the
+/// blocks every console font has.
+const BLOCKS: ClassGlyphs = ClassGlyphs {
+    bars: ["▄", "▄", "▄", "▄", "█", "█", "█", "█"],
+    truth: "│",
+    ..ASCII
+};
+
+/// The class panels' drawing characters for a glyph set.
+pub fn glyphs(g: Glyphs) -> &'static ClassGlyphs {
+    match g {
+        Glyphs::Braille => &UNICODE,
+        Glyphs::Half | Glyphs::Block => &BLOCKS,
+        Glyphs::Ascii => &ASCII,
+    }
 }
 
-/// A name as the panels show it: in ASCII mode, `?` for what is not ASCII.
-fn shown_name(name: &str, g: &ClassGlyphs) -> String {
-    if g.sep.is_ascii() {
-        name.chars()
-            .map(|c| if c.is_ascii() { c } else { '?' })
-            .collect()
-    } else {
-        name.to_string()
-    }
+/// `text` as the session's glyphs write it.
+fn text(app: &App, text: &str) -> String {
+    app.theme.glyphs.text(text).into_owned()
 }
 
 /// The lecturer's class line ("31 students · 28 following · …").
 pub fn class_line(app: &App) -> Option<Line<'static>> {
     let v = app.class.view.as_ref()?;
-    Some(Line::styled(v.line(glyphs(app)), app.theme.title))
+    Some(Line::styled(text(app, &v.line(&UNICODE)), app.theme.title))
 }
 
 /// A student's poll line, which stands in for the claims while a poll is on.
@@ -45,7 +54,12 @@ pub fn poll_line(app: &App, width: usize) -> Option<Line<'static>> {
     } else {
         app.theme.title
     };
-    Some(Line::styled(a.line(glyphs(app), width), style))
+    // Fitted to the width as it will be written.
+    let mut line = text(app, &a.line(&UNICODE, width));
+    if Span::raw(&line).width() > width {
+        line = text(app, &a.line(&UNICODE, width.saturating_sub(8)));
+    }
+    Some(Line::styled(line, style))
 }
 
 fn bar_style(app: &App) -> Style {
@@ -57,11 +71,11 @@ fn bar_style(app: &App) -> Style {
 }
 
 /// Histogram cells per column of `width`: counts of `answers` by the
-/// column the chart puts them in.
-pub fn bins(answers: &[f64], log: bool, bounds: [f64; 2], g: Rect) -> Vec<usize> {
+/// column the chart (drawn with `dots` points per cell) puts them in.
+pub fn bins(answers: &[f64], log: bool, dots: (f64, f64), bounds: [f64; 2], g: Rect) -> Vec<usize> {
     let mut bins = vec![0; usize::from(g.width)];
     for &v in answers {
-        if let Some(col) = chart::col_of(g, bounds, to_plot(log, v)) {
+        if let Some(col) = chart::col_of(g, dots, bounds, to_plot(log, v)) {
             if let Some(b) = bins.get_mut(usize::from(col - g.x)) {
                 *b += 1;
             }
@@ -77,13 +91,15 @@ pub fn render_poll(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     let Some(t) = app.class.view.as_ref().and_then(|v| v.poll.as_ref()) else {
         return;
     };
-    let gl = glyphs(app);
+    let gl = glyphs(app.theme.glyphs);
+    let dots = app.theme.glyphs.dots();
     let axis = t.question.axis;
     let along = app.state.sweep.axis() == axis && app.view != View::Load;
-    let mut label = count_label(t, gl);
+    let mut label = count_label(t, &UNICODE);
     if !along {
-        label.push_str(&format!("{}on a chart along {}", gl.sep, axis.symbol()));
+        label.push_str(&format!("· on a chart along {} ", axis.symbol()));
     }
+    let label = text(app, &label);
     let w = Span::raw(&label).width() as u16;
     let x = g.right().saturating_sub(w).max(area.x);
     buf.set_stringn(
@@ -99,7 +115,7 @@ pub fn render_poll(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     let s = &app.state.sweep;
     let log = axis.is_log();
     let bounds = [to_plot(log, s.from()), to_plot(log, s.to())];
-    let bins = bins(&t.answers, log, bounds, g);
+    let bins = bins(&t.answers, log, dots, bounds, g);
     let max = bins.iter().copied().max().unwrap_or(0);
     let rows = (g.height / 2).max(1);
     let style = bar_style(app);
@@ -124,7 +140,7 @@ pub fn render_poll(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         }
     }
     if t.revealed {
-        if let Some(col) = chart::col_of(g, bounds, to_plot(log, t.question.truth)) {
+        if let Some(col) = chart::col_of(g, dots, bounds, to_plot(log, t.question.truth)) {
             let truth = Style::new().fg(Color::Yellow).add_modifier(Modifier::BOLD);
             for r in 0..rows {
                 let cell = &mut buf[(col, g.bottom() - 1 - r)];
@@ -158,7 +174,7 @@ pub fn render_list(app: &App, area: Rect, buf: &mut Buffer) {
     let Some(v) = &app.class.view else {
         return;
     };
-    let g = glyphs(app);
+    let g = &UNICODE;
     let t = &app.theme;
     let header = format!(
         " {:<32}  {:<12}  {:>7}  {:<7}  {:>6}",
@@ -168,14 +184,14 @@ pub fn render_list(app: &App, area: Rect, buf: &mut Buffer) {
         .seats
         .iter()
         .map(|s| {
-            let name = shown_name(&s.name, g);
+            let name = text(app, &s.name);
             let pad = 32usize.saturating_sub(Span::raw(&name).width());
+            let size = text(app, &format!("{}{}{}", s.size.0, g.times, s.size.1));
             format!(
-                " {name}{}  {:<12}  {:>7}  {:<7}  {:>6}",
+                " {name}{}  {:<12}  {size:>7}  {:<7}  {:>6}",
                 " ".repeat(pad),
                 s.state.label(),
-                format!("{}{}{}", s.size.0, g.times, s.size.1),
-                shown_name(&s.marker, g),
+                text(app, &s.marker),
                 duration(s.idle),
             )
         })
@@ -196,6 +212,7 @@ pub fn render_list(app: &App, area: Rect, buf: &mut Buffer) {
         title.push_str(&format!("{}page {}/{pages}", g.sep, page + 1));
     }
     title.push_str(&format!("{}w closes ", g.sep));
+    let title = text(app, &title);
     let mut lines = vec![Line::styled(header, t.title)];
     if rows.is_empty() {
         lines.push(Line::raw(" no students yet"));
@@ -208,7 +225,12 @@ pub fn render_list(app: &App, area: Rect, buf: &mut Buffer) {
     );
     Clear.render(r, buf);
     Paragraph::new(lines)
-        .block(Block::default().borders(Borders::ALL).title(title))
+        .block(
+            Block::default()
+                .borders(Borders::ALL)
+                .border_set(app.theme.glyphs.border())
+                .title(title),
+        )
         .render(r, buf);
 }
 
@@ -219,7 +241,13 @@ mod tests {
     #[test]
     fn answers_fall_in_the_columns_the_chart_puts_them() {
         let g = Rect::new(10, 0, 40, 10);
-        let b = bins(&[1.0, 1.0, 1e4, 100.0, 1e5, 0.5], true, [0.0, 4.0], g);
+        let b = bins(
+            &[1.0, 1.0, 1e4, 100.0, 1e5, 0.5],
+            true,
+            (2.0, 4.0),
+            [0.0, 4.0],
+            g,
+        );
         assert_eq!(b.iter().sum::<usize>(), 4, "outside the sweep: not drawn");
         assert_eq!(b[0], 2);
         assert_eq!(b[39], 1);

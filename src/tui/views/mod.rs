@@ -26,7 +26,7 @@ use crate::figure::View;
 impl Widget for &App {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let Some(r) = Regions::of(area) else {
-            render_too_small(area, buf);
+            render_too_small(self, area, buf);
             return;
         };
         render_header(self, r.header, buf);
@@ -52,7 +52,7 @@ impl Widget for &App {
     }
 }
 
-fn render_too_small(area: Rect, buf: &mut Buffer) {
+fn render_too_small(app: &App, area: Rect, buf: &mut Buffer) {
     if area.width == 0 || area.height == 0 {
         return;
     }
@@ -60,6 +60,7 @@ fn render_too_small(area: Rect, buf: &mut Buffer) {
         "enlarge the terminal to {}×{} (now {}×{}) · q quits",
         MIN_SIZE.0, MIN_SIZE.1, area.width, area.height
     );
+    let text = app.theme.glyphs.text(&text).into_owned();
     let y = area.y + area.height.saturating_sub(2) / 2;
     let r = Rect::new(area.x, y, area.width, area.height - (y - area.y));
     Paragraph::new(text)
@@ -71,12 +72,16 @@ fn render_too_small(area: Rect, buf: &mut Buffer) {
 fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
     let s = &app.state;
     let t = &app.theme;
+    let g = t.glyphs;
     let axis = s.sweep.axis();
-    // A snapshot's name is untrusted text: no control characters reach the terminal.
+    // A snapshot's name is untrusted text: no control characters reach the
+    // terminal, and in ASCII names nothing else outside ASCII.
     let clean = |text: &str| -> String {
-        text.chars()
+        let text: String = text
+            .chars()
             .map(|c| if c.is_control() { '�' } else { c })
-            .collect()
+            .collect();
+        g.text(&text).into_owned()
     };
     let mut name = clean(&s.name);
     // Where the name and file do not both fit, the file alone.
@@ -94,7 +99,7 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
     }
     let star = if app.modified { "*" } else { "" };
     let scene = |moments: &str| {
-        format!(
+        let text = format!(
             "  {} {}…{} · {} · {}{moments} · size effect {}",
             axis.symbol(),
             fmt_short(axis, s.sweep.from()),
@@ -102,7 +107,8 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
             s.model.label(),
             s.moments.label(),
             if s.size_effect { "on" } else { "off" },
-        )
+        );
+        g.text(&text).into_owned()
     };
     // At 80 columns: first the word "moments" goes, then the end of a long
     // name, rather than the end of the scene (the size effect's state).
@@ -120,7 +126,7 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
     }
     if width(&name) > room {
         let keep = room.saturating_sub(1);
-        name = name.chars().take(keep).chain(['…']).collect();
+        name = name.chars().take(keep).chain([g.cut()]).collect();
     }
     let name = format!("[{name}{star}]");
     let line = Line::from(vec![
@@ -137,11 +143,12 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
 /// stands in for the claims.
 fn render_caption(app: &App, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
+    let g = t.glyphs;
     let mut lines: Vec<Line> = class::class_line(app).into_iter().collect();
     let rows = usize::from(area.height.saturating_sub(1)).saturating_sub(lines.len());
-    let text = app.state.caption.as_deref().unwrap_or("");
+    let text = g.text(app.state.caption.as_deref().unwrap_or(""));
     lines.extend(
-        wrap(text, usize::from(area.width), rows)
+        wrap(&text, usize::from(area.width), rows, g.cut())
             .into_iter()
             .map(|l| Line::styled(l, t.dim)),
     );
@@ -155,10 +162,12 @@ fn render_caption(app: &App, area: Rect, buf: &mut Buffer) {
     // inside its number.
     let mut claims = String::new();
     for c in &app.claims {
+        let text = c.text();
+        let text = g.text(&text);
         let next = if claims.is_empty() {
-            c.text()
+            text.into_owned()
         } else {
-            format!("{claims} · {}", c.text())
+            format!("{claims}{}{text}", g.text(" · "))
         };
         if Span::raw(&next).width() <= usize::from(area.width) {
             claims = next;
