@@ -434,6 +434,12 @@ async fn names_are_shown_escaped_and_cut_and_the_console_logs_the_class() {
             .any(|l| l.contains(&cut) && l.contains("100×30") && l.contains("braille")),
         "{s}"
     );
+    // A student's M (the next marker set) shows in the open list.
+    room.keys("long", &["M"]);
+    room.wait("lect", "the long name's half blocks", 20, |s| {
+        s.lines()
+            .any(|l| l.contains(&cut) && l.contains("100×30") && l.contains("half"))
+    });
     // The console: a line per join with time, name, address, size, marker;
     // a summary each (here shortened) minute; escaped names there too.
     let log = srv.wait_log("a summary", 20, |l| {

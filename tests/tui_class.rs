@@ -170,3 +170,80 @@ fn the_lecturer_sees_the_class_and_the_histogram() {
     ch(&mut l, 'w');
     assert_eq!(l.mode, Mode::Main);
 }
+
+#[test]
+fn in_the_ascii_set_every_class_panel_is_ascii() {
+    use roughtui::tui::glyphs::Glyphs;
+    let ascii = |a: &App, what: &str| {
+        let s = screen(a);
+        let bad: String = s.chars().filter(|c| !c.is_ascii()).collect();
+        assert!(bad.is_empty(), "{what}: {bad:?} in\n{s}");
+        s
+    };
+    let q = Question {
+        axis: Axis::Zeta,
+        ask: Ask::Share { rising: false },
+        truth: 321.5,
+    };
+    let mut l = lecturer("fig2");
+    l.theme = l.theme.with_glyphs(Glyphs::Ascii);
+    l.class.view = Some(ClassView {
+        seats: vec![
+            seat("José", SeatState::Answered, (100, 30)),
+            seat(&format!("{}…", "ζ".repeat(31)), SeatState::Own, (70, 20)),
+        ],
+        poll: Some(Tally {
+            question: q,
+            answers: vec![100.0, 100.0, 1000.0, 3000.0],
+            asked: 4,
+            revealed: false,
+        }),
+    });
+    let s = ascii(&l, "open poll");
+    assert!(
+        s.contains("2 students | 4/4 answered | 1 terminal < 80x24"),
+        "{s}"
+    );
+    assert!(s.contains('#'), "no bars:\n{s}");
+    l.class
+        .view
+        .as_mut()
+        .unwrap()
+        .poll
+        .as_mut()
+        .unwrap()
+        .revealed = true;
+    let s = ascii(&l, "revealed poll");
+    assert!(s.contains("revealed zeta = 321.5 (4 answers)"), "{s}");
+    ch(&mut l, 'w');
+    let s = ascii(&l, "class list");
+    assert!(s.contains("Jose"), "{s}");
+    assert!(s.contains("70x20"), "{s}");
+    ch(&mut l, 'w');
+    ch(&mut l, 'V');
+    let s = ascii(&l, "truth prompt");
+    assert!(s.contains("poll: the true zeta = "), "{s}");
+
+    let mut st = fig("fig2");
+    st.theme = st.theme.with_glyphs(Glyphs::Ascii);
+    st.student = true;
+    st.lecturer_keys = true;
+    st.class.asked = Some(Asked {
+        question: q,
+        answer: None,
+        revealed: false,
+    });
+    let s = ascii(&st, "question");
+    assert!(
+        s.contains("Predict: where does the plastic share fall below 1/2?"),
+        "{s}"
+    );
+    st.class.asked.as_mut().unwrap().answer = Some(1000.0);
+    ascii(&st, "answered");
+    st.class.asked.as_mut().unwrap().revealed = true;
+    let s = ascii(&st, "revealed");
+    assert!(
+        s.contains("the model: zeta = 321.5 | you: 1000 | 3.1x too high"),
+        "{s}"
+    );
+}

@@ -184,7 +184,19 @@ pub fn render_list(app: &App, area: Rect, buf: &mut Buffer) {
         .seats
         .iter()
         .map(|s| {
-            let name = text(app, &s.name);
+            // 32 columns as written (ASCII names are longer: ζ is zeta).
+            let mut name = text(app, &s.name);
+            if Span::raw(&name).width() > 32 {
+                let mut cut = String::new();
+                for c in name.chars() {
+                    if Span::raw(format!("{cut}{c}")).width() > 31 {
+                        break;
+                    }
+                    cut.push(c);
+                }
+                cut.push(app.theme.glyphs.cut());
+                name = cut;
+            }
             let pad = 32usize.saturating_sub(Span::raw(&name).width());
             let size = text(app, &format!("{}{}{}", s.size.0, g.times, s.size.1));
             format!(
