@@ -27,7 +27,7 @@ fn refusals_name_the_line() {
         err("1 2\n3 4 5\n"),
         (Some(2), Problem::Ragged { got: 3, want: 2 })
     );
-    let (line, p) = err("# h\n1 2\n1 3\n");
+    let (line, p) = err("# q C\n1 2\n1 3\n");
     assert_eq!(line, Some(3));
     assert_eq!(
         p.to_string(),
