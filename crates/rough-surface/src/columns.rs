@@ -16,7 +16,8 @@
 //!    a header line `# q C` or `# x z`.
 //!
 //! A line scan's x must then be uniform: every x within 1% of the spacing
-//! (plus the rounding of the digits printed for it) of x_0 + i Δx, with
+//! (plus the rounding of its printed digits: half a unit in the last of
+//! the most significant digits any x of the column shows) of x_0 + i Δx, with
 //! Δx = (x_last − x_0)/(n − 1); a jitter of 1% of Δx moves the phase of
 //! the shortest wave by at most 2π·1%/2, and its PSD by ~1e-3. The scan
 //! spans L = n Δx (SurfaceTopography's XYZ reader, whose own test is an
@@ -91,14 +92,24 @@ fn looks_like_psd(x: &[f64], y: &[f64]) -> bool {
     sxx > 0.0 && sxy / sxx <= -1.0
 }
 
-/// Half a unit in the last digit printed in `field` ("1.250e-06" → 5e-10).
-fn half_digit(field: &str) -> f64 {
-    let (mantissa, exp) = match field.find(['e', 'E']) {
-        Some(i) => (&field[..i], field[i + 1..].parse::<i32>().unwrap_or(0)),
-        None => (field, 0),
-    };
-    let decimals = mantissa.find('.').map_or(0, |i| mantissa.len() - i - 1) as i32;
-    0.5 * 10f64.powi(exp - decimals)
+/// Significant digits printed in `field` ("1.250e-06" → 4, "0.0012" → 2).
+fn digits(field: &str) -> i32 {
+    let mantissa = field.split(['e', 'E']).next().unwrap_or("");
+    mantissa
+        .chars()
+        .filter(|c| c.is_ascii_digit())
+        .skip_while(|&c| c == '0')
+        .count() as i32
+}
+
+/// Half a unit in the `d`-th significant digit of `x` (0 for x = 0: a
+/// printed zero is exact).
+fn resolution(x: f64, d: i32) -> f64 {
+    if x == 0.0 {
+        0.0
+    } else {
+        0.5 * 10f64.powi(x.abs().log10().floor() as i32 - d + 1)
+    }
 }
 
 /// The spacing of uniform x, or the first x off the grid (its index).
@@ -114,10 +125,14 @@ fn uniform(x: &[f64], fields: &[&str]) -> Result<f64, (usize, Problem)> {
             )),
         ));
     }
-    let ends = half_digit(fields[0]) + half_digit(fields[n - 1]);
+    // The column's printing precision: the most significant digits any x
+    // shows (a fixed format shows the same number everywhere; the
+    // shortest round-trip format shows up to 17 somewhere).
+    let d = fields.iter().map(|f| digits(f)).max().unwrap_or(17).max(1);
+    let ends = resolution(x0, d) + resolution(xl, d);
     for i in 0..n {
         let expected = x0 + i as f64 * dx;
-        if (x[i] - expected).abs() > 0.01 * dx + half_digit(fields[i]) + ends {
+        if (x[i] - expected).abs() > 0.01 * dx + resolution(x[i], d) + ends {
             return Err((
                 i,
                 Problem::NonUniform {
@@ -214,10 +229,13 @@ mod tests {
 
     #[test]
     fn printed_digits() {
-        assert_eq!(half_digit("1.250e-06"), 0.5e-9);
-        assert_eq!(half_digit("0.001"), 0.5e-3);
-        assert_eq!(half_digit("12"), 0.5);
-        assert_eq!(half_digit("3.5E+2"), 5.0);
+        assert_eq!(digits("1.250e-06"), 4);
+        assert_eq!(digits("0.0012"), 2);
+        assert_eq!(digits("-12"), 2);
+        assert_eq!(digits("0"), 0);
+        assert_eq!(resolution(1.25e-6, 4), 0.5e-9);
+        assert_eq!(resolution(350.0, 2), 5.0);
+        assert_eq!(resolution(0.0, 2), 0.0);
     }
 
     #[test]

@@ -77,7 +77,7 @@ impl fmt::Display for Problem {
                 crate::MAX_BYTES >> 20
             ),
             Problem::NotText => write!(f, "not UTF-8 text"),
-            Problem::Empty => write!(f, "no data rows"),
+            Problem::Empty => write!(f, "no data rows (the file is empty or all comments)"),
             Problem::NotNumber(s) => write!(f, "'{s}' is not a number"),
             Problem::NotFinite(s) => write!(f, "{s} is not a finite number"),
             Problem::Ragged { got, want } => {
