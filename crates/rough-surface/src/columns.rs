@@ -130,13 +130,13 @@ fn uniform(x: &[f64], fields: &[&str]) -> Result<f64, (usize, Problem)> {
     // shortest round-trip format shows up to 17 somewhere).
     let d = fields.iter().map(|f| digits(f)).max().unwrap_or(17).max(1);
     let ends = resolution(x0, d) + resolution(xl, d);
-    for i in 0..n {
+    for (i, &xi) in x.iter().enumerate() {
         let expected = x0 + i as f64 * dx;
-        if (x[i] - expected).abs() > 0.01 * dx + resolution(x[i], d) + ends {
+        if (xi - expected).abs() > 0.01 * dx + resolution(xi, d) + ends {
             return Err((
                 i,
                 Problem::NonUniform {
-                    x: x[i],
+                    x: xi,
                     expected,
                     spacing: dx,
                 },
