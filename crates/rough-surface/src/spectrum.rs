@@ -237,20 +237,29 @@ pub(crate) fn map(
     );
     let qmax = PI * (nx as f64 / lx).min(ny as f64 / ly);
     let mut bins = Bins::new(gx.min(gy), qmax);
-    let qy: Vec<f64> = (0..ny).map(|j| freq(j, ny, ly)).collect();
-    let ry: Vec<f64> = (0..ny).map(|j| gy * j.min(ny - j) as f64).collect();
-    let mut terms = Vec::with_capacity(t.len());
+    // ky and ny − ky lie at the same |q|: one term for both.
+    let qy: Vec<f64> = (0..=ny / 2).map(|j| freq(j, ny, ly)).collect();
+    let ry: Vec<f64> = (0..=ny / 2).map(|j| gy * j as f64).collect();
+    let mut terms = Vec::with_capacity(nh * (ny / 2 + 1));
     for (kx, col) in t.chunks_exact(ny).enumerate() {
         let mult = if kx == 0 || 2 * kx == nx { 1.0 } else { 2.0 };
         let qx = freq(kx, nx, lx);
         let rx = gx * kx as f64;
-        for (ky, f) in col.iter().enumerate() {
+        for ky in 0..=ny / 2 {
             if kx == 0 && ky == 0 {
                 continue;
             }
-            let w = f.norm_sqr() * scale;
+            let (w, count) = if ky == 0 || 2 * ky == ny {
+                (col[ky].norm_sqr() * scale, 1.0)
+            } else {
+                ((col[ky].norm_sqr() + col[ny - ky].norm_sqr()) * scale, 2.0)
+            };
             terms.push(((qx * qx + qy[ky] * qy[ky]).sqrt(), mult * w));
-            bins.add((rx * rx + ry[ky] * ry[ky]).sqrt(), w * area, mult);
+            bins.add(
+                (rx * rx + ry[ky] * ry[ky]).sqrt(),
+                w * area / count,
+                mult * count,
+            );
         }
     }
     drop(t);

@@ -90,9 +90,9 @@ struct Chunk<'a> {
     lines: usize,
 }
 
-fn parse_chunk(body: &str, cols: usize) -> Result<Chunk<'_>, Failure> {
+fn parse_chunk(body: &str, cols: usize, per_value: usize) -> Result<Chunk<'_>, Failure> {
     let mut c = Chunk {
-        values: Vec::with_capacity(body.len() / 8),
+        values: Vec::with_capacity(body.len() / per_value + cols),
         ..Chunk::default()
     };
     for (i, line) in body.split('\n').enumerate() {
@@ -184,6 +184,9 @@ pub(crate) fn scan<'a>(text: &'a str, head: Head<'a>) -> Result<Scan<'a>, Failur
     let Some((first_line, start, cols)) = head.first else {
         return Err((None, Problem::Empty));
     };
+    // Bytes per number on the first row, to size the buffers.
+    let first_len = text[start..].find('\n').unwrap_or(text.len() - start) + 1;
+    let per_value = (first_len / cols).max(2);
     let mut s = Scan {
         header: head.header,
         cols,
@@ -210,12 +213,12 @@ pub(crate) fn scan<'a>(text: &'a str, head: Head<'a>) -> Result<Scan<'a>, Failur
         rest = b;
     }
     let chunks: Vec<Result<Chunk<'_>, Failure>> = if parts.len() == 1 {
-        vec![parse_chunk(parts[0], cols)]
+        vec![parse_chunk(parts[0], cols, per_value)]
     } else {
         std::thread::scope(|sc| {
             let handles: Vec<_> = parts
                 .iter()
-                .map(|p| sc.spawn(move || parse_chunk(p, cols)))
+                .map(|p| sc.spawn(move || parse_chunk(p, cols, per_value)))
                 .collect();
             handles
                 .into_iter()
