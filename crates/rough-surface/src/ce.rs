@@ -22,7 +22,7 @@
 use rough_model::Dim;
 
 use crate::error::{Failure, Problem};
-use crate::header::length_unit;
+use crate::header::per_metre;
 use crate::psd;
 use crate::spectrum::Computed;
 use crate::text::number;
@@ -47,20 +47,21 @@ struct Block {
     lines: Vec<usize>,
 }
 
-/// The length whose inverse is q's unit ("1/m", "µm⁻¹" …): q_SI = q/this.
+/// Per metre of the length whose inverse is q's unit ("1/m", "µm⁻¹" …):
+/// q_SI = q · this.
 fn per_length(u: &str) -> Option<f64> {
     let u: String = u.chars().filter(|c| !c.is_whitespace()).collect();
     let len = u
         .strip_prefix("1/")
         .or_else(|| u.strip_suffix("⁻¹"))
         .or_else(|| u.strip_suffix("^-1"))?;
-    length_unit(len)
+    per_metre(len)
 }
 
 fn cubed(u: &str) -> Option<f64> {
     let u = u.trim();
     let len = u.strip_suffix('³').or_else(|| u.strip_suffix("^3"))?;
-    Some(length_unit(len)?.powi(3))
+    Some(per_metre(len)?.powi(3))
 }
 
 /// The parenthesised units of a `Columns:` line, in order.
@@ -165,15 +166,15 @@ pub(crate) fn read(text: &str, opts: &Options) -> Result<(Kind, Computed), Failu
             ))
         }
     };
-    let q: Vec<f64> = b.q.iter().map(|q| q / fx).collect();
+    let q: Vec<f64> = b.q.iter().map(|q| q * fx).collect();
     let c: Vec<f64> = match dim {
         // The series is C^iso · q/π.
         Dim::Areal => q
             .iter()
             .zip(&b.v)
-            .map(|(q, v)| std::f64::consts::PI * v * fy / q)
+            .map(|(q, v)| std::f64::consts::PI * (v / fy) / q)
             .collect(),
-        Dim::Profile => b.v.iter().map(|v| v * fy).collect(),
+        Dim::Profile => b.v.iter().map(|v| v / fy).collect(),
     };
     psd::table(dim, q, c, &b.lines)
 }
@@ -185,10 +186,10 @@ mod tests {
     #[test]
     fn units_of_both_versions() {
         assert_eq!(per_length("1/m"), Some(1.0));
-        assert_eq!(per_length("µm⁻¹"), Some(1e-6));
-        assert_eq!(per_length("1 / nm"), Some(1e-9));
+        assert_eq!(per_length("µm⁻¹"), Some(1e6));
+        assert_eq!(per_length("1 / nm"), Some(1e9));
         assert_eq!(cubed("m³"), Some(1.0));
-        assert!((cubed("µm³").unwrap() - 1e-18).abs() < 1e-33);
+        assert_eq!(cubed("µm³"), Some(1e18));
         assert_eq!(
             units("Columns: Wavevector (1/m), PSD (m³), standard error of average PSD (m³)"),
             vec!["1/m", "m³", "m³"]

@@ -203,8 +203,8 @@ pub(crate) fn read(
     let fields = first_fields(&all, lines);
     let dx = uniform(&x, &fields).map_err(|(i, p)| (Some(lines[i]), p))?;
     let (sx, sz) = (header.lateral_scale()?, header.value_scale()?);
-    let z: Vec<f64> = y.iter().map(|v| v * sz).collect();
-    let l = n as f64 * dx * sx;
+    let z: Vec<f64> = y.iter().map(|v| v / sz).collect();
+    let l = n as f64 * dx / sx;
     let c = spectrum::line(z, l, opts.periodic).map_err(|p| (None, p))?;
     Ok((Kind::Line { n, l }, c))
 }

@@ -67,15 +67,17 @@ const CHANNEL: &[&str] = &[
 const X_UNIT: &[&str] = &["x-unit", "Lateral units"];
 const Y_UNIT: &[&str] = &["y-unit"];
 
-/// A length unit's size in metres (SurfaceTopography's spellings).
-pub(crate) fn length_unit(u: &str) -> Option<f64> {
+/// How many of a length unit make a metre (SurfaceTopography's
+/// spellings). Values are divided by it: x / 1e6 is the correctly rounded
+/// metres of x µm, x · 1e-6 need not be.
+pub(crate) fn per_metre(u: &str) -> Option<f64> {
     Some(match u {
         "m" => 1.0,
-        "mm" => 1e-3,
-        "µm" | "μm" | "um" | "~m" => 1e-6,
-        "nm" => 1e-9,
-        "Å" | "A" => 1e-10,
-        "pm" => 1e-12,
+        "mm" => 1e3,
+        "µm" | "μm" | "um" | "~m" => 1e6,
+        "nm" => 1e9,
+        "Å" | "A" => 1e10,
+        "pm" => 1e12,
         _ => return None,
     })
 }
@@ -186,7 +188,7 @@ impl Header {
         *self == Header::default()
     }
 
-    /// The heights' unit in metres (SI without a value unit).
+    /// The heights' unit per metre (SI without a value unit): divide by it.
     pub fn value_scale(&self) -> Result<f64, Failure> {
         match &self.value_unit {
             None => Ok(1.0),
@@ -212,13 +214,13 @@ impl Header {
                 Some(u) => unit(u, s.line)?,
                 None => fallback(axis)?,
             };
-            Ok(Some(s.value * scale))
+            Ok(Some(s.value / scale))
         };
         Ok((metres(&self.width, axis_x)?, metres(&self.height, axis_y)?))
     }
 
-    /// The lateral scale of an `x z` table's x (its `Lateral units`, else
-    /// metres).
+    /// An `x z` table's x unit per metre (its `Lateral units`, else
+    /// metres): divide by it.
     pub fn lateral_scale(&self) -> Result<f64, Failure> {
         match &self.x_unit {
             None => Ok(1.0),
@@ -228,7 +230,7 @@ impl Header {
 }
 
 fn unit(u: &str, line: usize) -> Result<f64, Failure> {
-    length_unit(u).ok_or_else(|| (Some(line), Problem::UnknownUnit(u.to_string())))
+    per_metre(u).ok_or_else(|| (Some(line), Problem::UnknownUnit(u.to_string())))
 }
 
 #[cfg(test)]
@@ -245,10 +247,8 @@ mod tests {
         ])
         .unwrap();
         assert_eq!(h.channels, vec![1]);
-        let (w, hh) = h.sizes().unwrap();
-        assert!((w.unwrap() - 12e-6).abs() < 1e-20);
-        assert!((hh.unwrap() - 8e-6).abs() < 1e-20);
-        assert_eq!(h.value_scale().unwrap(), 1e-9);
+        assert_eq!(h.sizes().unwrap(), (Some(12e-6), Some(8e-6)));
+        assert_eq!(h.value_scale().unwrap(), 1e9);
         // SurfaceTopography's to_matrix: sizes in the value unit.
         let h = Header::read(&[
             (1, "Width: 2.5"),
@@ -256,9 +256,7 @@ mod tests {
             (3, "Value units: nm"),
         ])
         .unwrap();
-        let (w, hh) = h.sizes().unwrap();
-        assert_eq!(w, Some(2.5e-9));
-        assert!((hh.unwrap() / 1e-6 - 1.0).abs() < 1e-15);
+        assert_eq!(h.sizes().unwrap(), (Some(2.5e-9), Some(1e-6)));
         // Translated labels and the full-width colon.
         let h = Header::read(&[(1, "Breite: 3 mm"), (2, "高さ： 2 mm")]).unwrap();
         assert_eq!(h.sizes().unwrap(), (Some(3e-3), Some(2e-3)));

@@ -60,7 +60,7 @@ pub(crate) fn read(
     let z = header.value_scale()?;
     let mut h = scan.values;
     if z != 1.0 {
-        h.iter_mut().for_each(|v| *v *= z);
+        h.iter_mut().for_each(|v| *v /= z);
     }
     if line {
         let l = match (width, opts.pixel_size) {

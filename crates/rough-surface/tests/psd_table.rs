@@ -81,3 +81,26 @@ fn a_profile_fit_converts_by_isotropy() {
     m.spectrum.clear();
     assert!(m.fit(1e5, 1e7).is_none());
 }
+
+#[test]
+fn the_example_surface_reads() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../surfaces/example.txt");
+    let m = rough_surface::read(&path, &Options::default()).unwrap();
+    assert_eq!(
+        m.kind,
+        rough_surface::Kind::Map {
+            nx: 192,
+            ny: 192,
+            lx: 50e-6,
+            ly: 50e-6
+        }
+    );
+    assert_eq!(
+        m.summary,
+        "map 192 × 192, 50 µm × 50 µm, plane removed, Hann window"
+    );
+    // Above the roll-off the fit finds the synthesis' Hurst exponent.
+    let q0 = m.table.q0();
+    let fit = m.fit(4.0 * q0, 60.0 * q0).unwrap();
+    assert!((fit.hurst - 0.8).abs() < 0.1, "{fit:?}");
+}
