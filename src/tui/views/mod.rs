@@ -10,6 +10,8 @@ mod overlap;
 mod side;
 mod slopes;
 
+pub use map::{ansi16, contour_color, share_color};
+
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Alignment, Rect};
 use ratatui::text::{Line, Span};
