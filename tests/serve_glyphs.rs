@@ -116,7 +116,10 @@ fn a_utf8_client_gets_braille_and_the_first_line_on_switching() {
     );
     let s = p.wait_text("Readout");
     assert!(braille(&s) > 100, "{} braille cells:\n{s}", braille(&s));
-    assert!(s.contains("chart shows boxes or ?: press M"), "{s}");
+    assert!(
+        s.contains("chart shows boxes, ? or odd signs: press M"),
+        "{s}"
+    );
     assert!(s.contains('ζ') && s.contains("Ψ_P"), "{s}");
     // The first key takes the line away; M switches to half blocks.
     p.keys(&["M"]);
@@ -142,7 +145,7 @@ fn without_a_key_the_first_line_goes_after_a_few_seconds() {
     let srv = Server::start(dir.path(), &[]);
     let raw = dir.path().join("raw");
     let p = ssh_pane("serve-hint", &srv, "LANG=C.UTF-8", &["-t"], &raw);
-    p.wait_text("chart shows boxes or ?: press M");
+    p.wait_text("chart shows boxes, ? or odd signs: press M");
     let start = std::time::Instant::now();
     let wait = Duration::from_secs(15);
     while p.capture().contains("chart shows boxes") {
@@ -297,4 +300,39 @@ async fn only_lang_and_lc_variables_are_taken_and_the_session_goes_on() {
         }
     }
     assert_eq!(status, Some(0), "j did not panic, q quit");
+}
+
+/// PuTTY's own SSH code (its command-line client, plink 0.78, the release
+/// of russh issue 156, "PuTTY sends nothing"): the explorer draws, takes
+/// keys and ends with q.
+#[test]
+fn putty_draws_takes_keys_and_quits() {
+    let have_plink = common::tmux::have_tool(
+        "plink",
+        "ROUGHTUI_REQUIRE_SSH",
+        "the PuTTY test (apt-get install putty-tools)",
+    );
+    if !(have_plink && have_tmux()) {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let srv = Server::start(dir.path(), &[]);
+    let fingerprint = srv
+        .banner
+        .split_whitespace()
+        .find(|w| w.starts_with("SHA256:"))
+        .unwrap()
+        .to_string();
+    let cmd = format!(
+        "env LANG=C.UTF-8 plink -ssh -batch -t -P {} -hostkey {} pat@127.0.0.1",
+        srv.port,
+        sh_quote(&fingerprint)
+    );
+    let p = Pane::start_shell("serve-putty", (100, 30), &cmd);
+    let s = p.wait_text("Readout");
+    assert!(braille(&s) > 100, "{s}");
+    p.keys(&["Right"]);
+    p.wait_text("ζ = 178");
+    p.keys(&["q"]);
+    assert_eq!(p.exit_status(), 0);
 }
