@@ -30,7 +30,9 @@ mod series;
 mod svg;
 
 pub use claims::{claims, Claim, ClaimKind};
-pub use colour::{share_char, share_colour, RAMP};
+pub use colour::{
+    share_ansi16, share_ansi256, share_char, share_colour, ANSI16_SCALE, ANSI256_SCALE, RAMP,
+};
 pub use map::{MapCache, MapSpec, RegimeMap, DEFAULT_GRID};
 pub use number::short_number;
 pub use rough_model::slopes::{ELASTIC_BELOW, PLASTIC_ABOVE};

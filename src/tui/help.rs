@@ -48,7 +48,7 @@ pub const SYMBOLS: &[(&str, &str)] = &[
         "plastic: this program's thresholds (the paper sets none)",
     ),
     (
-        "ψ ◦ ●",
+        MARKS,
         "on the x axis: ψ = 1; plastic share 10 %; plastic share 90 %",
     ),
     (
@@ -63,19 +63,32 @@ pub const SYMBOLS: &[(&str, &str)] = &[
         "",
         "Every share and regime rests on this reading: with Persson's",
     ),
-    (
-        "",
-        "elastic erf(p̄/√(2V)), fig2's share at ζ = 1000: 0.078, not 0.738",
-    ),
+    ("", "elastic erf(p̄/√(2V)) instead, fig2's share at ζ = 1000"),
+    ("", "would be 0.078, not 0.738"),
 ];
+
+/// Where [`SYMBOLS`] names the regime marks: the glyph set's own.
+const MARKS: &str = "ψ ◦ ●";
 
 /// The help's lines, all pages together, each marked whether it is a
 /// heading.
 pub fn lines(app: &App) -> Vec<(bool, Line<'static>)> {
     let t = &app.theme;
+    let g = t.glyphs;
     let mut lines = Vec::new();
     let mut prompt_heading = false;
-    for b in keys::BINDINGS.iter().filter(|b| b.context.listed(app)) {
+    let bindings: Vec<_> = keys::BINDINGS
+        .iter()
+        .filter(|b| b.context.listed(app))
+        .collect();
+    // The keys' column: as wide as the longest label, at least 15.
+    let width = bindings
+        .iter()
+        .map(|b| Span::raw(keys::key_text(g, b.label)).width() + 1)
+        .max()
+        .unwrap_or(0)
+        .max(15);
+    for b in bindings {
         if b.context == Context::Prompt && !prompt_heading {
             lines.push((
                 true,
@@ -86,18 +99,26 @@ pub fn lines(app: &App) -> Vec<(bool, Line<'static>)> {
         lines.push((
             false,
             Line::from(vec![
-                Span::styled(padded(b.label, 15), t.title),
-                Span::raw(b.help),
+                Span::styled(padded(&keys::key_text(g, b.label), width), t.title),
+                Span::raw(g.text(b.help).into_owned()),
             ]),
         ));
     }
     lines.push((true, Line::styled("symbols:", t.title)));
-    for (sym, what) in SYMBOLS {
+    for &(sym, what) in SYMBOLS {
+        let sym = if sym == MARKS {
+            use super::glyphs::Mark;
+            [Mark::PsiOne, Mark::ShareLow, Mark::ShareHigh]
+                .map(|m| g.mark(m))
+                .join(" ")
+        } else {
+            g.text(sym).into_owned()
+        };
         lines.push((
             false,
             Line::from(vec![
-                Span::styled(padded(sym, 10), t.title),
-                Span::raw(*what),
+                Span::styled(padded(&sym, 10), t.title),
+                Span::raw(g.text(what).into_owned()),
             ]),
         ));
     }
@@ -115,14 +136,16 @@ fn scene(app: &App, lines: &mut Vec<(bool, Line<'static>)>) {
     if caption.is_empty() && app.claims.is_empty() {
         return;
     }
+    let g = app.theme.glyphs;
     lines.push((true, Line::styled("this scene:", app.theme.title)));
-    for l in wrap(caption, TEXT_W, usize::MAX) {
+    for l in wrap(&g.text(caption), TEXT_W, usize::MAX, g.cut()) {
         lines.push((false, Line::raw(format!(" {l}"))));
     }
+    let dot = g.text("·");
     for c in &app.claims {
         // Each claim whole: in full where it fits, else short.
-        let l = claims_line(std::slice::from_ref(c), TEXT_W - 2);
-        lines.push((false, Line::styled(format!(" · {l}"), app.theme.ok)));
+        let l = claims_line(std::slice::from_ref(c), TEXT_W - 2, g);
+        lines.push((false, Line::styled(format!(" {dot} {l}"), app.theme.ok)));
     }
 }
 
@@ -170,8 +193,15 @@ pub fn render_help(app: &App, area: Rect, buf: &mut Buffer) {
     } else {
         " help · Esc or ? closes ".to_string()
     };
+    let g = app.theme.glyphs;
+    let title = g.text(&title).into_owned();
     Clear.render(r, buf);
     Paragraph::new(std::mem::take(&mut pages[page]))
-        .block(Block::default().borders(Borders::ALL).title(title))
+        .block(
+            Block::default()
+                .borders(Borders::ALL)
+                .border_set(g.border())
+                .title(title),
+        )
         .render(r, buf);
 }

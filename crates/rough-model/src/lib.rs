@@ -10,6 +10,7 @@
 pub mod areas;
 mod dd;
 pub mod indices;
+pub mod measured;
 pub mod params;
 pub mod scene;
 pub mod slopes;
@@ -18,6 +19,7 @@ pub mod spectrum;
 pub use areas::{areas, closed_form_areas, exact_areas, AreaError, Areas};
 pub use dd::Dd;
 pub use indices::{psi_in_use, Indices, Surface};
+pub use measured::{Dim, MomentTable, ProfileMoments, TableError};
 pub use params::{Axis, ParamError, ParamValues, Params};
 pub use scene::{Curves, Scene, SceneSpec, Sweep, SweepError};
 pub use slopes::{closed_form, exact, persson_elastic, slopes, Model, Regime, Slopes};

@@ -17,6 +17,7 @@ use ratatui::widgets::{Paragraph, Widget, Wrap};
 
 use super::app::{App, Mode};
 use super::fmt::{fmt_short, wrap};
+use super::glyphs::Glyphs;
 use super::keys;
 use super::layout::{Regions, MIN_SIZE};
 use super::{help, status};
@@ -25,7 +26,7 @@ use crate::figure::{Claim, View};
 impl Widget for &App {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let Some(r) = Regions::of(area) else {
-            render_too_small(area, buf);
+            render_too_small(self, area, buf);
             return;
         };
         render_header(self, r.header, buf);
@@ -47,7 +48,7 @@ impl Widget for &App {
     }
 }
 
-fn render_too_small(area: Rect, buf: &mut Buffer) {
+fn render_too_small(app: &App, area: Rect, buf: &mut Buffer) {
     if area.width == 0 || area.height == 0 {
         return;
     }
@@ -55,6 +56,7 @@ fn render_too_small(area: Rect, buf: &mut Buffer) {
         "enlarge the terminal to {}×{} (now {}×{}) · q quits",
         MIN_SIZE.0, MIN_SIZE.1, area.width, area.height
     );
+    let text = app.theme.glyphs.text(&text).into_owned();
     let y = area.y + area.height.saturating_sub(2) / 2;
     let r = Rect::new(area.x, y, area.width, area.height - (y - area.y));
     Paragraph::new(text)
@@ -66,12 +68,16 @@ fn render_too_small(area: Rect, buf: &mut Buffer) {
 fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
     let s = &app.state;
     let t = &app.theme;
+    let g = t.glyphs;
     let axis = s.sweep.axis();
-    // A snapshot's name is untrusted text: no control characters reach the terminal.
+    // A snapshot's name is untrusted text: no control characters reach the
+    // terminal, and in ASCII names nothing else outside ASCII.
     let clean = |text: &str| -> String {
-        text.chars()
+        let text: String = text
+            .chars()
             .map(|c| if c.is_control() { '�' } else { c })
-            .collect()
+            .collect();
+        g.text(&text).into_owned()
     };
     let mut name = clean(&s.name);
     // Where the name and file do not both fit, the file alone.
@@ -89,7 +95,7 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
     }
     let star = if app.modified { "*" } else { "" };
     let scene = |moments: &str| {
-        format!(
+        let text = format!(
             "  {} {}…{} · {} · {}{moments} · size effect {}",
             axis.symbol(),
             fmt_short(axis, s.sweep.from()),
@@ -97,7 +103,8 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
             s.model.label(),
             s.moments.label(),
             if s.size_effect { "on" } else { "off" },
-        )
+        );
+        g.text(&text).into_owned()
     };
     // At 80 columns: first the word "moments" goes, then the end of a long
     // name, rather than the end of the scene (the size effect's state).
@@ -115,7 +122,7 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
     }
     if width(&name) > room {
         let keep = room.saturating_sub(1);
-        name = name.chars().take(keep).chain(['…']).collect();
+        name = name.chars().take(keep).chain([g.cut()]).collect();
     }
     let name = format!("[{name}{star}]");
     let line = Line::from(vec![
@@ -130,14 +137,15 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
 /// where the figure's claims hold at the current parameters.
 fn render_caption(app: &App, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
+    let g = t.glyphs;
     let rows = usize::from(area.height.saturating_sub(1));
-    let text = app.state.caption.as_deref().unwrap_or("");
-    let mut lines: Vec<Line> = wrap(text, usize::from(area.width), rows)
+    let text = g.text(app.state.caption.as_deref().unwrap_or(""));
+    let mut lines: Vec<Line> = wrap(&text, usize::from(area.width), rows, g.cut())
         .into_iter()
         .map(|l| Line::styled(l, t.dim))
         .collect();
     lines.resize(rows, Line::raw(""));
-    let claims = claims_line(&app.claims, usize::from(area.width));
+    let claims = claims_line(&app.claims, usize::from(area.width), g);
     lines.push(Line::styled(claims, t.ok));
     Paragraph::new(lines).render(area, buf);
 }
@@ -148,16 +156,18 @@ fn render_caption(app: &App, area: Rect, buf: &mut Buffer) {
 /// fits, else short; all short ("Ψ_P = 1 at E/H0 = 191.2" for "Ψ_P falls
 /// below 1 at H0/E = 0.00523 (E/H0 = 191.2)") — the first that shows the
 /// most claims.
-pub fn claims_line(claims: &[Claim], width: usize) -> String {
+pub fn claims_line(claims: &[Claim], width: usize, g: Glyphs) -> String {
     let fits = |s: &str| Span::raw(s).width() <= width;
+    let dot = g.text(" · ");
     let fit = |forms: &dyn Fn(&Claim) -> Vec<String>| {
         let (mut line, mut shown) = (String::new(), 0);
         for c in claims {
             let joined = |text: &String| {
+                let text = g.text(text);
                 if line.is_empty() {
-                    text.clone()
+                    text.into_owned()
                 } else {
-                    format!("{line} · {text}")
+                    format!("{line}{dot}{text}")
                 }
             };
             if let Some(next) = forms(c).iter().map(joined).find(|l| fits(l)) {
@@ -188,6 +198,7 @@ fn render_footer(app: &App, area: Rect, buf: &mut Buffer) {
 mod tests {
     use super::claims_line;
     use crate::figure::{claims, Claim};
+    use crate::tui::glyphs::Glyphs;
 
     fn preset(name: &str) -> Vec<Claim> {
         claims(&crate::presets::load(name).unwrap())
@@ -197,21 +208,21 @@ mod tests {
     fn claims_are_whole_and_as_many_as_fit() {
         let fig4 = preset("fig4");
         // All in full when they fit.
-        let all = claims_line(&fig4, 200);
+        let all = claims_line(&fig4, 200, Glyphs::Braille);
         assert_eq!(all.matches(" · ").count(), 2, "{all}");
         // Full sentences keep the place when short ones show no more.
         assert_eq!(
-            claims_line(&fig4, 80),
+            claims_line(&fig4, 80, Glyphs::Braille),
             "plastic share falls below ½ at ζ = 1.698e4 · Ψ* falls below 1 at ζ = 5324"
         );
         // Short forms when they show more; whole claims only, at any width.
         let fig1 = preset("fig1");
         assert_eq!(
-            claims_line(&fig1, 60),
+            claims_line(&fig1, 60, Glyphs::Braille),
             "plastic share ½ at E/H0 = 120.2 · Ψ_P = 1 at E/H0 = 191.2"
         );
         for w in 0..200 {
-            let line = claims_line(&fig1, w);
+            let line = claims_line(&fig1, w, Glyphs::Braille);
             assert!(line.chars().count() <= w, "{w}: {line}");
             for part in line.split(" · ").filter(|p| !p.is_empty()) {
                 assert!(
@@ -221,6 +232,11 @@ mod tests {
                 );
             }
         }
-        assert_eq!(claims_line(&[], 80), "");
+        assert_eq!(claims_line(&[], 80, Glyphs::Braille), "");
+        // In ASCII the names are spelled out, and still whole.
+        assert_eq!(
+            claims_line(&fig1, 80, Glyphs::Ascii),
+            "plastic share 1/2 at E/H0 = 120.2 | Psi_P = 1 at E/H0 = 191.2"
+        );
     }
 }
