@@ -84,7 +84,10 @@ fn svg(buf: &Buffer) -> String {
             let reversed = cell.modifier.contains(Modifier::REVERSED);
             let (fg, bg) = (hex(cell.fg), hex(cell.bg));
             let (fg, bg) = if reversed {
-                (bg.or(Some(BACKGROUND.into())), fg.or(Some(FOREGROUND.into())))
+                (
+                    bg.or(Some(BACKGROUND.into())),
+                    fg.or(Some(FOREGROUND.into())),
+                )
             } else {
                 (fg, bg)
             };

@@ -6,7 +6,8 @@
 //! count 30. Reports key-to-frame p50/p99 of the typing students, the
 //! poll's delivery times, the server's RSS (per idle session), its CPU, and
 //! the bytes sent to idle sessions (outside the poll's question and reveal
-//! and within them). Stops by itself.
+//! and within them). Stops by itself: the whole run is bounded (a minute
+//! and a half), and the server is killed however the run ends.
 //!
 //! ```sh
 //! cargo build --release
@@ -89,8 +90,29 @@ fn ms(d: Duration) -> f64 {
     d.as_secs_f64() * 1e3
 }
 
+/// The whole run, at most: setting up 101 sessions, 20 s of typing, the
+/// saved answers and the report.
+const DEADLINE: Duration = Duration::from_secs(90);
+
+/// The server, killed when dropped (on an error or the deadline too).
+struct Server(std::process::Child);
+
+impl Drop for Server {
+    fn drop(&mut self) {
+        let _ = self.0.kill();
+        let _ = self.0.wait();
+    }
+}
+
 #[tokio::main(flavor = "multi_thread", worker_threads = 2)]
 async fn main() -> anyhow::Result<()> {
+    match tokio::time::timeout(DEADLINE, run()).await {
+        Ok(r) => r,
+        Err(_) => anyhow::bail!("the load test did not finish within {DEADLINE:?}"),
+    }
+}
+
+async fn run() -> anyhow::Result<()> {
     let bin = std::env::args()
         .nth(1)
         .unwrap_or_else(|| "target/release/roughtui".into());
@@ -102,25 +124,27 @@ async fn main() -> anyhow::Result<()> {
     let (key, public) = client::new_key();
     let keys = dir.path().join("lecturer.pub");
     std::fs::write(&keys, public)?;
-    let mut server = Command::new(&bin)
-        .current_dir(dir.path())
-        .args(["serve", "--listen", "127.0.0.1:0", "--host-key"])
-        .arg(dir.path().join("host_key"))
-        .arg("--lecturer-keys")
-        .arg(&keys)
-        .args([
-            "--max-sessions",
-            "200",
-            "--max-per-address",
-            "200",
-            "--quiet",
-        ])
-        .stdout(Stdio::piped())
-        .spawn()
-        .map_err(|e| anyhow::anyhow!("cannot run {bin} ({e}): cargo build --release first"))?;
-    let pid = server.id();
+    let mut server = Server(
+        Command::new(&bin)
+            .current_dir(dir.path())
+            .args(["serve", "--listen", "127.0.0.1:0", "--host-key"])
+            .arg(dir.path().join("host_key"))
+            .arg("--lecturer-keys")
+            .arg(&keys)
+            .args([
+                "--max-sessions",
+                "200",
+                "--max-per-address",
+                "200",
+                "--quiet",
+            ])
+            .stdout(Stdio::piped())
+            .spawn()
+            .map_err(|e| anyhow::anyhow!("cannot run {bin} ({e}): cargo build --release first"))?,
+    );
+    let pid = server.0.id();
     let mut port = 0;
-    for line in BufReader::new(server.stdout.take().unwrap()).lines() {
+    for line in BufReader::new(server.0.stdout.take().unwrap()).lines() {
         let line = line?;
         if let Some(rest) = line.strip_prefix("roughtui serve: listening on ") {
             port = rest.rsplit(':').next().unwrap_or("0").parse()?;
@@ -141,6 +165,12 @@ async fn main() -> anyhow::Result<()> {
         let (h, mut ch) = connect(port, format!("idle{i}")).await?;
         drain(&mut ch, Duration::from_millis(300)).await;
         idle.push((h, ch));
+    }
+    // The first screen's line on switching the drawing goes after
+    // HINT_FOR: that frame belongs to the session's start, not to idling.
+    tokio::time::sleep(roughtui::serve::term::HINT_FOR).await;
+    for (_, ch) in &mut idle {
+        drain(ch, Duration::from_millis(300)).await;
     }
     let rss_idle = proc_status(pid, "VmRSS");
     let mut polled = Vec::new();
@@ -322,7 +352,6 @@ async fn main() -> anyhow::Result<()> {
         within / IDLE
     );
     drop(keep);
-    let _ = server.kill();
-    let _ = server.wait();
+    drop(server);
     Ok(())
 }

@@ -677,7 +677,7 @@ fn thirty_students_predict_then_the_model_answers() {
 }
 
 #[test]
-fn a_scene_without_claims_polls_a_value_the_lecturer_types() {
+fn fig3_polls_its_minimum_and_then_a_value_the_lecturer_types() {
     if !(have_ssh() && have_tmux()) {
         return;
     }
@@ -712,8 +712,26 @@ fn a_scene_without_claims_polls_a_value_the_lecturer_types() {
     room.wait("ann", "following", 30, |s| {
         s.contains("following the lecturer")
     });
-    // fig3 makes no claim: v asks the lecturer for the value.
+    // fig3 claims the total slope's minimum: v asks where it lies.
     room.keys("lect", &["v"]);
+    room.wait("ann", "the minimum's question", 30, |s| {
+        s.contains("Predict: where is the total slope smallest? Move the marker and press Enter")
+    });
+    room.keys("ann", &["Right", "Enter"]);
+    room.wait("lect", "1/1 answered", 30, |s| {
+        s.contains("1 student · 1/1 answered")
+    });
+    room.keys("lect", &["v"]);
+    let want = roughtui::figure::short_number(stepped(
+        roughtui::presets::load("fig3").unwrap().params.zeta(),
+        1,
+    ));
+    // The claim's own number, as the claims line writes it.
+    room.wait("ann", "the minimum's reveal", 30, |s| {
+        s.contains(&format!("the model: ζ = 3.191 · you: {want} · "))
+    });
+    // V: the lecturer types the value instead.
+    room.keys("lect", &["V"]);
     room.wait("lect", "the truth prompt", 20, |s| {
         s.contains("poll: the true ζ = ")
     });
@@ -726,10 +744,6 @@ fn a_scene_without_claims_polls_a_value_the_lecturer_types() {
         s.contains("1 student · 1/1 answered")
     });
     room.keys("lect", &["v"]);
-    let want = roughtui::figure::short_number(stepped(
-        roughtui::presets::load("fig3").unwrap().params.zeta(),
-        1,
-    ));
     room.wait("ann", "the reveal", 30, |s| {
         s.contains(&format!("the model: ζ = 100 · you: {want} · "))
     });

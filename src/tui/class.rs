@@ -82,6 +82,8 @@ pub enum Ask {
     /// Where the index in use (Ψ* with the size effect, else Ψ_P) reaches 1
     /// (rising) or falls below it.
     Index { rising: bool, size_effect: bool },
+    /// Where the total slope has its minimum inside the sweep.
+    Minimum,
     /// A value the lecturer typed.
     Typed,
 }
@@ -89,21 +91,25 @@ pub enum Ask {
 impl Question {
     /// The question the view and the scene's claims make: on the index
     /// view the index reaching 1, elsewhere the plastic share passing ½
-    /// (each falling back on the other); `None` when the scene makes no
-    /// claim (the lecturer then types the value).
+    /// (each falling back on the other, then on the total slope's minimum,
+    /// fig3's claim); `None` when the scene makes no claim (the lecturer
+    /// then types the value).
     pub fn of_claims(view: View, claims: &[Claim]) -> Option<Question> {
         let first = |kind| claims.iter().find(|c| c.kind == kind);
         let (a, b) = match view {
             View::Indices => (ClaimKind::IndexOne, ClaimKind::ShareHalf),
             _ => (ClaimKind::ShareHalf, ClaimKind::IndexOne),
         };
-        let c = first(a).or_else(|| first(b))?;
+        let c = first(a)
+            .or_else(|| first(b))
+            .or_else(|| first(ClaimKind::TotalMinimum))?;
         let ask = match c.kind {
             ClaimKind::ShareHalf => Ask::Share { rising: c.rising },
             ClaimKind::IndexOne => Ask::Index {
                 rising: c.rising,
                 size_effect: c.size_effect,
             },
+            ClaimKind::TotalMinimum => Ask::Minimum,
         };
         Some(Question {
             axis: c.axis,
@@ -128,6 +134,7 @@ impl Question {
                 let verb = if rising { "reach" } else { "fall below" };
                 format!("where does {psi} {verb} 1?")
             }
+            Ask::Minimum => "where is the total slope smallest?".to_string(),
             Ask::Typed => format!("which {} is it?", self.axis.symbol()),
         }
     }
@@ -356,9 +363,22 @@ mod tests {
         let i = Question::of_claims(View::Indices, &claims).unwrap();
         assert_eq!(i.text(&UNICODE), "where does Ψ_P reach 1?");
         assert_eq!(i.truth, claims[1].at);
-        // fig3 makes no claim: the lecturer types the value.
-        let none = crate::figure::claims(&crate::presets::load("fig3").unwrap());
-        assert_eq!(Question::of_claims(View::Slopes, &none), None);
+        // fig3 claims only the total slope's minimum: that is the question,
+        // on either view, its truth the claim's own number.
+        let fig3 = crate::figure::claims(&crate::presets::load("fig3").unwrap());
+        for view in [View::Slopes, View::Indices] {
+            let m = Question::of_claims(view, &fig3).unwrap();
+            assert_eq!(m.ask, Ask::Minimum);
+            assert_eq!((m.axis, m.truth), (Axis::Zeta, fig3[0].at));
+            assert_eq!(m.text(&UNICODE), "where is the total slope smallest?");
+            assert_eq!(m.value(m.truth), "ζ = 3.191");
+        }
+        // Elsewhere the minimum comes last: fig4 asks the share.
+        let fig4 = crate::figure::claims(&crate::presets::load("fig4").unwrap());
+        let f = Question::of_claims(View::Slopes, &fig4).unwrap();
+        assert_eq!(f.ask, Ask::Share { rising: false });
+        // No claim at all: the lecturer types the value.
+        assert_eq!(Question::of_claims(View::Slopes, &[]), None);
         // Only an index claim: the slopes view asks it.
         let only = [claims[1].clone()];
         assert_eq!(
