@@ -496,6 +496,13 @@ mod tests {
         roster.mark_unchanged();
         assert_eq!(class.answer(c, id, 5.0), Err(Refused::Closed));
         assert_eq!(class.answer(a, id, 5.0), Err(Refused::Closed));
+        // What the student reads in their status line.
+        assert_eq!(
+            Refused::Closed.text(),
+            "too late: the answers were already revealed"
+        );
+        // An answer to a poll that is gone is refused the same way.
+        assert_eq!(class.answer(a, id + 1, 5.0), Err(Refused::Closed));
         assert_eq!(
             (state(class.view()), class.csv()),
             before,
