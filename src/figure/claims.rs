@@ -1,56 +1,97 @@
 //! The checkable claims a figure makes, located live at the current
-//! parameters: where the plastic share passes ½ and where the index in use
-//! (Ψ* with the size effect, Ψ_P without) crosses 1 along the sweep.
+//! parameters: where the plastic share passes ½, where the index in use
+//! (Ψ* with the size effect, Ψ_P without) crosses 1, and where the total
+//! slope has a minimum inside the sweep.
 
-use rough_model::{psi_in_use, slopes, Axis, Sweep};
+use rough_model::{psi_in_use, slopes, Axis};
 
+use super::minimum::{bracketed, refine};
 use super::number::short_number;
 use super::series::at;
 use crate::snapshot::State;
 
-/// Which quantity crosses which level.
+/// Which quantity does what.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ClaimKind {
     /// S_pl/S_tot crosses ½.
     ShareHalf,
     /// The index in use crosses 1.
     IndexOne,
+    /// The total slope S_tot (normalized by the hardness in use) has a
+    /// local minimum inside the sweep.
+    TotalMinimum,
 }
 
-/// One crossing along the sweep.
+/// One crossing, or one minimum, along the sweep.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Claim {
     pub kind: ClaimKind,
     /// The swept parameter.
     pub axis: Axis,
-    /// The swept value where the crossing lies (to ~1e-13 relative).
+    /// The swept value where the crossing or the minimum lies (a crossing
+    /// to ~1e-14 relative, a minimum to ~1e-12).
     pub at: f64,
-    /// Whether the quantity rises through the level there.
+    /// Whether the quantity rises through the level there (false for a
+    /// minimum).
     pub rising: bool,
     /// With the size effect (the index in use is Ψ*), or without (Ψ_P).
     pub size_effect: bool,
+    /// The quantity at `at`: the level crossed (½ or 1), or the total
+    /// slope at its minimum.
+    pub value: f64,
 }
 
 impl Claim {
     /// The claim in words: "plastic share passes ½ at ζ = 322.3",
-    /// "Ψ* falls below 1 at ζ = 5324".
+    /// "Ψ* falls below 1 at ζ = 5324", "total slope's minimum 3.91 at
+    /// ζ = 3.19"; on an H0/E sweep the place also as E/H0, the paper's
+    /// way of naming hardness ("… at H0/E = 0.00523 (E/H0 = 191.2)").
     pub fn text(&self) -> String {
+        let psi = if self.size_effect { "Ψ*" } else { "Ψ_P" };
         let what = match (self.kind, self.rising) {
             (ClaimKind::ShareHalf, true) => "plastic share passes ½".to_string(),
             (ClaimKind::ShareHalf, false) => "plastic share falls below ½".to_string(),
             (ClaimKind::IndexOne, rising) => {
-                let psi = if self.size_effect { "Ψ*" } else { "Ψ_P" };
                 let verb = if rising { "reaches" } else { "falls below" };
                 format!("{psi} {verb} 1")
             }
+            (ClaimKind::TotalMinimum, _) => {
+                format!("total slope's minimum {}", short_number(self.value))
+            }
         };
+        let place = format!("{} = {}", self.axis.symbol(), self.number());
+        match self.inverse() {
+            Some(inv) => format!("{what} at {place} (E/H0 = {inv})"),
+            None => format!("{what} at {place}"),
+        }
+    }
+
+    /// The claim in fewer words, for a narrow screen: "plastic share ½ at
+    /// ζ = 321.5", "Ψ_P = 1 at E/H0 = 191.2", "total slope min 3.91 at
+    /// ζ = 3.19" (an H0/E sweep names the place by E/H0 alone).
+    pub fn short_text(&self) -> String {
+        let what = match self.kind {
+            ClaimKind::ShareHalf => "plastic share ½".to_string(),
+            ClaimKind::IndexOne if self.size_effect => "Ψ* = 1".to_string(),
+            ClaimKind::IndexOne => "Ψ_P = 1".to_string(),
+            ClaimKind::TotalMinimum => format!("total slope min {}", short_number(self.value)),
+        };
+        match self.inverse() {
+            Some(inv) => format!("{what} at E/H0 = {inv}"),
+            None => format!("{what} at {} = {}", self.axis.symbol(), self.number()),
+        }
+    }
+
+    /// The place with its unit: "321.5", "2.5e-8 m".
+    fn number(&self) -> String {
         let unit = super::axis_unit(self.axis);
         let sep = if unit.is_empty() { "" } else { " " };
-        format!(
-            "{what} at {} = {}{sep}{unit}",
-            self.axis.symbol(),
-            short_number(self.at)
-        )
+        format!("{}{sep}{unit}", short_number(self.at))
+    }
+
+    /// E/H0 at the place, on an H0/E sweep.
+    fn inverse(&self) -> Option<String> {
+        (self.axis == Axis::H0OverE).then(|| short_number(1.0 / self.at))
     }
 }
 
@@ -61,8 +102,11 @@ const SAMPLES: usize = 256;
 const MAX_PER_KIND: usize = 4;
 
 /// Every crossing of the share ½ and of the index in use 1 along the
-/// state's sweep, in sweep order within each kind (share first). Crossings
-/// closer together than the sampling step (1/256 of the sweep) may be missed.
+/// state's sweep, in sweep order within each kind (share first), then
+/// every local minimum of the total slope inside the sweep. Crossings or
+/// minima closer together than the sampling step (1/256 of the sweep) may
+/// be missed; a minimum on a plateau that rounding cannot resolve (the
+/// exact total slope at 1 + 1e-20) is left out.
 pub fn claims(state: &State) -> Vec<Claim> {
     let index = |x: f64| {
         let p = at(&state.params, state.sweep.axis(), x);
@@ -70,35 +114,57 @@ pub fn claims(state: &State) -> Vec<Claim> {
     };
     let share = |x: f64| slopes(state.model, index(x)).plastic_share() - 0.5;
     let psi = |x: f64| index(x).to_f64() - 1.0;
+    let total = |x: f64| slopes(state.model, index(x)).total;
+    // One pass over the samples gives all three curves.
+    let xs: Vec<f64> = state.sweep.points(SAMPLES).collect();
+    let (mut share_v, mut psi_v, mut total_v) = (vec![], vec![], vec![]);
+    for &x in &xs {
+        let i = index(x);
+        let s = slopes(state.model, i);
+        share_v.push(s.plastic_share() - 0.5);
+        psi_v.push(i.to_f64() - 1.0);
+        total_v.push(s.total);
+    }
+    let log = state.sweep.axis().is_log();
+    let claim = |kind, at, rising, value| Claim {
+        kind,
+        axis: state.sweep.axis(),
+        at,
+        rising,
+        size_effect: state.size_effect,
+        value,
+    };
     let mut out = Vec::new();
-    for (kind, f) in [
-        (ClaimKind::ShareHalf, &share as &dyn Fn(f64) -> f64),
-        (ClaimKind::IndexOne, &psi),
+    for (kind, level, vs, f) in [
+        (
+            ClaimKind::ShareHalf,
+            0.5,
+            &share_v,
+            &share as &dyn Fn(f64) -> f64,
+        ),
+        (ClaimKind::IndexOne, 1.0, &psi_v, &psi),
     ] {
-        for (at, rising) in crossings(&state.sweep, f) {
-            out.push(Claim {
-                kind,
-                axis: state.sweep.axis(),
-                at,
-                rising,
-                size_effect: state.size_effect,
-            });
+        for (at, rising) in crossings(log, &xs, vs, f) {
+            out.push(claim(kind, at, rising, level));
         }
+    }
+    let minima = bracketed(&total_v).filter_map(|i| refine(&xs, &total_v, i, log, &total));
+    for (at, value) in minima.take(MAX_PER_KIND) {
+        out.push(claim(ClaimKind::TotalMinimum, at, false, value));
     }
     out
 }
 
-/// Zeros of `f` along `s` where it changes sign: (where, rising).
-fn crossings(s: &Sweep, f: &dyn Fn(f64) -> f64) -> Vec<(f64, bool)> {
-    let xs: Vec<f64> = s.points(SAMPLES).collect();
-    let vs: Vec<f64> = xs.iter().map(|&x| f(x)).collect();
+/// Zeros of `f` where its samples `vs` at `xs` change sign: (where,
+/// rising).
+fn crossings(log: bool, xs: &[f64], vs: &[f64], f: &dyn Fn(f64) -> f64) -> Vec<(f64, bool)> {
     let mut out = Vec::new();
-    for i in 0..xs.len() - 1 {
+    for i in 0..xs.len().saturating_sub(1) {
         let (a, b) = (vs[i], vs[i + 1]);
         if a.is_nan() || b.is_nan() || (a < 0.0) == (b < 0.0) {
             continue;
         }
-        out.push((bisect(s.axis().is_log(), xs[i], xs[i + 1], f), a < 0.0));
+        out.push((bisect(log, xs[i], xs[i + 1], f), a < 0.0));
         if out.len() == MAX_PER_KIND {
             break;
         }
@@ -131,12 +197,16 @@ fn bisect(log: bool, mut lo: f64, mut hi: f64, f: &dyn Fn(f64) -> f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use rough_model::Sweep;
 
     #[test]
     fn bisection_finds_a_known_root_to_1e_14() {
         let s = Sweep::new(Axis::Zeta, 1.0, 1e4).unwrap();
         let root = 322.27f64;
-        let c = crossings(&s, &|x: f64| x.ln() - root.ln());
+        let f = |x: f64| x.ln() - root.ln();
+        let xs: Vec<f64> = s.points(SAMPLES).collect();
+        let vs: Vec<f64> = xs.iter().map(|&x| f(x)).collect();
+        let c = crossings(true, &xs, &vs, &f);
         assert_eq!(c.len(), 1);
         assert!((c[0].0 / root - 1.0).abs() < 1e-13, "{}", c[0].0);
         assert!(c[0].1);
@@ -150,22 +220,50 @@ mod tests {
             at: 5324.4,
             rising: false,
             size_effect: true,
+            value: 1.0,
         };
         assert_eq!(c.text(), "Ψ* falls below 1 at ζ = 5324");
+        assert_eq!(c.short_text(), "Ψ* = 1 at ζ = 5324");
         let c = Claim {
             kind: ClaimKind::ShareHalf,
             axis: Axis::HRms,
             at: 2.5e-8,
             rising: true,
             size_effect: false,
+            value: 0.5,
         };
         assert_eq!(c.text(), "plastic share passes ½ at h_rms = 2.5e-8 m");
+        assert_eq!(c.short_text(), "plastic share ½ at h_rms = 2.5e-8 m");
+        let c = Claim {
+            kind: ClaimKind::IndexOne,
+            axis: Axis::H0OverE,
+            at: 0.005229641722173285,
+            rising: false,
+            size_effect: false,
+            value: 1.0,
+        };
+        assert_eq!(
+            c.text(),
+            "Ψ_P falls below 1 at H0/E = 0.00523 (E/H0 = 191.2)"
+        );
+        assert_eq!(c.short_text(), "Ψ_P = 1 at E/H0 = 191.2");
+        let c = Claim {
+            kind: ClaimKind::TotalMinimum,
+            axis: Axis::Zeta,
+            at: 3.1902,
+            rising: false,
+            size_effect: true,
+            value: 3.90981,
+        };
+        assert_eq!(c.text(), "total slope's minimum 3.91 at ζ = 3.19");
+        assert_eq!(c.short_text(), "total slope min 3.91 at ζ = 3.19");
     }
 }
 
 #[cfg(test)]
 mod preset_tests {
     use super::*;
+    use rough_model::Sweep;
 
     fn texts(name: &str) -> Vec<String> {
         claims(&crate::presets::load(name).unwrap())
@@ -187,16 +285,51 @@ mod preset_tests {
             texts("fig4"),
             [
                 "plastic share falls below ½ at ζ = 1.698e4",
-                "Ψ* falls below 1 at ζ = 5324"
+                "Ψ* falls below 1 at ζ = 5324",
+                "total slope's minimum 0.9796 at ζ = 2209"
             ]
         );
+        // The paper calls E/H0 = 25…1000 practically elastic; its own
+        // equations put Ψ_P = 1 at E/H0 = 191.
         assert_eq!(
             texts("fig1"),
             [
-                "plastic share falls below ½ at H0/E = 0.008318",
-                "Ψ_P falls below 1 at H0/E = 0.00523"
+                "plastic share falls below ½ at H0/E = 0.008318 (E/H0 = 120.2)",
+                "Ψ_P falls below 1 at H0/E = 0.00523 (E/H0 = 191.2)",
+                "total slope's minimum 0.9796 at H0/E = 0.003678 (E/H0 = 271.9)"
             ]
         );
-        assert!(texts("fig3").is_empty());
+        // "First decreases and then increases": where it turns.
+        assert_eq!(texts("fig3"), ["total slope's minimum 3.91 at ζ = 3.191"]);
+    }
+
+    #[test]
+    fn fig3s_minimum_moves_with_the_moments_and_the_sliders() {
+        let mut s = crate::presets::load("fig3").unwrap();
+        s.moments = rough_model::Moments::Truncated;
+        let c = claims(&s);
+        assert_eq!(c.len(), 1);
+        assert_eq!(c[0].text(), "total slope's minimum 5.59 at ζ = 7.763");
+        // The exact model has the same minimum: ψ is small there, and
+        // the two models' total slopes agree far below rounding.
+        s.model = rough_model::Model::Exact;
+        let e = claims(&s);
+        assert_eq!(e.len(), 1);
+        assert_eq!(e[0].value, c[0].value);
+        assert!((e[0].at / c[0].at - 1.0).abs() < 1e-11, "{e:?} {c:?}");
+        // A sweep that starts past the minimum has none inside.
+        s.sweep = Sweep::new(Axis::Zeta, 10.0, 1e4).unwrap();
+        assert!(claims(&s).is_empty());
+        // Without the size effect the total slope only falls (exact model).
+        s.size_effect = false;
+        s.sweep = Sweep::new(Axis::Zeta, 1.0, 1e4).unwrap();
+        assert!(claims(&s).iter().all(|c| c.kind != ClaimKind::TotalMinimum));
+        // A smaller R* lets the hardness catch up later: the minimum moves
+        // to finer scales.
+        let mut s = crate::presets::load("fig3").unwrap();
+        let at = |s: &State| claims(s)[0].at;
+        let base = at(&s);
+        s.params = s.params.with(Axis::RStar, 1e-4).unwrap();
+        assert!(at(&s) > base, "{} {base}", at(&s));
     }
 }

@@ -16,13 +16,15 @@
 //!   its NO_COLOR character ramp; [`ELASTIC_BELOW`], [`PLASTIC_ABOVE`]: this
 //!   program's regime thresholds (the paper sets none).
 //! - [`claims`]: where the plastic share passes ½ and where the index in use
-//!   crosses 1 along the sweep, located by bisection.
+//!   crosses 1 along the sweep, located by bisection, and where the total
+//!   slope has a minimum (golden section, then Newton on its derivative).
 //! - [`render_svg`]: any view as a self-contained SVG document (the
 //!   explorer saves it with `snapshot::save_file_new`).
 
 mod claims;
 mod colour;
 mod map;
+mod minimum;
 mod number;
 mod series;
 mod svg;

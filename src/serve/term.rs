@@ -100,7 +100,8 @@ pub fn hint(glyphs: Glyphs, why: Option<&str>) -> String {
             "{} drawing ({why}): M switches, Ctrl-L redraws",
             glyphs.describe()
         ),
-        None => "chart shows boxes or ?: press M to switch the drawing; Ctrl-L redraws".into(),
+        None => "chart shows boxes, ? or odd signs: press M to switch the drawing; Ctrl-L redraws"
+            .into(),
     }
 }
 

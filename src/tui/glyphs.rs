@@ -373,6 +373,8 @@ pub fn ascii_name(c: char) -> &'static str {
 /// becomes "|", elsewhere (a product, H0·dA) "*"; every other character
 /// outside ASCII its [`ascii_name`].
 pub fn to_ascii(text: &str) -> String {
+    // "µm (um)" names the unit and how to type it; in ASCII once is enough.
+    let text = text.replace("µm (um)", "um");
     let chars: Vec<char> = text.chars().collect();
     let mut out = String::with_capacity(text.len());
     for (i, &c) in chars.iter().enumerate() {
@@ -419,6 +421,7 @@ mod tests {
             assert_eq!(g.text(t), a);
         }
         assert!(matches!(Glyphs::Ascii.text("plain"), Cow::Borrowed(_)));
+        assert_eq!(Glyphs::Ascii.text("use mm, µm (um), nm"), "use mm, um, nm");
     }
 
     #[test]

@@ -7,7 +7,9 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Clear, Paragraph, Widget};
 
 use super::app::App;
+use super::fmt::wrap;
 use super::keys::{self, Context};
+use super::views::claims_line;
 
 /// What each symbol on the screen means.
 pub const SYMBOLS: &[(&str, &str)] = &[
@@ -49,6 +51,20 @@ pub const SYMBOLS: &[(&str, &str)] = &[
         MARKS,
         "on the x axis: ψ = 1; plastic share 10 %; plastic share 90 %",
     ),
+    (
+        "A_el A_pl",
+        "elastic area: the mass on [0, H] of Appendix A's solution;",
+    ),
+    (
+        "",
+        "plastic: the rest, the paper's \"subtracting the elastic one\".",
+    ),
+    (
+        "",
+        "Every share and regime rests on this reading: with Persson's",
+    ),
+    ("", "elastic erf(p̄/√(2V)) instead, fig2's share at ζ = 1000"),
+    ("", "would be 0.078, not 0.738"),
 ];
 
 /// Where [`SYMBOLS`] names the regime marks: the glyph set's own.
@@ -106,7 +122,31 @@ pub fn lines(app: &App) -> Vec<(bool, Line<'static>)> {
             ]),
         ));
     }
+    scene(app, &mut lines);
     lines
+}
+
+/// Columns of text inside the help's frame, after a leading blank.
+const TEXT_W: usize = 75;
+
+/// The scene's caption (whole: the screen shows one row of it at 80
+/// columns) and its claims, a line each, under "this scene:".
+fn scene(app: &App, lines: &mut Vec<(bool, Line<'static>)>) {
+    let caption = app.state.caption.as_deref().unwrap_or("");
+    if caption.is_empty() && app.claims.is_empty() {
+        return;
+    }
+    let g = app.theme.glyphs;
+    lines.push((true, Line::styled("this scene:", app.theme.title)));
+    for l in wrap(&g.text(caption), TEXT_W, usize::MAX, g.cut()) {
+        lines.push((false, Line::raw(format!(" {l}"))));
+    }
+    let dot = g.text("·");
+    for c in &app.claims {
+        // Each claim whole: in full where it fits, else short.
+        let l = claims_line(std::slice::from_ref(c), TEXT_W - 2, g);
+        lines.push((false, Line::styled(format!(" {dot} {l}"), app.theme.ok)));
+    }
 }
 
 /// ` text` padded to `width` columns: by display width, so that a

@@ -140,7 +140,8 @@ impl Theme {
         };
         let line = glyphs.vertical_line();
         let (psi_gw, psi_p, psi_star, psi_asy) = if glyphs.ascii_text() {
-            ("Psi_GW", "Psi_P", "Psi*", "Psi*asy eq.13")
+            // Longer names: eq. 13's curve is named in the help only.
+            ("Psi_GW", "Psi_P", "Psi*", "Psi*asy")
         } else {
             ("Ψ_GW", "Ψ_P", "Ψ*", "Ψ*asy eq.13")
         };

@@ -36,6 +36,14 @@ pub mod tol {
     pub const CONTRACT: f64 = 1e-12;
     /// Below this the contract allows 0 (or any value up to it).
     pub const TINY: f64 = 1e-300;
+    /// Where a smooth curve has its minimum, relative. Values alone place a
+    /// minimum only to ~√ε; the explorer takes the root of a five-point
+    /// derivative (step h = 1e-3 in ln x), which rounding ε_f in f moves by
+    /// ≈ 1.5 ε_f/(h f″/f), the stencil's own error by h⁴|f⁽⁵⁾/f″|/30.
+    /// The flattest minimum checked (fig4's, f″/f = 0.035 in ln ζ) gives
+    /// 4.7e-12 for ε_f = 1 ulp; the steepest stencil error (fig1's,
+    /// f⁽⁵⁾/f″ = 77) 2.6e-12.
+    pub const MINIMUM_PLACE: f64 = 1e-11;
     /// What both models' slopes achieve at an exact double ψ, tighter than
     /// the contract: the bound `roughtui bench` is measured against (the
     /// closed form's fast path must not trade accuracy for its speed).

@@ -3,12 +3,15 @@
 //! from [`Regions`].
 
 mod chart;
+pub mod class;
 mod indices;
 mod load;
 mod map;
 pub(crate) mod overlap;
 mod side;
 mod slopes;
+
+pub use map::{ansi16, contour_color, share_color};
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Alignment, Rect};
@@ -17,10 +20,11 @@ use ratatui::widgets::{Paragraph, Widget, Wrap};
 
 use super::app::{App, Mode};
 use super::fmt::{fmt_short, wrap};
+use super::glyphs::Glyphs;
 use super::keys;
 use super::layout::{Regions, MIN_SIZE};
 use super::{help, status};
-use crate::figure::View;
+use crate::figure::{Claim, View};
 
 impl Widget for &App {
     fn render(self, area: Rect, buf: &mut Buffer) {
@@ -39,10 +43,14 @@ impl Widget for &App {
             View::Map => map::render(self, chart, buf),
             View::Load => load::render(self, chart, buf),
         }
+        class::render_poll(self, chart, buf);
         render_footer(self, r.footer, buf);
         status::render_status(self, r.status, r.footer, buf);
         if self.mode == Mode::Help {
             help::render_help(self, area, buf);
+        }
+        if self.mode == Mode::Class {
+            class::render_list(self, area, buf);
         }
     }
 }
@@ -133,37 +141,118 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
 }
 
 /// The caption, wrapped over all rows but the last, and on the last row
-/// where the figure's claims hold at the current parameters.
+/// where the figure's claims hold at the current parameters. In a served
+/// class the lecturer's class line comes first, and a student's poll line
+/// stands in for the claims.
 fn render_caption(app: &App, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
     let g = t.glyphs;
-    let rows = usize::from(area.height.saturating_sub(1));
+    let mut lines: Vec<Line> = class::class_line(app).into_iter().collect();
+    let rows = usize::from(area.height.saturating_sub(1)).saturating_sub(lines.len());
     let text = g.text(app.state.caption.as_deref().unwrap_or(""));
-    let mut lines: Vec<Line> = wrap(&text, usize::from(area.width), rows, g.cut())
-        .into_iter()
-        .map(|l| Line::styled(l, t.dim))
-        .collect();
-    lines.resize(rows, Line::raw(""));
-    // Whole claims only: one that does not fit is left out, never cut
-    // inside its number.
-    let mut claims = String::new();
-    for c in &app.claims {
-        let text = c.text();
-        let text = g.text(&text);
-        let next = if claims.is_empty() {
-            text.into_owned()
-        } else {
-            format!("{claims}{}{text}", g.text(" · "))
-        };
-        if Span::raw(&next).width() <= usize::from(area.width) {
-            claims = next;
-        }
+    lines.extend(
+        wrap(&text, usize::from(area.width), rows, g.cut())
+            .into_iter()
+            .map(|l| Line::styled(l, t.dim)),
+    );
+    lines.resize(usize::from(area.height.saturating_sub(1)), Line::raw(""));
+    if let Some(poll) = class::poll_line(app, usize::from(area.width)) {
+        lines.push(poll);
+        Paragraph::new(lines).render(area, buf);
+        return;
     }
+    let claims = claims_line(&app.claims, usize::from(area.width), g);
     lines.push(Line::styled(claims, t.ok));
     Paragraph::new(lines).render(area, buf);
+}
+
+/// The claims joined by " · " in at most `width` columns. Whole claims
+/// only: one that does not fit is left out, never cut inside its number.
+/// Of three ways to write them — full sentences; each in full where it
+/// fits, else short; all short ("Ψ_P = 1 at E/H0 = 191.2" for "Ψ_P falls
+/// below 1 at H0/E = 0.00523 (E/H0 = 191.2)") — the first that shows the
+/// most claims.
+pub fn claims_line(claims: &[Claim], width: usize, g: Glyphs) -> String {
+    let fits = |s: &str| Span::raw(s).width() <= width;
+    let dot = g.text(" · ");
+    let fit = |forms: &dyn Fn(&Claim) -> Vec<String>| {
+        let (mut line, mut shown) = (String::new(), 0);
+        for c in claims {
+            let joined = |text: &String| {
+                let text = g.text(text);
+                if line.is_empty() {
+                    text.into_owned()
+                } else {
+                    format!("{line}{dot}{text}")
+                }
+            };
+            if let Some(next) = forms(c).iter().map(joined).find(|l| fits(l)) {
+                line = next;
+                shown += 1;
+            }
+        }
+        (shown, line)
+    };
+    let full = fit(&|c| vec![c.text()]);
+    let either = fit(&|c| vec![c.text(), c.short_text()]);
+    let short = fit(&|c| vec![c.short_text()]);
+    // max_by_key keeps the last of equals: list the preferred last.
+    [short, either, full]
+        .into_iter()
+        .enumerate()
+        .max_by_key(|(k, (shown, _))| (*shown, *k))
+        .map(|(_, (_, line))| line)
+        .unwrap_or_default()
 }
 
 fn render_footer(app: &App, area: Rect, buf: &mut Buffer) {
     let text = keys::footer(app, usize::from(area.width));
     Line::styled(text, app.theme.dim).render(area, buf);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::claims_line;
+    use crate::figure::{claims, Claim};
+    use crate::tui::glyphs::Glyphs;
+
+    fn preset(name: &str) -> Vec<Claim> {
+        claims(&crate::presets::load(name).unwrap())
+    }
+
+    #[test]
+    fn claims_are_whole_and_as_many_as_fit() {
+        let fig4 = preset("fig4");
+        // All in full when they fit.
+        let all = claims_line(&fig4, 200, Glyphs::Braille);
+        assert_eq!(all.matches(" · ").count(), 2, "{all}");
+        // Full sentences keep the place when short ones show no more.
+        assert_eq!(
+            claims_line(&fig4, 80, Glyphs::Braille),
+            "plastic share falls below ½ at ζ = 1.698e4 · Ψ* falls below 1 at ζ = 5324"
+        );
+        // Short forms when they show more; whole claims only, at any width.
+        let fig1 = preset("fig1");
+        assert_eq!(
+            claims_line(&fig1, 60, Glyphs::Braille),
+            "plastic share ½ at E/H0 = 120.2 · Ψ_P = 1 at E/H0 = 191.2"
+        );
+        for w in 0..200 {
+            let line = claims_line(&fig1, w, Glyphs::Braille);
+            assert!(line.chars().count() <= w, "{w}: {line}");
+            for part in line.split(" · ").filter(|p| !p.is_empty()) {
+                assert!(
+                    fig1.iter()
+                        .any(|c| c.text() == part || c.short_text() == part),
+                    "{w}: {part}"
+                );
+            }
+        }
+        assert_eq!(claims_line(&[], 80, Glyphs::Braille), "");
+        // In ASCII the names are spelled out, and still whole.
+        assert_eq!(
+            claims_line(&fig1, 80, Glyphs::Ascii),
+            "plastic share 1/2 at E/H0 = 120.2 | Psi_P = 1 at E/H0 = 191.2"
+        );
+    }
 }

@@ -138,8 +138,10 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
         )),
         Line::styled(
             tx(&format!(
-                "marker: {} = {} ({})",
+                // The ASCII names are longer: no "=" to fit 34 columns.
+                "marker: {} {}{} ({})",
                 if s.size_effect { "Ψ*" } else { "Ψ_P" },
+                if g.ascii_text() { "" } else { "= " },
                 fmt_num(r.psi),
                 s.model.label()
             )),
