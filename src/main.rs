@@ -39,7 +39,10 @@ fn run(cli: Cli) -> anyhow::Result<()> {
         }
         Some(Command::Bench(a)) => roughtui::bench::run(&a),
         Some(Command::Serve(a)) => {
-            let state = load_source(&a.source)?;
+            let state = load_source(&a.source, &a.setup)?;
+            if let Some(w) = state.surface_warning() {
+                println!("warning: {w}");
+            }
             roughtui::serve::run(roughtui::serve::Options {
                 listen: a.listen,
                 host_key: a.host_key,
@@ -51,7 +54,7 @@ fn run(cli: Cli) -> anyhow::Result<()> {
             })
         }
         None => {
-            let state = load_source(&cli.source)?;
+            let state = load_source(&cli.source, &cli.setup)?;
             tui::run(state, cli.source.load.as_deref())
         }
     }

@@ -4,7 +4,9 @@
 
 use std::fmt;
 
-use rough_model::{Axis, Curves, Model, Moments, Params, Scene, SceneSpec, Slopes, Sweep};
+use rough_model::{
+    Axis, Curves, Model, Moments, Params, Roughness, Scene, SceneSpec, Slopes, Sweep,
+};
 
 use super::series::at;
 use crate::snapshot::State;
@@ -19,7 +21,7 @@ pub const MAX_SIDE: usize = 10_000;
 pub const MAX_CELLS: usize = 2_000_000;
 
 /// What a regime map depends on.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct MapSpec {
     /// The current parameters: the map overrides its two axes; the values
     /// held here for them only place the current-point marker.
@@ -35,6 +37,8 @@ pub struct MapSpec {
     pub size_effect: bool,
     pub model: Model,
     pub moments: Moments,
+    /// The power law or a measured surface's table.
+    pub roughness: Roughness,
 }
 
 /// Why a map request was refused.
@@ -44,6 +48,8 @@ pub enum MapError {
     Grid { cols: usize, rows: usize },
     /// The y axis is the swept parameter itself.
     SameAxis(Axis),
+    /// The y axis is h_rms or H on a measured surface, which fixes them.
+    NotAParameter(Axis),
 }
 
 impl fmt::Display for MapError {
@@ -64,6 +70,12 @@ impl fmt::Display for MapError {
                     .map(|b| axis_arg(*b))
                     .collect::<Vec<_>>()
                     .join(", ")
+            ),
+            MapError::NotAParameter(a) => write!(
+                f,
+                "map y axis {} is not a parameter of a measured surface (the data fixes it): \
+                 choose another of h0-over-e, zeta, r-star",
+                axis_arg(*a)
             ),
         }
     }
@@ -95,15 +107,20 @@ impl MapSpec {
         if y_axis == state.sweep.axis() {
             return Err(MapError::SameAxis(y_axis));
         }
+        let roughness = state.roughness();
+        if !roughness.is_parameter(y_axis) {
+            return Err(MapError::NotAParameter(y_axis));
+        }
         Ok(MapSpec {
             base: state.params,
             x: state.sweep,
-            y: MapSpec::y_range(y_axis),
+            y: MapSpec::y_range_of(y_axis, &roughness),
             cols,
             rows,
             size_effect: state.size_effect,
             model: state.model,
             moments: state.moments,
+            roughness,
         })
     }
 
@@ -130,6 +147,18 @@ impl MapSpec {
         Sweep::new(axis, a, b).expect("map ranges are valid sweeps")
     }
 
+    /// [`MapSpec::y_range`] for `roughness`: ζ up to the largest the data
+    /// holds on a measured surface.
+    pub fn y_range_of(axis: Axis, roughness: &Roughness) -> Sweep {
+        let zeta_max = roughness.zeta_max();
+        if axis == Axis::Zeta && zeta_max < 1e6 && zeta_max > 1.0 {
+            if let Ok(s) = Sweep::new(axis, 1.0, zeta_max) {
+                return s;
+            }
+        }
+        MapSpec::y_range(axis)
+    }
+
     /// The next y axis after the current one, skipping the swept parameter
     /// (the explorer's key for another y axis).
     pub fn next_y(&self) -> Axis {
@@ -137,7 +166,7 @@ impl MapSpec {
         let mut i = all.iter().position(|&a| a == self.y.axis()).unwrap_or(0);
         loop {
             i = (i + 1) % all.len();
-            if all[i] != self.x.axis() {
+            if all[i] != self.x.axis() && self.roughness.is_parameter(all[i]) {
                 return all[i];
             }
         }
@@ -168,7 +197,7 @@ impl MapSpec {
         let b = at(&self.base, self.x.axis(), self.x.from());
         MapSpec {
             base: at(&b, self.y.axis(), self.y.from()),
-            ..*self
+            ..self.clone()
         }
     }
 }
@@ -246,7 +275,7 @@ impl RegimeMap {
     fn rows(spec: &MapSpec, rows: std::ops::Range<usize>) -> RegimeMap {
         let n = spec.cols * rows.len();
         let mut m = RegimeMap {
-            spec: *spec,
+            spec: spec.clone(),
             psi: Vec::with_capacity(n),
             elastic: Vec::with_capacity(n),
             plastic: Vec::with_capacity(n),
@@ -264,6 +293,7 @@ impl RegimeMap {
                 size_effect: spec.size_effect,
                 model: spec.model,
                 moments: spec.moments,
+                roughness: spec.roughness.clone(),
                 curves,
                 points: spec.cols,
             };
@@ -345,7 +375,7 @@ impl MapCache {
             self.map = Some(RegimeMap::compute(spec));
         }
         let map = self.map.get_or_insert_with(|| RegimeMap::compute(spec));
-        map.spec = *spec;
+        map.spec = spec.clone();
         map
     }
 

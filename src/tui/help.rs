@@ -27,6 +27,11 @@ pub const SYMBOLS: &[(&str, &str)] = &[
     ("h′", "rms slope of the surface, √(2 m2)"),
     ("h_rms", "rms height of the roughness"),
     ("ζ", "magnification q1/q0: how fine the roughness goes"),
+    ("q0 q1", "the band of wavevectors the moments sum over"),
+    (
+        "H fit",
+        "measured: a power-law fit over q0…q1, for orientation",
+    ),
     ("H", "the Hurst exponent of the roughness (not a hardness)"),
     ("H0  H_y", "bulk hardness; size-dependent hardness at R_s"),
     ("R*", "length of the hardness size effect (0 = none)"),

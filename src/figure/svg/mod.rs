@@ -4,6 +4,7 @@
 //! caption under the chart.
 
 mod map;
+mod spectrum;
 
 use anyhow::anyhow;
 use plotters::coord::types::RangedCoordf64;
@@ -42,6 +43,7 @@ pub fn render_svg(view: View, state: &State, opts: &FigureOptions) -> anyhow::Re
             View::Indices => indices(&chart_area, state, opts)?,
             View::Map => map::draw(&chart_area, state, opts)?,
             View::Load => load(&chart_area, state, opts)?,
+            View::Spectrum => spectrum::draw(&chart_area, state)?,
         }
         caption(&caption_area, state)?;
         root.present().map_err(plot_err)?;
@@ -238,13 +240,18 @@ fn legend<'a, 'b: 'a>(c: &mut Chart<'a, 'b>) -> anyhow::Result<()> {
         .map_err(plot_err)
 }
 
-/// "fig2 · closed form, asymptotic moments, size effect off".
+/// "fig2 · closed form, asymptotic moments, size effect off"; a measured
+/// surface's moments are "measured".
 fn title(state: &State, what: &str) -> String {
+    let moments = if state.is_measured() {
+        "measured"
+    } else {
+        state.moments.label()
+    };
     format!(
-        "{} — {what} ({}, {} moments, size effect {})",
+        "{} — {what} ({}, {moments} moments, size effect {})",
         state.name,
         state.model.label(),
-        state.moments.label(),
         if state.size_effect { "on" } else { "off" }
     )
 }

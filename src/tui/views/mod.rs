@@ -9,6 +9,7 @@ mod map;
 mod overlap;
 mod side;
 mod slopes;
+mod spectrum;
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Alignment, Rect};
@@ -38,6 +39,7 @@ impl Widget for &App {
             View::Indices => indices::render(self, chart, buf),
             View::Map => map::render(self, chart, buf),
             View::Load => load::render(self, chart, buf),
+            View::Spectrum => spectrum::render(self, chart, buf),
         }
         render_footer(self, r.footer, buf);
         status::render_status(self, r.status, r.footer, buf);
@@ -95,7 +97,11 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
             fmt_short(axis, s.sweep.from()),
             fmt_short(axis, s.sweep.to()),
             s.model.label(),
-            s.moments.label(),
+            if s.is_measured() {
+                "measured"
+            } else {
+                s.moments.label()
+            },
             if s.size_effect { "on" } else { "off" },
         )
     };
