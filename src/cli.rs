@@ -63,7 +63,7 @@ pub struct Setup {
     pub periodic: bool,
     /// The sample spacing of data without a size header, e.g. 50nm (units
     /// as the value prompt takes them: m cm mm µm um nm pm).
-    #[arg(long, value_name = "LENGTH", requires = "surface", value_parser = parse_pixel_size)]
+    #[arg(long, value_name = "LENGTH", requires = "surface", allow_hyphen_values = true, value_parser = parse_pixel_size)]
     pub pixel_size: Option<f64>,
     /// Set a parameter, e.g. --set h0-over-e=0.001 --set r-star=0.5mm
     /// (repeatable; units as the value prompt takes them). AXIS is one of

@@ -19,7 +19,7 @@ use crate::snapshot::{State, MAX_CAPTION_CHARS, MAX_NAME_CHARS};
 /// A measured surface, read from a file.
 #[derive(Clone, Debug)]
 pub struct SurfaceSource {
-    /// The file, absolute.
+    /// The file, absolute and canonical (links resolved).
     pub path: PathBuf,
     /// How it was read (`--periodic`, `--pixel-size`).
     pub options: Options,
@@ -60,7 +60,9 @@ impl SurfaceSource {
     pub fn read(path: &Path, options: Options) -> Result<SurfaceSource, SurfaceError> {
         let measured = rough_surface::read(path, &options)?;
         Ok(SurfaceSource {
-            path: absolute(path),
+            // The file was just read: its canonical path exists, and the
+            // same file reached two ways compares equal.
+            path: std::fs::canonicalize(path).unwrap_or_else(|_| absolute(path)),
             options,
             measured: Arc::new(measured),
             recorded_sha256: None,

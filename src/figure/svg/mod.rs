@@ -382,8 +382,11 @@ fn indices(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::Result<(
         solid,
         "Ψ* (size-dependent H_y)",
     )?;
-    let dashed = Stroke::Dashed;
-    line(&mut c, xy, (&s.x, &asy), PSI_ASY, dashed, "Ψ*asy (eq. 13)")?;
+    // Eq. 13 is a power law's: no line on a measured surface.
+    if !state.is_measured() {
+        let dashed = Stroke::Dashed;
+        line(&mut c, xy, (&s.x, &asy), PSI_ASY, dashed, "Ψ*asy (eq. 13)")?;
+    }
     legend(&mut c)
 }
 

@@ -59,7 +59,8 @@ pub fn render_sliders(app: &App, area: Rect, rows: u16, buf: &mut Buffer) {
 fn render_measured(app: &App, axis: Axis, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
     let r = &app.readout;
-    let q = |v: f64| short_number(v);
+    // Two digits: the band's ends fit the panel at 80 columns.
+    let q = |v: f64| format!("{v:.1e}");
     let (first, second) = match axis {
         Axis::Hurst => match r.fit {
             Some(f) => (
@@ -72,7 +73,7 @@ fn render_measured(app: &App, axis: Axis, area: Rect, buf: &mut Buffer) {
                 ),
                 format!(
                     "   C(q0) {} · h_rms {} · {} pts",
-                    q(f.fit.psd_at_q0),
+                    short_number(f.fit.psd_at_q0),
                     f.h_rms.map_or("—".into(), fmt_len),
                     f.fit.points
                 ),

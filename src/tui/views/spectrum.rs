@@ -63,6 +63,7 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     let sets = vec![
         chart::dataset(&cut, cutoff),
         chart::dataset(&data, &p.data),
+        // The fit over the data, so that the band it spans shows.
         chart::dataset(&fit, &p.fit),
     ];
     chart::plot(sets, (p.x_bounds, p.y_bounds), g, buf);
