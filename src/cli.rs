@@ -299,6 +299,16 @@ pub struct BenchArgs {
     /// Timed passes per method (the median is reported).
     #[arg(long, default_value_t = 15)]
     pub passes: u32,
+    /// Time a measured surface instead: the file to the first screen, ζ
+    /// and H0/E steps, peak memory.
+    #[arg(long, value_name = "FILE")]
+    pub surface: Option<PathBuf>,
+    /// The surface's data is periodic (as for the explorer).
+    #[arg(long, requires = "surface")]
+    pub periodic: bool,
+    /// The surface's sample spacing (as for the explorer).
+    #[arg(long, value_name = "LENGTH", requires = "surface", allow_hyphen_values = true, value_parser = parse_pixel_size)]
+    pub pixel_size: Option<f64>,
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]

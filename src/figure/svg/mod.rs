@@ -231,8 +231,12 @@ fn guide(c: &mut Chart, a: (f64, f64), b: (f64, f64), colour: RGBColor) -> anyho
 }
 
 fn legend<'a, 'b: 'a>(c: &mut Chart<'a, 'b>) -> anyhow::Result<()> {
+    legend_at(c, SeriesLabelPosition::UpperLeft)
+}
+
+fn legend_at<'a, 'b: 'a>(c: &mut Chart<'a, 'b>, at: SeriesLabelPosition) -> anyhow::Result<()> {
     c.configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
+        .position(at)
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
         .label_font(("sans-serif", 14))

@@ -3,7 +3,7 @@
 
 use plotters::prelude::*;
 
-use super::{chart, guide, legend, line, plot_err, title, Area, Scale, Stroke};
+use super::{chart, guide, line, plot_err, title, Area, Scale, Stroke};
 use crate::figure::{short_number, SpectrumSeries};
 use crate::snapshot::State;
 
@@ -32,8 +32,13 @@ pub(super) fn draw(area: &Area, state: &State) -> anyhow::Result<()> {
     )
     .map_err(plot_err)?;
     if let Some(f) = s.power_law {
-        let ends = [s.q0, s.q1.min(qhi)];
-        let ys: Vec<f64> = ends
+        // Sampled, so that the part inside the chart is drawn where an end
+        // lies outside it.
+        let (a, b) = (s.q0.log10(), s.q1.min(qhi).log10());
+        let qs: Vec<f64> = (0..=200)
+            .map(|i| 10f64.powf(a + (b - a) * f64::from(i) / 200.0))
+            .collect();
+        let ys: Vec<f64> = qs
             .iter()
             .map(|&q| s.fit_at(q).unwrap_or(f64::NAN))
             .collect();
@@ -46,7 +51,7 @@ pub(super) fn draw(area: &Area, state: &State) -> anyhow::Result<()> {
             short_number(f.hurst),
             f.points
         );
-        line(&mut c, xy, (&ends, &ys), FIT, Stroke::Dashed, &label)?;
+        line(&mut c, xy, (&qs, &ys), FIT, Stroke::Dashed, &label)?;
     }
     let r = y.range();
     if x.contains(s.q1) {
@@ -62,5 +67,6 @@ pub(super) fn draw(area: &Area, state: &State) -> anyhow::Result<()> {
             ))
             .legend(|(px, py)| PathElement::new(vec![(px, py), (px + 20, py)], CUTOFF));
     }
-    legend(&mut c)
+    // The data fall from the upper left: the legend goes right.
+    super::legend_at(&mut c, SeriesLabelPosition::UpperRight)
 }
