@@ -78,6 +78,12 @@ async fn main() -> anyhow::Result<()> {
         drain(&mut ch, Duration::from_millis(300)).await;
         idle.push((h, ch));
     }
+    // The first screen's line on switching the drawing goes after
+    // HINT_FOR: that frame belongs to the session's start, not to idling.
+    tokio::time::sleep(roughtui::serve::term::HINT_FOR).await;
+    for (_, ch) in &mut idle {
+        drain(ch, Duration::from_millis(300)).await;
+    }
     let rss_idle = proc_status(pid, "VmRSS");
 
     let cpu0 = cpu_ticks(pid);

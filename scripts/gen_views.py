@@ -11,8 +11,12 @@ It rewrites, deterministically, in crates/rough-study/data/:
     views_indices.csv  psi_gw, psi_p, psi_star, eq. 13, H_y/H0 along a sweep
     views_map.csv      psi in use, slopes and plastic share over a 2-D grid
     views_load.csv     areas A/A0 against pbar/H at one parameter set
-    views_claims.csv   where the plastic share crosses 1/2 and the index in
-                       use crosses 1 along a preset's sweep (the live claims)
+    views_quoted.csv   numbers the README and the help quote (Psi_P at zeta = 128
+                       on both moments, fig2's share at zeta = 1000 on both
+                       readings of the elastic area, the closed form's dip)
+    views_claims.csv   where the plastic share crosses 1/2, where the index in
+                       use crosses 1 and where the total slope has a minimum
+                       along a preset's sweep (the live claims)
 
 Each file names its cases in comment lines `# case N: ARGS`: N is the `case`
 column, ARGS the arguments of `roughtui export` that produce the same
@@ -245,14 +249,26 @@ def gen_load():
     write_view("views_load.csv", ad, names, doc, "case,load,elastic,plastic,total", rows)
 
 
-CLAIM_PRESETS = ["fig1", "fig2", "fig3", "fig4"]
+CLAIM_CASES = [
+    case("fig1"),
+    case("fig2"),
+    case("fig3"),
+    case("fig4"),
+    # fig3 on the truncated moments: the curve starts at infinity (psi = 0 at
+    # zeta = 1) and turns later
+    case("fig3", moments="truncated"),
+    # the exact model: fig1's shallow minimum of the closed form is gone
+    case("fig1", model="exact"),
+]
 CLAIM_SAMPLES = 256
 
 
 def claim_roots(s):
-    """[(kind, rising, at)]: kind 0 = plastic share crosses 1/2, kind 1 = the
-    index in use crosses 1; brackets from 256 samples of the sweep, each
-    root by mpmath's findroot (anderson) in ln x, then polished by bisection."""
+    """[(kind, rising, at, value)]: kind 0 = plastic share crosses 1/2, kind 1 =
+    the index in use crosses 1 (value = the level), kind 2 = a local minimum of
+    the total slope (value = the slope there). Brackets from 256 samples of the
+    sweep; each crossing by bisection in ln x, each minimum as the root of
+    d S_tot / d ln x (mpmath.diff), also by bisection."""
     axis, a, b = s["sweep"]
     assert axis in LOG_AXES
 
@@ -267,55 +283,123 @@ def claim_roots(s):
     def index(x):
         return psi_in_use(at(x), s["moments"], s["size_effect"]) - 1
 
+    def total(x):
+        psi = psi_in_use(at(x), s["moments"], s["size_effect"])
+        return slopes(s["model"], psi)[2]
+
+    def bisect(g, lo, hi):
+        neg_lo = g(lo) < 0
+        assert (g(hi) < 0) != neg_lo
+        for _ in range(400):
+            mid = (lo + hi) / 2
+            if (g(mid) < 0) == neg_lo:
+                lo = mid
+            else:
+                hi = mid
+            if hi - lo < mpf(10) ** -40:
+                break
+        return (lo + hi) / 2
+
     out = []
     xs = grid(axis, a, b, CLAIM_SAMPLES)
-    for kind, f in ((0, share), (1, index)):
+    for kind, level, f in ((0, mpf(1) / 2, share), (1, mpf(1), index)):
         vs = [f(mpf(x)) for x in xs]
         for i in range(len(xs) - 1):
             if (vs[i] < 0) == (vs[i + 1] < 0):
                 continue
-            lo, hi = mpmath.log(xs[i]), mpmath.log(xs[i + 1])
-            g = lambda u: f(mpmath.exp(u))  # noqa: E731
-            neg_lo = g(lo) < 0
-            for _ in range(400):
-                mid = (lo + hi) / 2
-                if (g(mid) < 0) == neg_lo:
-                    lo = mid
-                else:
-                    hi = mid
-                if hi - lo < mpf(10) ** -40:
-                    break
-            out.append((kind, 1 if vs[i] < 0 else 0, mpmath.exp((lo + hi) / 2)))
+            u = bisect(lambda u: f(mpmath.exp(u)), mpmath.log(xs[i]), mpmath.log(xs[i + 1]))
+            out.append((kind, 1 if vs[i] < 0 else 0, mpmath.exp(u), level))
+    vs = [total(mpf(x)) for x in xs]
+    for i in range(1, len(xs) - 1):
+        if not (vs[i - 1] > vs[i] <= vs[i + 1]):
+            continue
+        slope = lambda u: mpmath.diff(lambda w: total(mpmath.exp(w)), u)  # noqa: E731
+        u = bisect(slope, mpmath.log(xs[i - 1]), mpmath.log(xs[i + 1]))
+        out.append((2, 0, mpmath.exp(u), total(mpmath.exp(u))))
     return out
 
 
 def gen_claims():
     rows, names = [], []
-    for k, name in enumerate(CLAIM_PRESETS):
-        args, s = case(name)
+    for k, (args, s) in enumerate(CLAIM_CASES):
         names.append(args)
         with mpmath.workdps(60):
             roots = claim_roots(s)
         with mpmath.workdps(100):
             again = claim_roots(s)
         assert len(roots) == len(again)
-        for (kind, rising, x), (_, _, y) in zip(roots, again):
-            assert abs(x / y - 1) < mpf(10) ** -30, (name, x, y)
-            rows.append([str(k), str(kind), str(rising), ref.fmt_out(y)])
+        for (kind, rising, x, v), (_, _, y, w) in zip(roots, again):
+            assert abs(x / y - 1) < mpf(10) ** -30, (args, x, y)
+            assert abs(v / w - 1) < mpf(10) ** -30, (args, v, w)
+            rows.append([str(k), str(kind), str(rising), ref.fmt_out(y), ref.fmt_out(w)])
     lines = [
         "# generator: %s (python3 %s from the repository root)" % (SCRIPT, SCRIPT),
         "# mpmath %s; model: /work/shared/MODEL.md" % mpmath.__version__,
         "# precision: each root by bisection in ln x to 1e-40 at 60 and at 100 digits,",
         "#   the two agreeing to 1e-30; printed from the 100-digit run, 25 digits.",
-        "# columns: case (the preset below, its own model, moments and size effect);",
-        "#   kind 0 = the plastic share S_pl/S_tot crosses 1/2, kind 1 = the index in use",
-        "#   (psi_star with the size effect, psi_p without) crosses 1; rising = 1 when the",
-        "#   quantity rises through the level; at = the swept value there. Roots are",
-        "#   bracketed by 256 log-spaced samples of the sweep (ends included).",
+        "# columns: case (the export arguments below: a preset with its own model, moments",
+        "#   and size effect, or overrides); kind 0 = the plastic share S_pl/S_tot crosses",
+        "#   1/2, kind 1 = the index in use (psi_star with the size effect, psi_p without)",
+        "#   crosses 1, kind 2 = the total slope S_tot (normalized by the hardness in use) has",
+        "#   a local minimum: the root of d S_tot / d ln x (mpmath.diff); rising = 1 when",
+        "#   the quantity rises through the level (0 for a minimum); at = the swept value",
+        "#   there; value = the level (1/2, 1) or the total slope at the minimum. Crossings",
+        "#   and minima are bracketed by 256 log-spaced samples of the sweep (ends included).",
     ]
     for k, c in enumerate(names):
         lines.append("# case %d: %s" % (k, " ".join(c)))
-    write("views_claims.csv", lines, "case,kind,rising,at", rows)
+    write("views_claims.csv", lines, "case,kind,rising,at,value", rows)
+
+
+def quoted_values():
+    """[(what, x, value)]: the numbers the README and the help quote."""
+    fig2 = lambda z, moments: indices_row(dict(FIG2, zeta=z), moments)[1]  # noqa: E731
+    out = [
+        ("psi_p of fig2 at zeta = 128, asymptotic moments", 128, fig2(128.0, "asymptotic")),
+        ("psi_p of fig2 at zeta = 128, truncated moments", 128, fig2(128.0, "truncated")),
+    ]
+    psi = fig2(1000.0, "asymptotic")
+    el, pl, tot = ref.closed_slopes(psi)
+    out.append(("fig2's plastic share S_pl/S_tot at zeta = 1000 (closed form, asymptotic)",
+                1000, pl / tot))
+    out.append(("the same with Persson's elastic slope: (S_tot - S_P)/S_tot", 1000,
+                (tot - ref.persson_slope(psi)) / tot))
+    # the closed form's total slope dips below 1: the root of dS_tot/dpsi
+    d = lambda u: mpmath.diff(lambda w: ref.closed_slopes(mpmath.exp(w))[2], u)  # noqa: E731
+    lo, hi = mpmath.log(mpf("1.2")), mpmath.log(mpf("1.7"))
+    assert d(lo) < 0 < d(hi)
+    for _ in range(400):
+        mid = (lo + hi) / 2
+        if d(mid) < 0:
+            lo = mid
+        else:
+            hi = mid
+        if hi - lo < mpf(10) ** -40:
+            break
+    dip = mpmath.exp((lo + hi) / 2)
+    out.append(("psi where the closed form's total slope is least", 0, dip))
+    out.append(("the closed form's least total slope", 0, ref.closed_slopes(dip)[2]))
+    return out
+
+
+def gen_quoted():
+    with mpmath.workdps(60):
+        rows = quoted_values()
+    with mpmath.workdps(100):
+        again = quoted_values()
+    lines = [
+        "# generator: %s (python3 %s from the repository root)" % (SCRIPT, SCRIPT),
+        "# mpmath %s; model: /work/shared/MODEL.md" % mpmath.__version__,
+        "# precision: at 60 and at 100 digits, the two agreeing to 1e-30 (roots by",
+        "#   bisection to 1e-40 in ln psi); printed from the 100-digit run, 25 digits.",
+        "# columns: id (below), x = the swept value it is at (0: none), value.",
+    ]
+    out = []
+    for k, ((what, x, v), (_, _, w)) in enumerate(zip(rows, again)):
+        assert abs(v / w - 1) < mpf(10) ** -30, (what, v, w)
+        lines.append("# id %d: %s" % (k, what))
+        out.append([str(k), str(x), ref.fmt_out(w)])
+    write("views_quoted.csv", lines, "id,x,value", out)
 
 
 def check():
@@ -334,6 +418,7 @@ def main():
     gen_map()
     gen_load()
     gen_claims()
+    gen_quoted()
 
 
 if __name__ == "__main__":

@@ -15,7 +15,8 @@ use rough_model::Axis;
                   full-screen explorer on fig2, a preset, a saved snapshot, or a measured \
                   surface (--surface FILE: a topography map, a line scan or a PSD table).",
     after_help = "The explorer needs a terminal of at least 80×24; in it, ? lists the keys \
-                  (Enter types a value, s saves, q quits). NO_COLOR=1 draws without colour. \
+                  (Enter types a value, s saves, q quits). NO_COLOR=1 (or c) draws without colour; \
+                  ASCII only where the locale is not UTF-8 (M switches). \
                   For data without a terminal use `roughtui export`."
 )]
 pub struct Cli {
@@ -25,6 +26,31 @@ pub struct Cli {
     pub source: Source,
     #[command(flatten)]
     pub setup: Setup,
+    /// What the explorer draws with: braille dots, half blocks, blocks or
+    /// ASCII only [default: from the locale and TERM]. `M` switches.
+    #[arg(long, value_enum, value_name = "SET")]
+    pub marker: Option<MarkerArg>,
+}
+
+/// A glyph set on the command line.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum MarkerArg {
+    Braille,
+    Half,
+    Block,
+    Ascii,
+}
+
+impl From<MarkerArg> for crate::tui::glyphs::Glyphs {
+    fn from(m: MarkerArg) -> Self {
+        use crate::tui::glyphs::Glyphs;
+        match m {
+            MarkerArg::Braille => Glyphs::Braille,
+            MarkerArg::Half => Glyphs::Half,
+            MarkerArg::Block => Glyphs::Block,
+            MarkerArg::Ascii => Glyphs::Ascii,
+        }
+    }
 }
 
 #[derive(Debug, Subcommand)]
@@ -274,6 +300,10 @@ pub struct ServeArgs {
     /// this long ends: a number with s, m or h.
     #[arg(long, default_value = "30m", value_parser = parse_duration, value_name = "TIME")]
     pub idle_timeout: std::time::Duration,
+    /// What every session draws with [default: from each client's TERM and
+    /// the LANG / LC_* it sends]; each student can switch with `M`.
+    #[arg(long, value_enum, value_name = "SET")]
+    pub marker: Option<MarkerArg>,
 }
 
 /// `90s`, `30m`, `2h` (1 s to 24 h).

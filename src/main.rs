@@ -51,11 +51,16 @@ fn run(cli: Cli) -> anyhow::Result<()> {
                 max_sessions: a.max_sessions as usize,
                 max_per_address: a.max_per_address as usize,
                 idle_timeout: a.idle_timeout,
+                marker: a.marker.map(Into::into),
             })
         }
         None => {
             let state = load_source(&cli.source, &cli.setup)?;
-            tui::run(state, cli.source.load.as_deref())
+            tui::run(
+                state,
+                cli.source.load.as_deref(),
+                cli.marker.map(Into::into),
+            )
         }
     }
 }

@@ -140,27 +140,17 @@ fn printable(text: &str, max: usize) -> String {
         .collect()
 }
 
-/// The paper's amplitude of a fitted power law: Z (m^(2−2H)) and the h_rms
-/// of the spectrum from q0 to infinity, Z = h_rms² H q0^(2H)/π (`MODEL.md`).
-///
-/// An areal C^iso in SurfaceTopography's convention is (2π)² Z q^(−2(1+H));
-/// a profile PSD C1D whose moments (1/π)∫q^α C1D dq are the power law's
-/// profile moments is 2π² Z q^(−(1+2H)). `None` unless 0 < H ≤ 1 (the
-/// power law's domain).
-pub fn fit_amplitude(fit: &PowerLawFit, dim: Dim, q0: f64) -> Option<(f64, f64)> {
-    let hu = fit.hurst;
-    if !(hu > 0.0 && hu <= 1.0) {
+/// The paper's amplitude of a fitted power law: Z (m^(2−2H)) of
+/// C_Persson = Z q^(−2(1+H)) and the h_rms of that spectrum from q0 to
+/// infinity, √(π Z q0^(−2H)/H) (`PowerLawFit::persson_z`: areal C^iso is
+/// (2π)² C_Persson; a profile C1D is read as the profile of an isotropic
+/// surface). `None` unless 0 < H ≤ 1 (the power law's domain).
+pub fn fit_amplitude(fit: &PowerLawFit) -> Option<(f64, f64)> {
+    if !(fit.hurst > 0.0 && fit.hurst <= 1.0) {
         return None;
     }
-    let pi = std::f64::consts::PI;
-    // C(q0) = k Z q0^slope.
-    let k = match dim {
-        Dim::Areal => 4.0 * pi * pi,
-        Dim::Profile => 2.0 * pi * pi,
-    };
-    let z = fit.psd_at_q0 / (k * q0.powf(fit.slope));
-    let h_rms = (pi * z / (hu * q0.powf(2.0 * hu))).sqrt();
-    (z.is_finite() && h_rms.is_finite() && h_rms > 0.0).then_some((z, h_rms))
+    let (z, h_rms) = (fit.persson_z()?, fit.h_rms()?);
+    (h_rms > 0.0).then_some((z, h_rms))
 }
 
 /// The self-affine parameters of the power law fitted over `state`'s band:
@@ -173,7 +163,7 @@ pub fn fitted_params(state: &State) -> Result<Params, String> {
     let fit = src
         .fit(state.params.zeta())
         .ok_or("fewer than two spectrum points in the band q0…q1: no power-law fit")?;
-    let (_, h_rms) = fit_amplitude(&fit, src.dim(), src.q0()).ok_or_else(|| {
+    let (_, h_rms) = fit_amplitude(&fit).ok_or_else(|| {
         format!(
             "the fit's H = {:.3} is outside (0, 1]: no self-affine power law to compare",
             fit.hurst
@@ -310,17 +300,19 @@ mod tests {
         let q0 = 1e5f64;
         let psd = |q: f64| (2.0 * std::f64::consts::PI).powi(2) * 1e-8 * q.powf(-3.6);
         let fit = PowerLawFit {
+            dim: Dim::Areal,
             hurst: 0.8,
             slope: -3.6,
+            q0,
             psd_at_q0: psd(q0),
             q_lo: q0,
             q_hi: 1e9,
             points: 5,
         };
-        let (z, h) = fit_amplitude(&fit, Dim::Areal, q0).unwrap();
+        let (z, h) = fit_amplitude(&fit).unwrap();
         assert!((z / 1e-8 - 1.0).abs() < 1e-14, "{z}");
         assert!((h / 1.9816636488030044e-8 - 1.0).abs() < 1e-14, "{h}");
         let bad = PowerLawFit { hurst: 1.2, ..fit };
-        assert_eq!(fit_amplitude(&bad, Dim::Areal, q0), None);
+        assert_eq!(fit_amplitude(&bad), None);
     }
 }

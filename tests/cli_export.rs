@@ -339,6 +339,57 @@ fn a_picture_of_a_changed_scene_drops_the_saved_caption() {
 }
 
 #[test]
+fn a_picture_carries_the_claims_under_its_caption() {
+    // Text lines of an SVG with their y, in document order.
+    let texts = |svg: &str| -> Vec<(String, f64)> {
+        let doc = roxmltree::Document::parse(svg).unwrap();
+        doc.descendants()
+            .filter(|n| n.has_tag_name("text"))
+            .map(|n| {
+                let y = n
+                    .attribute("y")
+                    .and_then(|y| y.parse().ok())
+                    .unwrap_or(-1.0);
+                (n.text().unwrap_or("").to_string(), y)
+            })
+            .collect()
+    };
+    let fig1 = texts(&stdout(&["export", "--preset", "fig1", "--format", "svg"]));
+    let at = |t: &[(String, f64)], what: &str| {
+        t.iter()
+            .find(|(s, _)| s.contains(what))
+            .unwrap_or_else(|| panic!("no {what:?} in {t:?}"))
+            .1
+    };
+    let caption = at(&fig1, "Fig. 1: the paper calls realistic hardness");
+    let psi = at(&fig1, "Ψ_P falls below 1 at H0/E = 0.00523 (E/H0 = 191.2)");
+    let share = at(
+        &fig1,
+        "plastic share falls below ½ at H0/E = 0.008318 (E/H0 = 120.2)",
+    );
+    let minimum = at(&fig1, "total slope's minimum 0.9796 at H0/E = 0.003678");
+    assert!(caption < share && share < psi && psi < minimum);
+    // Every line inside the picture (the caption area grows to hold them).
+    assert!(fig1.iter().all(|(_, y)| *y < 600.0), "{fig1:?}");
+    let fig3 = texts(&stdout(&["export", "--preset", "fig3", "--format", "svg"]));
+    at(&fig3, "total slope's minimum 3.91 at ζ = 3.191");
+    // Claims hold for the scene drawn: truncated moments move fig3's.
+    let truncated = stdout(&[
+        "export",
+        "--preset",
+        "fig3",
+        "--format",
+        "svg",
+        "--moments",
+        "truncated",
+    ]);
+    at(
+        &texts(&truncated),
+        "total slope's minimum 5.59 at ζ = 7.763",
+    );
+}
+
+#[test]
 fn options_that_do_not_apply_are_refused() {
     usage_error(
         &["export", "--view", "map", "--points", "5"],

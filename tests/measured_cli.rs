@@ -377,22 +377,39 @@ fn every_refusal_exits_2_with_one_message() {
     );
 }
 
+/// A file of rough-surface's test data (SurfaceTopography's
+/// fourier_synthesis surfaces).
+fn data(name: &str) -> String {
+    format!(
+        "{}/crates/rough-surface/tests/data/{name}",
+        env!("CARGO_MANIFEST_DIR")
+    )
+}
+
 #[test]
-fn options_that_read_a_surface_are_accepted_with_it() {
+fn options_that_read_a_surface_apply_to_samples_only() {
+    // A windowed map read as periodic has other moments.
+    let map = data("map_windowed.txt");
+    let plain = stdout(&["export", "--surface", &map, "--points", "3"]);
+    let periodic = stdout(&["export", "--surface", &map, "--points", "3", "--periodic"]);
+    assert_ne!(plain, periodic);
+    // A header-less map needs its spacing, and takes it.
+    let bare = data("map_pixel.txt");
+    refused(
+        &["export", "--surface", &bare],
+        &["map_pixel.txt", "no size", "--pixel-size"],
+    );
+    stdout(&["export", "--surface", &bare, "--pixel-size", "50nm"]);
+    // A PSD table has no samples to window or space: refused with them.
     let d = tempfile::tempdir().unwrap();
     let t = fig2_table(d.path());
     let t = t.to_str().unwrap();
-    // A PSD table has no samples to window or space: the options change nothing.
-    let plain = stdout(&["export", "--surface", t, "--points", "3"]);
-    let with = stdout(&[
-        "export",
-        "--surface",
-        t,
-        "--points",
-        "3",
-        "--periodic",
-        "--pixel-size",
-        "50nm",
-    ]);
-    assert_eq!(plain, with);
+    for opt in [&["--periodic"][..], &["--pixel-size", "50nm"][..]] {
+        let args: Vec<&str> = ["export", "--surface", t]
+            .iter()
+            .chain(opt)
+            .copied()
+            .collect();
+        refused(&args, &["fig2-psd.txt", "do not apply to a PSD table"]);
+    }
 }

@@ -61,8 +61,15 @@ fn a_surface_snapshot_loads_back_exactly() {
 
 #[test]
 fn how_it_was_read_is_recorded() {
+    // A header-less height matrix (SurfaceTopography's fourier_synthesis,
+    // rough-surface's test data): read with a pixel size, as periodic.
     let d = tempfile::tempdir().unwrap();
-    let t = fig2_table(d.path());
+    let t = d.path().join("map_pixel.txt");
+    std::fs::copy(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("crates/rough-surface/tests/data/map_pixel.txt"),
+        &t,
+    )
+    .unwrap();
     let opts = rough_surface::Options {
         periodic: true,
         pixel_size: Some(5e-8),
@@ -121,11 +128,11 @@ fn a_refused_surface_file_says_where_and_why() {
     let t = fig2_table(d.path());
     let p = save_new(d.path(), "bad", &surface_state(&t, Default::default())).unwrap();
     let before = std::fs::read(&p).unwrap();
-    std::fs::write(&t, "1e5 1e-20\n1e6 -3\n").unwrap();
+    std::fs::write(&t, "# q C\n1e5 1e-20\n1e6 -3\n1e7 1e-30\n1e8 1e-34\n").unwrap();
     let e = load_file(&p).unwrap_err().to_string();
     assert!(e.contains("bad.ron: its surface: bad surface"), "{e}");
     assert!(
-        e.contains("fig2-psd.txt, line 2: PSD value -3 at point 2"),
+        e.contains("fig2-psd.txt, line 3: PSD value -3 at point 2"),
         "{e}"
     );
     unchanged(&p, &before);

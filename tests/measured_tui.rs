@@ -258,3 +258,65 @@ fn snapshots_of_the_measured_views() {
     let a = App::new(line_state(), Theme::plain(), (80, 24));
     insta::assert_snapshot!("line_slopes_80x24_plain", drawn(&a));
 }
+
+/// Every character of a measured surface's screens in the ASCII set: the
+/// five views (the spectrum's title, axes and legend), the read-only h_rms
+/// and H lines, the help's pages with the surface's symbols, the fitted
+/// ghost and `a`'s refusal on the status line.
+#[test]
+fn a_surface_in_the_ascii_set_draws_only_ascii() {
+    use roughtui::tui::glyphs::Glyphs;
+    use roughtui::tui::theme::Palette;
+    let bad = |s: &str| -> Vec<char> { s.chars().filter(|c| !c.is_ascii()).collect() };
+    for size in [(80, 24), (160, 48)] {
+        for state in [fig2_state(), line_state()] {
+            let mut a = App::new(
+                state,
+                Theme::new(Glyphs::Ascii, Palette::Ansi16, true),
+                size,
+            );
+            for _ in 0..5 {
+                let s = drawn(&a);
+                assert!(
+                    bad(&s).is_empty(),
+                    "{:?} {size:?}: {:?}\n{s}",
+                    a.view,
+                    bad(&s)
+                );
+                update(&mut a, Message::NextView);
+            }
+            ch(&mut a, 'g');
+            let s = drawn(&a);
+            assert!(s.contains("ghost: power-law fit H"), "{s}");
+            assert!(bad(&s).is_empty(), "{:?} {s}", bad(&s));
+            ch(&mut a, 'a');
+            let s = drawn(&a);
+            assert!(s.contains("no moments convention on a measured"), "{s}");
+            assert!(bad(&s).is_empty(), "{:?} {s}", bad(&s));
+            ch(&mut a, '?');
+            let mut help = String::new();
+            for _ in 0..4 {
+                let s = drawn(&a);
+                assert!(bad(&s).is_empty(), "help {size:?}: {:?}\n{s}", bad(&s));
+                help.push_str(&s);
+                press(&mut a, KeyCode::Right, KeyModifiers::NONE);
+            }
+            for (sym, what) in roughtui::tui::help::MEASURED_SYMBOLS {
+                let first: String = what.chars().take(20).collect();
+                assert!(help.contains(&first), "{sym}: {first}\n{help}");
+            }
+        }
+    }
+    let mut a = App::new(
+        fig2_state(),
+        Theme::new(Glyphs::Ascii, Palette::Ansi16, false),
+        (80, 24),
+    );
+    update(&mut a, Message::PrevView);
+    for _ in 0..8 {
+        ch(&mut a, 'h');
+    }
+    insta::assert_snapshot!("surface_spectrum_80x24_ascii", drawn(&a));
+    update(&mut a, Message::NextView);
+    insta::assert_snapshot!("surface_slopes_80x24_ascii", drawn(&a));
+}

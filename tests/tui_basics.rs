@@ -165,6 +165,35 @@ fn the_help_explains_every_symbol_on_some_page() {
 }
 
 #[test]
+fn the_help_shows_the_whole_caption_its_claims_and_the_split_it_rests_on() {
+    // At 80×24 the screen shows one row of the caption; the help all of it.
+    let mut a = fig("fig1");
+    let help = help_pages(&mut a);
+    assert!(help.contains("this scene:"), "{help}");
+    assert!(help.contains("Persson's green line."), "{help}");
+    assert!(
+        help.contains("· Ψ_P falls below 1 at H0/E = 0.00523 (E/H0 = 191.2)"),
+        "{help}"
+    );
+    assert!(
+        help.contains("· plastic share falls below ½ at H0/E = 0.008318 (E/H0 = 120.2)"),
+        "{help}"
+    );
+    // Which split of the area every share claim rests on.
+    assert!(
+        help.contains("mass on [0, H] of Appendix A's solution"),
+        "{help}"
+    );
+    assert!(help.contains("0.078, not 0.738"), "{help}");
+    // fig3's minimum; a scene without caption or claims has no section.
+    assert!(help_pages(&mut fig("fig3")).contains("· total slope's minimum 3.91 at ζ = 3.191"));
+    let mut a = fig("fig4");
+    update(&mut a, Message::ToggleSizeEffect);
+    assert!(a.claims.is_empty() && a.state.caption.is_none());
+    assert!(!help_pages(&mut a).contains("this scene:"));
+}
+
+#[test]
 fn long_status_lines_keep_their_reason_at_80_columns() {
     let dir = tempfile::tempdir().unwrap();
     let mut a = fig("fig2");

@@ -389,7 +389,7 @@ fn no_color_load_view_tells_the_tangent_from_the_elastic_curve() {
 
 #[test]
 fn at_80_columns_header_and_claims_are_never_cut_inside_a_word_or_number() {
-    // fig1 sweeps H0/E: both claims together are 84 characters.
+    // fig1 sweeps H0/E: its three claims in full take 180 columns.
     let a = app("fig1", (80, 24), Theme::colored());
     let s = text(&a);
     let lines: Vec<&str> = s.lines().collect();
@@ -399,15 +399,36 @@ fn at_80_columns_header_and_claims_are_never_cut_inside_a_word_or_number() {
             .ends_with("asymptotic · size effect off"),
         "{s}"
     );
+    // The caption's one row says what the paper says; the claims row,
+    // short, what its equations give.
+    assert_eq!(
+        lines[1].trim_end(),
+        "Fig. 1: the paper calls realistic hardness (E/H0 ≈ 25…1000) practically elastic…"
+    );
     assert_eq!(
         lines[2].trim_end(),
-        "plastic share falls below ½ at H0/E = 0.008318"
+        "plastic share ½ at E/H0 = 120.2 · Ψ_P = 1 at E/H0 = 191.2"
     );
-    // Room enough: the header keeps the word "moments", both claims show.
+    // Room enough: the header keeps the word "moments", the crossings show
+    // in full, and the minimum in short.
     let a = app("fig1", (160, 48), Theme::colored());
     let s = text(&a);
     assert!(s.contains("asymptotic moments · size effect off"), "{s}");
-    assert!(s.contains("0.008318 · Ψ_P falls below 1 at H0/E = "), "{s}");
+    assert!(
+        s.contains(
+            "plastic share falls below ½ at H0/E = 0.008318 (E/H0 = 120.2) · \
+             Ψ_P falls below 1 at H0/E = 0.00523 (E/H0 = 191.2) · \
+             total slope min 0.9796 at E/H0 = 271.9"
+        ),
+        "{s}"
+    );
+    // fig3: the minimum of the total slope, where the paper says it
+    // "first decreases and then increases".
+    let a = app("fig3", (80, 24), Theme::colored());
+    assert_eq!(
+        text(&a).lines().nth(2).unwrap().trim_end(),
+        "total slope's minimum 3.91 at ζ = 3.191"
+    );
 }
 
 #[test]

@@ -131,6 +131,7 @@ pub fn synthetic(n: usize) -> anyhow::Result<State> {
         table: Arc::new(table),
         spectrum,
         sha256: "0".repeat(64),
+        summary: format!("synthetic map {n} × {n}"),
     };
     State::measured(SurfaceSource {
         path: std::path::PathBuf::from(format!("synthetic-{n}x{n}.txt")),

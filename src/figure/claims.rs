@@ -1,39 +1,49 @@
 //! The checkable claims a figure makes, located live at the current
-//! parameters: where the plastic share passes ½ and where the index in use
-//! (Ψ* with the size effect, Ψ_P without) crosses 1 along the sweep.
+//! parameters: where the plastic share passes ½, where the index in use
+//! (Ψ* with the size effect, Ψ_P without) crosses 1, and where the total
+//! slope has a minimum inside the sweep.
 //!
 //! On a measured surface whose moments are sums over the data's
 //! wavevectors, the moments are a step function of ζ: a crossing may be a
 //! jump at one of the data's wavevectors. Bisection then closes on the jump,
 //! and the claim says it is one.
 
-use rough_model::{slopes, Axis, Sweep};
+use rough_model::{slopes, Axis};
 
+use super::minimum::{bracketed, refine};
 use super::number::short_number;
 use super::series::at;
 use crate::snapshot::State;
 
-/// Which quantity crosses which level.
+/// Which quantity does what.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ClaimKind {
     /// S_pl/S_tot crosses ½.
     ShareHalf,
     /// The index in use crosses 1.
     IndexOne,
+    /// The total slope S_tot (normalized by the hardness in use) has a
+    /// local minimum inside the sweep.
+    TotalMinimum,
 }
 
-/// One crossing along the sweep.
+/// One crossing, or one minimum, along the sweep.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Claim {
     pub kind: ClaimKind,
     /// The swept parameter.
     pub axis: Axis,
-    /// The swept value where the crossing lies (to ~1e-13 relative).
+    /// The swept value where the crossing or the minimum lies (a crossing
+    /// to ~1e-14 relative, a minimum to ~1e-12).
     pub at: f64,
-    /// Whether the quantity rises through the level there.
+    /// Whether the quantity rises through the level there (false for a
+    /// minimum).
     pub rising: bool,
     /// With the size effect (the index in use is Ψ*), or without (Ψ_P).
     pub size_effect: bool,
+    /// The quantity at `at`: the level crossed (½ or 1), or the total
+    /// slope at its minimum.
+    pub value: f64,
     /// The quantity jumps across the level there (a step of a measured
     /// spectrum's sums, at one of its wavevectors) rather than passing it.
     pub step: bool,
@@ -41,15 +51,17 @@ pub struct Claim {
 
 impl Claim {
     /// The claim in words: "plastic share passes ½ at ζ = 322.3",
-    /// "Ψ* falls below 1 at ζ = 5324".
+    /// "Ψ* falls below 1 at ζ = 5324", "total slope's minimum 3.91 at
+    /// ζ = 3.19"; on an H0/E sweep the place also as E/H0, the paper's
+    /// way of naming hardness ("… at H0/E = 0.00523 (E/H0 = 191.2)").
     pub fn text(&self) -> String {
+        let psi = if self.size_effect { "Ψ*" } else { "Ψ_P" };
         let what = match (self.kind, self.rising, self.step) {
             (ClaimKind::ShareHalf, true, false) => "plastic share passes ½".to_string(),
             (ClaimKind::ShareHalf, false, false) => "plastic share falls below ½".to_string(),
             (ClaimKind::ShareHalf, true, true) => "plastic share jumps past ½".to_string(),
             (ClaimKind::ShareHalf, false, true) => "plastic share drops below ½".to_string(),
             (ClaimKind::IndexOne, rising, step) => {
-                let psi = if self.size_effect { "Ψ*" } else { "Ψ_P" };
                 let verb = match (rising, step) {
                     (true, false) => "reaches",
                     (false, false) => "falls below",
@@ -58,14 +70,43 @@ impl Claim {
                 };
                 format!("{psi} {verb} 1")
             }
+            (ClaimKind::TotalMinimum, _, _) => {
+                format!("total slope's minimum {}", short_number(self.value))
+            }
         };
+        let place = format!("{} = {}", self.axis.symbol(), self.number());
+        match self.inverse() {
+            Some(inv) => format!("{what} at {place} (E/H0 = {inv})"),
+            None => format!("{what} at {place}"),
+        }
+    }
+
+    /// The claim in fewer words, for a narrow screen: "plastic share ½ at
+    /// ζ = 321.5", "Ψ_P = 1 at E/H0 = 191.2", "total slope min 3.91 at
+    /// ζ = 3.19" (an H0/E sweep names the place by E/H0 alone).
+    pub fn short_text(&self) -> String {
+        let what = match self.kind {
+            ClaimKind::ShareHalf => "plastic share ½".to_string(),
+            ClaimKind::IndexOne if self.size_effect => "Ψ* = 1".to_string(),
+            ClaimKind::IndexOne => "Ψ_P = 1".to_string(),
+            ClaimKind::TotalMinimum => format!("total slope min {}", short_number(self.value)),
+        };
+        match self.inverse() {
+            Some(inv) => format!("{what} at E/H0 = {inv}"),
+            None => format!("{what} at {} = {}", self.axis.symbol(), self.number()),
+        }
+    }
+
+    /// The place with its unit: "321.5", "2.5e-8 m".
+    fn number(&self) -> String {
         let unit = super::axis_unit(self.axis);
         let sep = if unit.is_empty() { "" } else { " " };
-        format!(
-            "{what} at {} = {}{sep}{unit}",
-            self.axis.symbol(),
-            short_number(self.at)
-        )
+        format!("{}{sep}{unit}", short_number(self.at))
+    }
+
+    /// E/H0 at the place, on an H0/E sweep.
+    fn inverse(&self) -> Option<String> {
+        (self.axis == Axis::H0OverE).then(|| short_number(1.0 / self.at))
     }
 }
 
@@ -76,8 +117,11 @@ const SAMPLES: usize = 256;
 const MAX_PER_KIND: usize = 4;
 
 /// Every crossing of the share ½ and of the index in use 1 along the
-/// state's sweep, in sweep order within each kind (share first). Crossings
-/// closer together than the sampling step (1/256 of the sweep) may be missed.
+/// state's sweep, in sweep order within each kind (share first), then
+/// every local minimum of the total slope inside the sweep. Crossings or
+/// minima closer together than the sampling step (1/256 of the sweep) may
+/// be missed; a minimum on a plateau that rounding cannot resolve (the
+/// exact total slope at 1 + 1e-20) is left out.
 pub fn claims(state: &State) -> Vec<Claim> {
     let roughness = state.roughness();
     let index = |x: f64| {
@@ -86,21 +130,44 @@ pub fn claims(state: &State) -> Vec<Claim> {
     };
     let share = |x: f64| slopes(state.model, index(x)).plastic_share() - 0.5;
     let psi = |x: f64| index(x).to_f64() - 1.0;
+    let total = |x: f64| slopes(state.model, index(x)).total;
+    // One pass over the samples gives all three curves.
+    let xs: Vec<f64> = state.sweep.points(SAMPLES).collect();
+    let (mut share_v, mut psi_v, mut total_v) = (vec![], vec![], vec![]);
+    for &x in &xs {
+        let i = index(x);
+        let s = slopes(state.model, i);
+        share_v.push(s.plastic_share() - 0.5);
+        psi_v.push(i.to_f64() - 1.0);
+        total_v.push(s.total);
+    }
+    let log = state.sweep.axis().is_log();
+    let claim = |kind, at, rising, value, step| Claim {
+        kind,
+        axis: state.sweep.axis(),
+        at,
+        rising,
+        size_effect: state.size_effect,
+        value,
+        step,
+    };
     let mut out = Vec::new();
-    for (kind, f) in [
-        (ClaimKind::ShareHalf, &share as &dyn Fn(f64) -> f64),
-        (ClaimKind::IndexOne, &psi),
+    for (kind, level, vs, f) in [
+        (
+            ClaimKind::ShareHalf,
+            0.5,
+            &share_v,
+            &share as &dyn Fn(f64) -> f64,
+        ),
+        (ClaimKind::IndexOne, 1.0, &psi_v, &psi),
     ] {
-        for Crossing { at, rising, step } in crossings(&state.sweep, f) {
-            out.push(Claim {
-                kind,
-                axis: state.sweep.axis(),
-                at,
-                rising,
-                size_effect: state.size_effect,
-                step,
-            });
+        for Crossing { at, rising, step } in crossings(log, &xs, vs, f) {
+            out.push(claim(kind, at, rising, level, step));
         }
+    }
+    let minima = bracketed(&total_v).filter_map(|i| refine(&xs, &total_v, i, log, &total));
+    for (at, value) in minima.take(MAX_PER_KIND) {
+        out.push(claim(ClaimKind::TotalMinimum, at, false, value, false));
     }
     out
 }
@@ -119,24 +186,22 @@ struct Crossing {
 /// a continuous share or index moves by ~1e-13 at most there.
 const STEP: f64 = 1e-9;
 
-/// Zeros of `f` along `s` where it changes sign.
-fn crossings(s: &Sweep, f: &dyn Fn(f64) -> f64) -> Vec<Crossing> {
-    let xs: Vec<f64> = s.points(SAMPLES).collect();
-    let vs: Vec<f64> = xs.iter().map(|&x| f(x)).collect();
+/// Zeros of `f` where its samples `vs` at `xs` change sign.
+fn crossings(log: bool, xs: &[f64], vs: &[f64], f: &dyn Fn(f64) -> f64) -> Vec<Crossing> {
     let mut out = Vec::new();
-    for i in 0..xs.len() - 1 {
+    for i in 0..xs.len().saturating_sub(1) {
         let (a, b) = (vs[i], vs[i + 1]);
         if a.is_nan() || b.is_nan() || (a < 0.0) == (b < 0.0) {
             continue;
         }
-        let (lo, hi) = bisect(s.axis().is_log(), xs[i], xs[i + 1], f);
-        let jump = (f(hi) - f(lo)).abs();
+        let (lo, hi) = bisect(log, xs[i], xs[i + 1], f);
+        let step = (f(hi) - f(lo)).abs() > STEP;
         out.push(Crossing {
             // A step lies at the bracket's upper end: sums over |q| ≤ q1
             // take a wavevector in once q1 reaches it.
-            at: if jump > STEP { hi } else { 0.5 * (lo + hi) },
+            at: if step { hi } else { 0.5 * (lo + hi) },
             rising: a < 0.0,
-            step: jump > STEP,
+            step,
         });
         if out.len() == MAX_PER_KIND {
             break;
@@ -170,12 +235,16 @@ fn bisect(log: bool, mut lo: f64, mut hi: f64, f: &dyn Fn(f64) -> f64) -> (f64, 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use rough_model::Sweep;
 
     #[test]
     fn bisection_finds_a_known_root_to_1e_14() {
         let s = Sweep::new(Axis::Zeta, 1.0, 1e4).unwrap();
         let root = 322.27f64;
-        let c = crossings(&s, &|x: f64| x.ln() - root.ln());
+        let f = |x: f64| x.ln() - root.ln();
+        let xs: Vec<f64> = s.points(SAMPLES).collect();
+        let vs: Vec<f64> = xs.iter().map(|&x| f(x)).collect();
+        let c = crossings(true, &xs, &vs, &f);
         assert_eq!(c.len(), 1);
         assert!((c[0].at / root - 1.0).abs() < 1e-13, "{}", c[0].at);
         assert!(c[0].rising && !c[0].step);
@@ -187,7 +256,10 @@ mod tests {
         // node, 1.3 from it on.
         let s = Sweep::new(Axis::Zeta, 1.0, 1e4).unwrap();
         let node = 45.254833995939045f64;
-        let c = crossings(&s, &|x: f64| if x >= node { 0.3 } else { -0.6 });
+        let f = |x: f64| if x >= node { 0.3 } else { -0.6 };
+        let xs: Vec<f64> = s.points(SAMPLES).collect();
+        let vs: Vec<f64> = xs.iter().map(|&x| f(x)).collect();
+        let c = crossings(true, &xs, &vs, &f);
         assert_eq!(c.len(), 1);
         assert!(c[0].step && c[0].rising);
         assert!((c[0].at / node - 1.0).abs() < 1e-13, "{}", c[0].at);
@@ -197,6 +269,7 @@ mod tests {
             at: c[0].at,
             rising: true,
             size_effect: false,
+            value: 1.0,
             step: true,
         };
         assert_eq!(claim.text(), "Ψ_P jumps past 1 at ζ = 45.25");
@@ -210,24 +283,54 @@ mod tests {
             at: 5324.4,
             rising: false,
             size_effect: true,
+            value: 1.0,
             step: false,
         };
         assert_eq!(c.text(), "Ψ* falls below 1 at ζ = 5324");
+        assert_eq!(c.short_text(), "Ψ* = 1 at ζ = 5324");
         let c = Claim {
             kind: ClaimKind::ShareHalf,
             axis: Axis::HRms,
             at: 2.5e-8,
             rising: true,
             size_effect: false,
+            value: 0.5,
             step: false,
         };
         assert_eq!(c.text(), "plastic share passes ½ at h_rms = 2.5e-8 m");
+        assert_eq!(c.short_text(), "plastic share ½ at h_rms = 2.5e-8 m");
+        let c = Claim {
+            kind: ClaimKind::IndexOne,
+            axis: Axis::H0OverE,
+            at: 0.005229641722173285,
+            rising: false,
+            size_effect: false,
+            value: 1.0,
+            step: false,
+        };
+        assert_eq!(
+            c.text(),
+            "Ψ_P falls below 1 at H0/E = 0.00523 (E/H0 = 191.2)"
+        );
+        assert_eq!(c.short_text(), "Ψ_P = 1 at E/H0 = 191.2");
+        let c = Claim {
+            kind: ClaimKind::TotalMinimum,
+            axis: Axis::Zeta,
+            at: 3.1902,
+            rising: false,
+            size_effect: true,
+            value: 3.90981,
+            step: false,
+        };
+        assert_eq!(c.text(), "total slope's minimum 3.91 at ζ = 3.19");
+        assert_eq!(c.short_text(), "total slope min 3.91 at ζ = 3.19");
     }
 }
 
 #[cfg(test)]
 mod preset_tests {
     use super::*;
+    use rough_model::Sweep;
 
     fn texts(name: &str) -> Vec<String> {
         claims(&crate::presets::load(name).unwrap())
@@ -249,16 +352,51 @@ mod preset_tests {
             texts("fig4"),
             [
                 "plastic share falls below ½ at ζ = 1.698e4",
-                "Ψ* falls below 1 at ζ = 5324"
+                "Ψ* falls below 1 at ζ = 5324",
+                "total slope's minimum 0.9796 at ζ = 2209"
             ]
         );
+        // The paper calls E/H0 = 25…1000 practically elastic; its own
+        // equations put Ψ_P = 1 at E/H0 = 191.
         assert_eq!(
             texts("fig1"),
             [
-                "plastic share falls below ½ at H0/E = 0.008318",
-                "Ψ_P falls below 1 at H0/E = 0.00523"
+                "plastic share falls below ½ at H0/E = 0.008318 (E/H0 = 120.2)",
+                "Ψ_P falls below 1 at H0/E = 0.00523 (E/H0 = 191.2)",
+                "total slope's minimum 0.9796 at H0/E = 0.003678 (E/H0 = 271.9)"
             ]
         );
-        assert!(texts("fig3").is_empty());
+        // "First decreases and then increases": where it turns.
+        assert_eq!(texts("fig3"), ["total slope's minimum 3.91 at ζ = 3.191"]);
+    }
+
+    #[test]
+    fn fig3s_minimum_moves_with_the_moments_and_the_sliders() {
+        let mut s = crate::presets::load("fig3").unwrap();
+        s.moments = rough_model::Moments::Truncated;
+        let c = claims(&s);
+        assert_eq!(c.len(), 1);
+        assert_eq!(c[0].text(), "total slope's minimum 5.59 at ζ = 7.763");
+        // The exact model has the same minimum: ψ is small there, and
+        // the two models' total slopes agree far below rounding.
+        s.model = rough_model::Model::Exact;
+        let e = claims(&s);
+        assert_eq!(e.len(), 1);
+        assert_eq!(e[0].value, c[0].value);
+        assert!((e[0].at / c[0].at - 1.0).abs() < 1e-11, "{e:?} {c:?}");
+        // A sweep that starts past the minimum has none inside.
+        s.sweep = Sweep::new(Axis::Zeta, 10.0, 1e4).unwrap();
+        assert!(claims(&s).is_empty());
+        // Without the size effect the total slope only falls (exact model).
+        s.size_effect = false;
+        s.sweep = Sweep::new(Axis::Zeta, 1.0, 1e4).unwrap();
+        assert!(claims(&s).iter().all(|c| c.kind != ClaimKind::TotalMinimum));
+        // A smaller R* lets the hardness catch up later: the minimum moves
+        // to finer scales.
+        let mut s = crate::presets::load("fig3").unwrap();
+        let at = |s: &State| claims(s)[0].at;
+        let base = at(&s);
+        s.params = s.params.with(Axis::RStar, 1e-4).unwrap();
+        assert!(at(&s) > base, "{} {base}", at(&s));
     }
 }

@@ -18,7 +18,8 @@
 //!   its NO_COLOR character ramp; [`ELASTIC_BELOW`], [`PLASTIC_ABOVE`]: this
 //!   program's regime thresholds (the paper sets none).
 //! - [`claims`]: where the plastic share passes ½ and where the index in use
-//!   crosses 1 along the sweep, located by bisection.
+//!   crosses 1 along the sweep, located by bisection, and where the total
+//!   slope has a minimum (golden section, then Newton on its derivative).
 //! - [`SpectrumSeries`]: a measured surface's spectrum, the power law
 //!   fitted over the band [q0, q1] and the cutoff q1.
 //! - [`render_svg`]: any view as a self-contained SVG document (the
@@ -27,13 +28,16 @@
 mod claims;
 mod colour;
 mod map;
+mod minimum;
 mod number;
 mod series;
 mod spectrum;
 mod svg;
 
 pub use claims::{claims, Claim, ClaimKind};
-pub use colour::{share_char, share_colour, RAMP};
+pub use colour::{
+    share_ansi16, share_ansi256, share_char, share_colour, ANSI16_SCALE, ANSI256_SCALE, RAMP,
+};
 pub use map::{axis_arg, MapCache, MapSpec, RegimeMap, DEFAULT_GRID};
 pub use number::short_number;
 pub use rough_model::slopes::{ELASTIC_BELOW, PLASTIC_ABOVE};

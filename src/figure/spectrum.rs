@@ -66,9 +66,7 @@ impl SpectrumSeries {
             psd,
             fit,
             power_law,
-            fit_h_rms: power_law
-                .and_then(|f| fit_amplitude(&f, dim, q0))
-                .map(|a| a.1),
+            fit_h_rms: power_law.and_then(|f| fit_amplitude(&f)).map(|a| a.1),
             q0,
             q1,
         })

@@ -1,8 +1,10 @@
 //! One SSH connection's protocol side: who it is (auth), and the one thing
 //! it may do — a shell request on one session channel with a pty, which
-//! starts an explorer. Everything else is refused: exec, subsystems (sftp),
-//! env, X11 and agent forwarding, port forwarding either way, streamlocal,
-//! a second channel, a shell without a pty.
+//! starts an explorer, after telling its terminal (the pty's TERM and size,
+//! LANG and LC_* as env requests). Everything else is refused: exec,
+//! subsystems (sftp), any other env variable, X11 and agent forwarding,
+//! port forwarding either way, streamlocal, a second channel, a shell
+//! without a pty.
 
 use std::sync::Arc;
 
@@ -15,6 +17,7 @@ use super::auth::Role;
 use super::limits::clamp_size;
 use super::session::{self, Start};
 use super::stream::Kill;
+use super::term::ClientTerm;
 use super::Shared;
 
 /// Channel requests a connection may make before its shell starts; past
@@ -30,6 +33,8 @@ pub struct Handler {
     channel: Option<Channel<Msg>>,
     channel_opened: bool,
     pty: Option<(u16, u16)>,
+    /// The client's TERM and locale.
+    client: ClientTerm,
     running: bool,
     requests: usize,
 }
@@ -53,6 +58,7 @@ impl Handler {
             channel: None,
             channel_opened: false,
             pty: None,
+            client: ClientTerm::default(),
             running: false,
             requests: 0,
         }
@@ -123,7 +129,7 @@ impl russh::server::Handler for Handler {
     async fn pty_request(
         &mut self,
         channel: ChannelId,
-        _term: &str,
+        term: &str,
         cols: u32,
         rows: u32,
         _: u32,
@@ -137,6 +143,7 @@ impl russh::server::Handler for Handler {
             return Ok(());
         }
         self.pty = Some(clamp_size(cols, rows));
+        self.client.set_term(term);
         session.channel_success(channel)?;
         Ok(())
     }
@@ -166,6 +173,7 @@ impl russh::server::Handler for Handler {
             kill: self.kill.clone(),
             role,
             size,
+            client: std::mem::take(&mut self.client),
         });
         Ok(())
     }
@@ -183,14 +191,22 @@ impl russh::server::Handler for Handler {
         self.refuse(c, s)
     }
 
+    /// LANG and LC_* before the shell (they choose the session's glyphs);
+    /// any other variable, or any after the shell, is refused.
     async fn env_request(
         &mut self,
         c: ChannelId,
-        _: &str,
-        _: &str,
+        name: &str,
+        value: &str,
         s: &mut Session,
     ) -> Result<(), Error> {
-        self.refuse(c, s)
+        let ours = self.channel.as_ref().map(|ch| ch.id()) == Some(c);
+        if self.running || !ours || !self.client.env(name, value) {
+            return self.refuse(c, s);
+        }
+        self.count()?;
+        s.channel_success(c)?;
+        Ok(())
     }
 
     async fn x11_request(

@@ -2,12 +2,21 @@
 //! table. crossterm decodes only its own stdin, so a session decodes what
 //! the channel brings: printable UTF-8, Enter, Tab, Backspace (0x7f, 0x08),
 //! Ctrl-letters, Esc, and the CSI / SS3 sequences of arrows, Home/End,
-//! Shift-arrows (`CSI 1;2 C`) and Shift-Tab (`CSI Z`). A sequence split
-//! across reads is kept until its end arrives; an Esc alone is Esc once the
-//! read that carried it ends (a human cannot type the rest of a sequence
-//! within one read).
+//! Shift-arrows (`CSI 1;2 C`) and Shift-Tab (`CSI Z`); and the terminal's
+//! answer to "how large is the text area" (`CSI 18 t`, asked on Ctrl-L),
+//! `CSI 8 ; rows ; cols t`, as a resize. A sequence split across reads is
+//! kept until its end arrives; an Esc alone is Esc once the read that
+//! carried it ends (a human cannot type the rest of a sequence within one
+//! read).
 
-use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
+
+use super::limits::clamp_size;
+
+/// What Ctrl-L sends the client: "report the text area's size in
+/// characters" (xterm's `CSI 18 t`, answered `CSI 8 ; rows ; cols t` by
+/// xterm, VTE, Windows Terminal and console, PuTTY, tmux …).
+pub const ASK_SIZE: &[u8] = b"\x1b[18t";
 
 /// The most bytes a session takes from one read; the rest of a larger read
 /// is dropped, so a pasted megabyte costs nothing.
@@ -16,10 +25,17 @@ pub const MAX_READ: usize = 4096;
 /// A pending escape sequence longer than this is garbage and is dropped.
 const MAX_PENDING: usize = 16;
 
+/// Reads after a size question ([`Decoder::expect_size`]) during which an
+/// Esc that ends a read is held for the next one (the answer may be split
+/// right after its Esc).
+const AWAIT_READS: u8 = 3;
+
 /// A decoder keeping what a read left unfinished.
 #[derive(Debug, Default)]
 pub struct Decoder {
     pending: Vec<u8>,
+    /// Reads left in which a size report is awaited.
+    awaiting: u8,
 }
 
 fn plain(code: KeyCode) -> KeyEvent {
@@ -29,6 +45,8 @@ fn plain(code: KeyCode) -> KeyEvent {
 /// What the start of `b` holds.
 enum Step {
     Key(KeyEvent, usize),
+    /// The terminal's size report: columns, rows.
+    Size(u16, u16, usize),
     /// Bytes that make no key (unknown sequences, stray continuation bytes).
     Skip(usize),
     /// The start of a sequence whose end has not arrived.
@@ -40,10 +58,19 @@ impl Decoder {
         Decoder::default()
     }
 
-    /// The keys in `bytes` (at most [`MAX_READ`] of them are looked at),
-    /// after whatever the previous read left pending.
-    pub fn feed(&mut self, bytes: &[u8]) -> Vec<KeyEvent> {
+    /// The terminal was asked for its size ([`ASK_SIZE`]): for the next
+    /// few reads an Esc ending a read may be the start of the answer.
+    pub fn expect_size(&mut self) {
+        self.awaiting = AWAIT_READS;
+    }
+
+    /// The keys (and size reports, as [`Event::Resize`]) in `bytes` (at
+    /// most [`MAX_READ`] of them are looked at), after whatever the
+    /// previous read left pending.
+    pub fn feed(&mut self, bytes: &[u8]) -> Vec<Event> {
         let bytes = &bytes[..bytes.len().min(MAX_READ)];
+        let awaiting = self.awaiting > 0;
+        self.awaiting = self.awaiting.saturating_sub(1);
         let mut buf = std::mem::take(&mut self.pending);
         buf.extend_from_slice(bytes);
         let mut keys = Vec::new();
@@ -51,15 +78,20 @@ impl Decoder {
         while i < buf.len() {
             match step(&buf[i..]) {
                 Step::Key(k, n) => {
-                    keys.push(k);
+                    keys.push(Event::Key(k));
+                    i += n;
+                }
+                Step::Size(cols, rows, n) => {
+                    keys.push(Event::Resize(cols, rows));
+                    self.awaiting = 0;
                     i += n;
                 }
                 Step::Skip(n) => i += n,
                 Step::Incomplete => {
                     let rest = &buf[i..];
-                    if rest == [0x1b] {
+                    if rest == [0x1b] && !awaiting {
                         // A lone Esc at the end of a read is the Esc key.
-                        keys.push(plain(KeyCode::Esc));
+                        keys.push(Event::Key(plain(KeyCode::Esc)));
                     } else if rest.len() <= MAX_PENDING {
                         self.pending = rest.to_vec();
                     }
@@ -159,6 +191,16 @@ fn csi(b: &[u8]) -> Step {
     };
     let code = match fin {
         b'Z' => return Step::Key(KeyEvent::new(KeyCode::BackTab, KeyModifiers::SHIFT), len),
+        // The text area's size, rows then columns (xterm's window ops).
+        b't' => {
+            return match nums[..] {
+                [8, rows, cols] => {
+                    let (c, r) = clamp_size(cols, rows);
+                    Step::Size(c, r, len)
+                }
+                _ => Step::Skip(len),
+            }
+        }
         b'~' => match nums.first() {
             Some(1 | 7) => Some(KeyCode::Home),
             Some(4 | 8) => Some(KeyCode::End),
@@ -204,9 +246,18 @@ fn modifiers(bits: u32) -> KeyModifiers {
 mod tests {
     use super::*;
 
+    fn keys(events: Vec<Event>) -> Vec<KeyEvent> {
+        events
+            .into_iter()
+            .filter_map(|e| match e {
+                Event::Key(k) => Some(k),
+                _ => None,
+            })
+            .collect()
+    }
+
     fn codes(bytes: &[u8]) -> Vec<(KeyCode, KeyModifiers)> {
-        Decoder::new()
-            .feed(bytes)
+        keys(Decoder::new().feed(bytes))
             .into_iter()
             .map(|k| (k.code, k.modifiers))
             .collect()
@@ -273,15 +324,15 @@ mod tests {
     fn sequences_split_across_reads() {
         let mut d = Decoder::new();
         assert!(d.feed(b"\x1b[1;").is_empty());
-        let k = d.feed(b"2C");
+        let k = keys(d.feed(b"2C"));
         assert_eq!(k.len(), 1);
         assert_eq!((k[0].code, k[0].modifiers), (KeyCode::Right, S));
         let euro = "€".as_bytes();
         assert!(d.feed(&euro[..1]).is_empty());
         assert!(d.feed(&euro[1..2]).is_empty());
-        assert_eq!(d.feed(&euro[2..])[0].code, KeyCode::Char('€'));
+        assert_eq!(keys(d.feed(&euro[2..]))[0].code, KeyCode::Char('€'));
         assert!(d.feed(b"\x1bO").is_empty());
-        assert_eq!(d.feed(b"D")[0].code, KeyCode::Left);
+        assert_eq!(keys(d.feed(b"D"))[0].code, KeyCode::Left);
     }
 
     #[test]
@@ -294,6 +345,45 @@ mod tests {
         let mut junk = b"\x1b[".to_vec();
         junk.extend(std::iter::repeat_n(b'1', 40));
         assert!(d.feed(&junk).is_empty());
-        assert_eq!(d.feed(b"k")[0].code, KeyCode::Char('k'));
+        assert_eq!(keys(d.feed(b"k"))[0].code, KeyCode::Char('k'));
+    }
+
+    #[test]
+    fn size_reports_are_resizes_also_when_split() {
+        assert_eq!(
+            Decoder::new().feed(b"\x1b[8;30;100tq"),
+            [
+                Event::Resize(100, 30),
+                Event::Key(KeyEvent::new(KeyCode::Char('q'), N))
+            ]
+        );
+        // Split anywhere across reads, as a slow link delivers it.
+        let report = b"\x1b[8;41;132t";
+        for cut in 1..report.len() {
+            let mut d = Decoder::new();
+            d.expect_size();
+            let mut got = d.feed(&report[..cut]);
+            got.extend(d.feed(&report[cut..]));
+            assert_eq!(got, [Event::Resize(132, 41)], "cut at {cut}");
+        }
+        // Clamped like a window change; other window reports are ignored.
+        assert_eq!(
+            Decoder::new().feed(b"\x1b[8;0;99999t"),
+            [Event::Resize(500, 1)]
+        );
+        assert!(Decoder::new().feed(b"\x1b[4;600;800t\x1b[8;24t").is_empty());
+        // While an answer is awaited a lone Esc waits for the next read,
+        // and is the Esc key if nothing follows it.
+        let mut d = Decoder::new();
+        d.expect_size();
+        assert!(d.feed(b"\x1b").is_empty());
+        assert_eq!(codes_of(d.feed(b"j")), [KeyCode::Esc, KeyCode::Char('j')]);
+        assert_eq!(codes_of(d.feed(b"k")), [KeyCode::Char('k')]);
+        // Three reads on, an Esc is Esc at once again.
+        assert_eq!(codes_of(d.feed(b"\x1b")), [KeyCode::Esc]);
+    }
+
+    fn codes_of(events: Vec<Event>) -> Vec<KeyCode> {
+        keys(events).into_iter().map(|k| k.code).collect()
     }
 }

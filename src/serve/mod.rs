@@ -13,6 +13,7 @@ pub mod limits;
 pub mod output;
 pub mod session;
 pub mod stream;
+pub mod term;
 
 use std::net::SocketAddr;
 use std::path::PathBuf;
@@ -55,6 +56,8 @@ pub struct Options {
     pub max_sessions: usize,
     pub max_per_address: usize,
     pub idle_timeout: Duration,
+    /// `--marker`: every session's glyphs, instead of each client's own.
+    pub marker: Option<crate::tui::glyphs::Glyphs>,
 }
 
 /// What every connection shares.
@@ -63,6 +66,8 @@ pub struct Shared {
     pub state: State,
     pub lecturer_keys: LecturerKeys,
     pub idle_timeout: Duration,
+    /// `--marker`, if given.
+    pub marker: Option<crate::tui::glyphs::Glyphs>,
     /// The lecturer's latest state; `None` while no lecturer is connected.
     pub follow: watch::Sender<Option<Shown>>,
     /// What the lecturer showed last, kept after they leave: a lecturer who
@@ -164,6 +169,7 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         state: opts.state,
         lecturer_keys,
         idle_timeout: opts.idle_timeout,
+        marker: opts.marker,
         follow: watch::Sender::new(None),
         last: Mutex::new(None),
         lecturers: AtomicUsize::new(0),

@@ -14,6 +14,7 @@ use ratatui::widgets::{Block, Borders, Clear, Paragraph, Wrap};
 use ratatui::Frame;
 use russh::server::Msg;
 use russh::{Channel, ChannelMsg};
+use std::io::Write;
 use tokio::sync::watch;
 use tokio::time::{sleep_until, Instant};
 
@@ -23,10 +24,11 @@ use super::input::{self, Decoder};
 use super::limits::clamp_size;
 use super::output::{self, FrameBuf};
 use super::stream::Kill;
+use super::term::{self, ClientTerm};
 use super::Shared;
 use crate::tui::app::Message;
+use crate::tui::glyphs::Glyphs;
 use crate::tui::session::Session;
-use crate::tui::theme::Theme;
 
 /// What a shell request hands over.
 pub struct Start {
@@ -36,6 +38,8 @@ pub struct Start {
     pub kill: Kill,
     pub role: Role,
     pub size: (u16, u16),
+    /// The client's TERM and locale: the session's glyphs and colours.
+    pub client: ClientTerm,
 }
 
 pub fn spawn(start: Start) {
@@ -56,6 +60,7 @@ async fn run(start: Start) {
         kill,
         role,
         size,
+        client,
     } = start;
     let (mut read, write) = channel.split();
     let slot = output::spawn(write, conn, kill);
@@ -64,10 +69,16 @@ async fn run(start: Start) {
     let _ = crossterm::execute!(prelude, EnterAlternateScreen, Hide);
     let _ = slot.send(prelude).await;
 
-    let Ok(mut ex) = Session::new(buf.clone(), shared.state.clone(), Theme::from_env(), size)
-    else {
+    let (mut caps, why) = client.caps(shared.marker);
+    // The server's own NO_COLOR turns colour off for everyone.
+    caps.color &= std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty());
+    let Ok(mut ex) = Session::new(buf.clone(), shared.state.clone(), caps.theme(), size) else {
         return;
     };
+    // The first screen's line on switching the drawing, until the first
+    // key or HINT_FOR.
+    let mut hint = Some(term::hint(caps.glyphs, why.as_deref()));
+    let hint_until = Instant::now() + term::HINT_FOR;
     let mut lecturer = shared.follow.subscribe();
     let mut follow = Follow::start(lecturer.borrow_and_update().is_some());
     let is_lecturer = role == Role::Lecturer;
@@ -92,13 +103,32 @@ async fn run(start: Start) {
                 match msg {
                     ChannelMsg::Data { data } => {
                         deadline = Instant::now() + idle;
-                        let keys = decoder.feed(&data[..data.len().min(input::MAX_READ)]);
-                        for key in keys {
+                        let events = decoder.feed(&data[..data.len().min(input::MAX_READ)]);
+                        for ev in events {
+                            let key = match ev {
+                                Event::Key(k) => k,
+                                // The terminal's answer to Ctrl-L's question.
+                                Event::Resize(w, h) => {
+                                    if (w, h) != ex.app.size && ex.update(Message::Resize(w, h)).is_err() {
+                                        ex.app.quit = true;
+                                        break;
+                                    }
+                                    dirty = true;
+                                    continue;
+                                }
+                                _ => continue,
+                            };
+                            if hint.take().is_some() {
+                                dirty = true;
+                            }
                             if panel.is_some() {
                                 // Any key closes the snapshot panel.
                                 panel = None;
                                 dirty = true;
                                 continue;
+                            }
+                            if ex.message_for(&Event::Key(key)) == Some(Message::Redraw) {
+                                decoder.expect_size();
                             }
                             if on_key(&mut ex, &mut follow, &mut panel, role, &lecturer, key) {
                                 dirty = true;
@@ -143,11 +173,19 @@ async fn run(start: Start) {
                 dirty = true;
             }
             () = sleep_until(deadline) => break,
+            () = sleep_until(hint_until), if hint.is_some() => {
+                hint = None;
+                dirty = true;
+            }
             permit = slot.reserve(), if dirty => {
                 let Ok(permit) = permit else { break };
-                let drawn = ex.draw_with(|_, f| {
+                let drawn = ex.draw_with(|app, f| {
+                    let glyphs = app.theme.glyphs;
+                    if let Some(h) = &hint {
+                        term::draw_hint(f, h, glyphs);
+                    }
                     if let Some(p) = &panel {
-                        draw_panel(f, &p.0);
+                        draw_panel(f, &p.0, glyphs);
                     }
                 });
                 if drawn.is_err() {
@@ -178,6 +216,12 @@ fn on_key(
     let Some(msg) = ex.message_for(&Event::Key(key)) else {
         return false;
     };
+    if msg == Message::Redraw {
+        // Ask the terminal for its size (a client that sends no window
+        // change, as Windows' OpenSSH often does not), then repaint; the
+        // answer, if any, resizes.
+        let _ = ex.writer().write_all(input::ASK_SIZE);
+    }
     if msg == Message::Follow {
         match follow.on_follow_key() {
             Effect::Say(s) => ex.app.set_status(s, false),
@@ -215,8 +259,9 @@ fn catch_up(ex: &mut Session<FrameBuf>, shown: &Option<Shown>) {
     }
 }
 
-fn draw_panel(f: &mut Frame, ron: &str) {
+fn draw_panel(f: &mut Frame, ron: &str, glyphs: Glyphs) {
     let area = f.area();
+    let ron = glyphs.text(ron);
     let lines: Vec<Line> = ron.lines().map(Line::raw).collect();
     // As wide as the longest line where the screen allows, so that a copy
     // gets each line whole.
@@ -237,7 +282,8 @@ fn draw_panel(f: &mut Frame, ron: &str) {
         Paragraph::new(lines).wrap(Wrap { trim: false }).block(
             Block::default()
                 .borders(Borders::ALL)
-                .title(" snapshot: copy it into a .ron file · any key closes "),
+                .border_set(glyphs.border())
+                .title(glyphs.text(" snapshot: copy it into a .ron file · any key closes ")),
         ),
         r,
     );

@@ -70,6 +70,13 @@ pub enum Message {
     /// A served student's `f`: show the lecturer's scene again (the serve
     /// session acts on it; the explorer alone has nothing to follow).
     Follow,
+    /// The next glyph set: braille, half blocks, blocks, ASCII (`M`).
+    CycleGlyphs,
+    /// Colour off (as under NO_COLOR) or on again (`c`).
+    ToggleColor,
+    /// Ctrl-L: paint the whole screen again (the session acts on it; over
+    /// SSH after asking the terminal for its size).
+    Redraw,
     Quit,
 }
 
@@ -565,7 +572,21 @@ pub fn update(app: &mut App, msg: Message) {
         },
         Message::PromptAccept => prompt::accept(app),
         Message::Resize(w, h) => app.size = (w, h),
-        Message::Follow => {}
+        Message::Follow | Message::Redraw => {}
+        Message::CycleGlyphs => {
+            let g = app.theme.glyphs.next();
+            app.theme = app.theme.with_glyphs(g);
+            app.set_status(format!("drawing in {} (M: next)", g.describe()), false);
+        }
+        Message::ToggleColor => {
+            app.theme = app.theme.with_color(!app.theme.color);
+            let text = if app.theme.color {
+                format!("colour on ({}) (c: off)", app.theme.palette.name())
+            } else {
+                "colour off, as under NO_COLOR (c: on)".to_string()
+            };
+            app.set_status(text, false);
+        }
         Message::Quit => app.quit = true,
     }
     app.captioned.apply(&mut app.state);

@@ -134,9 +134,9 @@ pub fn fmt_rel(other: f64, this: f64) -> String {
 }
 
 /// `text` word-wrapped into at most `rows` lines of `width` characters; when
-/// it does not fit, the last line ends in "…". Words longer than a line are
-/// cut.
-pub fn wrap(text: &str, width: usize, rows: usize) -> Vec<String> {
+/// it does not fit, the last line ends in `cut` ("…"). Words longer than a
+/// line are cut.
+pub fn wrap(text: &str, width: usize, rows: usize, cut_mark: char) -> Vec<String> {
     let mut lines: Vec<String> = Vec::new();
     if width == 0 || rows == 0 {
         return lines;
@@ -165,7 +165,11 @@ pub fn wrap(text: &str, width: usize, rows: usize) -> Vec<String> {
     if cut {
         if let Some(last) = lines.last_mut() {
             let keep = last.chars().count().min(width - 1);
-            *last = last.chars().take(keep).collect::<String>() + "…";
+            *last = last
+                .chars()
+                .take(keep)
+                .chain([cut_mark])
+                .collect::<String>();
         }
     }
     lines

@@ -7,7 +7,9 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Clear, Paragraph, Widget};
 
 use super::app::App;
+use super::fmt::wrap;
 use super::keys::{self, Context};
+use super::views::claims_line;
 
 /// What each symbol on the screen means.
 pub const SYMBOLS: &[(&str, &str)] = &[
@@ -27,11 +29,6 @@ pub const SYMBOLS: &[(&str, &str)] = &[
     ("h′", "rms slope of the surface, √(2 m2)"),
     ("h_rms", "rms height of the roughness"),
     ("ζ", "magnification q1/q0: how fine the roughness goes"),
-    ("q0 q1", "the band of wavevectors the moments sum over"),
-    (
-        "H fit",
-        "measured: a power-law fit over q0…q1, for orientation",
-    ),
     ("H", "the Hurst exponent of the roughness (not a hardness)"),
     ("H0  H_y", "bulk hardness; size-dependent hardness at R_s"),
     ("R*", "length of the hardness size effect (0 = none)"),
@@ -51,18 +48,53 @@ pub const SYMBOLS: &[(&str, &str)] = &[
         "plastic: this program's thresholds (the paper sets none)",
     ),
     (
-        "ψ ◦ ●",
+        MARKS,
         "on the x axis: ψ = 1; plastic share 10 %; plastic share 90 %",
     ),
+    (
+        "A_el A_pl",
+        "elastic area: the mass on [0, H] of Appendix A's solution;",
+    ),
+    (
+        "",
+        "plastic: the rest, the paper's \"subtracting the elastic one\".",
+    ),
+    (
+        "",
+        "Every share and regime rests on this reading: with Persson's",
+    ),
+    ("", "elastic erf(p̄/√(2V)) instead, fig2's share at ζ = 1000"),
+    ("", "would be 0.078, not 0.738"),
 ];
+
+/// The symbols only a measured surface shows, listed after ζ on one.
+pub const MEASURED_SYMBOLS: &[(&str, &str)] = &[
+    ("q0 q1", "the band of wavevectors the moments sum over"),
+    ("H fit", "a power-law fit over q0…q1, for orientation only"),
+];
+
+/// Where [`SYMBOLS`] names the regime marks: the glyph set's own.
+const MARKS: &str = "ψ ◦ ●";
 
 /// The help's lines, all pages together, each marked whether it is a
 /// heading.
 pub fn lines(app: &App) -> Vec<(bool, Line<'static>)> {
     let t = &app.theme;
+    let g = t.glyphs;
     let mut lines = Vec::new();
     let mut prompt_heading = false;
-    for b in keys::BINDINGS.iter().filter(|b| b.context.listed(app)) {
+    let bindings: Vec<_> = keys::BINDINGS
+        .iter()
+        .filter(|b| b.context.listed(app))
+        .collect();
+    // The keys' column: as wide as the longest label, at least 15.
+    let width = bindings
+        .iter()
+        .map(|b| Span::raw(keys::key_text(g, b.label)).width() + 1)
+        .max()
+        .unwrap_or(0)
+        .max(15);
+    for b in bindings {
         if b.context == Context::Prompt && !prompt_heading {
             lines.push((
                 true,
@@ -73,22 +105,61 @@ pub fn lines(app: &App) -> Vec<(bool, Line<'static>)> {
         lines.push((
             false,
             Line::from(vec![
-                Span::styled(padded(b.label, 15), t.title),
-                Span::raw(b.help),
+                Span::styled(padded(&keys::key_text(g, b.label), width), t.title),
+                Span::raw(g.text(b.help).into_owned()),
             ]),
         ));
     }
     lines.push((true, Line::styled("symbols:", t.title)));
-    for (sym, what) in SYMBOLS {
+    let measured: &[(&str, &str)] = if app.state.is_measured() {
+        MEASURED_SYMBOLS
+    } else {
+        &[]
+    };
+    let after_zeta = SYMBOLS.iter().position(|s| s.0 == "ζ").map_or(0, |i| i + 1);
+    let (before, after) = SYMBOLS.split_at(after_zeta);
+    for &(sym, what) in before.iter().chain(measured).chain(after) {
+        let sym = if sym == MARKS {
+            use super::glyphs::Mark;
+            [Mark::PsiOne, Mark::ShareLow, Mark::ShareHigh]
+                .map(|m| g.mark(m))
+                .join(" ")
+        } else {
+            g.text(sym).into_owned()
+        };
         lines.push((
             false,
             Line::from(vec![
-                Span::styled(padded(sym, 10), t.title),
-                Span::raw(*what),
+                Span::styled(padded(&sym, 10), t.title),
+                Span::raw(g.text(what).into_owned()),
             ]),
         ));
     }
+    scene(app, &mut lines);
     lines
+}
+
+/// Columns of text inside the help's frame, after a leading blank.
+const TEXT_W: usize = 75;
+
+/// The scene's caption (whole: the screen shows one row of it at 80
+/// columns) and its claims, a line each, under "this scene:".
+fn scene(app: &App, lines: &mut Vec<(bool, Line<'static>)>) {
+    let caption = app.state.caption.as_deref().unwrap_or("");
+    if caption.is_empty() && app.claims.is_empty() {
+        return;
+    }
+    let g = app.theme.glyphs;
+    lines.push((true, Line::styled("this scene:", app.theme.title)));
+    for l in wrap(&g.text(caption), TEXT_W, usize::MAX, g.cut()) {
+        lines.push((false, Line::raw(format!(" {l}"))));
+    }
+    let dot = g.text("·");
+    for c in &app.claims {
+        // Each claim whole: in full where it fits, else short.
+        let l = claims_line(std::slice::from_ref(c), TEXT_W - 2, g);
+        lines.push((false, Line::styled(format!(" {dot} {l}"), app.theme.ok)));
+    }
 }
 
 /// ` text` padded to `width` columns: by display width, so that a
@@ -135,8 +206,15 @@ pub fn render_help(app: &App, area: Rect, buf: &mut Buffer) {
     } else {
         " help · Esc or ? closes ".to_string()
     };
+    let g = app.theme.glyphs;
+    let title = g.text(&title).into_owned();
     Clear.render(r, buf);
     Paragraph::new(std::mem::take(&mut pages[page]))
-        .block(Block::default().borders(Borders::ALL).title(title))
+        .block(
+            Block::default()
+                .borders(Borders::ALL)
+                .border_set(g.border())
+                .title(title),
+        )
         .render(r, buf);
 }

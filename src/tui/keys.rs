@@ -1,9 +1,12 @@
 //! The one key table. It drives the key handling, the help overlay and the
 //! footer, so the three cannot disagree.
 
+use std::borrow::Cow;
+
 use crossterm::event::{Event, KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
 
 use super::app::{App, Message, Mode};
+use super::glyphs::Glyphs;
 use super::line_edit::Edit;
 
 /// Where a binding applies.
@@ -25,6 +28,8 @@ pub enum Context {
     Follower,
     /// An explorer whose session has a measured surface to return to.
     Surface,
+    /// Everywhere: the explorer, the help, a prompt, a terminal too small.
+    Any,
 }
 
 impl Context {
@@ -34,6 +39,7 @@ impl Context {
             (Context::Main | Context::MainAndHelp, Mode::Main)
                 | (Context::Help | Context::MainAndHelp, Mode::Help)
                 | (Context::Prompt, Mode::Prompt(_) | Mode::Value(..))
+                | (Context::Any, _)
         ) || (app.mode == Mode::Main && self.listed(app) && self.is_role())
     }
 
@@ -118,7 +124,7 @@ pub struct Binding {
     pub footer: Option<&'static str>,
 }
 
-use Context::{Follower, Help, Main, MainAndHelp, NotStudent, Prompt, Student, Surface};
+use Context::{Any, Follower, Help, Main, MainAndHelp, NotStudent, Prompt, Student, Surface};
 use KeyCode::{
     BackTab, Backspace, Delete, Down, End, Enter, Esc, Home, Left, PageDown, PageUp, Right, Tab, Up,
 };
@@ -167,23 +173,26 @@ pub const BINDINGS: &[Binding] = &[
     bind(Main, &[(key(Up), M::SelectPrev), (ch('k'), M::SelectPrev), (key(Down), M::SelectNext), (ch('j'), M::SelectNext)], "↑ ↓  k j", "select a slider", Some("↑↓ select")),
     bind(Main, &[(key(Left), DOWN), (ch('h'), DOWN), (key(Right), UP), (ch('l'), UP)], "← →  h l", "change it (¼ decade; H: 0.05)", Some("←→ change")),
     bind(Main, &[(shift(Left), FINE_DOWN), (ch('H'), FINE_DOWN), (shift(Right), FINE_UP), (ch('L'), FINE_UP)], "⇧← ⇧→  H L", "fine step (1/40 decade; H: 0.01)", None),
-    bind(Main, &[(key(Tab), M::NextView), (shift(BackTab), M::PrevView), (key(BackTab), M::PrevView)], "Tab ⇧Tab", "next / previous view (slopes … load; measured: spectrum)", Some("Tab view")),
+    bind(Main, &[(key(Tab), M::NextView), (shift(BackTab), M::PrevView), (key(BackTab), M::PrevView)], "Tab ⇧Tab", "next / previous view (a surface adds its spectrum)", Some("Tab view")),
     bind(Main, &[(ch('1'), M::LoadPreset(0)), (ch('2'), M::LoadPreset(1)), (ch('3'), M::LoadPreset(2)), (ch('4'), M::LoadPreset(3))], "1 2 3 4", "load the paper's fig1 … fig4", Some("1-4 figs")),
     bind(Surface, &[(ch('5'), M::LoadSurface)], "5", "back to the measured surface", Some("5 surface")),
     bind(Main, &[(key(Enter), M::StartValue)], "Enter", "type its value (25nm, 2 mm, 1e-3)", None),
     bind(Main, &[(ch('x'), M::CycleSweep)], "x", "sweep the next parameter", Some("x sweep")),
     bind(Main, &[(ch('m'), M::ToggleModel)], "m", "exact / closed-form model", Some("m model")),
     bind(Main, &[(ch('e'), M::ToggleSizeEffect)], "e", "size effect on / off", Some("e size")),
-    bind(Main, &[(ch('a'), M::ToggleMoments)], "a", "truncated / asymptotic moments (eq. 10; not measured)", Some("a moments")),
+    bind(Main, &[(ch('a'), M::ToggleMoments)], "a", "truncated / asymptotic moments (eq. 10; power law)", Some("a moments")),
     bind(Main, &[(ch('y'), M::NextMapY)], "y", "the regime map's next y parameter", None),
     bind(NotStudent, &[(ch('s'), M::StartSave)], "s", "save a snapshot here (.ron)", Some("s save")),
     bind(Student, &[(ch('s'), M::StartSave)], "s", "show the snapshot (.ron text) to copy", Some("s snapshot")),
-    bind(Main, &[(ch('g'), M::ToggleGhost)], "g", "ghost of the curves (measured: the fit first) / clear it", None),
+    bind(Main, &[(ch('g'), M::ToggleGhost)], "g", "pin a dim ghost (a surface: its fit first) / clear", None),
     bind(NotStudent, &[(ch('p'), M::SavePicture)], "p", "save the view as a picture here (.svg)", Some("p picture")),
     bind(Student, &[(ch('p'), M::SavePicture)], "p", "no pictures over SSH: s shows the snapshot", None),
     bind(MainAndHelp, &[(ch('?'), M::ToggleHelp)], "?", "show / hide this help", Some("? help")),
     bind(Help, &[(key(Esc), M::CloseHelp)], "Esc", "close the help", None),
     bind(Help, &[(key(Right), M::HelpPage { next: true }), (key(PageDown), M::HelpPage { next: true }), (ch(' '), M::HelpPage { next: true }), (key(Left), M::HelpPage { next: false }), (key(PageUp), M::HelpPage { next: false })], "→ ←  PgDn PgUp", "next / previous page of the help", None),
+    bind(MainAndHelp, &[(ch('M'), M::CycleGlyphs)], "M", "drawing: braille, half blocks, blocks, ASCII", Some("M drawing")),
+    bind(MainAndHelp, &[(ch('c'), M::ToggleColor)], "c", "colour off / on (as NO_COLOR=1)", None),
+    bind(Any, &[(ctrl('l'), M::Redraw)], "Ctrl-L", "redraw the screen (over SSH: at the terminal's size)", None),
     bind(MainAndHelp, &[(ch('q'), M::Quit), (ctrl('c'), M::Quit)], "q  Ctrl-C", "quit", Some("q quit")),
     bind(Prompt, &[(key(Left), edit(Edit::Left)), (key(Right), edit(Edit::Right)), (key(Home), edit(Edit::Home)), (ctrl('a'), edit(Edit::Home)), (key(End), edit(Edit::End)), (ctrl('e'), edit(Edit::End))], "← → Home End", "move the cursor (also Ctrl-A, Ctrl-E)", Some("←→ move")),
     bind(Prompt, &[(key(Backspace), edit(Edit::Backspace)), (key(Delete), edit(Edit::Delete))], "⌫  Del", "delete before / under the cursor", None),
@@ -193,18 +202,46 @@ pub const BINDINGS: &[Binding] = &[
     bind(Prompt, &[(key(Esc), M::PromptCancel), (ctrl('c'), M::PromptCancel)], "Esc  Ctrl-C", "cancel", Some("Esc cancel")),
 ];
 
+/// The keys' names where text is drawn in ASCII ([`Glyphs::ascii_text`]):
+/// arrows by name, in the footer short.
+const ASCII_KEYS: &[(&str, &str)] = &[
+    ("↑ ↓  k j", "Up Down  k j"),
+    ("← →  h l", "Left Right  h l"),
+    ("⇧← ⇧→  H L", "S-Left S-Right  H L"),
+    ("Tab ⇧Tab", "Tab S-Tab"),
+    ("→ ←  PgDn PgUp", "Right Left  PgDn PgUp"),
+    ("← → Home End", "Left Right Home End"),
+    ("⌫  Del", "Bksp  Del"),
+    ("↑↓ select", "Up/Dn select"),
+    ("←→ change", "<-/-> change"),
+    ("←→ move", "<-/-> move"),
+    ("⏎ accept", "Enter accept"),
+];
+
+/// A key's label or footer entry as `glyphs` writes it.
+pub fn key_text(glyphs: Glyphs, text: &'static str) -> Cow<'static, str> {
+    if !glyphs.ascii_text() {
+        return Cow::Borrowed(text);
+    }
+    match ASCII_KEYS.iter().find(|(u, _)| *u == text) {
+        Some((_, a)) => Cow::Borrowed(a),
+        None => glyphs.text(text),
+    }
+}
+
 /// The message a key sends in the app's current mode, if any.
 pub fn message_for_key(app: &App, ev: &KeyEvent) -> Option<Message> {
     if ev.kind == KeyEventKind::Release {
         return None;
     }
-    // While the terminal is too small nothing is shown: only quitting acts.
+    // While the terminal is too small nothing is shown: only quitting and
+    // redrawing act.
     if app.too_small() {
-        let quits = BINDINGS
+        return BINDINGS
             .iter()
             .flat_map(|b| b.keys)
-            .any(|(k, m)| *m == M::Quit && k.matches(ev));
-        return quits.then_some(M::Quit);
+            .find(|(k, m)| matches!(m, M::Quit | M::Redraw) && k.matches(ev))
+            .map(|(_, m)| *m);
     }
     for b in BINDINGS.iter().filter(|b| b.context.covers(app)) {
         if let Some((_, m)) = b.keys.iter().find(|(k, _)| k.matches(ev)) {
@@ -234,25 +271,26 @@ pub fn message_for_event(app: &App, ev: &Event) -> Option<Message> {
 /// The footer for the app's mode in `width` columns: the entries in table
 /// order, those that do not fit left out, but the help key's always kept.
 pub fn footer(app: &App, width: usize) -> String {
-    let entries: Vec<(&str, bool)> = BINDINGS
+    let glyphs = app.theme.glyphs;
+    let entries: Vec<(Cow<str>, bool)> = BINDINGS
         .iter()
         .filter(|b| b.context.covers(app))
         .filter_map(|b| {
             let help = b.keys.iter().any(|(_, m)| *m == Message::ToggleHelp);
-            b.footer.map(|f| (f, help))
+            b.footer.map(|f| (key_text(glyphs, f), help))
         })
         .collect();
     let len = |e: &str| e.chars().count() + 2;
-    let mut reserved: usize = entries.iter().filter(|e| e.1).map(|e| len(e.0)).sum();
+    let mut reserved: usize = entries.iter().filter(|e| e.1).map(|e| len(&e.0)).sum();
     let mut used = 0;
     let mut parts = Vec::new();
     for (entry, keep) in entries {
         if keep {
-            reserved -= len(entry);
-        } else if used + len(entry) + reserved > width + 2 {
+            reserved -= len(&entry);
+        } else if used + len(&entry) + reserved > width + 2 {
             continue;
         }
-        used += len(entry);
+        used += len(&entry);
         parts.push(entry);
     }
     parts.join("  ")

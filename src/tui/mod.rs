@@ -3,9 +3,11 @@
 //! something, so an idle session writes nothing to the terminal.
 
 pub mod app;
+pub mod caps;
 pub mod caption;
 pub mod fmt;
 pub mod ghost;
+pub mod glyphs;
 pub mod help;
 pub mod keys;
 pub mod layout;
@@ -27,8 +29,8 @@ use std::time::Instant;
 use crossterm::event::{self, Event, KeyCode};
 
 use crate::snapshot::State;
+use caps::Caps;
 use session::Session;
-use theme::Theme;
 
 /// Runs the explorer on `state` until `q`. The terminal is restored on every
 /// way out.
@@ -37,7 +39,14 @@ use theme::Theme;
 /// appends, per handled event, the microseconds from the event's arrival to
 /// the flushed frame; `ROUGHTUI_PANIC_KEY=C` makes key C panic, to test the
 /// restore on panic.
-pub fn run(state: State, file: Option<&std::path::Path>) -> anyhow::Result<()> {
+///
+/// The glyphs are `marker` if given, else chosen from the locale and TERM
+/// ([`caps`]); a choice other than braille says why in the status line.
+pub fn run(
+    state: State,
+    file: Option<&std::path::Path>,
+    marker: Option<glyphs::Glyphs>,
+) -> anyhow::Result<()> {
     let mut frame_log = match std::env::var_os("ROUGHTUI_FRAME_LOG") {
         Some(p) => Some(
             std::fs::OpenOptions::new()
@@ -51,13 +60,29 @@ pub fn run(state: State, file: Option<&std::path::Path>) -> anyhow::Result<()> {
         .ok()
         .and_then(|s| s.chars().next());
 
+    let mut caps = Caps::from_env();
+    let var = |k: &str| std::env::var(k).ok();
+    let why = match marker {
+        Some(m) => {
+            caps.glyphs = m;
+            None
+        }
+        None => caps.reason(var, &var("TERM").unwrap_or_default()),
+    };
     let out = term::setup()?;
     let _guard = term::Guard;
     let (w, h) = crossterm::terminal::size()?;
-    let mut session = Session::new(out, state, Theme::from_env(), (w, h))?;
+    let mut session = Session::new(out, state, caps.theme(), (w, h))?;
     session.app.file = file
         .and_then(|f| f.file_name())
         .map(|f| f.to_string_lossy().into_owned());
+    if let Some(why) = why {
+        let g = caps.glyphs;
+        session.app.set_status(
+            format!("drawing in {} ({why}) · M switches", g.describe()),
+            false,
+        );
+    }
     draw(&mut session)?;
     loop {
         let (msg, arrived) = loop {
@@ -72,6 +97,13 @@ pub fn run(state: State, file: Option<&std::path::Path>) -> anyhow::Result<()> {
                 break (m, arrived);
             }
         };
+        if msg == app::Message::Redraw {
+            // The size the terminal has now, in case a resize went unseen.
+            let (w, h) = crossterm::terminal::size()?;
+            if (w, h) != session.app.size {
+                session.update(app::Message::Resize(w, h))?;
+            }
+        }
         session.update(msg)?;
         if session.app.quit {
             break;

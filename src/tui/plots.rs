@@ -5,6 +5,7 @@
 use rough_model::slopes::{ELASTIC_BELOW, PLASTIC_ABOVE};
 use rough_model::{Scene, SceneSpec};
 
+use super::glyphs::Mark;
 use crate::figure::{IndexSeries, LoadCurve};
 use crate::snapshot::State;
 
@@ -40,12 +41,12 @@ pub enum RegimeMark {
 }
 
 impl RegimeMark {
-    /// The character drawn on the x axis.
-    pub fn symbol(self) -> &'static str {
+    /// The mark drawn on the x axis (its character comes from the glyphs).
+    pub fn mark(self) -> Mark {
         match self {
-            RegimeMark::PsiOne => "ψ",
-            RegimeMark::ShareLow => "◦",
-            RegimeMark::ShareHigh => "●",
+            RegimeMark::PsiOne => Mark::PsiOne,
+            RegimeMark::ShareLow => Mark::ShareLow,
+            RegimeMark::ShareHigh => Mark::ShareHigh,
         }
     }
 }

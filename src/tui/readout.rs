@@ -38,7 +38,7 @@ impl Readout {
             let fit = src.fit(state.params.zeta())?;
             Some(Fit {
                 fit,
-                h_rms: fit_amplitude(&fit, src.dim(), src.q0()).map(|a| a.1),
+                h_rms: fit_amplitude(&fit).map(|a| a.1),
             })
         });
         Readout {

@@ -5,11 +5,13 @@
 use std::io::{self, Write};
 
 use crossterm::event::Event;
-use ratatui::backend::CrosstermBackend;
+use ratatui::backend::{Backend, ClearType, CrosstermBackend};
+use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::{Frame, Terminal, TerminalOptions, Viewport};
 
 use super::app::{update, App, Message};
+use super::glyphs::ascii_name;
 use super::keys;
 use super::theme::Theme;
 use crate::snapshot::State;
@@ -35,27 +37,45 @@ impl<W: Write> Session<W> {
         })
     }
 
+    /// The byte sink frames are written into (for what the caller sends
+    /// the terminal besides frames: a question, written before the next
+    /// frame).
+    pub fn writer(&mut self) -> &mut impl Write {
+        self.terminal.backend_mut()
+    }
+
     /// The message `ev` sends in the app's current mode, if any.
     pub fn message_for(&self, ev: &Event) -> Option<Message> {
         keys::message_for_event(&self.app, ev)
     }
 
     /// Applies `msg` (a resize also resizes the frame, which then repaints
-    /// in full).
+    /// in full; so does a redraw, after clearing the screen).
     pub fn update(&mut self, msg: Message) -> io::Result<()> {
-        if let Message::Resize(w, h) = msg {
-            self.terminal.resize(Rect::new(0, 0, w, h))?;
+        match msg {
+            Message::Resize(w, h) => self.terminal.resize(Rect::new(0, 0, w, h))?,
+            Message::Redraw => {
+                self.terminal.backend_mut().clear_region(ClearType::All)?;
+                let (w, h) = self.app.size;
+                self.terminal.resize(Rect::new(0, 0, w, h))?;
+            }
+            _ => {}
         }
         update(&mut self.app, msg);
         Ok(())
     }
 
-    /// Draws the app, then `overlay` on top, and flushes the backend.
+    /// Draws the app, then `overlay` on top, and flushes the backend. With
+    /// the ASCII glyphs, whatever is not ASCII in the frame (nothing the
+    /// views draw; a safety net) is sent as its ASCII fallback.
     pub fn draw_with(&mut self, overlay: impl FnOnce(&App, &mut Frame)) -> io::Result<()> {
         let app = &self.app;
         self.terminal.draw(|f| {
             f.render_widget(app, f.area());
             overlay(app, f);
+            if app.theme.glyphs.ascii_only() {
+                ascii_only(f.buffer_mut());
+            }
         })?;
         Ok(())
     }
@@ -63,4 +83,20 @@ impl<W: Write> Session<W> {
     pub fn draw(&mut self) -> io::Result<()> {
         self.draw_with(|_, _| {})
     }
+}
+
+/// Replaces every cell of `buf` that is not ASCII by a one-column ASCII
+/// fallback; the number of cells replaced.
+pub fn ascii_only(buf: &mut Buffer) -> usize {
+    let mut n = 0;
+    for cell in &mut buf.content {
+        let sym = cell.symbol();
+        if !sym.is_ascii() {
+            let name = sym.chars().next().map_or("?", ascii_name);
+            let c = if name.len() == 1 { name } else { "?" };
+            cell.set_symbol(c);
+            n += 1;
+        }
+    }
+    n
 }

@@ -10,6 +10,7 @@ use ratatui::widgets::{Clear, Widget};
 
 use super::app::{App, Mode};
 use super::fmt::{fmt_param, fmt_short};
+use super::glyphs::Glyphs;
 use super::line_edit::LineEdit;
 use super::value_input;
 use crate::snapshot::State;
@@ -49,10 +50,22 @@ impl Hint {
 
 /// The text field with its cursor cell in reverse video, in at most
 /// `width` cells: a longer text scrolls so that the cursor stays in sight,
-/// "…" marking what is cut off.
-fn field(line: &LineEdit, width: usize) -> Vec<Span<'static>> {
+/// `glyphs`' cut mark ("…") marking what is cut off. Where text is drawn in
+/// ASCII a character outside it shows as `?`, one cell as it is one place
+/// of the cursor.
+fn field(line: &LineEdit, width: usize, glyphs: Glyphs) -> Vec<Span<'static>> {
     // The text and, at its end, the cell the cursor takes there.
-    let mut cells: Vec<char> = line.text().chars().collect();
+    let mut cells: Vec<char> = line
+        .text()
+        .chars()
+        .map(|c| {
+            if glyphs.ascii_text() && !c.is_ascii() {
+                '?'
+            } else {
+                c
+            }
+        })
+        .collect();
     let n = cells.len();
     cells.push(' ');
     let cursor = line.cursor();
@@ -67,7 +80,7 @@ fn field(line: &LineEdit, width: usize) -> Vec<Span<'static>> {
     let mut parts: [String; 3] = Default::default();
     for (k, c) in cells.iter().enumerate().take(to).skip(from) {
         let cut = (k == from && from > 0) || (k + 1 == to && to < end);
-        let c = if cut && k != cursor { '…' } else { *c };
+        let c = if cut && k != cursor { glyphs.cut() } else { *c };
         let part = match k.cmp(&cursor) {
             std::cmp::Ordering::Less => 0,
             std::cmp::Ordering::Equal => 1,
@@ -84,19 +97,20 @@ fn field(line: &LineEdit, width: usize) -> Vec<Span<'static>> {
 }
 
 /// `text` in at most `width` characters: when longer, its middle gives way
-/// to "…", so that both what failed (the start) and why (the end) show.
-pub fn elide_middle(text: &str, width: usize) -> String {
+/// to `cut` ("…"), so that both what failed (the start) and why (the end)
+/// show.
+pub fn elide_middle(text: &str, width: usize, cut: char) -> String {
     let n = text.chars().count();
     if n <= width {
         return text.to_string();
     }
     if width < 2 {
-        return "…".chars().take(width).collect();
+        return [cut].iter().take(width).collect();
     }
     let head = (width - 1) / 3;
     let tail = width - 1 - head;
     let mut out: String = text.chars().take(head).collect();
-    out.push('…');
+    out.push(cut);
     out.extend(text.chars().skip(n - tail));
     out
 }
@@ -104,32 +118,36 @@ pub fn elide_middle(text: &str, width: usize) -> String {
 /// `status` is the status row, `below` the footer row under it.
 pub fn render_status(app: &App, status: Rect, below: Rect, buf: &mut Buffer) {
     let t = &app.theme;
+    let gl = t.glyphs;
     let error = app.status.as_ref().filter(|s| s.error);
     let first = match &app.mode {
         Mode::Prompt(line) => {
             let mut spans = vec![Span::styled("save as: ", t.title)];
-            spans.extend(field(line, usize::from(status.width).saturating_sub(13)));
+            spans.extend(field(
+                line,
+                usize::from(status.width).saturating_sub(13),
+                gl,
+            ));
             spans.push(Span::raw(".ron"));
             Line::from(spans)
         }
         Mode::Value(axis, line) => {
-            let mut spans = vec![Span::styled(format!("{} = ", axis.symbol()), t.title)];
-            spans.extend(field(line, usize::from(status.width) / 3));
+            let name = gl.text(axis.symbol()).into_owned();
+            let mut spans = vec![Span::styled(format!("{name} = "), t.title)];
+            spans.extend(field(line, usize::from(status.width) / 3, gl));
             let units = if value_input::is_length(*axis) {
                 "units m cm mm µm nm pm · "
             } else {
                 ""
             };
             let (lo, hi) = app.range(*axis);
-            spans.push(Span::styled(
-                format!(
-                    "   {units}now {} · slider {}…{}",
-                    fmt_param(*axis, app.state.params.get(*axis)),
-                    fmt_short(*axis, lo),
-                    fmt_short(*axis, hi)
-                ),
-                t.dim,
-            ));
+            let text = format!(
+                "   {units}now {} · slider {}…{}",
+                fmt_param(*axis, app.state.params.get(*axis)),
+                fmt_short(*axis, lo),
+                fmt_short(*axis, hi)
+            );
+            spans.push(Span::styled(gl.text(&text).into_owned(), t.dim));
             Line::from(spans)
         }
         Mode::Main | Mode::Help => {
@@ -139,15 +157,19 @@ pub fn render_status(app: &App, status: Rect, below: Rect, buf: &mut Buffer) {
                 None => match &app.ghost {
                     Some(g) => (format!("┄ {} · g clears it", g.label(&app.state)), t.dim),
                     None => (
-                        "? help · the ↔ slider moves the marker · the readout is at the marker"
-                            .into(),
+                        format!(
+                            "? help · the {} slider moves the marker · the readout is at the \
+                             marker",
+                            gl.swept()
+                        ),
                         t.dim,
                     ),
                 },
             };
+            let text = gl.text(&text);
             // Too long for one row: continued on the footer's row, its
             // middle elided if even two rows are too few.
-            let text = elide_middle(&text, 2 * w);
+            let text = elide_middle(&text, 2 * w, gl.cut());
             let (first, rest): (String, String) = (
                 text.chars().take(w).collect(),
                 text.chars().skip(w).collect(),
@@ -166,21 +188,26 @@ pub fn render_status(app: &App, status: Rect, below: Rect, buf: &mut Buffer) {
     if let Some(e) = error {
         // The prompt says what is being done; the row says why not.
         let why = e.text.strip_prefix("cannot save: ").unwrap_or(&e.text);
+        let why = gl.text(why);
         Clear.render(below, buf);
-        Line::styled(elide_middle(why, usize::from(below.width)), t.error).render(below, buf);
+        Line::styled(
+            elide_middle(&why, usize::from(below.width), gl.cut()),
+            t.error,
+        )
+        .render(below, buf);
     }
 }
 
 #[cfg(test)]
 mod tests {
-    use super::{elide_middle, field, LineEdit};
+    use super::{elide_middle, field, Glyphs, LineEdit};
 
     fn shown(text: &str, left: usize, width: usize) -> String {
         let mut l = LineEdit::new(text, 200);
         for _ in 0..left {
             l.apply(crate::tui::line_edit::Edit::Left);
         }
-        field(&l, width)
+        field(&l, width, Glyphs::Braille)
             .iter()
             .map(|s| s.content.to_string())
             .collect()
@@ -198,10 +225,14 @@ mod tests {
 
     #[test]
     fn long_texts_keep_their_start_and_end() {
-        assert_eq!(elide_middle("short", 10), "short");
-        assert_eq!(elide_middle("0123456789abcdef", 10), "012…abcdef");
-        assert_eq!(elide_middle("0123456789abcdef", 10).chars().count(), 10);
-        assert_eq!(elide_middle("abc", 1), "…");
-        assert_eq!(elide_middle("abc", 0), "");
+        assert_eq!(elide_middle("short", 10, '…'), "short");
+        assert_eq!(elide_middle("0123456789abcdef", 10, '…'), "012…abcdef");
+        assert_eq!(
+            elide_middle("0123456789abcdef", 10, '…').chars().count(),
+            10
+        );
+        assert_eq!(elide_middle("abc", 1, '…'), "…");
+        assert_eq!(elide_middle("abc", 0, '…'), "");
+        assert_eq!(elide_middle("0123456789abcdef", 10, '~'), "012~abcdef");
     }
 }

@@ -1,9 +1,13 @@
-//! Colours and markers, from one place. The plain theme (NO_COLOR) uses no
-//! colour at all: the four curves differ by marker instead, and selection and
-//! emphasis use reverse video and bold.
+//! Colours and characters, from one place. A theme is built from the
+//! session's [`Glyphs`] (what it draws with), its [`Palette`] (the colours
+//! the terminal promises) and whether colour is on. The plain theme
+//! (NO_COLOR, or `c`) uses no colour at all: the four curves differ by
+//! marker instead, and selection and emphasis use reverse video and bold.
 
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::symbols::Marker;
+
+use super::glyphs::Glyphs;
 
 /// How one curve is drawn and named in the legend.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -15,9 +19,38 @@ pub struct CurveStyle {
     pub sample: &'static str,
 }
 
+/// The colours a terminal promises. The curves and the text use the 16
+/// basic colours in all of them; the regime map's scale is drawn in as
+/// many as there are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Palette {
+    /// The 16 ANSI colours (SGR 30–37, 90–97).
+    Ansi16,
+    /// xterm's 256 (SGR 38;5;N).
+    Ansi256,
+    /// 24-bit colour (SGR 38;2;R;G;B).
+    #[default]
+    TrueColor,
+}
+
+impl Palette {
+    pub fn name(self) -> &'static str {
+        match self {
+            Palette::Ansi16 => "16 colours",
+            Palette::Ansi256 => "256 colours",
+            Palette::TrueColor => "24-bit colour",
+        }
+    }
+}
+
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Theme {
+    /// Whether anything is coloured (off under NO_COLOR, or after `c`).
     pub color: bool,
+    /// The colours the terminal promises, used while `color` is on.
+    pub palette: Palette,
+    /// The characters the session draws with.
+    pub glyphs: Glyphs,
     pub elastic: CurveStyle,
     pub plastic: CurveStyle,
     pub total: CurveStyle,
@@ -41,98 +74,145 @@ pub struct Theme {
     pub ok: Style,
 }
 
+/// A curve's own character where curves are told apart by character: in
+/// ASCII always, elsewhere without colour. `None`: the set's own marker.
+fn own_char(glyphs: Glyphs, color: bool, braille_plain: char, ascii: char) -> Option<char> {
+    match (glyphs, color) {
+        (Glyphs::Ascii, _) => Some(ascii),
+        (Glyphs::Braille, false) => Some(braille_plain),
+        (_, false) => Some(ascii),
+        _ => None,
+    }
+}
+
 impl Theme {
-    /// The paper's colours: elastic in the terminal's own foreground
-    /// (white on dark, black on light), plastic blue, total red, Persson green.
-    pub fn colored() -> Theme {
-        let curve = |name, color: Color| CurveStyle {
-            name,
-            style: Style::new().fg(color),
-            marker: Marker::Braille,
-            sample: "━━",
+    /// The theme of `glyphs` in `palette`, coloured or not.
+    pub fn new(glyphs: Glyphs, palette: Palette, color: bool) -> Theme {
+        let fg = |c: Color| {
+            if color {
+                Style::new().fg(c)
+            } else {
+                Style::new()
+            }
+        };
+        // The main curves: the set's marker in colour; told apart by
+        // character where there is no colour (braille keeps its dots for
+        // the total) or in ASCII.
+        let curve = |name, c: Color, plain: Option<(char, &'static str)>, ascii: char| {
+            let own = match plain {
+                Some((p, _)) => own_char(glyphs, color, p, ascii),
+                None if glyphs == Glyphs::Ascii => Some(ascii),
+                None => None,
+            };
+            let sample = match (own, plain) {
+                (None, _) if glyphs == Glyphs::Braille && !color => "⠒⠒",
+                (None, _) => glyphs.line_sample(),
+                (Some(_), Some((_, s))) if glyphs == Glyphs::Braille => s,
+                (Some(ch), _) => ascii_pair(ch),
+            };
+            CurveStyle {
+                name,
+                style: fg(c),
+                marker: own.map_or(glyphs.marker(), Marker::Custom),
+                sample,
+            }
+        };
+        // A dotted reference line (Ψ = 1, the initial slope, the ghost).
+        let dotted = |name, ascii: char, braille_sample: &'static str| {
+            let marker = match (glyphs, color) {
+                (Glyphs::Ascii, _) => Marker::Custom(ascii),
+                (Glyphs::Braille, true) => Marker::Braille,
+                (Glyphs::Braille, false) => Marker::Custom('·'),
+                (_, true) => glyphs.marker(),
+                (_, false) => Marker::Custom(ascii),
+            };
+            let sample = match glyphs {
+                Glyphs::Braille if color => braille_sample,
+                Glyphs::Braille => "··",
+                _ => ascii_pair(ascii),
+            };
+            CurveStyle {
+                name,
+                style: fg(Color::DarkGray),
+                marker,
+                sample,
+            }
+        };
+        let line = glyphs.vertical_line();
+        let (psi_gw, psi_p, psi_star, psi_asy) = if glyphs.ascii_text() {
+            // Longer names: eq. 13's curve is named in the help only.
+            ("Psi_GW", "Psi_P", "Psi*", "Psi*asy")
+        } else {
+            ("Ψ_GW", "Ψ_P", "Ψ*", "Ψ*asy eq.13")
         };
         Theme {
-            color: true,
-            elastic: curve("elastic", Color::Reset),
-            plastic: curve("plastic", Color::Blue),
-            total: curve("total", Color::Red),
-            persson: curve("Persson elastic", Color::Green),
+            color,
+            palette,
+            glyphs,
+            elastic: curve("elastic", Color::Reset, Some(('•', "••")), '*'),
+            plastic: curve("plastic", Color::Blue, Some(('+', "++")), '+'),
+            total: curve("total", Color::Red, None, '#'),
+            persson: curve("Persson elastic", Color::Green, Some(('o', "oo")), 'o'),
             marker_line: CurveStyle {
                 name: "marker",
-                style: Style::new().fg(Color::Yellow),
-                marker: Marker::Custom('│'),
-                sample: "│",
+                style: fg(Color::Yellow),
+                marker: Marker::Custom(line),
+                sample: if glyphs.ascii_only() { "|" } else { "│" },
             },
-            psi_gw: curve("Ψ_GW", Color::Magenta),
-            psi_p: curve("Ψ_P", Color::Blue),
-            psi_star: curve("Ψ*", Color::Red),
-            psi_asy: curve("Ψ*asy eq.13", Color::Yellow),
+            psi_gw: curve(psi_gw, Color::Magenta, Some(('x', "xx")), 'x'),
+            psi_p: curve(psi_p, Color::Blue, Some(('+', "++")), '+'),
+            psi_star: curve(psi_star, Color::Red, None, '#'),
+            psi_asy: curve(psi_asy, Color::Yellow, Some(('o', "oo")), 'o'),
             psi_one: CurveStyle {
-                name: "Ψ = 1",
-                style: Style::new().fg(Color::DarkGray),
-                marker: Marker::Braille,
-                sample: "··",
+                name: if glyphs.ascii_text() {
+                    "Psi = 1"
+                } else {
+                    "Ψ = 1"
+                },
+                ..dotted("", '-', "··")
             },
-            tangent: CurveStyle {
-                name: "initial slope",
-                style: Style::new().fg(Color::DarkGray),
-                marker: Marker::Braille,
-                sample: "··",
-            },
-            ghost: CurveStyle {
-                name: "ghost",
-                style: Style::new().fg(Color::DarkGray),
-                marker: Marker::Braille,
-                sample: "┄┄",
-            },
+            tangent: dotted("initial slope", '.', "··"),
+            ghost: dotted("ghost", '.', "┄┄"),
             selected: Style::new()
                 .add_modifier(Modifier::REVERSED)
                 .add_modifier(Modifier::BOLD),
             title: Style::new().add_modifier(Modifier::BOLD),
-            dim: Style::new().fg(Color::DarkGray),
-            error: Style::new().fg(Color::Red).add_modifier(Modifier::BOLD),
-            ok: Style::new().fg(Color::Green),
+            dim: fg(Color::DarkGray),
+            error: if color {
+                Style::new().fg(Color::Red).add_modifier(Modifier::BOLD)
+            } else {
+                Style::new().add_modifier(Modifier::BOLD)
+            },
+            ok: fg(Color::Green),
         }
+    }
+
+    /// The paper's colours in braille: elastic in the terminal's own
+    /// foreground (white on dark, black on light), plastic blue, total red,
+    /// Persson green.
+    pub fn colored() -> Theme {
+        Theme::new(Glyphs::Braille, Palette::TrueColor, true)
     }
 
     /// No colour codes at all; curves told apart by their markers.
     pub fn plain() -> Theme {
-        let curve = |name, marker: Marker, sample| CurveStyle {
-            name,
-            style: Style::new(),
-            marker,
-            sample,
-        };
-        Theme {
-            color: false,
-            elastic: curve("elastic", Marker::Custom('•'), "••"),
-            plastic: curve("plastic", Marker::Custom('+'), "++"),
-            total: curve("total", Marker::Braille, "⠒⠒"),
-            persson: curve("Persson elastic", Marker::Custom('o'), "oo"),
-            marker_line: curve("marker", Marker::Custom('│'), "│"),
-            psi_gw: curve("Ψ_GW", Marker::Custom('x'), "xx"),
-            psi_p: curve("Ψ_P", Marker::Custom('+'), "++"),
-            psi_star: curve("Ψ*", Marker::Braille, "⠒⠒"),
-            psi_asy: curve("Ψ*asy eq.13", Marker::Custom('o'), "oo"),
-            psi_one: curve("Ψ = 1", Marker::Custom('·'), "··"),
-            tangent: curve("initial slope", Marker::Custom('·'), "··"),
-            ghost: curve("ghost", Marker::Custom('·'), "··"),
-            selected: Style::new()
-                .add_modifier(Modifier::REVERSED)
-                .add_modifier(Modifier::BOLD),
-            title: Style::new().add_modifier(Modifier::BOLD),
-            dim: Style::new(),
-            error: Style::new().add_modifier(Modifier::BOLD),
-            ok: Style::new(),
-        }
+        Theme::new(Glyphs::Braille, Palette::TrueColor, false)
     }
 
-    /// Plain when NO_COLOR is set to anything non-empty (no-color.org).
+    /// The same theme drawn with `glyphs`.
+    pub fn with_glyphs(self, glyphs: Glyphs) -> Theme {
+        Theme::new(glyphs, self.palette, self.color)
+    }
+
+    /// The same theme with colour on or off.
+    pub fn with_color(self, color: bool) -> Theme {
+        Theme::new(self.glyphs, self.palette, color)
+    }
+
+    /// The theme for this process's terminal: its locale, TERM, COLORTERM
+    /// and NO_COLOR ([`super::caps`]).
     pub fn from_env() -> Theme {
-        match std::env::var_os("NO_COLOR") {
-            Some(v) if !v.is_empty() => Theme::plain(),
-            _ => Theme::colored(),
-        }
+        super::caps::Caps::from_env().theme()
     }
 
     /// The regime word: bold, no colour, because the chart's colours name
@@ -140,5 +220,20 @@ impl Theme {
     /// regime too.
     pub fn regime(&self) -> Style {
         Style::new().add_modifier(Modifier::BOLD)
+    }
+}
+
+/// `c` twice, as a legend's sample.
+fn ascii_pair(c: char) -> &'static str {
+    match c {
+        '*' => "**",
+        '+' => "++",
+        '#' => "##",
+        'o' => "oo",
+        'x' => "xx",
+        '-' => "--",
+        '.' => "..",
+        '•' => "••",
+        _ => "??",
     }
 }

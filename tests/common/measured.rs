@@ -51,6 +51,7 @@ pub fn line_state() -> State {
         table: Arc::new(table),
         spectrum: terms.iter().map(|&(q, w)| (q, w * l)).collect(),
         sha256: "0".repeat(64),
+        summary: "line scan of 128 points".to_string(),
     };
     State::measured(source("line.txt", m)).unwrap()
 }

@@ -40,9 +40,15 @@ pub fn sh_quote(s: &str) -> String {
     format!("'{}'", s.replace('\'', r"'\''"))
 }
 
-/// The shell command that runs roughtui in `cwd` with `env` and `args`.
+/// The shell command that runs roughtui in `cwd` with `env` and `args`;
+/// in a UTF-8 locale (C.UTF-8) unless `env` names one, so that the
+/// explorer draws its default braille whatever the test's own locale.
 fn command(cwd: &Path, env: &[(&str, &str)], args: &[&str]) -> String {
     let mut cmd = format!("cd {} && env", sh_quote(cwd.to_str().unwrap()));
+    let locale = ["LC_ALL", "LC_CTYPE", "LANG"];
+    if !env.iter().any(|(k, _)| locale.contains(k)) {
+        cmd.push_str(" LC_ALL=C.UTF-8");
+    }
     for (k, v) in env {
         cmd.push_str(&format!(" {k}={}", sh_quote(v)));
     }

@@ -320,7 +320,7 @@ fn fill(spec: &SceneSpec, k: &Kernel, range: std::ops::Range<usize>, s: &mut Sce
         s.psi.push(psi);
         s.hardness_ratio.push(hr);
         if c.needs_slopes() {
-            let sl = slopes_sq(spec.model, inv, sq);
+            let sl = slopes_sq(spec.model, psi, inv, sq);
             if c.elastic {
                 s.elastic.push(sl.elastic);
             }

@@ -30,6 +30,31 @@ fn slopes_of_both_models_match_reference() {
     r.finish("slopes.csv");
 }
 
+/// Both models' slopes at the reference's exact double ψ, from 1e-308 to
+/// 1.8e308, within 2e-15 (the closed form's fast path included: its
+/// exponential, erfcx table and fits; see `slopes/closed.rs`).
+#[test]
+fn slopes_within_2e_15_of_reference() {
+    let t = Table::read("slopes.csv").unwrap();
+    let mut r = Report::default();
+    for row in &t.rows {
+        let psi = t.get(row, "psi").unwrap();
+        let input = format!("psi={psi:e}");
+        let (e, c) = (exact(psi), closed_form(psi));
+        for (name, got) in [
+            ("exact_elastic", e.elastic),
+            ("exact_plastic", e.plastic),
+            ("exact_total", e.total),
+            ("closed_elastic", c.elastic),
+            ("closed_plastic", c.plastic),
+            ("closed_total", c.total),
+        ] {
+            r.check(name, &input, got, t.get(row, name).unwrap(), tol::SLOPES);
+        }
+    }
+    r.finish("slopes.csv at 2e-15");
+}
+
 #[test]
 fn check_values_of_model_md() {
     let mut r = Report::default();

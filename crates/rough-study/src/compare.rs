@@ -67,6 +67,11 @@ pub fn closed_naive(psi: f64) -> [f64; 3] {
     guarded(psi, |psi| arr(forms::closed_naive(psi)))
 }
 
+/// [`crate::closed_previous::closed_previous`].
+pub fn closed_previous(psi: f64) -> [f64; 3] {
+    guarded(psi, |psi| arr(crate::closed_previous::closed_previous(psi)))
+}
+
 /// Slopes as A(ρ)/ρ at ρ = [`FINITE_RHO`] from the shipped exact areas.
 pub fn finite(psi: f64) -> [f64; 3] {
     guarded(psi, |psi| {
@@ -110,14 +115,20 @@ pub fn methods() -> Vec<Method> {
             f: closed_naive,
         },
         Method {
-            name: "closed (shipped)",
+            name: "closed, previous (double-double, libm erfc, 39-term series)",
             terms: "closed + series at small x".into(),
+            against: Against::Closed,
+            f: closed_previous,
+        },
+        Method {
+            name: "closed (shipped)",
+            terms: "1 exp, erfcx table, fits at small x".into(),
             against: Against::Closed,
             f: shipped_closed,
         },
         Method {
             name: "closed (shipped) model error vs exact",
-            terms: "closed + series at small x".into(),
+            terms: "1 exp, erfcx table, fits at small x".into(),
             against: Against::Exact,
             f: shipped_closed,
         },

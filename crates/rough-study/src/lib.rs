@@ -9,10 +9,13 @@
 //! - [`rel_err`]: the one rule by which anything is compared with them.
 //! - [`forms`]: the exact slopes' two series on their own and the paper's
 //!   closed form taken literally: alternatives to compare, not to use.
+//! - [`closed_previous`]: the closed form as the model computed it before its
+//!   fast path (double-double exponents, libm erfc, a 39-term series).
 //! - [`compare`]: every way of computing the initial slopes, with its error
 //!   over the reference grid (the rows of `roughtui bench`).
 //! - [`Report`]: collects a test's failures so one run shows all of them.
 
+pub mod closed_previous;
 pub mod compare;
 pub mod forms;
 mod report;
@@ -33,6 +36,18 @@ pub mod tol {
     pub const CONTRACT: f64 = 1e-12;
     /// Below this the contract allows 0 (or any value up to it).
     pub const TINY: f64 = 1e-300;
+    /// Where a smooth curve has its minimum, relative. Values alone place a
+    /// minimum only to ~√ε; the explorer takes the root of a five-point
+    /// derivative (step h = 1e-3 in ln x), which rounding ε_f in f moves by
+    /// ≈ 1.5 ε_f/(h f″/f), the stencil's own error by h⁴|f⁽⁵⁾/f″|/30.
+    /// The flattest minimum checked (fig4's, f″/f = 0.035 in ln ζ) gives
+    /// 4.7e-12 for ε_f = 1 ulp; the steepest stencil error (fig1's,
+    /// f⁽⁵⁾/f″ = 77) 2.6e-12.
+    pub const MINIMUM_PLACE: f64 = 1e-11;
+    /// What both models' slopes achieve at an exact double ψ, tighter than
+    /// the contract: the bound `roughtui bench` is measured against (the
+    /// closed form's fast path must not trade accuracy for its speed).
+    pub const SLOPES: f64 = 2e-15;
 }
 
 /// Relative error |got − want|/|want| of `got` against the reference value

@@ -30,6 +30,40 @@ pub enum Problem {
     Table(rough_model::TableError),
     /// Content that is none of the formats read.
     Unknown(String),
+    /// A height matrix or line with neither a size header nor a pixel size.
+    NoSize {
+        /// A line scan (needs `# Width:`) rather than a map.
+        line: bool,
+    },
+    /// A unit that is not one of the length units read.
+    UnknownUnit(String),
+    /// Fewer than 4 samples along an axis.
+    TooFew {
+        axis: &'static str,
+        got: usize,
+    },
+    /// Zero variance: all heights equal, or nothing left after removing
+    /// the plane (line).
+    Flat {
+        /// The heights were a tilted plane (line), not a constant.
+        plane: bool,
+    },
+    /// A line scan whose x is not uniformly spaced (or does not increase).
+    NonUniform {
+        x: f64,
+        expected: f64,
+        spacing: f64,
+    },
+    /// Two columns that could be a line scan or a PSD table.
+    Ambiguous,
+    /// Numbers written with decimal commas.
+    DecimalComma(String),
+    /// A file holding several channels or blocks where one is read.
+    Several(String),
+    /// A header whose value cannot be read (e.g. `# Width: wide`).
+    BadHeader(String),
+    /// A command-line option that does not apply to this file.
+    Option(String),
 }
 
 impl fmt::Display for Problem {
@@ -43,7 +77,7 @@ impl fmt::Display for Problem {
                 crate::MAX_BYTES >> 20
             ),
             Problem::NotText => write!(f, "not UTF-8 text"),
-            Problem::Empty => write!(f, "no data rows"),
+            Problem::Empty => write!(f, "no data rows (the file is empty or all comments)"),
             Problem::NotNumber(s) => write!(f, "'{s}' is not a number"),
             Problem::NotFinite(s) => write!(f, "{s} is not a finite number"),
             Problem::Ragged { got, want } => {
@@ -51,11 +85,62 @@ impl fmt::Display for Problem {
             }
             Problem::Table(e) => e.fmt(f),
             Problem::Unknown(s) => write!(f, "{s}"),
+            Problem::NoSize { line: true } => write!(
+                f,
+                "no size: add a header line '# Width: 10 µm' (the scan's length) \
+                 or give the sample spacing with --pixel-size"
+            ),
+            Problem::NoSize { line: false } => write!(
+                f,
+                "no size: add header lines '# Width: 10 µm' and '# Height: 10 µm' \
+                 or give the sample spacing with --pixel-size"
+            ),
+            Problem::UnknownUnit(u) => write!(
+                f,
+                "unknown unit '{u}': lengths are read in m, mm, µm (um), nm, pm or Å"
+            ),
+            Problem::TooFew { axis, got } => write!(
+                f,
+                "{got} point{} along {axis}: at least 4 are needed",
+                if *got == 1 { "" } else { "s" }
+            ),
+            Problem::Flat { plane: false } => {
+                write!(f, "the surface is flat: every height is the same")
+            }
+            Problem::Flat { plane: true } => write!(
+                f,
+                "the surface is flat: nothing is left after removing its tilt \
+                 (the heights lie on a plane)"
+            ),
+            Problem::NonUniform {
+                x,
+                expected,
+                spacing,
+            } => write!(
+                f,
+                "x is not uniformly spaced: x = {x} where the spacing {spacing} \
+                 from the first and last x puts {expected} (a line scan needs \
+                 uniform x, to 1% of the spacing beyond the rounding of the \
+                 printed digits)"
+            ),
+            Problem::Ambiguous => write!(
+                f,
+                "two columns that could be a line scan (x z) or a PSD table \
+                 (q C): add a header line '# x z' for a line scan or '# q C' \
+                 for a PSD table"
+            ),
+            Problem::DecimalComma(s) => write!(
+                f,
+                "'{s}' has a decimal comma: write numbers with a decimal point"
+            ),
+            Problem::Several(s) => write!(f, "{s}"),
+            Problem::BadHeader(s) => write!(f, "{s}"),
+            Problem::Option(s) => write!(f, "{s}"),
         }
     }
 }
 
-/// A refused surface file: `FILE:LINE: problem`.
+/// A refused surface file: `bad surface FILE, line N: problem`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SurfaceError {
     pub path: PathBuf,
@@ -75,3 +160,6 @@ impl fmt::Display for SurfaceError {
 }
 
 impl std::error::Error for SurfaceError {}
+
+/// A problem and the 1-based line it is about, if any.
+pub(crate) type Failure = (Option<usize>, Problem);

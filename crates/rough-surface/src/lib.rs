@@ -6,9 +6,16 @@
 //! contact.engineering), so that its numbers are the reference; MODEL.md,
 //! "Measured surfaces", states them.
 
+mod bins;
+mod ce;
+mod columns;
 mod error;
 mod fit;
+mod header;
+mod matrix;
 mod psd;
+mod spectrum;
+mod text;
 
 use std::io::Read;
 use std::path::Path;
@@ -71,6 +78,9 @@ pub struct Measured {
     pub spectrum: Vec<(f64, f64)>,
     /// SHA-256 of the file's bytes, lower-case hex.
     pub sha256: String,
+    /// One line saying what was read and how it was treated, e.g.
+    /// "map 256 × 128, 12 µm × 6 µm, plane removed, Hann window".
+    pub summary: String,
 }
 
 impl Measured {
@@ -115,8 +125,23 @@ pub fn sha256_hex(bytes: &[u8]) -> String {
 }
 
 /// Computes the surface in a file's bytes; an error carries the 1-based
-/// line it is about, if any.
+/// line it is about, if any. The format is detected from the content (see
+/// the README's "Reading surfaces"):
+///
+/// - a contact.engineering TXT download (a `# Columns:` header);
+/// - a height matrix: a size header (`# Width:`/`# Height:`), or one, or
+///   three or more numbers per row; one row or one column is a line scan;
+/// - two columns: a line scan `x z` or a PSD table `q C^iso`
+///   (`columns`' rules).
 pub fn parse(bytes: &[u8], opts: &Options) -> Result<Measured, (Option<usize>, Problem)> {
+    if let Some(p) = opts.pixel_size {
+        if !(p.is_finite() && p > 0.0) {
+            return Err((
+                None,
+                Problem::Option(format!("--pixel-size {p} m must be finite and > 0")),
+            ));
+        }
+    }
     let text = std::str::from_utf8(bytes).map_err(|e| {
         let line = bytes[..e.valid_up_to()]
             .iter()
@@ -125,12 +150,102 @@ pub fn parse(bytes: &[u8], opts: &Options) -> Result<Measured, (Option<usize>, P
             + 1;
         (Some(line), Problem::NotText)
     })?;
-    let _ = opts;
-    let (kind, table, spectrum) = psd::read(text)?;
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    // The hash runs beside the parse.
+    let (sha256, read) = std::thread::scope(|s| {
+        let hash = s.spawn(|| sha256_hex(bytes));
+        let read = read_text(text, opts);
+        (hash.join().expect("hash thread"), read)
+    });
+    let (kind, computed, summary) = read?;
     Ok(Measured {
         kind,
-        table: Arc::new(table),
-        spectrum,
-        sha256: sha256_hex(bytes),
+        table: Arc::new(computed.table),
+        spectrum: computed.spectrum,
+        sha256,
+        summary,
     })
+}
+
+fn read_text(
+    text: &str,
+    opts: &Options,
+) -> Result<(Kind, spectrum::Computed, String), (Option<usize>, Problem)> {
+    let head = text::head(text)?;
+    if ce::is_ce(&head.header) {
+        let (kind, c) = ce::read(text, opts)?;
+        let summary = describe(&kind, opts, "contact.engineering PSD");
+        return Ok((kind, c, summary));
+    }
+    let scan = text::scan(text, head)?;
+    let header = header::Header::read(&scan.header)?;
+    if let Some(&(line, t)) = scan
+        .later
+        .iter()
+        .find(|(l, t)| !header::Header::read(&[(*l, t)]).map_or(true, |h| h.is_empty()))
+    {
+        return Err((
+            Some(line),
+            Problem::Several(format!(
+                "a header line ('{t}') after the data: one channel per file, please"
+            )),
+        ));
+    }
+    if header.channels.len() > 1 {
+        return Err((
+            Some(header.channels[1]),
+            Problem::Several("several channels: one channel per file, please".to_string()),
+        ));
+    }
+    let (kind, c) = if header.has_size() || scan.cols != 2 {
+        matrix::read(scan, &header, opts)?
+    } else {
+        columns::read(text, scan, &header, opts)?
+    };
+    let summary = describe(&kind, opts, "PSD table");
+    Ok((kind, c, summary))
+}
+
+/// A length for people: "12 µm".
+fn length(m: f64) -> String {
+    let (scale, unit) = [
+        (1.0, "m"),
+        (1e-3, "mm"),
+        (1e-6, "µm"),
+        (1e-9, "nm"),
+        (1e-12, "pm"),
+    ]
+    .into_iter()
+    .find(|(s, _)| m >= *s * 0.9995)
+    .unwrap_or((1e-12, "pm"));
+    format!("{:.4} {unit}", m / scale)
+        .replace(".0000 ", " ")
+        .replace("000 ", " ")
+        .replace("00 ", " ")
+}
+
+fn describe(kind: &Kind, opts: &Options, psd: &str) -> String {
+    let treat = |what: &str| {
+        if opts.periodic {
+            "periodic, mean removed".to_string()
+        } else {
+            format!("{what} removed, Hann window")
+        }
+    };
+    match *kind {
+        Kind::Map { nx, ny, lx, ly } => format!(
+            "map {nx} × {ny}, {} × {}, {}",
+            length(lx),
+            length(ly),
+            treat("plane")
+        ),
+        Kind::Line { n, l } => format!("line scan of {n} points, {}, {}", length(l), treat("line")),
+        Kind::Psd { dim, points } => format!(
+            "{psd}, {points} points, {}",
+            match dim {
+                Dim::Areal => "isotropic C(q)",
+                Dim::Profile => "profile C1D(q)",
+            }
+        ),
+    }
 }

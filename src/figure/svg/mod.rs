@@ -1,7 +1,7 @@
 //! Any view as a self-contained SVG document, drawn with `plotters`' SVG
 //! backend: log axes with decade labels, units, a legend, the paper's
 //! colours (elastic black, plastic blue, total red, Persson green) and the
-//! caption under the chart.
+//! caption under the chart, with the claims located live under it.
 
 mod map;
 mod spectrum;
@@ -19,8 +19,15 @@ use crate::snapshot::State;
 /// Picture size in pixels (SVG user units).
 pub const SIZE: (u32, u32) = (900, 600);
 
-/// Height kept under the chart for the caption.
+/// Least height kept under the chart for the caption and the claims.
 const CAPTION_H: u32 = 70;
+
+/// Characters per caption line, and pixels per line.
+const CAPTION_W: usize = 110;
+const LINE_H: u32 = 18;
+
+/// The claims' colour: the dark green of "checked" text.
+const CLAIMS: RGBColor = RGBColor(0, 110, 0);
 
 /// The paper's colours.
 pub const ELASTIC: RGBColor = RGBColor(0, 0, 0);
@@ -37,7 +44,9 @@ pub fn render_svg(view: View, state: &State, opts: &FigureOptions) -> anyhow::Re
     {
         let root = SVGBackend::with_string(&mut buf, SIZE).into_drawing_area();
         root.fill(&WHITE).map_err(plot_err)?;
-        let (chart_area, caption_area) = root.split_vertically(SIZE.1 - CAPTION_H);
+        let lines = caption_lines(state);
+        let caption_h = CAPTION_H.max(2 * 8 + LINE_H * lines.len() as u32);
+        let (chart_area, caption_area) = root.split_vertically(SIZE.1 - caption_h);
         match view {
             View::Slopes => slopes(&chart_area, state, opts)?,
             View::Indices => indices(&chart_area, state, opts)?,
@@ -45,7 +54,7 @@ pub fn render_svg(view: View, state: &State, opts: &FigureOptions) -> anyhow::Re
             View::Load => load(&chart_area, state, opts)?,
             View::Spectrum => spectrum::draw(&chart_area, state)?,
         }
-        caption(&caption_area, state)?;
+        caption(&caption_area, &lines)?;
         root.present().map_err(plot_err)?;
     }
     Ok(crisp_rects(buf))
@@ -431,14 +440,42 @@ fn load(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::Result<()> 
     legend(&mut c)
 }
 
-/// The state's caption (or its name) wrapped under the chart.
-fn caption(area: &Area, state: &State) -> anyhow::Result<()> {
+/// The state's caption (or its name) wrapped for under the chart, then
+/// the claims (as on the explorer's caption row, in full), each line with
+/// its colour.
+fn caption_lines(state: &State) -> Vec<(String, RGBColor)> {
     let text = state.caption.as_deref().unwrap_or(state.name.as_str());
+    let claims = crate::figure::claims(state).into_iter().map(|c| c.text());
+    let mut lines: Vec<_> = wrap(text, CAPTION_W)
+        .into_iter()
+        .map(|l| (l, BLACK))
+        .collect();
+    // Claims are packed whole, never broken inside one.
+    let mut row = String::new();
+    for c in claims {
+        if !row.is_empty() && row.chars().count() + 3 + c.chars().count() > CAPTION_W {
+            lines.push((std::mem::take(&mut row), CLAIMS));
+        }
+        row = if row.is_empty() {
+            c
+        } else {
+            format!("{row} · {c}")
+        };
+    }
+    if !row.is_empty() {
+        lines.push((row, CLAIMS));
+    }
+    lines
+}
+
+/// `lines` under the chart.
+fn caption(area: &Area, lines: &[(String, RGBColor)]) -> anyhow::Result<()> {
     let mut y = 8;
-    for l in wrap(text, 110) {
-        area.draw(&Text::new(l, (20, y), ("sans-serif", 14).into_font()))
+    for (l, colour) in lines {
+        let font = ("sans-serif", 14).into_font().color(colour);
+        area.draw(&Text::new(l.as_str(), (20, y), font))
             .map_err(plot_err)?;
-        y += 18;
+        y += LINE_H as i32;
     }
     Ok(())
 }

@@ -2,6 +2,8 @@
 //! ticks and labels placed where ratatui's braille canvas puts the values,
 //! and the datasets drawn over them.
 
+use std::borrow::Cow;
+
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::Style;
@@ -17,24 +19,25 @@ use crate::tui::plots::to_plot;
 use crate::tui::theme::{CurveStyle, Theme};
 
 /// The cell column the canvas puts a transformed x in (same arithmetic as
-/// ratatui's braille grid, which rounds to the nearest dot).
-pub fn col_of(g: Rect, b: [f64; 2], x: f64) -> Option<u16> {
+/// ratatui's grid of `dots` points per cell, which rounds to the nearest
+/// point).
+pub fn col_of(g: Rect, dots: (f64, f64), b: [f64; 2], x: f64) -> Option<u16> {
     let f = (x - b[0]) / (b[1] - b[0]);
     if !(0.0..=1.0).contains(&f) {
         return None;
     }
-    let dots = f64::from(g.width) * 2.0 - 1.0;
-    Some(g.x + ((f * dots).round() as u16) / 2)
+    let n = f64::from(g.width) * dots.0 - 1.0;
+    Some(g.x + ((f * n).round() / dots.0) as u16)
 }
 
 /// The cell row the canvas puts a transformed y in.
-pub fn row_of(g: Rect, b: [f64; 2], y: f64) -> Option<u16> {
+pub fn row_of(g: Rect, dots: (f64, f64), b: [f64; 2], y: f64) -> Option<u16> {
     let f = (b[1] - y) / (b[1] - b[0]);
     if !(0.0..=1.0).contains(&f) {
         return None;
     }
-    let dots = f64::from(g.height) * 4.0 - 1.0;
-    Some(g.y + ((f * dots).round() as u16) / 4)
+    let n = f64::from(g.height) * dots.1 - 1.0;
+    Some(g.y + ((f * n).round() / dots.1) as u16)
 }
 
 /// Tick positions and labels along a parameter's axis: decades on log
@@ -54,9 +57,16 @@ fn x_ticks(axis: Axis, b: [f64; 2]) -> Vec<(f64, String)> {
 /// marker lies inside the sweep.
 pub fn title(app: &App, mut spans: Vec<Span<'static>>, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
+    let g = t.glyphs;
     let axis = app.state.sweep.axis();
+    for s in &mut spans {
+        if let Cow::Owned(text) = g.text(&s.content) {
+            s.content = Cow::Owned(text);
+        }
+    }
     if let Some(m) = app.marker() {
         let value = format!(" {} = {}", axis.symbol(), fmt_param(axis, m));
+        let value = g.text(&value).into_owned();
         // The marker's value whole or not at all, never cut inside a number.
         let used: usize = spans.iter().map(Span::width).sum();
         let len = 2 + Span::raw(t.marker_line.sample).width() + Span::raw(&value).width();
@@ -71,14 +81,18 @@ pub fn title(app: &App, mut spans: Vec<Span<'static>>, area: Rect, buf: &mut Buf
 
 /// Legend: one line under the title, each curve's sample in its own style;
 /// shorter samples and gaps when the full one does not fit.
-pub fn legend(curves: &[&CurveStyle], area: Rect, buf: &mut Buffer) {
+pub fn legend(t: &Theme, curves: &[&CurveStyle], area: Rect, buf: &mut Buffer) {
     let named: Vec<(&CurveStyle, String)> =
         curves.iter().map(|c| (*c, c.name.to_string())).collect();
-    legend_named(&named, area, buf);
+    legend_named(t, &named, area, buf);
 }
 
 /// [`legend`] with each curve's name given.
-pub fn legend_named(curves: &[(&CurveStyle, String)], area: Rect, buf: &mut Buffer) {
+pub fn legend_named(t: &Theme, curves: &[(&CurveStyle, String)], area: Rect, buf: &mut Buffer) {
+    let curves: Vec<(&CurveStyle, String)> = curves
+        .iter()
+        .map(|(c, name)| (*c, t.glyphs.text(name).into_owned()))
+        .collect();
     let full: usize = curves
         .iter()
         .map(|(c, name)| c.sample.chars().count() + name.chars().count() + 3)
@@ -146,23 +160,27 @@ pub fn axes(
     (area, g): (Rect, Rect),
     buf: &mut Buffer,
 ) {
+    let glyphs = t.glyphs;
+    let f = glyphs.frame();
+    let dots = glyphs.dots();
     let ax = g.x - 1;
     let ay = g.bottom();
     for row in g.y..g.bottom() {
-        buf[(ax, row)].set_symbol("│");
+        buf[(ax, row)].set_symbol(f.vertical);
     }
-    buf[(ax, ay)].set_symbol("└");
+    buf[(ax, ay)].set_symbol(f.corner);
     for col in g.x..g.right() {
-        buf[(col, ay)].set_symbol("─");
+        buf[(col, ay)].set_symbol(f.horizontal);
     }
     for (v, label) in &y.ticks {
-        if let Some(row) = row_of(g, y.bounds, *v) {
-            buf[(ax, row)].set_symbol("┤");
+        let label = glyphs.text(label);
+        if let Some(row) = row_of(g, dots, y.bounds, *v) {
+            buf[(ax, row)].set_symbol(f.y_tick);
             // "100 nm" loses its space rather than its unit.
             let label = if label.chars().count() > usize::from(Y_LABEL_W) {
                 label.replace(' ', "")
             } else {
-                label.clone()
+                label.into_owned()
             };
             let label = format!("{label:>w$}", w = Y_LABEL_W as usize);
             buf.set_stringn(area.x, row, label, Y_LABEL_W as usize, Style::new());
@@ -170,21 +188,23 @@ pub fn axes(
     }
     let mut free_from = area.x;
     for (v, label) in &x.ticks {
-        let Some(col) = col_of(g, x.bounds, *v) else {
+        let Some(col) = col_of(g, dots, x.bounds, *v) else {
             continue;
         };
-        buf[(col, ay)].set_symbol("┬");
+        let label = glyphs.text(label);
+        buf[(col, ay)].set_symbol(f.x_tick);
         let w = label.chars().count() as u16;
         let start = col.saturating_sub(w / 2).max(area.x);
         if start >= free_from && start + w <= area.right() {
-            buf.set_stringn(start, ay + 1, label, w as usize, Style::new());
+            buf.set_stringn(start, ay + 1, &label, w as usize, Style::new());
             free_from = start + w + 1;
         }
     }
+    let x_name = glyphs.text(x_name);
     let w = x_name.chars().count() as u16;
     let nx = area.right().saturating_sub(w + 1);
     if nx >= free_from {
-        buf.set_stringn(nx, ay + 1, x_name, usize::from(w), t.title);
+        buf.set_stringn(nx, ay + 1, &x_name, usize::from(w), t.title);
     }
 }
 

@@ -22,7 +22,7 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     chart::title(app, title, area, buf);
     // Eq. 13 drawn under Ψ* where they meet: the legend says so when they
     // meet everywhere (within a braille dot row).
-    let dot = (p.y_bounds[1] - p.y_bounds[0]) / (4.0 * f64::from(g.height));
+    let dot = (p.y_bounds[1] - p.y_bounds[0]) / (t.glyphs.dots().1 * f64::from(g.height));
     let under = !p.psi_star_asymptotic.is_empty()
         && p.psi_star_asymptotic.len() == p.psi_star.len()
         && (p.psi_star_asymptotic.iter().zip(&p.psi_star)).all(|(a, b)| (a.1 - b.1).abs() < dot);
@@ -40,7 +40,7 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     } else {
         vec![&t.psi_gw, &t.psi_p, &t.psi_star, &asy, &t.psi_one]
     };
-    chart::legend(&curves, area, buf);
+    chart::legend(t, &curves, area, buf);
     let (x, y) = (Scale::of_axis(axis, p.x_bounds), Scale::decades(p.y_bounds));
     chart::axes(t, (&x, &y), axis.symbol(), (area, g), buf);
 

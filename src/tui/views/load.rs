@@ -21,14 +21,20 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         ("H0", "Ψ_P")
     };
     let (psi, slope) = (fmt_num(app.readout.psi), fmt_num(p.slope));
+    let gl = t.glyphs;
     let mut title = format!("A/A0 vs p̄/{h} · {psi_name} {psi} · initial slope {slope}");
-    if Span::raw(&title).width() > usize::from(area.width) {
+    if Span::raw(gl.text(&title)).width() > usize::from(area.width) {
         // At 80 columns: the legend's "initial slope" is S_tot, named short.
         title = format!("A/A0 vs p̄/{h} · {psi_name} {psi} · S_tot {slope}");
     }
     let title = vec![Span::styled(title, t.title)];
     chart::title(app, title, area, buf);
-    chart::legend(&[&t.elastic, &t.plastic, &t.total, &t.tangent], area, buf);
+    chart::legend(
+        t,
+        &[&t.elastic, &t.plastic, &t.total, &t.tangent],
+        area,
+        buf,
+    );
     let bounds = [0.0, 1.0];
     let (x, y) = (Scale::linear(bounds, 5.0), Scale::linear(bounds, 5.0));
     chart::axes(t, (&x, &y), &format!("p̄/{h}"), (area, g), buf);

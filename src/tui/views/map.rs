@@ -1,8 +1,11 @@
 //! The regime map view: the plastic share S_pl/S_tot over the swept
 //! parameter (across) and a second one (up), two points per terminal cell
-//! (upper half block ▀ in the upper point's colour over the lower point's),
-//! the Ψ = 1 contour and the current point. Under NO_COLOR one character of
-//! a ramp per cell. Drawing only reads the map `update` computed.
+//! (upper half block ▀ in the upper point's colour over the lower point's;
+//! in ASCII a space in the colour of the two points' mean), the Ψ = 1
+//! contour and the current point, in as many colours as the terminal
+//! promises (24-bit, 256, or a 16-colour scale). Under NO_COLOR one
+//! character of a ramp per cell. Drawing only reads the map `update`
+//! computed.
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
@@ -11,19 +14,63 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::Widget;
 
 use super::chart::{self, Scale};
-use crate::figure::{share_char, share_colour, RegimeMap, ELASTIC_BELOW, PLASTIC_ABOVE, RAMP};
+use crate::figure::{
+    share_ansi16, share_ansi256, share_char, share_colour, RegimeMap, ELASTIC_BELOW, PLASTIC_ABOVE,
+    RAMP,
+};
 use crate::tui::app::App;
 use crate::tui::plots::to_plot;
+use crate::tui::theme::Palette;
 
-/// The Ψ = 1 contour's colour: white, outside the sequential scale.
-const CONTOUR: Color = Color::Rgb(255, 255, 255);
 /// The contour's and the current point's characters under NO_COLOR.
 const CONTOUR_CHAR: &str = "o";
 const POINT_CHAR: &str = "X";
 
-fn rgb(share: f64) -> Color {
-    let (r, g, b) = share_colour(share);
-    Color::Rgb(r, g, b)
+/// One of the 16 ANSI colours by its number (0–7 normal, 8–15 bright), as
+/// the named colour (SGR 30–37, 90–97) that 16-colour terminals know.
+pub fn ansi16(n: u8) -> Color {
+    const NAMED: [Color; 16] = [
+        Color::Black,
+        Color::Red,
+        Color::Green,
+        Color::Yellow,
+        Color::Blue,
+        Color::Magenta,
+        Color::Cyan,
+        Color::Gray,
+        Color::DarkGray,
+        Color::LightRed,
+        Color::LightGreen,
+        Color::LightYellow,
+        Color::LightBlue,
+        Color::LightMagenta,
+        Color::LightCyan,
+        Color::White,
+    ];
+    NAMED[usize::from(n & 15)]
+}
+
+/// The colour of plastic share `share` in `palette`.
+pub fn share_color(palette: Palette, share: f64) -> Color {
+    match palette {
+        Palette::TrueColor => {
+            let (r, g, b) = share_colour(share);
+            Color::Rgb(r, g, b)
+        }
+        Palette::Ansi256 => Color::Indexed(share_ansi256(share)),
+        Palette::Ansi16 => ansi16(share_ansi16(share)),
+    }
+}
+
+/// The Ψ = 1 contour's colour: white, outside the sequential scale; in 16
+/// colours bright magenta (the scale's blues, cyan, green and yellow, and
+/// the point's red, all differ from it in hue).
+pub fn contour_color(palette: Palette) -> Color {
+    match palette {
+        Palette::TrueColor => Color::Rgb(255, 255, 255),
+        Palette::Ansi256 => Color::Indexed(231),
+        Palette::Ansi16 => Color::LightMagenta,
+    }
 }
 
 /// The chart panel `area` with its graph `g`.
@@ -38,9 +85,15 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     };
     let spec = &map.spec;
     let (xa, ya) = (spec.x.axis(), spec.y.axis());
-    let psi = if spec.size_effect { "Ψ*" } else { "Ψ_P" };
+    let gl = t.glyphs;
+    let psi = gl.text(if spec.size_effect { "Ψ*" } else { "Ψ_P" });
     let mut title = vec![Span::styled(
-        format!("plastic share over {} × {}", xa.symbol(), ya.symbol()),
+        gl.text(&format!(
+            "plastic share over {} × {}",
+            xa.symbol(),
+            ya.symbol()
+        ))
+        .into_owned(),
         t.title,
     )];
     let hint = "  (key y: next y axis)";
@@ -49,7 +102,7 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         title.push(Span::styled(hint, t.dim));
     }
     Line::from(title).render(Rect { height: 1, ..area }, buf);
-    legend(app, psi, Rect::new(area.x, area.y + 1, area.width, 1), buf);
+    legend(app, &psi, Rect::new(area.x, area.y + 1, area.width, 1), buf);
 
     let bounds = |s: &rough_model::Sweep| {
         let log = s.axis().is_log();
@@ -67,18 +120,36 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
 /// point; in full words where the panel is wide enough.
 fn legend(app: &App, psi: &str, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
+    let gl = t.glyphs;
     let (el, pl) = (ELASTIC_BELOW * 100.0, PLASTIC_ABOVE * 100.0);
+    // In ASCII the swatches are coloured spaces: background, not foreground.
+    let paint = |c: Color| {
+        if gl.ascii_only() {
+            Style::new().bg(c)
+        } else {
+            Style::new().fg(c)
+        }
+    };
     let bar: Vec<Span> = if t.color {
         (0..10)
-            .map(|i| Span::styled("█", Style::new().fg(rgb(f64::from(i) / 9.0))))
+            .map(|i| {
+                let c = share_color(t.palette, f64::from(i) / 9.0);
+                Span::styled(gl.map_swatch(), paint(c))
+            })
             .collect()
     } else {
         vec![Span::raw(format!("'{}'", RAMP.iter().collect::<String>()))]
     };
     let (contour, point) = if t.color {
+        let c = contour_color(t.palette);
+        let style = if gl.ascii_only() {
+            Style::new().bg(c)
+        } else {
+            Style::new().fg(c).bg(Color::Black)
+        };
         (
-            Span::styled("▀", Style::new().fg(CONTOUR).bg(Color::Black)),
-            Span::styled("◆", point_style()),
+            Span::styled(gl.map_cell(), style),
+            Span::styled(gl.map_point(), point_style()),
         )
     } else {
         (Span::raw(CONTOUR_CHAR), Span::raw(POINT_CHAR))
@@ -128,17 +199,26 @@ fn cells(app: &App, map: &RegimeMap, g: Rect, buf: &mut Buffer) {
     if cols != usize::from(g.width) || rows != 2 * usize::from(g.height) {
         return;
     }
-    let color = app.theme.color;
+    let t = &app.theme;
+    let (color, palette, gl) = (t.color, t.palette, t.glyphs);
+    let rgb = |share: f64| share_color(palette, share);
+    let line = contour_color(palette);
     for r in 0..rows / 2 {
         let (up, low) = (rows - 1 - 2 * r, rows - 2 - 2 * r);
         for c in 0..cols {
             let cell = &mut buf[(g.x + c as u16, g.y + r as u16)];
             let (su, sl) = (map.share_at(c, up), map.share_at(c, low));
             let (cu, cl) = (contour(map, c, up), contour(map, c, low));
-            if color {
-                let fg = if cu { CONTOUR } else { rgb(su) };
-                let bg = if cl { CONTOUR } else { rgb(sl) };
-                cell.set_symbol("▀").set_style(Style::new().fg(fg).bg(bg));
+            if color && gl.ascii_only() {
+                // One point per cell: the mean of the two, or the contour.
+                let bg = if cu || cl { line } else { rgb(0.5 * (su + sl)) };
+                cell.set_symbol(gl.map_cell())
+                    .set_style(Style::new().bg(bg));
+            } else if color {
+                let fg = if cu { line } else { rgb(su) };
+                let bg = if cl { line } else { rgb(sl) };
+                cell.set_symbol(gl.map_cell())
+                    .set_style(Style::new().fg(fg).bg(bg));
             } else if cu || cl {
                 cell.set_symbol(CONTOUR_CHAR);
             } else {
@@ -157,7 +237,8 @@ fn cells(app: &App, map: &RegimeMap, g: Rect, buf: &mut Buffer) {
     let cell = &mut buf[(g.x + c as u16, g.y + r as u16)];
     if color {
         let bg = rgb(map.share_at(c, row));
-        cell.set_symbol("◆").set_style(point_style().bg(bg));
+        cell.set_symbol(gl.map_point())
+            .set_style(point_style().bg(bg));
     } else {
         cell.set_symbol(POINT_CHAR);
     }

@@ -11,6 +11,8 @@ mod side;
 mod slopes;
 mod spectrum;
 
+pub use map::{ansi16, contour_color, share_color};
+
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Alignment, Rect};
 use ratatui::text::{Line, Span};
@@ -18,15 +20,16 @@ use ratatui::widgets::{Paragraph, Widget, Wrap};
 
 use super::app::{App, Mode};
 use super::fmt::{fmt_short, wrap};
+use super::glyphs::Glyphs;
 use super::keys;
 use super::layout::{Regions, MIN_SIZE};
 use super::{help, status};
-use crate::figure::View;
+use crate::figure::{Claim, View};
 
 impl Widget for &App {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let Some(r) = Regions::of(area) else {
-            render_too_small(area, buf);
+            render_too_small(self, area, buf);
             return;
         };
         render_header(self, r.header, buf);
@@ -49,7 +52,7 @@ impl Widget for &App {
     }
 }
 
-fn render_too_small(area: Rect, buf: &mut Buffer) {
+fn render_too_small(app: &App, area: Rect, buf: &mut Buffer) {
     if area.width == 0 || area.height == 0 {
         return;
     }
@@ -57,6 +60,7 @@ fn render_too_small(area: Rect, buf: &mut Buffer) {
         "enlarge the terminal to {}×{} (now {}×{}) · q quits",
         MIN_SIZE.0, MIN_SIZE.1, area.width, area.height
     );
+    let text = app.theme.glyphs.text(&text).into_owned();
     let y = area.y + area.height.saturating_sub(2) / 2;
     let r = Rect::new(area.x, y, area.width, area.height - (y - area.y));
     Paragraph::new(text)
@@ -68,12 +72,16 @@ fn render_too_small(area: Rect, buf: &mut Buffer) {
 fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
     let s = &app.state;
     let t = &app.theme;
+    let g = t.glyphs;
     let axis = s.sweep.axis();
-    // A snapshot's name is untrusted text: no control characters reach the terminal.
+    // A snapshot's name is untrusted text: no control characters reach the
+    // terminal, and in ASCII names nothing else outside ASCII.
     let clean = |text: &str| -> String {
-        text.chars()
+        let text: String = text
+            .chars()
             .map(|c| if c.is_control() { '�' } else { c })
-            .collect()
+            .collect();
+        g.text(&text).into_owned()
     };
     let mut name = clean(&s.name);
     // Where the name and file do not both fit, the file alone.
@@ -91,7 +99,7 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
     }
     let star = if app.modified { "*" } else { "" };
     let scene = |moments: &str| {
-        format!(
+        let text = format!(
             "  {} {}…{} · {} · {}{moments} · size effect {}",
             axis.symbol(),
             fmt_short(axis, s.sweep.from()),
@@ -103,7 +111,8 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
                 s.moments.label()
             },
             if s.size_effect { "on" } else { "off" },
-        )
+        );
+        g.text(&text).into_owned()
     };
     // At 80 columns: first the word "moments" goes, then the end of a long
     // name, rather than the end of the scene (the size effect's state).
@@ -121,7 +130,7 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
     }
     if width(&name) > room {
         let keep = room.saturating_sub(1);
-        name = name.chars().take(keep).chain(['…']).collect();
+        name = name.chars().take(keep).chain([g.cut()]).collect();
     }
     let name = format!("[{name}{star}]");
     let line = Line::from(vec![
@@ -136,31 +145,106 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
 /// where the figure's claims hold at the current parameters.
 fn render_caption(app: &App, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
+    let g = t.glyphs;
     let rows = usize::from(area.height.saturating_sub(1));
-    let text = app.state.caption.as_deref().unwrap_or("");
-    let mut lines: Vec<Line> = wrap(text, usize::from(area.width), rows)
+    let text = g.text(app.state.caption.as_deref().unwrap_or(""));
+    let mut lines: Vec<Line> = wrap(&text, usize::from(area.width), rows, g.cut())
         .into_iter()
         .map(|l| Line::styled(l, t.dim))
         .collect();
     lines.resize(rows, Line::raw(""));
-    // Whole claims only: one that does not fit is left out, never cut
-    // inside its number.
-    let mut claims = String::new();
-    for c in &app.claims {
-        let next = if claims.is_empty() {
-            c.text()
-        } else {
-            format!("{claims} · {}", c.text())
-        };
-        if Span::raw(&next).width() <= usize::from(area.width) {
-            claims = next;
-        }
-    }
+    let claims = claims_line(&app.claims, usize::from(area.width), g);
     lines.push(Line::styled(claims, t.ok));
     Paragraph::new(lines).render(area, buf);
+}
+
+/// The claims joined by " · " in at most `width` columns. Whole claims
+/// only: one that does not fit is left out, never cut inside its number.
+/// Of three ways to write them — full sentences; each in full where it
+/// fits, else short; all short ("Ψ_P = 1 at E/H0 = 191.2" for "Ψ_P falls
+/// below 1 at H0/E = 0.00523 (E/H0 = 191.2)") — the first that shows the
+/// most claims.
+pub fn claims_line(claims: &[Claim], width: usize, g: Glyphs) -> String {
+    let fits = |s: &str| Span::raw(s).width() <= width;
+    let dot = g.text(" · ");
+    let fit = |forms: &dyn Fn(&Claim) -> Vec<String>| {
+        let (mut line, mut shown) = (String::new(), 0);
+        for c in claims {
+            let joined = |text: &String| {
+                let text = g.text(text);
+                if line.is_empty() {
+                    text.into_owned()
+                } else {
+                    format!("{line}{dot}{text}")
+                }
+            };
+            if let Some(next) = forms(c).iter().map(joined).find(|l| fits(l)) {
+                line = next;
+                shown += 1;
+            }
+        }
+        (shown, line)
+    };
+    let full = fit(&|c| vec![c.text()]);
+    let either = fit(&|c| vec![c.text(), c.short_text()]);
+    let short = fit(&|c| vec![c.short_text()]);
+    // max_by_key keeps the last of equals: list the preferred last.
+    [short, either, full]
+        .into_iter()
+        .enumerate()
+        .max_by_key(|(k, (shown, _))| (*shown, *k))
+        .map(|(_, (_, line))| line)
+        .unwrap_or_default()
 }
 
 fn render_footer(app: &App, area: Rect, buf: &mut Buffer) {
     let text = keys::footer(app, usize::from(area.width));
     Line::styled(text, app.theme.dim).render(area, buf);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::claims_line;
+    use crate::figure::{claims, Claim};
+    use crate::tui::glyphs::Glyphs;
+
+    fn preset(name: &str) -> Vec<Claim> {
+        claims(&crate::presets::load(name).unwrap())
+    }
+
+    #[test]
+    fn claims_are_whole_and_as_many_as_fit() {
+        let fig4 = preset("fig4");
+        // All in full when they fit.
+        let all = claims_line(&fig4, 200, Glyphs::Braille);
+        assert_eq!(all.matches(" · ").count(), 2, "{all}");
+        // Full sentences keep the place when short ones show no more.
+        assert_eq!(
+            claims_line(&fig4, 80, Glyphs::Braille),
+            "plastic share falls below ½ at ζ = 1.698e4 · Ψ* falls below 1 at ζ = 5324"
+        );
+        // Short forms when they show more; whole claims only, at any width.
+        let fig1 = preset("fig1");
+        assert_eq!(
+            claims_line(&fig1, 60, Glyphs::Braille),
+            "plastic share ½ at E/H0 = 120.2 · Ψ_P = 1 at E/H0 = 191.2"
+        );
+        for w in 0..200 {
+            let line = claims_line(&fig1, w, Glyphs::Braille);
+            assert!(line.chars().count() <= w, "{w}: {line}");
+            for part in line.split(" · ").filter(|p| !p.is_empty()) {
+                assert!(
+                    fig1.iter()
+                        .any(|c| c.text() == part || c.short_text() == part),
+                    "{w}: {part}"
+                );
+            }
+        }
+        assert_eq!(claims_line(&[], 80, Glyphs::Braille), "");
+        // In ASCII the names are spelled out, and still whole.
+        assert_eq!(
+            claims_line(&fig1, 80, Glyphs::Ascii),
+            "plastic share 1/2 at E/H0 = 120.2 | Psi_P = 1 at E/H0 = 191.2"
+        );
+    }
 }

@@ -9,17 +9,19 @@ use ratatui::layout::Rect;
 use super::chart::{col_of, row_of};
 
 /// The cells (column, row) the line through `points` passes through, with
-/// the canvas's own arithmetic; segments are sampled at every braille dot.
+/// the canvas's own arithmetic on a grid of `dots` points per cell;
+/// segments are sampled at every point.
 pub fn cells(
     points: &[(f64, f64)],
     (xb, yb): ([f64; 2], [f64; 2]),
     g: Rect,
+    dots: (f64, f64),
 ) -> HashSet<(u16, u16)> {
     let mut out = HashSet::new();
-    let dots_x = f64::from(g.width) * 2.0 / (xb[1] - xb[0]);
-    let dots_y = f64::from(g.height) * 4.0 / (yb[1] - yb[0]);
+    let dots_x = f64::from(g.width) * dots.0 / (xb[1] - xb[0]);
+    let dots_y = f64::from(g.height) * dots.1 / (yb[1] - yb[0]);
     let mut put = |x: f64, y: f64| {
-        if let (Some(c), Some(r)) = (col_of(g, xb, x), row_of(g, yb, y)) {
+        if let (Some(c), Some(r)) = (col_of(g, dots, xb, x), row_of(g, dots, yb, y)) {
             out.insert((c, r));
         }
     };
@@ -76,7 +78,7 @@ mod tests {
     fn a_curve_under_another_is_found() {
         let g = Rect::new(0, 0, 20, 10);
         let b = ([0.0, 1.0], [0.0, 1.0]);
-        let line = |y0: f64, y1: f64| cells(&[(0.0, y0), (1.0, y1)], b, g);
+        let line = |y0: f64, y1: f64| cells(&[(0.0, y0), (1.0, y1)], b, g, (2.0, 4.0));
         let a = line(0.0, 1.0);
         let same = line(0.0, 1.0);
         let other = line(1.0, 0.0);

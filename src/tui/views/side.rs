@@ -11,10 +11,12 @@ use rough_model::Axis;
 use crate::figure::short_number;
 use crate::tui::app::App;
 use crate::tui::fmt::{fmt_len, fmt_num, fmt_param, fmt_rel, fmt_share, fmt_short};
+use crate::tui::glyphs::SliderBar;
 use crate::tui::theme::CurveStyle;
 
 pub fn render_sliders(app: &App, area: Rect, rows: u16, buf: &mut Buffer) {
     let t = &app.theme;
+    let g = t.glyphs;
     Line::styled("Parameters", t.title).render(Rect { height: 1, ..area }, buf);
     let swept = app.state.sweep.axis();
     let roughness = app.state.roughness();
@@ -31,20 +33,20 @@ pub fn render_sliders(app: &App, area: Rect, rows: u16, buf: &mut Buffer) {
         let (lo, hi) = app.range(axis);
         let v = app.state.params.get(axis);
         let text = format!(
-            "{}{:<5}{} {:>9}  {}…{}",
-            if selected { "▶ " } else { "  " },
-            axis.symbol(),
-            if axis == swept { "↔" } else { " " },
-            fmt_param(axis, v),
-            fmt_short(axis, lo),
-            fmt_short(axis, hi),
+            "{}{:<5}{} {:>9}  {}",
+            if selected { g.selected() } else { "  " },
+            g.text(axis.symbol()),
+            if axis == swept { g.swept() } else { ' ' },
+            g.text(&fmt_param(axis, v)),
+            g.text(&format!("{}…{}", fmt_short(axis, lo), fmt_short(axis, hi))),
         );
         let style = if selected { t.selected } else { Style::new() };
         let row = Rect::new(area.x, y, area.width, 1);
         buf.set_style(row, style);
         Line::styled(format!("{text:<w$}", w = area.width as usize), style).render(row, buf);
         if rows > 1 && y + 1 < area.bottom() {
-            let bar = slider_bar(axis, v, (lo, hi), area.width.saturating_sub(4) as usize);
+            let width = area.width.saturating_sub(4) as usize;
+            let bar = slider_bar(g.slider_bar(), axis, v, (lo, hi), width);
             let bar_style = if selected { t.title } else { t.dim };
             Line::styled(format!("   {bar}"), bar_style)
                 .render(Rect::new(area.x, y + 1, area.width, 1), buf);
@@ -65,10 +67,12 @@ fn render_measured(app: &App, axis: Axis, area: Rect, buf: &mut Buffer) {
         Axis::Hurst => match r.fit {
             Some(f) => (
                 format!(
-                    "  {:<5}  {:>9}  q {}…{}",
+                    "  {:<5}  {:>9}  q {}{}{}",
                     "H fit",
                     fmt_num(f.fit.hurst),
                     q(f.fit.q_lo),
+                    // The band whole at 80 columns in every glyph set.
+                    if t.glyphs.ascii_text() { "-" } else { "…" },
                     q(f.fit.q_hi)
                 ),
                 format!(
@@ -92,15 +96,17 @@ fn render_measured(app: &App, axis: Axis, area: Rect, buf: &mut Buffer) {
             "   measured, not a parameter".into(),
         ),
     };
+    let (first, second) = (t.glyphs.text(&first), t.glyphs.text(&second));
     let w = usize::from(area.width);
     Line::styled(format!("{first:<w$}"), t.dim).render(Rect { height: 1, ..area }, buf);
     if area.height > 1 {
-        Line::styled(second, t.dim).render(Rect::new(area.x, area.y + 1, area.width, 1), buf);
+        Line::styled(second.into_owned(), t.dim)
+            .render(Rect::new(area.x, area.y + 1, area.width, 1), buf);
     }
 }
 
 /// "├───●────┤", the knob at the value's place in the range.
-fn slider_bar(axis: Axis, v: f64, (lo, hi): (f64, f64), width: usize) -> String {
+fn slider_bar(g: SliderBar, axis: Axis, v: f64, (lo, hi): (f64, f64), width: usize) -> String {
     if width < 3 {
         return String::new();
     }
@@ -110,32 +116,47 @@ fn slider_bar(axis: Axis, v: f64, (lo, hi): (f64, f64), width: usize) -> String 
     } else {
         (v - lo) / (hi - lo)
     };
-    let mut cells = vec!['─'; inner];
+    let mut cells = vec![g.line; inner];
     if f.is_nan() || f < 0.0 {
-        cells[0] = '◂';
+        cells[0] = g.below;
     } else if f > 1.0 {
-        cells[inner - 1] = '▸';
+        cells[inner - 1] = g.above;
     } else {
         let k = ((f * (inner - 1) as f64).round() as usize).min(inner - 1);
-        cells[k] = '●';
+        cells[k] = g.knob;
     }
     let mut s = String::with_capacity(width * 3);
-    s.push('├');
+    s.push(g.left);
     s.extend(cells);
-    s.push('┤');
+    s.push(g.right);
     s
 }
 
-fn pair(l1: &str, v1: String, l2: &str, v2: String) -> String {
-    format!("{l1:<6}{v1:<10}{l2:<7}{v2}")
+/// Two labelled values on a line, in columns `w` wide (label, value,
+/// label).
+fn pair(w: [usize; 3], l1: &str, v1: String, l2: &str, v2: String) -> String {
+    let [a, b, c] = w;
+    format!("{l1:<a$}{v1:<b$}{l2:<c$}{v2}")
 }
 
 pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
+    let g = t.glyphs;
     let r = &app.readout;
     let ix = &r.surface.indices;
     let sp = &r.surface.spectrum;
     let s = &app.state;
+    // Labels and values as the glyph set writes them, before they are
+    // padded into columns (wider columns for the ASCII names).
+    let tx = |text: &str| g.text(text).into_owned();
+    let num = |v: f64| tx(&fmt_num(v));
+    let len = |m: f64| tx(&fmt_len(m));
+    let w = if g.ascii_text() {
+        [8, 10, 8]
+    } else {
+        [6, 10, 7]
+    };
+    let pair = |l1: &str, v1: String, l2: &str, v2: String| pair(w, &tx(l1), v1, &tx(l2), v2);
     let asym = match (ix.psi_star_asymptotic, ix.asymptotic_deviation()) {
         (Some(a), Some(d)) => format!("{} ({:+.1}% vs Ψ*)", fmt_num(a), d * 100.0),
         (Some(a), None) => fmt_num(a),
@@ -148,7 +169,7 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
     let curve = |c: &CurveStyle, label: &str, v: f64| {
         vec![
             Span::styled(format!("{label:<6}"), c.style),
-            Span::raw(format!("{:<10}", fmt_num(v))),
+            Span::raw(format!("{:<10}", num(v))),
         ]
     };
     let mut slopes1 = curve(&t.elastic, "S_el", sl.elastic);
@@ -157,34 +178,31 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
     slopes2.extend(curve(&t.persson, "S_P", r.persson));
     let lines = vec![
         Line::styled("Readout", t.title),
-        Line::raw(pair("Ψ_GW", fmt_num(ix.psi_gw), "Ψ_P", fmt_num(ix.psi_p))),
+        Line::raw(pair("Ψ_GW", num(ix.psi_gw), "Ψ_P", num(ix.psi_p))),
         Line::raw(pair(
             "Ψ*",
-            fmt_num(ix.psi_star),
+            num(ix.psi_star),
             "H_y/H0",
-            fmt_num(ix.hardness_ratio),
+            num(ix.hardness_ratio),
         )),
-        Line::raw(format!("{:<6}{asym}", "Ψ*asy")),
-        Line::raw(pair("R_s", fmt_len(sp.r_s), "λ1", fmt_len(sp.lambda1))),
-        Line::raw(pair(
-            "h_rms",
-            fmt_len(sp.h_rms_actual),
-            "h′",
-            fmt_num(sp.rms_slope),
-        )),
+        Line::raw(format!("{:<w$}{}", tx("Ψ*asy"), tx(&asym), w = w[0])),
+        Line::raw(pair("R_s", len(sp.r_s), "λ1", len(sp.lambda1))),
+        Line::raw(pair("h_rms", len(sp.h_rms_actual), "h′", num(sp.rms_slope))),
         Line::raw(pair(
             "ε",
-            fmt_num(2.0 * sp.rms_slope),
+            num(2.0 * sp.rms_slope),
             "d_rep",
-            fmt_len(4.0 * sp.rms_slope / sp.rms_curvature),
+            len(4.0 * sp.rms_slope / sp.rms_curvature),
         )),
         Line::styled(
-            format!(
-                "marker: {} = {} ({})",
+            tx(&format!(
+                // The ASCII names are longer: no "=" to fit 34 columns.
+                "marker: {} {}{} ({})",
                 if s.size_effect { "Ψ*" } else { "Ψ_P" },
+                if g.ascii_text() { "" } else { "= " },
                 fmt_num(r.psi),
                 s.model.label()
-            ),
+            )),
             t.title,
         ),
         Line::from(slopes1),
@@ -194,12 +212,12 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
             Span::styled(regime.label(), t.regime()),
         ]),
         Line::raw(format!("{} at the marker:", s.model.other().label())),
-        Line::raw(format!(
+        Line::raw(tx(&format!(
             " el {}  pl {}  tot {}",
             fmt_rel(o.elastic, sl.elastic),
             fmt_rel(o.plastic, sl.plastic),
             fmt_rel(o.total, sl.total)
-        )),
+        ))),
     ];
     Paragraph::new(lines).render(area, buf);
 }

@@ -38,7 +38,7 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     ];
     let cells: Vec<_> = curves
         .iter()
-        .map(|(_, data)| overlap::cells(data, bounds, g))
+        .map(|(_, data)| overlap::cells(data, bounds, g, t.glyphs.dots()))
         .collect();
     let under = overlap::hidden_under(&cells);
     // A hidden curve joins the entry of the curve on top of it.
@@ -99,14 +99,14 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         let fits = len + label.chars().count() + 3 <= usize::from(area.width);
         names.push((&t.ghost, if fits { label } else { "ghost".into() }));
     }
-    chart::legend_named(&names, area, buf);
+    chart::legend_named(t, &names, area, buf);
     let (x, y) = (Scale::of_axis(axis, p.x_bounds), Scale::decades(p.y_bounds));
     chart::axes(t, (&x, &y), axis.symbol(), (area, g), buf);
     // Where the regime changes along the sweep, on the x axis line; a mark
     // whose cell is taken by another sits in the nearest free one beside it.
     let mut taken: Vec<u16> = Vec::new();
     for (v, mark) in &p.regime_marks {
-        let Some(col) = chart::col_of(g, p.x_bounds, *v) else {
+        let Some(col) = chart::col_of(g, t.glyphs.dots(), p.x_bounds, *v) else {
             continue;
         };
         let free = [0i32, 1, -1, 2, -2]
@@ -118,7 +118,7 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         if let Some(c) = free {
             taken.push(c);
             buf[(c, g.bottom())]
-                .set_symbol(mark.symbol())
+                .set_symbol(t.glyphs.mark(mark.mark()))
                 .set_style(t.title);
         }
     }

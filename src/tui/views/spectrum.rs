@@ -21,10 +21,12 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     }
     let p = &app.spectrum;
     let zeta = app.state.params.zeta();
+    let glyphs = t.glyphs;
     let mut title = format!("{} vs q", p.label);
     if let Some(f) = app.readout.fit {
         title.push_str(&format!(" · fit H {:.2}", f.fit.hurst));
     }
+    let mut title = glyphs.text(&title).into_owned();
     // The cutoff whole, or left out, never cut inside its number.
     let q1 = format!(
         "  {} q1 = {}/m (ζ {})",
@@ -32,7 +34,8 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         fmt_num(10f64.powf(p.q1)),
         fmt_num(zeta)
     );
-    if Span::raw(&title).width() + Span::raw(&q1).width() <= usize::from(area.width) {
+    let q1 = glyphs.text(&q1);
+    if Span::raw(&title).width() + Span::raw(q1.as_ref()).width() <= usize::from(area.width) {
         title.push_str(&q1);
     }
     // Not chart::title: the marker here is q1, named in the title itself.
@@ -42,14 +45,14 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         ..t.elastic
     };
     let fit = CurveStyle {
-        name: "power-law fit over q0…q1",
+        name: "fit over q0…q1",
         ..t.psi_asy
     };
     let cut = CurveStyle {
         name: "q1 = ζ q0",
         ..t.marker_line
     };
-    chart::legend(&[&data, &fit, &cut], area, buf);
+    chart::legend(t, &[&data, &fit, &cut], area, buf);
     let rows = f64::from(g.height.max(1));
     let x = Scale::decades(p.x_bounds);
     let y = thinned(p.y_bounds, rows);

@@ -10,15 +10,17 @@
 //!   the plastic regime is the positive Fourier sum 4Σ_{k odd} e^(−π²k²ψ²/2),
 //!   never a difference.
 //! - [`Model::ClosedForm`]: the three-Gaussian form of Xu, Li and Mulvihill
-//!   that the paper uses. Its elastic slope cancels like x⁵ for small x; there
-//!   it is a Taylor series (39 exact coefficients) up to x = 1, beyond which
-//!   the difference loses at most a factor 10.
+//!   that the paper uses, from one exponential, one erfcx table and
+//!   polynomial fits where its elastic slope cancels (it falls like x⁵); the
+//!   choices and their error budget are argued in `closed.rs`.
 //!
 //! ψ enters as a double-double ([`Dd`]): exponents reach ~1400 where slopes
 //! approach 1e-300, and each ulp of ψ there costs ~1400 ulp of the slope.
+//! Both models carry it only into their exponentials.
 //!
 //! Accuracy (against the mpmath reference `crates/rough-study/data/slopes.csv`):
-//! within 1e-12 relative for every ψ ≥ 0; results below 1e-300 may be 0.
+//! within 1e-12 relative for every ψ ≥ 0 (the contract; measured: the exact
+//! model ~4e-16, the closed form ~1e-15); results below 1e-300 may be 0.
 //! ψ = 0 gives elastic = total = +∞, plastic = 0; ψ = ∞ gives elastic = 0,
 //! plastic = total = 1. Never NaN. The series forms on their own, for
 //! comparison, are in `rough_study::forms`.
@@ -26,6 +28,9 @@
 use std::ops::Mul;
 
 use crate::dd::{Dd, PI2_HALF};
+
+mod closed;
+mod closed_fits;
 
 /// √(2/π), the prefactor of the elastic slope √(2/π)/ψ.
 pub const SQRT_2_OVER_PI: f64 = 0.7978845608028654;
@@ -141,9 +146,9 @@ pub fn slopes(model: Model, psi: impl Into<Dd>) -> Slopes {
     }
 }
 
-/// [`slopes`] from x = 1/ψ and ψ² as for [`exact_sq`].
+/// [`slopes`] from ψ (f64), x = 1/ψ and ψ² as for [`exact_sq`].
 #[inline(always)]
-pub(crate) fn slopes_sq(model: Model, x: f64, s: Dd) -> Slopes {
+pub(crate) fn slopes_sq(model: Model, psi: f64, x: f64, s: Dd) -> Slopes {
     if s.hi == 0.0 && x == f64::INFINITY {
         return Slopes::ZERO_PSI;
     }
@@ -152,7 +157,7 @@ pub(crate) fn slopes_sq(model: Model, x: f64, s: Dd) -> Slopes {
     }
     match model {
         Model::Exact => exact_sq(x, s),
-        Model::ClosedForm => closed_form_sq(x, s),
+        Model::ClosedForm => closed::closed_parts(psi, x, s.recip()),
     }
 }
 
@@ -186,7 +191,25 @@ pub fn exact(psi: impl Into<Dd>) -> Slopes {
     if psi.hi == f64::INFINITY {
         return Slopes::INFINITE_PSI;
     }
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("fma") {
+        // SAFETY: the CPU has just been checked to support FMA.
+        return unsafe { exact_fma(psi) };
+    }
+    exact_finite(psi)
+}
+
+#[inline(always)]
+fn exact_finite(psi: Dd) -> Slopes {
     exact_sq(psi.recip().hi, psi.mul(psi))
+}
+
+/// [`exact_finite`] compiled with hardware FMA, which its double-double
+/// products use (a library call otherwise; the same bits either way).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "fma")]
+fn exact_fma(psi: Dd) -> Slopes {
+    exact_finite(psi)
 }
 
 /// [`exact`] from x = 1/ψ (f64: only a prefactor) and ψ² (double-double:
@@ -218,56 +241,7 @@ pub(crate) fn exact_sq(x: f64, s: Dd) -> Slopes {
     }
 }
 
-/// Below this x the closed form's elastic slope is taken from its series.
-const CLOSED_SLOPE_SERIES_X: f64 = 1.0;
-
-/// Taylor coefficients of the closed-form S_el in x: x⁵, x⁷, …, x⁸¹, exact
-/// rationals times √(2/π) (`scripts/gen_reference.py`, `closed_series.txt`).
-/// Radius of convergence √π; at x = 1 the terms fall ~3× per power of x².
-#[allow(clippy::excessive_precision)]
-const CLOSED_EL_SERIES: [f64; 39] = [
-    0.1329807601338108926466486866447939561586,     // x^5
-    -0.01994711402007163389699730299671909342379,   // x^7
-    -0.008707073580189998923292473530313889986576,  // x^9
-    0.00143139012644032558057156572430160161143,    // x^11
-    8.961929384017874236129890971800350265109e-4,   // x^13
-    -1.424920709881617976476462050786945312051e-4,  // x^15
-    -9.023144748662805071076133396471117684953e-5,  // x^17
-    1.430797998228288929668109123657202201483e-5,   // x^19
-    9.132834135876773373286501996884020791463e-6,   // x^21
-    -1.446760113212408223683350677695659656405e-6,  // x^23
-    -9.250957663849024374213582426768057148682e-7,  // x^25
-    1.465128911267009918430419579898158831414e-7,   // x^27
-    9.372541998551877630040511729183903952466e-8,   // x^29
-    -1.484297950165298460331787219458302776734e-8,  // x^31
-    -9.496209081217271954218982319772620922377e-9,  // x^33
-    1.503860708177372674896926489851884808687e-9,   // x^35
-    9.62163057824945073544783127060498353476e-10,   // x^37
-    -1.523717435872111468892671552066478972677e-10, // x^39
-    -9.748739638871183844798190641237392749127e-11, // x^41
-    1.543845494151333414854101094527646987191e-11,  // x^43
-    9.877535771207589702470335280323074644941e-12,  // x^45
-    -1.564241756521342555485954966143377387211e-12, // x^47
-    -1.000803549417678215085021460157438339886e-12, // x^49
-    1.584908067258304560606164105910844449768e-13,  // x^51
-    1.014025985387896269992980819955642755799e-13,  // x^53
-    -1.605847563875586735850630721229589245988e-14, // x^55
-    -1.027423126576230020198262313711403122564e-14, // x^57
-    1.627063746668654065151749571322013472958e-15,  // x^59
-    1.040997271783168529125296031119853005919e-15,  // x^61
-    -1.64856024356320753443973369742347116564e-16,  // x^63
-    -1.054750757181841350888936648426917058374e-16, // x^65
-    1.670340751030547202706021794947501208978e-17,  // x^67
-    1.068685951583931729258663368873665716965e-17,  // x^69
-    -1.69240901960063171896613711703040681914e-18,  // x^71
-    -1.082805255546684259084292204151830446487e-18, // x^73
-    1.714768850677412848798884079151956456257e-19,  // x^75
-    1.097111101456898802627566496881821525399e-19,  // x^77
-    -1.737424096223387833207045392570829909933e-20, // x^79
-    -1.111605953866493941400353370333262676259e-20, // x^81
-];
-
-/// The paper's closed-form slopes; see the module doc.
+/// The paper's closed-form slopes; see the module doc and [`closed`] for how.
 pub fn closed_form(psi: impl Into<Dd>) -> Slopes {
     let psi = psi.into();
     if psi.hi == 0.0 {
@@ -276,57 +250,30 @@ pub fn closed_form(psi: impl Into<Dd>) -> Slopes {
     if psi.hi == f64::INFINITY {
         return Slopes::INFINITE_PSI;
     }
-    closed_form_sq(psi.recip().hi, psi.mul(psi))
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("fma") {
+        // SAFETY: the CPU has just been checked to support FMA.
+        return unsafe { closed_form_fma(psi) };
+    }
+    closed_form_finite(psi)
 }
 
-/// [`closed_form`] from x = 1/ψ and ψ² as for [`exact_sq`].
+/// [`closed_form_finite`] compiled with hardware FMA, which its `mul_add`s
+/// use (a library call otherwise; the same bits either way).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "fma")]
+fn closed_form_fma(psi: Dd) -> Slopes {
+    closed_form_finite(psi)
+}
+
 #[inline(always)]
-pub(crate) fn closed_form_sq(x: f64, s: Dd) -> Slopes {
+fn closed_form_finite(psi: Dd) -> Slopes {
+    let (x, u) = closed::x_and_u(psi);
     if x == f64::INFINITY {
         // Subnormal ψ: √(2/π)/ψ itself overflows.
         return Slopes::ZERO_PSI;
     }
-    let u = s.recip();
-    let uf = u.hi;
-    // S_pl = √(2/π) x e^(−u/2) + u erfc(x/√2) coth u
-    let d_term = SQRT_2_OVER_PI * x * u.mul_f64(0.5).exp_neg();
-    let u_coth = if uf < 1e-8 {
-        1.0 + uf * uf / 3.0
-    } else {
-        uf / uf.tanh()
-    };
-    let e_term = if uf.is_finite() {
-        u_coth * u.mul_f64(0.5).erfc_of_sqrt()
-    } else {
-        0.0
-    };
-    let plastic = d_term + e_term;
-    if x < CLOSED_SLOPE_SERIES_X {
-        let mut acc = 0.0;
-        for c in CLOSED_EL_SERIES.iter().rev() {
-            acc = acc * uf + c;
-        }
-        let elastic = acc * uf * uf * x;
-        return Slopes {
-            elastic,
-            plastic,
-            total: elastic + plastic,
-        };
-    }
-    // S_tot = √(2/π) x + u/(e^(2u) − 1) + u erfc(√2 x)/(1 − e^(−2u))
-    let total = if uf.is_finite() {
-        SQRT_2_OVER_PI * x
-            + uf / (2.0 * uf).exp_m1()
-            + uf * u.mul_f64(2.0).erfc_of_sqrt() / -(-2.0 * uf).exp_m1()
-    } else {
-        // x² overflows (ψ < 1e-154): the Gaussian terms are far below x.
-        SQRT_2_OVER_PI * x
-    };
-    Slopes {
-        elastic: total - plastic,
-        plastic,
-        total,
-    }
+    closed::closed_parts(psi.hi, x, u)
 }
 
 #[cfg(test)]

@@ -1,0 +1,252 @@
+//! Two-column tables without a size header: a line scan `x z` (metres, or
+//! Gwyddion's XYZ-export units) or an isotropic PSD table `q C^iso`.
+//!
+//! Which one is decided from the content, documented in the README:
+//!
+//! 1. A header line naming the columns decides: its first word `q`, `k`,
+//!    `wavevector` or `wavenumber`, or any word `psd`, marks a PSD table;
+//!    first word `x`, `position` or `distance`, or a `Lateral units:`
+//!    label, marks a line scan.
+//! 2. Otherwise the second column decides whether it *looks like a PSD*:
+//!    every q > 0, C > 0 on at least half the rows, the positive C span at
+//!    least two decades and fall with q (log-log least-squares slope ≤ −1).
+//!    Heights (either sign, or a narrow positive range) never do.
+//! 3. A table that looks like a PSD but whose first column is also
+//!    uniformly spaced (a raw FFT's q) could be either: refused, asking for
+//!    a header line `# q C` or `# x z`.
+//!
+//! A line scan's x must then be uniform: every x within 1% of the spacing
+//! (plus the rounding of its printed digits: half a unit in the last of
+//! the most significant digits any x of the column shows) of x_0 + i Δx, with
+//! Δx = (x_last − x_0)/(n − 1); a jitter of 1% of Δx moves the phase of
+//! the shortest wave by at most 2π·1%/2, and its PSD by ~1e-3. The scan
+//! spans L = n Δx (SurfaceTopography's XYZ reader, whose own test is an
+//! absolute 1e-6 in file units).
+
+use rough_model::Dim;
+
+use crate::error::{Failure, Problem};
+use crate::header::Header;
+use crate::spectrum::{self, Computed};
+use crate::text::Scan;
+use crate::{psd, Kind, Options};
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Hint {
+    Psd,
+    Scan,
+}
+
+fn hint(lines: &[(usize, &str)], header: &Header) -> Option<Hint> {
+    let (mut psd, mut scan) = (false, header.x_unit.is_some());
+    for (_, text) in lines {
+        let lower = text.to_lowercase();
+        let words: Vec<&str> = lower
+            .split(|c: char| c.is_whitespace() || matches!(c, ',' | ';' | '#'))
+            .filter(|w| !w.is_empty())
+            .collect();
+        match words.first().copied() {
+            Some("q" | "k" | "wavevector" | "wavenumber") => psd = true,
+            Some("x" | "position" | "distance") => scan = true,
+            _ => {}
+        }
+        psd |= words
+            .iter()
+            .any(|w| w.trim_matches(|c: char| !c.is_alphanumeric()) == "psd");
+    }
+    match (psd, scan) {
+        (true, false) => Some(Hint::Psd),
+        (false, true) => Some(Hint::Scan),
+        _ => None,
+    }
+}
+
+/// Rule 2: every q > 0 and C > 0 on at least half the rows, spanning two
+/// decades and falling with q.
+fn looks_like_psd(x: &[f64], y: &[f64]) -> bool {
+    if x.len() < 3 || x.iter().any(|&q| q <= 0.0) {
+        return false;
+    }
+    let pts: Vec<(f64, f64)> = x
+        .iter()
+        .zip(y)
+        .filter(|(_, &c)| c > 0.0)
+        .map(|(&q, &c)| (q.ln(), c.ln()))
+        .collect();
+    if pts.len() < 3 || 2 * pts.len() < x.len() {
+        return false;
+    }
+    let (lo, hi) = pts
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+            (lo.min(p.1), hi.max(p.1))
+        });
+    if hi - lo < 2.0 * std::f64::consts::LN_10 {
+        return false;
+    }
+    let n = pts.len() as f64;
+    let mx = pts.iter().map(|p| p.0).sum::<f64>() / n;
+    let my = pts.iter().map(|p| p.1).sum::<f64>() / n;
+    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
+    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    sxx > 0.0 && sxy / sxx <= -1.0
+}
+
+/// Significant digits printed in `field` ("1.250e-06" → 4, "0.0012" → 2).
+fn digits(field: &str) -> i32 {
+    let mantissa = field.split(['e', 'E']).next().unwrap_or("");
+    mantissa
+        .chars()
+        .filter(|c| c.is_ascii_digit())
+        .skip_while(|&c| c == '0')
+        .count() as i32
+}
+
+/// Half a unit in the `d`-th significant digit of `x` (0 for x = 0: a
+/// printed zero is exact).
+fn resolution(x: f64, d: i32) -> f64 {
+    if x == 0.0 {
+        0.0
+    } else {
+        0.5 * 10f64.powi(x.abs().log10().floor() as i32 - d + 1)
+    }
+}
+
+/// The spacing of uniform x, or the first x off the grid (its index).
+fn uniform(x: &[f64], fields: &[&str]) -> Result<f64, (usize, Problem)> {
+    let n = x.len();
+    let (x0, xl) = (x[0], x[n - 1]);
+    let dx = (xl - x0) / (n - 1) as f64;
+    if dx.is_nan() || dx <= 0.0 {
+        return Err((
+            n - 1,
+            Problem::Unknown(format!(
+                "x must increase along a line scan: the last x = {xl} is not above the first x = {x0}"
+            )),
+        ));
+    }
+    // The column's printing precision: the most significant digits any x
+    // shows (a fixed format shows the same number everywhere; the
+    // shortest round-trip format shows up to 17 somewhere).
+    let d = fields.iter().map(|f| digits(f)).max().unwrap_or(17).max(1);
+    let ends = resolution(x0, d) + resolution(xl, d);
+    for (i, &xi) in x.iter().enumerate() {
+        let expected = x0 + i as f64 * dx;
+        if (xi - expected).abs() > 0.01 * dx + resolution(xi, d) + ends {
+            return Err((
+                i,
+                Problem::NonUniform {
+                    x: xi,
+                    expected,
+                    spacing: dx,
+                },
+            ));
+        }
+    }
+    Ok(dx)
+}
+
+pub(crate) fn read(
+    text: &str,
+    scan: Scan<'_>,
+    header: &Header,
+    opts: &Options,
+) -> Result<(Kind, Computed), Failure> {
+    let lines = &scan.row_lines;
+    let x: Vec<f64> = scan.values.iter().step_by(2).copied().collect();
+    let y: Vec<f64> = scan.values.iter().skip(1).step_by(2).copied().collect();
+    let kind = match hint(&scan.header, header) {
+        Some(h) => h,
+        None => {
+            if looks_like_psd(&x, &y) {
+                let all: Vec<&str> = text.split('\n').collect();
+                let fields = first_fields(&all, lines);
+                if uniform(&x, &fields).is_ok() {
+                    return Err((None, Problem::Ambiguous));
+                }
+                Hint::Psd
+            } else {
+                Hint::Scan
+            }
+        }
+    };
+    if kind == Hint::Psd {
+        if opts.periodic || opts.pixel_size.is_some() {
+            return Err((
+                None,
+                Problem::Option(
+                    "--periodic and --pixel-size do not apply to a PSD table".to_string(),
+                ),
+            ));
+        }
+        return psd::table(Dim::Areal, x, y, lines);
+    }
+    if let Some(p) = opts.pixel_size {
+        return Err((
+            None,
+            Problem::Option(format!(
+                "--pixel-size {p} m does not apply: an x z line scan gives its spacing"
+            )),
+        ));
+    }
+    let n = x.len();
+    if n < 4 {
+        return Err((
+            None,
+            Problem::TooFew {
+                axis: "the line",
+                got: n,
+            },
+        ));
+    }
+    let all: Vec<&str> = text.split('\n').collect();
+    let fields = first_fields(&all, lines);
+    let dx = uniform(&x, &fields).map_err(|(i, p)| (Some(lines[i]), p))?;
+    let (sx, sz) = (header.lateral_scale()?, header.value_scale()?);
+    let z: Vec<f64> = y.iter().map(|v| v / sz).collect();
+    let l = n as f64 * dx / sx;
+    let c = spectrum::line(z, l, opts.periodic).map_err(|p| (None, p))?;
+    Ok((Kind::Line { n, l }, c))
+}
+
+/// The first field of every data row, as written.
+fn first_fields<'a>(all: &[&'a str], lines: &[usize]) -> Vec<&'a str> {
+    lines
+        .iter()
+        .map(|&l| {
+            let line = all[l - 1];
+            let data = line.split('#').next().unwrap_or("");
+            data.split(|c: char| c.is_whitespace() || c == ',' || c == ';')
+                .find(|f| !f.is_empty())
+                .unwrap_or("")
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn printed_digits() {
+        assert_eq!(digits("1.250e-06"), 4);
+        assert_eq!(digits("0.0012"), 2);
+        assert_eq!(digits("-12"), 2);
+        assert_eq!(digits("0"), 0);
+        assert_eq!(resolution(1.25e-6, 4), 0.5e-9);
+        assert_eq!(resolution(350.0, 2), 5.0);
+        assert_eq!(resolution(0.0, 2), 0.0);
+    }
+
+    #[test]
+    fn psd_looks() {
+        let q: Vec<f64> = (0..20).map(|i| 1e5 * 1.5f64.powi(i)).collect();
+        let c: Vec<f64> = q.iter().map(|q| q.powf(-3.6)).collect();
+        assert!(looks_like_psd(&q, &c));
+        let z: Vec<f64> = (0..20).map(|i| (i as f64).sin() * 1e-9).collect();
+        assert!(!looks_like_psd(&q, &z));
+        // Positive heights in a narrow range.
+        let z: Vec<f64> = (0..20).map(|i| 1e-6 + (i as f64).sin() * 1e-8).collect();
+        assert!(!looks_like_psd(&q, &z));
+    }
+}

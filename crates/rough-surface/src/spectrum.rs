@@ -1,0 +1,361 @@
+//! From heights to the moment table and the display spectrum, as
+//! SurfaceTopography computes them (MODEL.md, "Measured surfaces"):
+//!
+//! - periodic data: the mean removed, no window; otherwise the
+//!   least-squares plane (line: straight line) removed and the Hann window
+//!   applied — for maps the radial window of `FFTTricks.get_window_2D`,
+//!   for lines scipy's periodic `hann` — scaled so that the mean of its
+//!   square is 1;
+//! - the FFT F of the (windowed) heights, N = Nx Ny samples. With
+//!   SurfaceTopography's PSD C(q) = |Δx Δy F(q)|²/(Lx Ly) and its sums
+//!   M_α = (1/(Lx Ly)) Σ_q |q|^α C(q), each wavevector's term is
+//!   w = C/(Lx Ly) = |F|² (Δx Δy)²/(Lx Ly)² = |F|²/N², independent of the
+//!   sizes (lines: C1D = |Δx F|²/L, w = C1D/L = |F|²/N²);
+//! - wavevectors q = 2π k/L as `np.fft.fftfreq` computes them, all of the
+//!   FFT grid but q = 0.
+//!
+//! The input is real, so maps are transformed two rows at a time (one
+//! complex FFT of h_r + i h_(r+1)) and only the half spectrum
+//! 0 ≤ kx ≤ Nx/2 is kept, its mirrored points counted twice.
+
+use std::f64::consts::PI;
+use std::sync::Arc;
+
+use rough_model::{Dim, MomentTable};
+use rustfft::num_complex::Complex;
+use rustfft::{Fft, FftPlanner};
+
+use crate::bins::Bins;
+use crate::error::Problem;
+
+/// What a surface's heights give the model and the screen.
+pub(crate) struct Computed {
+    pub table: MomentTable,
+    pub spectrum: Vec<(f64, f64)>,
+}
+
+/// The residual rms below which detrended heights count as nothing left
+/// (relative to the heights' rms about their mean): rounding leaves ~1e-16.
+const FLAT: f64 = 1e-10;
+
+fn threads() -> usize {
+    std::thread::available_parallelism().map_or(1, |n| n.get().min(4))
+}
+
+/// Refuses constant heights; returns their mean and variance.
+fn moments(h: &[f64]) -> Result<(f64, f64), Problem> {
+    if h.iter().all(|&v| v == h[0]) {
+        return Err(Problem::Flat { plane: false });
+    }
+    let n = h.len() as f64;
+    let mean = h.iter().sum::<f64>() / n;
+    let var = h.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / n;
+    Ok((mean, var))
+}
+
+/// Removes the least-squares plane a + b x + c y over the grid (rows of
+/// `nx`); on a full grid, centred coordinates decouple the normal
+/// equations.
+fn remove_plane(h: &mut [f64], nx: usize, ny: usize, mean: f64) {
+    let cx = (nx as f64 - 1.0) / 2.0;
+    let cy = (ny as f64 - 1.0) / 2.0;
+    let sxx: f64 = (0..nx).map(|i| (i as f64 - cx).powi(2)).sum::<f64>() * ny as f64;
+    let syy: f64 = (0..ny).map(|j| (j as f64 - cy).powi(2)).sum::<f64>() * nx as f64;
+    let (mut sxh, mut syh) = (0.0, 0.0);
+    for (j, row) in h.chunks_exact(nx).enumerate() {
+        let y = j as f64 - cy;
+        let mut r = 0.0;
+        for (i, &v) in row.iter().enumerate() {
+            sxh += (i as f64 - cx) * v;
+            r += v;
+        }
+        syh += y * r;
+    }
+    let b = if sxx > 0.0 { sxh / sxx } else { 0.0 };
+    let c = if syy > 0.0 { syh / syy } else { 0.0 };
+    for (j, row) in h.chunks_exact_mut(nx).enumerate() {
+        let base = mean + c * (j as f64 - cy);
+        for (i, v) in row.iter_mut().enumerate() {
+            *v -= base + b * (i as f64 - cx);
+        }
+    }
+}
+
+/// Mean or plane removed; refuses what is flat after it.
+fn detrend(h: &mut [f64], nx: usize, ny: usize, periodic: bool) -> Result<(), Problem> {
+    let (mean, var) = moments(h)?;
+    if periodic {
+        h.iter_mut().for_each(|v| *v -= mean);
+        return Ok(());
+    }
+    remove_plane(h, nx, ny, mean);
+    let rest = h.iter().map(|v| v * v).sum::<f64>() / h.len() as f64;
+    if rest <= FLAT * FLAT * var {
+        return Err(Problem::Flat { plane: true });
+    }
+    Ok(())
+}
+
+/// Multiplies by SurfaceTopography's radial Hann window and returns the
+/// normalisation s² = N / Σ w² (the window scaled by s has mean square 1).
+fn window_2d(h: &mut [f64], nx: usize, ny: usize, lx: f64, ly: f64) -> f64 {
+    // get_window_2D: r from grid point (nx//2, ny//2) in physical units,
+    // w = 0.5 + 0.5 cos(π r / r_max) for r ≤ r_max = min(Lx, Ly)/2, else 0.
+    let maxr = lx.min(ly) / 2.0;
+    let (cx, cy) = ((nx / 2) as f64, (ny / 2) as f64);
+    let ax: Vec<f64> = (0..nx)
+        .map(|i| (lx * (i as f64 - cx) / nx as f64).powi(2))
+        .collect();
+    let mut sum = 0.0;
+    for (j, row) in h.chunks_exact_mut(nx).enumerate() {
+        let ay = (ly * (j as f64 - cy) / ny as f64).powi(2);
+        for (v, &a) in row.iter_mut().zip(&ax) {
+            let r = (a + ay).sqrt();
+            let w = if r > maxr {
+                0.0
+            } else {
+                0.5 + 0.5 * (PI * r / maxr).cos()
+            };
+            *v *= w;
+            sum += w * w;
+        }
+    }
+    (nx * ny) as f64 / sum
+}
+
+/// scipy.signal.get_window('hann', n): the periodic Hann window; returns
+/// s² = n / Σ w².
+fn window_1d(h: &mut [f64]) -> f64 {
+    let n = h.len();
+    let mut sum = 0.0;
+    for (k, v) in h.iter_mut().enumerate() {
+        let w = 0.5 - 0.5 * (2.0 * PI * k as f64 / n as f64).cos();
+        *v *= w;
+        sum += w * w;
+    }
+    n as f64 / sum
+}
+
+/// |q| of index k on an axis of n samples spanning l, as
+/// 2π · np.fft.fftfreq(n, l/n) gives it.
+fn freq(k: usize, n: usize, l: f64) -> f64 {
+    let val = 1.0 / (n as f64 * (l / n as f64));
+    let k = k.min(n - k);
+    2.0 * PI * (k as f64 * val)
+}
+
+/// The row FFTs of real rows (nx each, ny rows), two at a time, as the
+/// half spectrum kx = 0..=nx/2, row after row (ny × nh).
+fn rows_half(h: &[f64], nx: usize, ny: usize, fft: &Arc<dyn Fft<f64>>) -> Vec<Complex<f64>> {
+    let nh = nx / 2 + 1;
+    let mut out = vec![Complex::new(0.0, 0.0); ny * nh];
+    let pairs = ny.div_ceil(2);
+    let per = pairs.div_ceil(threads()).max(1);
+    std::thread::scope(|s| {
+        for (t, block) in out.chunks_mut(2 * per * nh).enumerate() {
+            let fft = Arc::clone(fft);
+            s.spawn(move || {
+                let mut buf = vec![Complex::new(0.0, 0.0); nx];
+                let mut scratch = vec![Complex::new(0.0, 0.0); fft.get_inplace_scratch_len()];
+                let r0 = 2 * per * t;
+                for (p, pair) in block.chunks_mut(2 * nh).enumerate() {
+                    let r = r0 + 2 * p;
+                    let a = &h[r * nx..(r + 1) * nx];
+                    let b = (r + 1 < ny).then(|| &h[(r + 1) * nx..(r + 2) * nx]);
+                    for (i, z) in buf.iter_mut().enumerate() {
+                        *z = Complex::new(a[i], b.map_or(0.0, |b| b[i]));
+                    }
+                    fft.process_with_scratch(&mut buf, &mut scratch);
+                    let (ra, rb) = pair.split_at_mut(nh.min(pair.len()));
+                    for k in 0..nh {
+                        let z = buf[k];
+                        let zc = buf[(nx - k) % nx].conj();
+                        ra[k] = (z + zc) * 0.5;
+                        if !rb.is_empty() {
+                            // (z − zc)/(2i)
+                            let d = (z - zc) * 0.5;
+                            rb[k] = Complex::new(d.im, -d.re);
+                        }
+                    }
+                }
+            });
+        }
+    });
+    out
+}
+
+/// Column FFTs of a column-major half spectrum (nh columns of ny).
+fn columns(t: &mut [Complex<f64>], ny: usize, fft: &Arc<dyn Fft<f64>>) {
+    let cols = t.len() / ny;
+    let per = cols.div_ceil(threads()).max(1);
+    std::thread::scope(|s| {
+        for block in t.chunks_mut(per * ny) {
+            let fft = Arc::clone(fft);
+            s.spawn(move || {
+                let mut scratch = vec![Complex::new(0.0, 0.0); fft.get_inplace_scratch_len()];
+                for col in block.chunks_mut(ny) {
+                    fft.process_with_scratch(col, &mut scratch);
+                }
+            });
+        }
+    });
+}
+
+/// A map of nx × ny heights (rows of nx along x, one row per y) spanning
+/// lx × ly metres.
+pub(crate) fn map(
+    mut h: Vec<f64>,
+    nx: usize,
+    ny: usize,
+    lx: f64,
+    ly: f64,
+    periodic: bool,
+) -> Result<Computed, Problem> {
+    detrend(&mut h, nx, ny, periodic)?;
+    let s2 = if periodic {
+        1.0
+    } else {
+        window_2d(&mut h, nx, ny, lx, ly)
+    };
+    let mut planner = FftPlanner::<f64>::new();
+    let nh = nx / 2 + 1;
+    let half = rows_half(&h, nx, ny, &planner.plan_fft_forward(nx));
+    drop(h);
+    let mut t = vec![Complex::new(0.0, 0.0); half.len()];
+    transpose::transpose(&half, &mut t, nh, ny);
+    drop(half);
+    columns(&mut t, ny, &planner.plan_fft_forward(ny));
+
+    let n2 = ((nx * ny) as f64).powi(2);
+    let scale = s2 / n2;
+    let area = lx * ly;
+    // power_spectrum_from_area's radial average: radii as resample_radial
+    // computes them, from min(2π/Lx, 2π/Ly) to π min(Nx/Lx, Ny/Ly).
+    let (gx, gy) = (
+        2.0 * PI * nx as f64 / lx / nx as f64,
+        2.0 * PI * ny as f64 / ly / ny as f64,
+    );
+    let qmax = PI * (nx as f64 / lx).min(ny as f64 / ly);
+    let mut bins = Bins::new(gx.min(gy), qmax);
+    // ky and ny − ky lie at the same |q|: one term for both.
+    let qy: Vec<f64> = (0..=ny / 2).map(|j| freq(j, ny, ly)).collect();
+    let ry: Vec<f64> = (0..=ny / 2).map(|j| gy * j as f64).collect();
+    let mut terms = Vec::with_capacity(nh * (ny / 2 + 1));
+    for (kx, col) in t.chunks_exact(ny).enumerate() {
+        let mult = if kx == 0 || 2 * kx == nx { 1.0 } else { 2.0 };
+        let qx = freq(kx, nx, lx);
+        let rx = gx * kx as f64;
+        for ky in 0..=ny / 2 {
+            if kx == 0 && ky == 0 {
+                continue;
+            }
+            let (w, count) = if ky == 0 || 2 * ky == ny {
+                (col[ky].norm_sqr() * scale, 1.0)
+            } else {
+                ((col[ky].norm_sqr() + col[ny - ky].norm_sqr()) * scale, 2.0)
+            };
+            terms.push(((qx * qx + qy[ky] * qy[ky]).sqrt(), mult * w));
+            bins.add(
+                (rx * rx + ry[ky] * ry[ky]).sqrt(),
+                w * area / count,
+                mult * count,
+            );
+        }
+    }
+    drop(t);
+    let q0 = 2.0 * PI / lx.max(ly);
+    let table = MomentTable::from_discrete(Dim::Areal, q0, terms).map_err(Problem::Table)?;
+    Ok(Computed {
+        table,
+        spectrum: bins.finish(),
+    })
+}
+
+/// A line of n heights spanning l metres.
+pub(crate) fn line(mut h: Vec<f64>, l: f64, periodic: bool) -> Result<Computed, Problem> {
+    let n = h.len();
+    detrend(&mut h, n, 1, periodic)?;
+    let s2 = if periodic { 1.0 } else { window_1d(&mut h) };
+    let mut buf: Vec<Complex<f64>> = h.iter().map(|&v| Complex::new(v, 0.0)).collect();
+    drop(h);
+    FftPlanner::<f64>::new()
+        .plan_fft_forward(n)
+        .process(&mut buf);
+    let scale = s2 / (n as f64).powi(2);
+    // power_spectrum_from_profile: q = dq·k for 1 ≤ k < n//2, C1D = |Δx F|²/L,
+    // binned from dq to π n/L.
+    let dq = 2.0 * PI / l;
+    let mut bins = Bins::new(dq, PI * n as f64 / l);
+    let mut terms = Vec::with_capacity(n - 1);
+    for (k, f) in buf.iter().enumerate().skip(1) {
+        let w = f.norm_sqr() * scale;
+        terms.push((freq(k, n, l), w));
+        if k < n / 2 {
+            bins.add(dq * k as f64, w * l, 1.0);
+        }
+    }
+    let table =
+        MomentTable::from_discrete(Dim::Profile, 2.0 * PI / l, terms).map_err(Problem::Table)?;
+    Ok(Computed {
+        table,
+        spectrum: bins.finish(),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A single cosine: its moments are known in closed form.
+    #[test]
+    fn periodic_cosine_moments() {
+        let (nx, ny, lx, ly) = (16, 8, 2.0, 1.0);
+        let (a, kx, ky) = (0.3, 3.0, 2.0);
+        let (qx, qy) = (2.0 * PI * kx / lx, 2.0 * PI * ky / ly);
+        let mut h = Vec::new();
+        for j in 0..ny {
+            for i in 0..nx {
+                let (x, y) = (lx * i as f64 / nx as f64, ly * j as f64 / ny as f64);
+                h.push(1.0 + a * (qx * x + qy * y).cos());
+            }
+        }
+        let c = map(h, nx, ny, lx, ly, true).unwrap();
+        let q2 = qx * qx + qy * qy;
+        let s = c.table.sums(1e9);
+        let rel = |x: f64, y: f64| ((x - y) / y).abs();
+        assert!(rel(s[0], a * a / 2.0) < 1e-14, "{s:?}");
+        assert!(rel(s[1], a * a / 2.0 * q2) < 1e-14);
+        assert!(rel(s[2], a * a / 2.0 * q2 * q2) < 1e-14);
+        assert_eq!(c.table.q0(), PI);
+        // Below the cosine's wavevector only rounding is left.
+        assert!(c.table.sums(0.99 * q2.sqrt())[0] < 1e-30);
+    }
+
+    #[test]
+    fn odd_sizes_and_lines() {
+        // Parseval on an odd grid and a line: M0 is the mean square.
+        let (nx, ny) = (7, 5);
+        let h: Vec<f64> = (0..nx * ny).map(|i| ((i * 37 % 11) as f64).sin()).collect();
+        let mean = h.iter().sum::<f64>() / h.len() as f64;
+        let ms = h.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / h.len() as f64;
+        let c = map(h.clone(), nx, ny, 1.0, 1.0, true).unwrap();
+        assert!((c.table.sums(1e9)[0] / ms - 1.0).abs() < 1e-14);
+        let c = line(h, 3.0, true).unwrap();
+        assert!((c.table.sums(1e9)[0] / ms - 1.0).abs() < 1e-14);
+    }
+
+    #[test]
+    fn flat_surfaces_are_refused() {
+        assert_eq!(
+            map(vec![2.0; 16], 4, 4, 1.0, 1.0, false).err(),
+            Some(Problem::Flat { plane: false })
+        );
+        let plane: Vec<f64> = (0..20)
+            .map(|i| 1.0 + 0.5 * (i % 5) as f64 - 0.25 * (i / 5) as f64)
+            .collect();
+        assert_eq!(
+            map(plane, 5, 4, 1.0, 1.0, false).err(),
+            Some(Problem::Flat { plane: true })
+        );
+    }
+}
