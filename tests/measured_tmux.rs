@@ -1,7 +1,8 @@
 //! A measured surface in a real terminal (tmux) and over SSH: `--surface`
-//! opens the explorer on it, ζ steps, Tab reaches the spectrum view; a bad
-//! file is one message and status 2; `serve --surface` shows the surface
-//! to students, and the lecturer switches between the presets and it.
+//! opens the explorer on a PSD table and on a contact.engineering download,
+//! ζ steps, Tab reaches the spectrum view; a bad file is one message and
+//! status 2; `serve --surface` shows the example height map to students,
+//! and the lecturer switches between the presets and it.
 
 mod common;
 
@@ -60,6 +61,37 @@ fn the_explorer_opens_a_surface_steps_zeta_and_shows_its_spectrum() {
 }
 
 #[test]
+fn the_explorer_opens_a_contact_engineering_download() {
+    if !have_tmux() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::copy(
+        concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/crates/rough-surface/tests/data/psd_knee_ce.txt"
+        ),
+        dir.path().join("knee.txt"),
+    )
+    .unwrap();
+    let p = Pane::start("ce", dir.path(), (100, 30), &[], &["--surface", "knee.txt"]);
+    let s = p.wait_text("Readout");
+    assert!(
+        s.contains("[knee]") && s.contains("measured moments"),
+        "{s}"
+    );
+    assert!(s.contains("isotropic PSD table"), "{s}");
+    p.keys(&["BTab"]);
+    let s = p.wait_text("C^iso (m⁴) vs q");
+    assert!(braille(&s) > 20, "{s}");
+    // Eq. 13 has no value on measured data.
+    assert!(s.contains("Ψ*asy n/a on measured data"), "{s}");
+    p.keys(&["q"]);
+    assert_eq!(p.exit_status(), 0);
+    assert_eq!(p.display("#{alternate_on}"), "0");
+}
+
+#[test]
 fn a_bad_surface_file_is_one_message_and_status_2() {
     if !have_tmux() {
         return;
@@ -87,8 +119,13 @@ fn serve_shows_the_surface_and_the_lecturer_switches() {
     if !(have_ssh() && have_tmux()) {
         return;
     }
+    // The shipped example: a Gwyddion-style height map.
     let dir = tempfile::tempdir().unwrap();
-    write_table(dir.path());
+    std::fs::copy(
+        concat!(env!("CARGO_MANIFEST_DIR"), "/surfaces/example.txt"),
+        dir.path().join("example.txt"),
+    )
+    .unwrap();
     let key = dir.path().join("lect");
     let st = Command::new("ssh-keygen")
         .args(["-q", "-t", "ed25519", "-N", "", "-f"])
@@ -102,7 +139,7 @@ fn serve_shows_the_surface_and_the_lecturer_switches() {
         dir.path(),
         &[
             "--surface",
-            "fig2-psd.txt",
+            "example.txt",
             "--lecturer-keys",
             keys.to_str().unwrap(),
         ],
@@ -114,16 +151,16 @@ fn serve_shows_the_surface_and_the_lecturer_switches() {
         &srv.ssh_line("lecturer", &["-t", "-i", key, "-o", "IdentitiesOnly=yes"]),
     );
     let s = lect.wait_text("Readout");
-    assert!(s.contains("[fig2-psd]") && s.contains("5 surface"), "{s}");
+    assert!(s.contains("[example]") && s.contains("5 surface"), "{s}");
     let stud = Pane::start_shell("msrv-stud", (100, 30), &srv.ssh_line("carol", &["-t"]));
     let s = stud.wait_text("following the lecturer");
-    assert!(s.contains("[fig2-psd]"), "{s}");
+    assert!(s.contains("[example]"), "{s}");
     assert!(s.contains("measured moments"), "{s}");
     // A preset, then back to the surface: the class follows.
     lect.keys(&["3"]);
     stud.wait_text("[fig3]");
     lect.keys(&["5"]);
-    stud.wait_text("[fig2-psd]");
+    stud.wait_text("[example]");
     // The spectrum view follows too.
     lect.keys(&["BTab"]);
     stud.wait_text("C^iso (m⁴) vs q");
@@ -132,7 +169,7 @@ fn serve_shows_the_surface_and_the_lecturer_switches() {
     stud.wait_text("exploring on your own");
     stud.wait_text("[fig2]");
     stud.keys(&["5"]);
-    stud.wait_text("[fig2-psd]");
+    stud.wait_text("[example]");
     lect.keys(&["q"]);
     assert_eq!(lect.exit_status(), 0);
     stud.keys(&["q"]);
