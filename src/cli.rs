@@ -300,6 +300,17 @@ pub struct ServeArgs {
     /// this long ends: a number with s, m or h.
     #[arg(long, default_value = "30m", value_parser = parse_duration, value_name = "TIME")]
     pub idle_timeout: std::time::Duration,
+    /// Students log in with this word, typed at "class code:" (any user
+    /// name, which becomes their name in the class). Without it, and
+    /// without --class-code-file, students need no password.
+    #[arg(long, value_name = "WORD", conflicts_with = "class_code_file")]
+    pub class_code: Option<String>,
+    /// The class code from a file (its text, blanks around it dropped).
+    #[arg(long, value_name = "FILE")]
+    pub class_code_file: Option<PathBuf>,
+    /// No line per join and leave and no summary each minute on the console.
+    #[arg(long)]
+    pub quiet: bool,
     /// What every session draws with [default: from each client's TERM and
     /// the LANG / LC_* it sends]; each student can switch with `M`.
     #[arg(long, value_enum, value_name = "SET")]

@@ -4,6 +4,7 @@
 use std::io::{BufWriter, ErrorKind, Write};
 use std::process::ExitCode;
 
+use anyhow::Context;
 use clap::Parser;
 use roughtui::cli::{Cli, Command};
 use roughtui::{export, load_source, tui};
@@ -43,6 +44,12 @@ fn run(cli: Cli) -> anyhow::Result<()> {
             if let Some(w) = state.surface_warning() {
                 println!("warning: {w}");
             }
+            use roughtui::serve::code::ClassCode;
+            let class_code = match (&a.class_code, &a.class_code_file) {
+                (Some(w), _) => Some(ClassCode::word(w).context("--class-code")?),
+                (None, Some(f)) => Some(ClassCode::read(f)?),
+                (None, None) => None,
+            };
             roughtui::serve::run(roughtui::serve::Options {
                 listen: a.listen,
                 host_key: a.host_key,
@@ -51,6 +58,8 @@ fn run(cli: Cli) -> anyhow::Result<()> {
                 max_sessions: a.max_sessions as usize,
                 max_per_address: a.max_per_address as usize,
                 idle_timeout: a.idle_timeout,
+                class_code,
+                quiet: a.quiet,
                 marker: a.marker.map(Into::into),
             })
         }

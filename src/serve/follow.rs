@@ -46,6 +46,7 @@ pub const DETACHED: &str = "exploring on your own — f to follow";
 pub const FOLLOWING: &str = "following the lecturer — any change explores on your own";
 pub const NO_LECTURER: &str = "no lecturer connected: exploring on your own";
 pub const LECTURER_BACK: &str = "the lecturer is back — f to follow";
+pub const ANSWER_FIRST: &str = "a poll is on: move the marker, then Enter answers";
 
 /// A student's relation to the lecturer.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -59,6 +60,9 @@ pub enum Follow {
     /// No lecturer is connected, and the student had left the lecturer to
     /// explore: a lecturer who comes (back) does not take their scene.
     Away,
+    /// A poll is on: the student answers on the poll's scene, and neither
+    /// the lecturer's moves nor their own keys change that.
+    Answering,
 }
 
 /// What a change of [`Follow`] asks the session to do.
@@ -100,6 +104,7 @@ impl Follow {
     pub fn on_follow_key(&mut self) -> Effect {
         match self {
             Follow::Alone | Follow::Away => Effect::Say(NO_LECTURER),
+            Follow::Answering => Effect::Say(ANSWER_FIRST),
             _ => {
                 *self = Follow::Following;
                 Effect::Catch
@@ -126,7 +131,31 @@ impl Follow {
                 *self = Follow::Away;
                 Effect::Say(NO_LECTURER)
             }
+            (Follow::Answering, false) => {
+                *self = Follow::Alone;
+                Effect::Say(NO_LECTURER)
+            }
             _ => Effect::None,
+        }
+    }
+
+    /// A poll opened: whatever the student did, they answer it.
+    pub fn on_poll(&mut self) {
+        *self = Follow::Answering;
+    }
+
+    /// The poll was revealed or closed: a student who was answering
+    /// follows again (when there is a lecturer).
+    pub fn on_poll_end(&mut self, lecturer: bool) -> Effect {
+        if *self != Follow::Answering {
+            return Effect::None;
+        }
+        if lecturer {
+            *self = Follow::Following;
+            Effect::Catch
+        } else {
+            *self = Follow::Alone;
+            Effect::Say(NO_LECTURER)
         }
     }
 }
@@ -237,6 +266,31 @@ mod tests {
         assert_eq!(f.on_lecturer(false), Effect::Say(NO_LECTURER));
         assert_eq!(f, Follow::Alone);
         assert_eq!(f.on_lecturer(true), Effect::Catch);
+    }
+
+    #[test]
+    fn a_poll_holds_the_student_until_it_ends() {
+        for start in [Follow::Following, Follow::Detached] {
+            let mut f = start;
+            f.on_poll();
+            assert!(!f.following(), "a lecturer's move would move the marker");
+            let step = Message::Step {
+                up: true,
+                fine: false,
+            };
+            assert_eq!(f.on_message(&step), Effect::None);
+            assert_eq!(f.on_follow_key(), Effect::Say(ANSWER_FIRST));
+            assert_eq!(f.on_lecturer(true), Effect::None);
+            assert_eq!(f, Follow::Answering);
+            assert_eq!(f.on_poll_end(true), Effect::Catch);
+            assert!(f.following());
+            assert_eq!(f.on_poll_end(true), Effect::None);
+        }
+        let mut f = Follow::Answering;
+        assert_eq!(f.on_lecturer(false), Effect::Say(NO_LECTURER));
+        assert_eq!(f, Follow::Alone);
+        let mut f = Follow::Answering;
+        assert_eq!(f.on_poll_end(false), Effect::Say(NO_LECTURER));
     }
 
     #[test]

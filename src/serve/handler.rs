@@ -1,4 +1,5 @@
-//! One SSH connection's protocol side: who it is (auth), and the one thing
+//! One SSH connection's protocol side: who it is (auth: see [`super::auth`]
+//! and, with a class code, [`super::code`]), and the one thing
 //! it may do — a shell request on one session channel with a pty, which
 //! starts an explorer, after telling its terminal (the pty's TERM and size,
 //! LANG and LC_* as env requests). Everything else is refused: exec,
@@ -6,14 +7,16 @@
 //! port forwarding either way, streamlocal, a second channel, a shell
 //! without a pty.
 
-use std::sync::Arc;
+use std::net::SocketAddr;
+use std::sync::{Arc, OnceLock};
 
 use russh::keys::PublicKey;
-use russh::server::{Auth, ChannelOpenHandle, Msg, Session};
+use russh::server::{Auth, ChannelOpenHandle, Msg, Response, Session};
 use russh::{Channel, ChannelId, MethodKind, MethodSet};
 use tokio::sync::Notify;
 
 use super::auth::Role;
+use super::code::Turn;
 use super::limits::clamp_size;
 use super::session::{self, Start};
 use super::stream::Kill;
@@ -29,6 +32,15 @@ pub struct Handler {
     /// Told when the explorer starts (the login deadline stops).
     pub started: Arc<Notify>,
     kill: Kill,
+    peer: SocketAddr,
+    /// The connection, to disconnect it with a reason the client prints.
+    conn: Arc<OnceLock<russh::server::Handle>>,
+    /// Over a limit: nobody is let in, the connection is only told why.
+    turned_away: bool,
+    /// The user name the connection logged in with.
+    user: String,
+    /// Wrong class codes on this connection.
+    wrong: usize,
     role: Option<Role>,
     channel: Option<Channel<Msg>>,
     channel_opened: bool,
@@ -49,11 +61,22 @@ impl From<russh::Error> for Error {
 }
 
 impl Handler {
-    pub fn new(shared: Arc<Shared>, started: Arc<Notify>, kill: Kill) -> Handler {
+    pub fn new(
+        shared: Arc<Shared>,
+        started: Arc<Notify>,
+        kill: Kill,
+        peer: SocketAddr,
+        conn: Arc<OnceLock<russh::server::Handle>>,
+    ) -> Handler {
         Handler {
             shared,
             started,
             kill,
+            peer,
+            conn,
+            turned_away: false,
+            user: String::new(),
+            wrong: 0,
             role: None,
             channel: None,
             channel_opened: false,
@@ -61,6 +84,39 @@ impl Handler {
             client: ClientTerm::default(),
             running: false,
             requests: 0,
+        }
+    }
+
+    /// A handler that lets nobody in.
+    pub fn turned_away(mut self) -> Handler {
+        self.turned_away = true;
+        self
+    }
+
+    /// Ends the connection with `why`, which OpenSSH prints ("Received
+    /// disconnect from …: why"), once the current reply is sent.
+    fn disconnect(&self, why: String) {
+        if let Some(h) = self.conn.get().cloned() {
+            tokio::spawn(async move {
+                let _ = h
+                    .disconnect(russh::Disconnect::ByApplication, why, String::new())
+                    .await;
+            });
+        }
+    }
+
+    fn student(&mut self, user: &str) -> Auth {
+        self.role = Some(Role::Student);
+        self.user = user.to_string();
+        Auth::Accept
+    }
+
+    /// The methods left to a user: the lecturer's key, or the class code.
+    fn methods_for(&self, user: &str) -> MethodSet {
+        if self.shared.lecturer_keys.admits_student(user) {
+            MethodSet::from(&[MethodKind::KeyboardInteractive][..])
+        } else {
+            MethodSet::from(&[MethodKind::PublicKey][..])
         }
     }
 
@@ -84,17 +140,88 @@ impl russh::server::Handler for Handler {
     type Error = Error;
 
     async fn auth_none(&mut self, user: &str) -> Result<Auth, Error> {
-        if self.shared.lecturer_keys.admits_student(user) {
-            self.role = Some(Role::Student);
-            return Ok(Auth::Accept);
+        if self.turned_away {
+            return Ok(Auth::reject());
+        }
+        let code = self.shared.class_code.is_some();
+        if !code && self.shared.lecturer_keys.admits_student(user) {
+            return Ok(self.student(user));
         }
         Ok(Auth::Reject {
-            proceed_with_methods: Some(MethodSet::from(&[MethodKind::PublicKey][..])),
+            proceed_with_methods: Some(if code {
+                self.methods_for(user)
+            } else {
+                MethodSet::from(&[MethodKind::PublicKey][..])
+            }),
+            partial_success: false,
+        })
+    }
+
+    async fn auth_keyboard_interactive<'a>(
+        &'a mut self,
+        user: &str,
+        _: &str,
+        response: Option<Response<'a>>,
+    ) -> Result<Auth, Error> {
+        let Some(code) = self.shared.class_code.clone() else {
+            return Ok(Auth::reject());
+        };
+        if self.turned_away || !self.shared.lecturer_keys.admits_student(user) {
+            return Ok(Auth::Reject {
+                proceed_with_methods: Some(self.methods_for(user)),
+                partial_success: false,
+            });
+        }
+        let Some(mut response) = response else {
+            let prompt = if self.wrong == 0 {
+                "class code: "
+            } else {
+                "wrong code, try again. class code: "
+            };
+            return Ok(Auth::Partial {
+                name: "".into(),
+                instructions: "".into(),
+                prompts: vec![(prompt.into(), false)].into(),
+            });
+        };
+        let typed = response.next().unwrap_or_default();
+        let ip = self.peer.ip();
+        let wrongs = &self.shared.wrong_codes;
+        let wait = format!("too many wrong class codes from {ip}: wait a minute");
+        match wrongs.turn(ip, std::time::Instant::now()) {
+            Turn::Now => {}
+            Turn::At(t) => tokio::time::sleep_until(t.into()).await,
+            Turn::Refused => {
+                self.disconnect(wait);
+                return Ok(Auth::reject());
+            }
+        }
+        if code.matches(&typed) {
+            return Ok(self.student(user));
+        }
+        self.wrong += 1;
+        let now = std::time::Instant::now();
+        let was = wrongs.waiting(ip, now);
+        if wrongs.wrong(ip, now) {
+            if !was {
+                self.shared.log.line(&format!(
+                    "{ip} sent {} wrong class codes in a minute: its codes wait their turn",
+                    super::code::WRONG_PER_MINUTE
+                ));
+            }
+            // The address waits: this connection tries no more.
+            self.disconnect(wait);
+        }
+        Ok(Auth::Reject {
+            proceed_with_methods: Some(self.methods_for(user)),
             partial_success: false,
         })
     }
 
     async fn auth_publickey_offered(&mut self, user: &str, key: &PublicKey) -> Result<Auth, Error> {
+        if self.turned_away {
+            return Ok(Auth::reject());
+        }
         Ok(if self.shared.lecturer_keys.admits(user, key) {
             Auth::Accept
         } else {
@@ -103,8 +230,9 @@ impl russh::server::Handler for Handler {
     }
 
     async fn auth_publickey(&mut self, user: &str, key: &PublicKey) -> Result<Auth, Error> {
-        if self.shared.lecturer_keys.admits(user, key) {
+        if !self.turned_away && self.shared.lecturer_keys.admits(user, key) {
             self.role = Some(Role::Lecturer);
+            self.user = user.to_string();
             return Ok(Auth::Accept);
         }
         Ok(Auth::reject())
@@ -173,6 +301,8 @@ impl russh::server::Handler for Handler {
             kill: self.kill.clone(),
             role,
             size,
+            name: std::mem::take(&mut self.user),
+            addr: self.peer.ip(),
             client: std::mem::take(&mut self.client),
         });
         Ok(())

@@ -72,6 +72,14 @@ impl Limits {
         })
     }
 
+    pub fn max_sessions(&self) -> usize {
+        self.max_sessions
+    }
+
+    pub fn max_per_address(&self) -> usize {
+        self.max_per_address
+    }
+
     /// Connections open now.
     pub fn open(&self) -> usize {
         self.counts.lock().unwrap_or_else(|p| p.into_inner()).total

@@ -5,20 +5,25 @@
 //! the bounds.
 
 pub mod auth;
+pub mod class;
+pub mod code;
 pub mod follow;
 pub mod handler;
 pub mod host_key;
 pub mod input;
 pub mod limits;
+pub mod log;
 pub mod output;
+pub mod poll;
 pub mod session;
 pub mod stream;
 pub mod term;
 
+use std::io::Write;
 use std::net::SocketAddr;
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::{Arc, Mutex};
+use std::sync::{Arc, Mutex, OnceLock};
 use std::time::Duration;
 
 use anyhow::Context;
@@ -28,8 +33,11 @@ use tokio::sync::{watch, Notify};
 
 use crate::snapshot::State;
 use auth::LecturerKeys;
+use class::Class;
+use code::{ClassCode, WrongCodes};
 use follow::Shown;
-use limits::Limits;
+use limits::{Full, Limits};
+use log::Log;
 
 /// How long a connection may take from TCP connect to a running explorer.
 /// For tests, `ROUGHTUI_LOGIN_DEADLINE_MS` shortens it.
@@ -56,9 +64,20 @@ pub struct Options {
     pub max_sessions: usize,
     pub max_per_address: usize,
     pub idle_timeout: Duration,
+    /// Students log in with this code (keyboard-interactive).
+    pub class_code: Option<ClassCode>,
+    /// No join, leave or summary lines on the console.
+    pub quiet: bool,
     /// `--marker`: every session's glyphs, instead of each client's own.
     pub marker: Option<crate::tui::glyphs::Glyphs>,
 }
+
+/// Connections over a limit that are still told so (the class is full),
+/// in all and per address; past these they are closed unanswered.
+pub const TURNED_AWAY: (usize, usize) = (16, 4);
+
+/// How long a turned-away connection is kept to be told why.
+pub const TURN_AWAY_TIME: Duration = Duration::from_secs(10);
 
 /// What every connection shares.
 pub struct Shared {
@@ -66,6 +85,11 @@ pub struct Shared {
     pub state: State,
     pub lecturer_keys: LecturerKeys,
     pub idle_timeout: Duration,
+    pub class_code: Option<ClassCode>,
+    pub wrong_codes: WrongCodes,
+    /// The roster and the poll.
+    pub class: Class,
+    pub log: Log,
     /// `--marker`, if given.
     pub marker: Option<crate::tui::glyphs::Glyphs>,
     /// The lecturer's latest state; `None` while no lecturer is connected.
@@ -103,6 +127,8 @@ impl Shared {
     fn lecturer_left(&self) {
         if self.lecturers.fetch_sub(1, Ordering::SeqCst) == 1 {
             self.follow.send_replace(None);
+            // Nobody is left to reveal the answer.
+            self.class.close();
         }
     }
 }
@@ -132,16 +158,24 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         .with_context(|| format!("cannot listen on {}", opts.listen))?;
     let addr = listener.local_addr()?;
     let fingerprint = host_key::fingerprint(&key);
-    println!("roughtui serve: listening on {addr}");
-    println!(
+    // The banner; a console that is gone (a closed pipe) does not stop the
+    // server.
+    let mut out = std::io::stdout().lock();
+    macro_rules! say {
+        ($($t:tt)*) => {
+            let _ = writeln!(out, $($t)*);
+        };
+    }
+    say!("roughtui serve: listening on {addr}");
+    say!(
         "host key {} ({}): {fingerprint}",
         key_path.display(),
         if generated { "new" } else { "reused" }
     );
     if lecturer_keys.any() {
-        println!("lecturer: ssh -p {} {}@HOST", addr.port(), auth::LECTURER);
+        say!("lecturer: ssh -p {} {}@HOST", addr.port(), auth::LECTURER);
     } else {
-        println!("no --lecturer-keys: everyone explores alone");
+        say!("no --lecturer-keys: everyone explores alone");
     }
     // On all interfaces the students need the machine's own name.
     let host = if addr.ip().is_unspecified() {
@@ -149,12 +183,22 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
     } else {
         addr.ip().to_string()
     };
-    println!("students: ssh -p {} {host}", addr.port());
-    use std::io::Write;
-    std::io::stdout().flush()?;
+    if opts.class_code.is_some() {
+        say!("class code: on (students type it at \"class code:\")");
+    }
+    if !opts.quiet {
+        say!("log: a line per join and leave (times UTC), a summary each minute");
+    }
+    say!("students: ssh -p {} {host}", addr.port());
+    let _ = out.flush();
+    drop(out);
 
+    let mut methods = vec![MethodKind::None, MethodKind::PublicKey];
+    if opts.class_code.is_some() {
+        methods.push(MethodKind::KeyboardInteractive);
+    }
     let config = Arc::new(russh::server::Config {
-        methods: MethodSet::from(&[MethodKind::None, MethodKind::PublicKey][..]),
+        methods: MethodSet::from(&methods[..]),
         auth_rejection_time: Duration::from_millis(300),
         auth_rejection_time_initial: Some(Duration::ZERO),
         keys: vec![key],
@@ -169,12 +213,20 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         state: opts.state,
         lecturer_keys,
         idle_timeout: opts.idle_timeout,
+        class_code: opts.class_code,
+        wrong_codes: WrongCodes::default(),
+        class: Class::default(),
+        log: Log::new(opts.quiet),
         marker: opts.marker,
         follow: watch::Sender::new(None),
         last: Mutex::new(None),
         lecturers: AtomicUsize::new(0),
     });
+    if shared.log.on() {
+        tokio::spawn(summaries(Arc::clone(&shared)));
+    }
     let limits = Limits::new(opts.max_sessions, opts.max_per_address);
+    let turned_away = Limits::new(TURNED_AWAY.0, TURNED_AWAY.1);
     let login = login_deadline();
     loop {
         let (socket, peer) = match listener.accept().await {
@@ -185,30 +237,113 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
                 continue;
             }
         };
-        // Over a limit: closed at once, before any SSH is spoken.
-        let Ok(permit) = limits.enter(peer.ip()) else {
-            drop(socket);
-            continue;
-        };
         let _ = socket.set_nodelay(true);
         let config = Arc::clone(&config);
         let shared = Arc::clone(&shared);
-        tokio::spawn(async move {
-            let _permit = permit;
-            connection(config, shared, socket, login).await;
-        });
+        match limits.enter(peer.ip()) {
+            Ok(permit) => {
+                tokio::spawn(async move {
+                    let _permit = permit;
+                    connection(config, shared, socket, peer, login).await;
+                });
+            }
+            // Over a limit: told so over SSH while few are, else closed at
+            // once, before any SSH is spoken.
+            Err(full) => {
+                let Ok(permit) = turned_away.enter(peer.ip()) else {
+                    drop(socket);
+                    continue;
+                };
+                let why = match full {
+                    Full::Server => format!(
+                        "the class is full ({} sessions): try again later",
+                        limits.max_sessions()
+                    ),
+                    Full::Address => format!(
+                        "too many sessions from {} ({}): try again later",
+                        peer.ip(),
+                        limits.max_per_address()
+                    ),
+                };
+                tokio::spawn(async move {
+                    let _permit = permit;
+                    turn_away(config, shared, socket, peer, why).await;
+                });
+            }
+        }
     }
+}
+
+/// The console's summary, each minute while students are connected.
+async fn summaries(shared: Arc<Shared>) {
+    let every = log::summary_every();
+    let mut tick = tokio::time::interval_at(tokio::time::Instant::now() + every, every);
+    tick.set_missed_tick_behavior(tokio::time::MissedTickBehavior::Delay);
+    loop {
+        tick.tick().await;
+        if let Some(line) = shared.class.summary() {
+            shared.log.line(&line);
+        }
+    }
+}
+
+/// A connection over a limit: SSH up to the key exchange, then a
+/// disconnect whose text the client prints ("Received disconnect from …:
+/// the class is full …").
+async fn turn_away(
+    config: Arc<russh::server::Config>,
+    shared: Arc<Shared>,
+    socket: tokio::net::TcpStream,
+    peer: SocketAddr,
+    why: String,
+) {
+    let (socket, kill) = stream::Killable::new(socket);
+    let handler = handler::Handler::new(
+        Arc::clone(&shared),
+        Arc::new(Notify::new()),
+        kill.clone(),
+        peer,
+        Arc::new(OnceLock::new()),
+    )
+    .turned_away();
+    let run = async {
+        let Ok(running) = russh::server::run_stream(config, socket, handler).await else {
+            return;
+        };
+        let handle = running.handle();
+        let _ = handle
+            .disconnect(
+                russh::Disconnect::TooManyConnections,
+                why.clone(),
+                String::new(),
+            )
+            .await;
+        let _ = running.await;
+    };
+    let _ = tokio::time::timeout(TURN_AWAY_TIME, run).await;
+    kill.kill();
+    shared
+        .log
+        .line(&format!("turned away {}: {why}", peer.ip()));
 }
 
 async fn connection(
     config: Arc<russh::server::Config>,
     shared: Arc<Shared>,
     socket: tokio::net::TcpStream,
+    peer: SocketAddr,
     login: Duration,
 ) {
     let started = Arc::new(Notify::new());
     let (socket, kill) = stream::Killable::new(socket);
-    let handler = handler::Handler::new(shared, Arc::clone(&started), kill.clone());
+    let conn = Arc::new(OnceLock::new());
+    let handler = handler::Handler::new(
+        shared,
+        Arc::clone(&started),
+        kill.clone(),
+        peer,
+        Arc::clone(&conn),
+    );
     let deadline = tokio::time::Instant::now() + login;
     let setup =
         tokio::time::timeout_at(deadline, russh::server::run_stream(config, socket, handler));
@@ -216,6 +351,7 @@ async fn connection(
         return;
     };
     let handle = running.handle();
+    let _ = conn.set(handle.clone());
     tokio::pin!(running);
     tokio::select! {
         _ = &mut running => return,

@@ -1,9 +1,12 @@
 //! One client's explorer: the same [`tui::session::Session`] as the local
 //! terminal, fed by the channel's bytes (decoded by [`input`]) and window
-//! changes, and, for a student, by the lecturer's state. It ends on `q` /
-//! Ctrl-C, when the client goes, stalls, or idles past `--idle-timeout`.
+//! changes, and, for a student, by the lecturer's state and the poll; for
+//! the lecturer, by the class list. It ends on `q` / Ctrl-C, when the client
+//! goes, stalls, or idles past `--idle-timeout`.
 
+use std::net::IpAddr;
 use std::sync::Arc;
+use std::time::Duration;
 
 use crossterm::cursor::Hide;
 use crossterm::event::{Event, KeyEvent};
@@ -19,14 +22,16 @@ use tokio::sync::watch;
 use tokio::time::{sleep_until, Instant};
 
 use super::auth::Role;
+use super::class::{self, clean_name, Note, SeatId};
 use super::follow::{Effect, Follow, Shown, FOLLOWING};
 use super::input::{self, Decoder};
 use super::limits::clamp_size;
 use super::output::{self, FrameBuf};
+use super::poll;
 use super::stream::Kill;
 use super::term::{self, ClientTerm};
 use super::Shared;
-use crate::tui::app::Message;
+use crate::tui::app::{Message, Mode};
 use crate::tui::glyphs::Glyphs;
 use crate::tui::session::Session;
 
@@ -38,6 +43,9 @@ pub struct Start {
     pub kill: Kill,
     pub role: Role,
     pub size: (u16, u16),
+    /// The SSH user name (a student's name in the class).
+    pub name: String,
+    pub addr: IpAddr,
     /// The client's TERM and locale: the session's glyphs and colours.
     pub client: ClientTerm,
 }
@@ -49,8 +57,61 @@ pub fn spawn(start: Start) {
 /// What a student's picture key says instead of writing on the server.
 pub const NO_PICTURE: &str = "no pictures over SSH: s shows the snapshot to copy";
 
+/// How often the lecturer's open class list updates its idle times.
+const LIST_TICK: Duration = Duration::from_secs(1);
+
 /// A student's snapshot text, shown instead of written to the server's disk.
 struct Panel(String);
+
+/// One explorer and its place in the class.
+pub(super) struct Seat {
+    pub ex: Session<FrameBuf>,
+    pub shared: Arc<Shared>,
+    pub role: Role,
+    pub follow: Follow,
+    /// A student's place in the roster.
+    pub seat: Option<SeatId>,
+    /// The poll a student is in (its id).
+    pub poll: Option<u64>,
+    pub lecturer: watch::Receiver<Option<Shown>>,
+}
+
+impl Seat {
+    pub fn is_lecturer(&self) -> bool {
+        self.role == Role::Lecturer
+    }
+
+    /// Shows the lecturer's latest state.
+    pub fn catch_up(&mut self) {
+        if let Some(s) = self.lecturer.borrow().as_ref() {
+            s.apply(&mut self.ex.app);
+        }
+    }
+
+    /// Acts on a change of following: the status, the scene, the roster.
+    pub fn effect(&mut self, e: Effect) {
+        match e {
+            Effect::Say(s) => self.ex.app.set_status(s, false),
+            Effect::Catch => {
+                self.catch_up();
+                self.ex.app.set_status(FOLLOWING, false);
+            }
+            Effect::None => {}
+        }
+        self.note(Note::Following(self.follow.following()));
+    }
+
+    pub fn note(&self, note: Note) {
+        if let Some(id) = self.seat {
+            self.shared.class.note(id, note);
+        }
+    }
+
+    /// The marker set the class list shows.
+    fn marker(&self) -> Glyphs {
+        self.ex.app.theme.glyphs
+    }
+}
 
 async fn run(start: Start) {
     let Start {
@@ -60,6 +121,8 @@ async fn run(start: Start) {
         kill,
         role,
         size,
+        name,
+        addr,
         client,
     } = start;
     let (mut read, write) = channel.split();
@@ -72,7 +135,7 @@ async fn run(start: Start) {
     let (mut caps, why) = client.caps(shared.marker);
     // The server's own NO_COLOR turns colour off for everyone.
     caps.color &= std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty());
-    let Ok(mut ex) = Session::new(buf.clone(), shared.state.clone(), caps.theme(), size) else {
+    let Ok(ex) = Session::new(buf.clone(), shared.state.clone(), caps.theme(), size) else {
         return;
     };
     // The first screen's line on switching the drawing, until the first
@@ -80,38 +143,76 @@ async fn run(start: Start) {
     let mut hint = Some(term::hint(caps.glyphs, why.as_deref()));
     let hint_until = Instant::now() + term::HINT_FOR;
     let mut lecturer = shared.follow.subscribe();
-    let mut follow = Follow::start(lecturer.borrow_and_update().is_some());
-    let is_lecturer = role == Role::Lecturer;
-    ex.app.student = !is_lecturer;
-    ex.app.lecturer_keys = shared.lecturer_keys.any();
+    let follow = Follow::start(lecturer.borrow_and_update().is_some());
+    let mut s = Seat {
+        ex,
+        shared: Arc::clone(&shared),
+        role,
+        follow,
+        seat: None,
+        poll: None,
+        lecturer,
+    };
+    let is_lecturer = s.is_lecturer();
+    s.ex.app.student = !is_lecturer;
+    s.ex.app.lecturer_keys = shared.lecturer_keys.any();
+    let name = clean_name(&name);
+    let joined = Instant::now();
+    let mut marker = s.marker();
+    shared.log.line(&format!(
+        "join  {name}{} from {addr}, {}x{}, {}",
+        if is_lecturer { " (lecturer)" } else { "" },
+        size.0,
+        size.1,
+        marker.name()
+    ));
+    let mut roster = shared.class.watch_roster();
+    let mut polls = shared.class.watch_poll();
     if is_lecturer {
-        shared.lecturer_joined(&mut ex.app);
-    } else if follow.following() {
-        catch_up(&mut ex, &lecturer.borrow());
-        ex.app.set_status(FOLLOWING, false);
+        shared.lecturer_joined(&mut s.ex.app);
+        s.ex.app.class.view = Some(shared.class.view());
+        roster.mark_unchanged();
+    } else {
+        if s.follow.following() {
+            s.catch_up();
+            s.ex.app.set_status(FOLLOWING, false);
+        }
+        let following = s.follow.following();
+        s.seat = Some(
+            shared
+                .class
+                .join(&name, addr, size, marker.name(), following),
+        );
+        polls.mark_changed();
     }
     let mut decoder = Decoder::new();
     let mut panel: Option<Panel> = None;
     let idle = shared.idle_timeout;
     let mut deadline = Instant::now() + idle;
+    let mut list_tick = Instant::now() + LIST_TICK;
     let mut dirty = true;
 
     loop {
+        let listing = is_lecturer && s.ex.app.mode == Mode::Class;
         tokio::select! {
             msg = read.wait() => {
                 let Some(msg) = msg else { break };
                 match msg {
                     ChannelMsg::Data { data } => {
                         deadline = Instant::now() + idle;
+                        s.note(Note::Key);
                         let events = decoder.feed(&data[..data.len().min(input::MAX_READ)]);
                         for ev in events {
                             let key = match ev {
                                 Event::Key(k) => k,
                                 // The terminal's answer to Ctrl-L's question.
                                 Event::Resize(w, h) => {
-                                    if (w, h) != ex.app.size && ex.update(Message::Resize(w, h)).is_err() {
-                                        ex.app.quit = true;
-                                        break;
+                                    if (w, h) != s.ex.app.size {
+                                        if s.ex.update(Message::Resize(w, h)).is_err() {
+                                            s.ex.app.quit = true;
+                                            break;
+                                        }
+                                        s.note(Note::Size(w, h));
                                     }
                                     dirty = true;
                                     continue;
@@ -127,49 +228,76 @@ async fn run(start: Start) {
                                 dirty = true;
                                 continue;
                             }
-                            if ex.message_for(&Event::Key(key)) == Some(Message::Redraw) {
+                            if s.ex.message_for(&Event::Key(key)) == Some(Message::Redraw) {
                                 decoder.expect_size();
                             }
-                            if on_key(&mut ex, &mut follow, &mut panel, role, &lecturer, key) {
+                            if on_key(&mut s, &mut panel, key) {
                                 dirty = true;
                             }
-                            if ex.app.quit {
+                            if s.ex.app.quit {
                                 break;
                             }
                         }
-                        if ex.app.quit {
+                        if s.ex.app.quit {
                             break;
                         }
+                        if s.marker() != marker {
+                            marker = s.marker();
+                            s.note(Note::Marker(marker.name().into()));
+                        }
                         if is_lecturer && dirty {
-                            shared.publish(&ex.app);
+                            shared.publish(&s.ex.app);
+                            poll::after_lecturer_keys(&mut s);
                         }
                     }
                     ChannelMsg::WindowChange { col_width, row_height, .. } => {
                         let (w, h) = clamp_size(col_width, row_height);
-                        if ex.update(Message::Resize(w, h)).is_err() {
+                        if s.ex.update(Message::Resize(w, h)).is_err() {
                             break;
                         }
+                        s.note(Note::Size(w, h));
                         dirty = true;
                     }
                     ChannelMsg::Eof | ChannelMsg::Close => break,
                     _ => {}
                 }
             }
-            changed = lecturer.changed(), if !is_lecturer => {
+            changed = s.lecturer.changed(), if !is_lecturer => {
                 if changed.is_err() {
                     break;
                 }
-                let shown = lecturer.borrow_and_update().clone();
-                match follow.on_lecturer(shown.is_some()) {
-                    Effect::Say(s) => ex.app.set_status(s, false),
-                    Effect::Catch => ex.app.set_status(FOLLOWING, false),
-                    Effect::None => {}
-                }
-                if let (true, Some(s)) = (follow.following(), &shown) {
+                let shown = s.lecturer.borrow_and_update().clone();
+                let e = s.follow.on_lecturer(shown.is_some());
+                s.effect(e);
+                if s.follow.following() && shown.is_some() {
                     // Watching the lecturer counts as activity.
                     deadline = Instant::now() + idle;
-                    catch_up(&mut ex, &Some(s.clone()));
+                    s.catch_up();
                 }
+                dirty = true;
+            }
+            changed = polls.changed(), if !is_lecturer => {
+                if changed.is_err() {
+                    break;
+                }
+                let p = polls.borrow_and_update().clone();
+                if poll::on_poll(&mut s, p) {
+                    deadline = Instant::now() + idle;
+                    dirty = true;
+                }
+            }
+            changed = roster.changed(), if is_lecturer => {
+                if changed.is_err() {
+                    break;
+                }
+                roster.mark_unchanged();
+                s.ex.app.class.view = Some(shared.class.view());
+                dirty = true;
+            }
+            () = sleep_until(list_tick), if listing => {
+                // The open class list's idle times move on.
+                s.ex.app.class.view = Some(shared.class.view());
+                list_tick = Instant::now() + LIST_TICK;
                 dirty = true;
             }
             () = sleep_until(deadline) => break,
@@ -179,7 +307,7 @@ async fn run(start: Start) {
             }
             permit = slot.reserve(), if dirty => {
                 let Ok(permit) = permit else { break };
-                let drawn = ex.draw_with(|app, f| {
+                let drawn = s.ex.draw_with(|app, f| {
                     let glyphs = app.theme.glyphs;
                     if let Some(h) = &hint {
                         term::draw_hint(f, h, glyphs);
@@ -197,66 +325,65 @@ async fn run(start: Start) {
             () = slot.closed() => break,
         }
     }
+    if let Some(id) = s.seat {
+        shared.class.leave(id);
+    }
     if is_lecturer {
         shared.lecturer_left();
     }
+    shared.log.line(&format!(
+        "leave {name}{} from {addr} after {}",
+        if is_lecturer { " (lecturer)" } else { "" },
+        class::duration(joined.elapsed())
+    ));
     // Dropping the slot lets the writer restore the client's terminal,
     // send exit status 0 and close the channel.
 }
 
 /// Applies one key; whether the screen may have changed.
-fn on_key(
-    ex: &mut Session<FrameBuf>,
-    follow: &mut Follow,
-    panel: &mut Option<Panel>,
-    role: Role,
-    lecturer: &watch::Receiver<Option<Shown>>,
-    key: KeyEvent,
-) -> bool {
-    let Some(msg) = ex.message_for(&Event::Key(key)) else {
+fn on_key(s: &mut Seat, panel: &mut Option<Panel>, key: KeyEvent) -> bool {
+    let Some(msg) = s.ex.message_for(&Event::Key(key)) else {
         return false;
     };
     if msg == Message::Redraw {
         // Ask the terminal for its size (a client that sends no window
         // change, as Windows' OpenSSH often does not), then repaint; the
         // answer, if any, resizes.
-        let _ = ex.writer().write_all(input::ASK_SIZE);
+        let _ = s.ex.writer().write_all(input::ASK_SIZE);
     }
-    if msg == Message::Follow {
-        match follow.on_follow_key() {
-            Effect::Say(s) => ex.app.set_status(s, false),
-            Effect::Catch => {
-                catch_up(ex, &lecturer.borrow());
-                ex.app.set_status(FOLLOWING, false);
-            }
-            Effect::None => {}
+    match msg {
+        Message::Follow => {
+            let e = s.follow.on_follow_key();
+            s.effect(e);
+            return true;
         }
-        return true;
+        Message::Poll | Message::SavePoll | Message::Answer => {
+            poll::on_key(s, msg);
+            return true;
+        }
+        Message::ToggleClass => {
+            s.ex.app.class.view = Some(s.shared.class.view());
+        }
+        _ => {}
     }
-    if role == Role::Student {
+    if s.role == Role::Student {
         if msg == Message::StartSave {
-            *panel = Some(Panel(ex.app.state.to_ron()));
+            *panel = Some(Panel(s.ex.app.state.to_ron()));
             return true;
         }
         if msg == Message::SavePicture {
             // Nothing is written on the server for a student.
-            ex.app.set_status(NO_PICTURE, false);
+            s.ex.app.set_status(NO_PICTURE, false);
             return true;
         }
-        if let Effect::Say(s) = follow.on_message(&msg) {
+        if let e @ Effect::Say(_) = s.follow.on_message(&msg) {
             // The edit applies first; the status says what happened.
-            let ok = ex.update(msg).is_ok();
-            ex.app.set_status(s, false);
+            let ok = s.ex.update(msg).is_ok();
+            s.effect(e);
             return ok;
         }
     }
-    ex.update(msg).is_ok()
-}
-
-fn catch_up(ex: &mut Session<FrameBuf>, shown: &Option<Shown>) {
-    if let Some(s) = shown {
-        s.apply(&mut ex.app);
-    }
+    s.ex.update(msg).is_ok()
 }
 
 fn draw_panel(f: &mut Frame, ron: &str, glyphs: Glyphs) {

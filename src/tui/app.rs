@@ -8,6 +8,7 @@ use std::time::SystemTime;
 use rough_model::{Axis, Curves, SceneSpec};
 
 use super::caption::{self, KeptCaption};
+use super::class::Classroom;
 use super::ghost::Ghost;
 use super::layout::Regions;
 use super::line_edit::{Edit, LineEdit};
@@ -19,6 +20,7 @@ use super::plots::{
 use super::prompt;
 pub use super::readout::Readout;
 pub use super::status::Hint;
+pub use super::steps::{default_range, step_value, HURST_STEPS, LOG_STEPS};
 use super::theme::Theme;
 use crate::figure::{claims, render_svg, Claim, FigureOptions, MapCache, MapSpec, View};
 use crate::presets;
@@ -70,6 +72,16 @@ pub enum Message {
     /// A served student's `f`: show the lecturer's scene again (the serve
     /// session acts on it; the explorer alone has nothing to follow).
     Follow,
+    /// In a served class (the serve session acts on these): the lecturer's
+    /// `v` (open a poll, or reveal the open one) and `S` (save its answers),
+    /// a student's Enter (answer with the marker's value).
+    Poll,
+    SavePoll,
+    Answer,
+    /// The lecturer's `V`: a poll on a value they type.
+    PollTyped,
+    /// The lecturer's class list, open or closed.
+    ToggleClass,
     /// The next glyph set: braille, half blocks, blocks, ASCII (`M`).
     CycleGlyphs,
     /// Colour off (as under NO_COLOR) or on again (`c`).
@@ -88,14 +100,18 @@ pub enum Mode {
     Prompt(LineEdit),
     /// The prompt for a slider's value, with the text typed so far.
     Value(Axis, LineEdit),
+    /// The lecturer's prompt for a poll's true value of the swept parameter.
+    Truth(Axis, LineEdit),
+    /// The lecturer's class list.
+    Class,
 }
 
 impl Mode {
     /// The open prompt's text field, if a prompt is open.
     pub fn line_mut(&mut self) -> Option<&mut LineEdit> {
         match self {
-            Mode::Prompt(l) | Mode::Value(_, l) => Some(l),
-            Mode::Main | Mode::Help => None,
+            Mode::Prompt(l) | Mode::Value(_, l) | Mode::Truth(_, l) => Some(l),
+            Mode::Main | Mode::Help | Mode::Class => None,
         }
     }
 }
@@ -169,6 +185,8 @@ pub struct App {
     /// The measured surface's scene the session started on, which `5`
     /// returns to after a preset; `None` without a surface.
     pub home: Option<State>,
+    /// The served class as this explorer sees it (nothing when not served).
+    pub class: Classroom,
     pub quit: bool,
     /// How many times the curves were computed (for tests of the cache).
     pub recomputes: usize,
@@ -179,52 +197,6 @@ pub struct App {
     claims_key: Option<CurveKey>,
     /// The loaded scene's caption and the scene it describes.
     captioned: KeptCaption,
-}
-
-/// The default range of each parameter, for its slider and when `x` makes it
-/// the swept one.
-pub fn default_range(axis: Axis) -> (f64, f64) {
-    match axis {
-        Axis::H0OverE => (1e-4, 1e-1),
-        Axis::HRms => (1e-9, 1e-5),
-        Axis::Zeta => (1.0, 1e6),
-        Axis::Hurst => (0.05, 1.0),
-        Axis::RStar => (1e-6, 1e-2),
-    }
-}
-
-/// Log steps per decade (coarse, fine); Hurst steps (coarse, fine).
-pub const LOG_STEPS: (f64, f64) = (4.0, 40.0);
-pub const HURST_STEPS: (f64, f64) = (0.05, 0.01);
-
-/// One step from `v` on the grid of the given step, clamped to `[lo, hi]`.
-/// Values snap to the grid (10^(k/4), 10^(k/40); multiples of 0.05, 0.01),
-/// so repeated steps do not drift and a coarse step from a fine value lands
-/// on the next coarse one.
-pub fn step_value(axis: Axis, v: f64, (lo, hi): (f64, f64), up: bool, fine: bool) -> f64 {
-    const EPS: f64 = 1e-6;
-    let next = |t: f64| {
-        if up {
-            (t + EPS).floor() + 1.0
-        } else {
-            (t - EPS).ceil() - 1.0
-        }
-    };
-    let out = if axis.is_log() {
-        let n = if fine { LOG_STEPS.1 } else { LOG_STEPS.0 };
-        if !(v > 0.0 && v.is_finite()) {
-            return lo;
-        }
-        10f64.powf(next(v.log10() * n) / n)
-    } else {
-        let s = if fine { HURST_STEPS.1 } else { HURST_STEPS.0 };
-        if !v.is_finite() {
-            return lo;
-        }
-        // Round to kill 0.15000000000000002.
-        (next(v / s) * s * 1e9).round() / 1e9
-    };
-    out.clamp(lo, hi)
 }
 
 impl App {
@@ -256,6 +228,7 @@ impl App {
             student: false,
             lecturer_keys: false,
             home: None,
+            class: Classroom::default(),
             quit: false,
             recomputes: 0,
             key: None,
@@ -567,12 +540,24 @@ pub fn update(app: &mut App, msg: Message) {
                 app.mode = Mode::Main;
                 app.set_status("save cancelled", false);
             }
-            Mode::Value(..) => app.mode = Mode::Main,
-            Mode::Main | Mode::Help => {}
+            Mode::Value(..) | Mode::Truth(..) => app.mode = Mode::Main,
+            Mode::Main | Mode::Help | Mode::Class => {}
         },
         Message::PromptAccept => prompt::accept(app),
         Message::Resize(w, h) => app.size = (w, h),
-        Message::Follow | Message::Redraw => {}
+        Message::Follow | Message::Redraw | Message::Poll | Message::SavePoll | Message::Answer => {
+        }
+        Message::PollTyped => {
+            let axis = app.state.sweep.axis();
+            app.mode = Mode::Truth(axis, LineEdit::new("", PROMPT_MAX_CHARS));
+        }
+        Message::ToggleClass => {
+            app.help_page = 0;
+            app.mode = match app.mode {
+                Mode::Class => Mode::Main,
+                _ => Mode::Class,
+            }
+        }
         Message::CycleGlyphs => {
             let g = app.theme.glyphs.next();
             app.theme = app.theme.with_glyphs(g);

@@ -28,6 +28,12 @@ pub enum Context {
     Follower,
     /// An explorer whose session has a measured surface to return to.
     Surface,
+    /// A student's explorer while a poll waits for their answer.
+    Answering,
+    /// The lecturer's explorer in a served class.
+    Lecturer,
+    /// The lecturer's class list is open.
+    ClassList,
     /// Everywhere: the explorer, the help, a prompt, a terminal too small.
     Any,
 }
@@ -38,15 +44,26 @@ impl Context {
             (self, &app.mode),
             (Context::Main | Context::MainAndHelp, Mode::Main)
                 | (Context::Help | Context::MainAndHelp, Mode::Help)
-                | (Context::Prompt, Mode::Prompt(_) | Mode::Value(..))
+                | (
+                    Context::Prompt,
+                    Mode::Prompt(_) | Mode::Value(..) | Mode::Truth(..)
+                )
+                | (Context::ClassList, Mode::Class)
                 | (Context::Any, _)
         ) || (app.mode == Mode::Main && self.listed(app) && self.is_role())
+            || (self == Context::Answering
+                && app.mode == Mode::Main
+                && app.class.asked.is_some_and(|a| !a.revealed))
     }
 
     fn is_role(self) -> bool {
         matches!(
             self,
-            Context::Student | Context::NotStudent | Context::Follower | Context::Surface
+            Context::Student
+                | Context::NotStudent
+                | Context::Follower
+                | Context::Surface
+                | Context::Lecturer
         )
     }
 
@@ -55,8 +72,11 @@ impl Context {
         match self {
             Context::Student => app.student,
             Context::NotStudent => !app.student,
-            Context::Follower => app.student && app.lecturer_keys,
             Context::Surface => app.home.is_some(),
+            Context::Follower | Context::Answering => app.student && app.lecturer_keys,
+            Context::Lecturer => app.class.view.is_some(),
+            // The class list's title names its keys.
+            Context::ClassList => false,
             _ => true,
         }
     }
@@ -124,7 +144,10 @@ pub struct Binding {
     pub footer: Option<&'static str>,
 }
 
-use Context::{Any, Follower, Help, Main, MainAndHelp, NotStudent, Prompt, Student, Surface};
+use Context::{
+    Answering, Any, ClassList, Follower, Help, Lecturer, Main, MainAndHelp, NotStudent, Prompt,
+    Student, Surface,
+};
 use KeyCode::{
     BackTab, Backspace, Delete, Down, End, Enter, Esc, Home, Left, PageDown, PageUp, Right, Tab, Up,
 };
@@ -169,7 +192,15 @@ const FINE_UP: Message = M::Step {
 
 #[rustfmt::skip]
 pub const BINDINGS: &[Binding] = &[
+    bind(Answering, &[(key(Enter), M::Answer)], "Enter", "in a poll: answer with the marker's value", Some("⏎ answer")),
     bind(Follower, &[(ch('f'), M::Follow)], "f", "follow the lecturer again", Some("f follow")),
+    bind(Lecturer, &[(ch('v'), M::Poll)], "v", "poll: the class predicts; v again reveals", Some("v poll")),
+    bind(Lecturer, &[(ch('V'), M::PollTyped)], "V", "poll on a value you type", None),
+    bind(Lecturer, &[(ch('w'), M::ToggleClass)], "w", "the class list", Some("w class")),
+    bind(Lecturer, &[(ch('S'), M::SavePoll)], "S", "save the poll's answers here (.csv)", None),
+    bind(ClassList, &[(ch('w'), M::ToggleClass), (key(Esc), M::ToggleClass)], "w  Esc", "close the class list", None),
+    bind(ClassList, &[(key(Right), M::HelpPage { next: true }), (key(PageDown), M::HelpPage { next: true }), (ch(' '), M::HelpPage { next: true }), (key(Left), M::HelpPage { next: false }), (key(PageUp), M::HelpPage { next: false })], "→ ←  PgDn PgUp", "next / previous page of the class list", None),
+    bind(ClassList, &[(ch('q'), M::Quit), (ctrl('c'), M::Quit)], "q  Ctrl-C", "quit", None),
     bind(Main, &[(key(Up), M::SelectPrev), (ch('k'), M::SelectPrev), (key(Down), M::SelectNext), (ch('j'), M::SelectNext)], "↑ ↓  k j", "select a slider", Some("↑↓ select")),
     bind(Main, &[(key(Left), DOWN), (ch('h'), DOWN), (key(Right), UP), (ch('l'), UP)], "← →  h l", "change it (¼ decade; H: 0.05)", Some("←→ change")),
     bind(Main, &[(shift(Left), FINE_DOWN), (ch('H'), FINE_DOWN), (shift(Right), FINE_UP), (ch('L'), FINE_UP)], "⇧← ⇧→  H L", "fine step (1/40 decade; H: 0.01)", None),
@@ -249,7 +280,9 @@ pub fn message_for_key(app: &App, ev: &KeyEvent) -> Option<Message> {
         }
     }
     // A prompt takes any other printable character as text.
-    if let (Mode::Prompt(_) | Mode::Value(..), KeyCode::Char(c)) = (&app.mode, ev.code) {
+    if let (Mode::Prompt(_) | Mode::Value(..) | Mode::Truth(..), KeyCode::Char(c)) =
+        (&app.mode, ev.code)
+    {
         let plain = ev.modifiers - KeyModifiers::SHIFT;
         if plain.is_empty() && !c.is_control() {
             return Some(edit(Edit::Insert(c)));

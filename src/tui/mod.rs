@@ -5,6 +5,7 @@
 pub mod app;
 pub mod caps;
 pub mod caption;
+pub mod class;
 pub mod fmt;
 pub mod ghost;
 pub mod glyphs;
@@ -18,6 +19,7 @@ pub mod prompt;
 pub mod readout;
 pub mod session;
 pub mod status;
+pub mod steps;
 pub mod term;
 pub mod theme;
 pub mod value_input;

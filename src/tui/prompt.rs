@@ -1,7 +1,9 @@
 //! Enter in a prompt: the save prompt writes a snapshot named as typed; the
-//! value prompt sets the selected parameter, checked by the model.
+//! value prompt sets the selected parameter, checked by the model; the
+//! lecturer's truth prompt hands a poll's typed true value to the server.
 
 use super::app::{App, Hint, Mode};
+use super::fmt::{fmt_param, fmt_short};
 use super::value_input;
 use crate::snapshot;
 
@@ -60,6 +62,32 @@ pub fn accept(app: &mut App) {
                 Err(e) => app.set_status(format!("{e:#}"), true),
             }
         }
-        Mode::Main | Mode::Help => {}
+        Mode::Truth(axis, line) => {
+            let (axis, text) = (*axis, line.text());
+            if text.trim().is_empty() {
+                app.mode = Mode::Main;
+                return;
+            }
+            let sweep = app.state.sweep;
+            match value_input::parse_value(axis, &text) {
+                Ok(v) if sweep.axis() == axis && (sweep.from()..=sweep.to()).contains(&v) => {
+                    app.mode = Mode::Main;
+                    app.status = None;
+                    app.class.typed = Some((axis, v));
+                }
+                Ok(v) => app.set_status(
+                    format!(
+                        "{} = {} is outside the sweep {}…{}: the class answers inside it",
+                        axis.symbol(),
+                        fmt_param(axis, v),
+                        fmt_short(axis, sweep.from()),
+                        fmt_short(axis, sweep.to())
+                    ),
+                    true,
+                ),
+                Err(e) => app.set_status(e, true),
+            }
+        }
+        Mode::Main | Mode::Help | Mode::Class => {}
     }
 }

@@ -150,7 +150,26 @@ pub fn render_status(app: &App, status: Rect, below: Rect, buf: &mut Buffer) {
             spans.push(Span::styled(gl.text(&text).into_owned(), t.dim));
             Line::from(spans)
         }
-        Mode::Main | Mode::Help => {
+        Mode::Truth(axis, line) => {
+            let mut spans = vec![Span::styled(
+                gl.text(&format!("poll: the true {} = ", axis.symbol()))
+                    .into_owned(),
+                t.title,
+            )];
+            spans.extend(field(line, usize::from(status.width) / 3, gl));
+            let s = &app.state.sweep;
+            spans.push(Span::styled(
+                gl.text(&format!(
+                    "   the class answers with the marker, {}…{}",
+                    fmt_short(*axis, s.from()),
+                    fmt_short(*axis, s.to())
+                ))
+                .into_owned(),
+                t.dim,
+            ));
+            Line::from(spans)
+        }
+        Mode::Main | Mode::Help | Mode::Class => {
             let w = usize::from(status.width);
             let (text, style) = match &app.status {
                 Some(s) => (s.text.clone(), if s.error { t.error } else { t.ok }),

@@ -1,7 +1,7 @@
 //! A russh client for the server tests and the load test
 //! (`examples/serve_load.rs` includes this file): a student logged in with
-//! "none" and an explorer started at a given size; and what /proc says
-//! about the server process.
+//! "none" or the lecturer by key, and an explorer started at a given size;
+//! and what /proc says about the server process.
 
 use std::sync::Arc;
 
@@ -32,6 +32,40 @@ pub async fn student(port: u16, user: &str, cols: u32, rows: u32) -> Result<Clie
     ch.request_pty(true, "xterm", cols, rows, 0, 0, &[]).await?;
     ch.request_shell(true).await?;
     Ok((h, ch))
+}
+
+/// Logs in as the lecturer with `key` and starts the explorer at
+/// `cols`×`rows`.
+pub async fn lecturer(
+    port: u16,
+    key: russh::keys::PrivateKey,
+    cols: u32,
+    rows: u32,
+) -> Result<Client, russh::Error> {
+    let config = Arc::new(client::Config::default());
+    let mut h = client::connect(config, ("127.0.0.1", port), Trusting).await?;
+    let key = russh::keys::PrivateKeyWithHashAlg::new(Arc::new(key), None);
+    if !h.authenticate_publickey("lecturer", key).await?.success() {
+        return Err(russh::Error::NotAuthenticated);
+    }
+    let ch = h.channel_open_session().await?;
+    ch.request_pty(true, "xterm", cols, rows, 0, 0, &[]).await?;
+    ch.request_shell(true).await?;
+    Ok((h, ch))
+}
+
+/// A new Ed25519 key, and its public half in authorized_keys form.
+pub fn new_key() -> (russh::keys::PrivateKey, String) {
+    use std::io::Read;
+    let mut seed = [0u8; 32];
+    std::fs::File::open("/dev/urandom")
+        .and_then(|mut f| f.read_exact(&mut seed))
+        .unwrap();
+    let key = russh::keys::PrivateKey::from(
+        russh::keys::ssh_key::private::Ed25519Keypair::from_seed(&seed),
+    );
+    let public = key.public_key().to_openssh().unwrap();
+    (key, public)
 }
 
 /// A field of /proc/PID/status, e.g. `Threads` or `VmRSS` (in kB); 0 if absent.

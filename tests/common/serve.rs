@@ -4,6 +4,8 @@
 use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
 
 use super::tmux::{have_tool, BIN};
 
@@ -23,6 +25,8 @@ pub struct Server {
     /// What the server printed before it started accepting.
     pub banner: String,
     pub dir: PathBuf,
+    /// What it printed since (the console log), read as it comes.
+    log: Arc<Mutex<String>>,
 }
 
 impl Server {
@@ -61,11 +65,43 @@ impl Server {
             }
         }
         let port = port.unwrap_or_else(|| panic!("no address in:\n{banner}"));
+        let log = Arc::new(Mutex::new(String::new()));
+        let sink = Arc::clone(&log);
+        std::thread::spawn(move || {
+            for line in out.lines() {
+                let Ok(line) = line else { break };
+                let mut l = sink.lock().unwrap();
+                l.push_str(&line);
+                l.push('\n');
+            }
+        });
         Server {
             child,
             port,
             banner,
             dir: dir.to_path_buf(),
+            log,
+        }
+    }
+
+    /// The console log so far.
+    pub fn log(&self) -> String {
+        self.log.lock().unwrap().clone()
+    }
+
+    /// Waits (`secs` at most) until the console log satisfies `pred`.
+    pub fn wait_log(&self, what: &str, secs: u64, pred: impl Fn(&str) -> bool) -> String {
+        let start = Instant::now();
+        loop {
+            let l = self.log();
+            if pred(&l) {
+                return l;
+            }
+            assert!(
+                start.elapsed() < Duration::from_secs(secs),
+                "timed out waiting for {what}; the console shows:\n{l}"
+            );
+            std::thread::sleep(Duration::from_millis(50));
         }
     }
 

@@ -3,6 +3,7 @@
 //! from [`Regions`].
 
 mod chart;
+pub mod class;
 mod indices;
 mod load;
 mod map;
@@ -44,10 +45,14 @@ impl Widget for &App {
             View::Load => load::render(self, chart, buf),
             View::Spectrum => spectrum::render(self, chart, buf),
         }
+        class::render_poll(self, chart, buf);
         render_footer(self, r.footer, buf);
         status::render_status(self, r.status, r.footer, buf);
         if self.mode == Mode::Help {
             help::render_help(self, area, buf);
+        }
+        if self.mode == Mode::Class {
+            class::render_list(self, area, buf);
         }
     }
 }
@@ -142,17 +147,26 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
 }
 
 /// The caption, wrapped over all rows but the last, and on the last row
-/// where the figure's claims hold at the current parameters.
+/// where the figure's claims hold at the current parameters. In a served
+/// class the lecturer's class line comes first, and a student's poll line
+/// stands in for the claims.
 fn render_caption(app: &App, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
     let g = t.glyphs;
-    let rows = usize::from(area.height.saturating_sub(1));
+    let mut lines: Vec<Line> = class::class_line(app).into_iter().collect();
+    let rows = usize::from(area.height.saturating_sub(1)).saturating_sub(lines.len());
     let text = g.text(app.state.caption.as_deref().unwrap_or(""));
-    let mut lines: Vec<Line> = wrap(&text, usize::from(area.width), rows, g.cut())
-        .into_iter()
-        .map(|l| Line::styled(l, t.dim))
-        .collect();
-    lines.resize(rows, Line::raw(""));
+    lines.extend(
+        wrap(&text, usize::from(area.width), rows, g.cut())
+            .into_iter()
+            .map(|l| Line::styled(l, t.dim)),
+    );
+    lines.resize(usize::from(area.height.saturating_sub(1)), Line::raw(""));
+    if let Some(poll) = class::poll_line(app, usize::from(area.width)) {
+        lines.push(poll);
+        Paragraph::new(lines).render(area, buf);
+        return;
+    }
     let claims = claims_line(&app.claims, usize::from(area.width), g);
     lines.push(Line::styled(claims, t.ok));
     Paragraph::new(lines).render(area, buf);

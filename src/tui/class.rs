@@ -1,0 +1,474 @@
+//! What an explorer shows about a class it is part of: the lecturer's view
+//! of the class (who is there, who follows, the poll's answers) and a
+//! student's poll (the question, their answer, the reveal). The explorer
+//! only draws these; who fills them in, and how, is the server's business
+//! (`serve::class`).
+
+use std::time::Duration;
+
+use rough_model::Axis;
+
+use crate::figure::{short_number, Claim, ClaimKind, View};
+
+/// A value of `axis` to four digits, lengths in a readable unit: `321.5`,
+/// `20 nm`, `0.85`.
+pub fn fmt_value(axis: Axis, v: f64) -> String {
+    if !matches!(axis, Axis::HRms | Axis::RStar) {
+        return short_number(v);
+    }
+    let a = v.abs();
+    let (scale, unit) = if a < 1e-6 {
+        (1e9, "nm")
+    } else if a < 1e-3 {
+        (1e6, "µm")
+    } else if a < 1.0 {
+        (1e3, "mm")
+    } else {
+        (1.0, "m")
+    };
+    format!("{} {unit}", short_number(v * scale))
+}
+
+/// The characters the class panels draw that are not plain ASCII, in one
+/// place, with their ASCII stand-ins.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ClassGlyphs {
+    /// Between the parts of a line, with its spaces.
+    pub sep: &'static str,
+    /// In a terminal size, 80×24.
+    pub times: &'static str,
+    pub half: &'static str,
+    /// The end of a cut name.
+    pub cut: &'static str,
+    /// A histogram bar's cells, one to eight eighths full.
+    pub bars: [&'static str; 8],
+    /// The true value's column on the histogram.
+    pub truth: &'static str,
+}
+
+pub const UNICODE: ClassGlyphs = ClassGlyphs {
+    sep: " · ",
+    times: "×",
+    half: "½",
+    cut: "…",
+    bars: ["▁", "▂", "▃", "▄", "▅", "▆", "▇", "█"],
+    truth: "┃",
+};
+
+pub const ASCII: ClassGlyphs = ClassGlyphs {
+    sep: " - ",
+    times: "x",
+    half: "1/2",
+    cut: "~",
+    bars: ["_", "_", ".", ".", ":", ":", "#", "#"],
+    truth: "|",
+};
+
+/// What a poll asks: where along its swept parameter a claim of the scene
+/// holds, or a value the lecturer typed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Question {
+    /// The parameter the answer is a value of (the sweep's, at the poll).
+    pub axis: Axis,
+    pub ask: Ask,
+    /// The model's answer: the claim's bisection, or the typed value.
+    pub truth: f64,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Ask {
+    /// Where the plastic share passes ½ (rising) or falls below it.
+    Share { rising: bool },
+    /// Where the index in use (Ψ* with the size effect, else Ψ_P) reaches 1
+    /// (rising) or falls below it.
+    Index { rising: bool, size_effect: bool },
+    /// Where the total slope has its minimum inside the sweep.
+    Minimum,
+    /// A value the lecturer typed.
+    Typed,
+}
+
+impl Question {
+    /// The question the view and the scene's claims make: on the index
+    /// view the index reaching 1, elsewhere the plastic share passing ½
+    /// (each falling back on the other, then on the total slope's minimum,
+    /// fig3's claim); `None` when the scene makes no claim (the lecturer
+    /// then types the value).
+    pub fn of_claims(view: View, claims: &[Claim]) -> Option<Question> {
+        let first = |kind| claims.iter().find(|c| c.kind == kind);
+        let (a, b) = match view {
+            View::Indices => (ClaimKind::IndexOne, ClaimKind::ShareHalf),
+            _ => (ClaimKind::ShareHalf, ClaimKind::IndexOne),
+        };
+        let c = first(a)
+            .or_else(|| first(b))
+            .or_else(|| first(ClaimKind::TotalMinimum))?;
+        let ask = match c.kind {
+            ClaimKind::ShareHalf => Ask::Share { rising: c.rising },
+            ClaimKind::IndexOne => Ask::Index {
+                rising: c.rising,
+                size_effect: c.size_effect,
+            },
+            ClaimKind::TotalMinimum => Ask::Minimum,
+        };
+        Some(Question {
+            axis: c.axis,
+            ask,
+            truth: c.at,
+        })
+    }
+
+    /// "where does the plastic share pass ½?"
+    pub fn text(&self, g: &ClassGlyphs) -> String {
+        let half = g.half;
+        match self.ask {
+            Ask::Share { rising: true } => format!("where does the plastic share pass {half}?"),
+            Ask::Share { rising: false } => {
+                format!("where does the plastic share fall below {half}?")
+            }
+            Ask::Index {
+                rising,
+                size_effect,
+            } => {
+                let psi = if size_effect { "Ψ*" } else { "Ψ_P" };
+                let verb = if rising { "reach" } else { "fall below" };
+                format!("where does {psi} {verb} 1?")
+            }
+            Ask::Minimum => "where is the total slope smallest?".to_string(),
+            Ask::Typed => format!("which {} is it?", self.axis.symbol()),
+        }
+    }
+
+    /// `ζ = 321.5`
+    pub fn value(&self, v: f64) -> String {
+        format!("{} = {}", self.axis.symbol(), fmt_value(self.axis, v))
+    }
+
+    /// How far `answer` is from the truth: a factor on log axes, a
+    /// difference on the Hurst exponent's linear one.
+    pub fn off(&self, answer: f64, g: &ClassGlyphs) -> String {
+        let t = self.truth;
+        if self.axis.is_log() {
+            if !(answer > 0.0 && t > 0.0) {
+                return "off the scale".into();
+            }
+            let f = (answer / t).max(t / answer);
+            if f < 1.01 {
+                return "spot on".into();
+            }
+            let dir = if answer > t { "too high" } else { "too low" };
+            // Two digits say how far off well enough: 1.7×, 12×, 1.2e3×.
+            let f = if f < 10.0 {
+                format!("{f:.1}").trim_end_matches(".0").to_string()
+            } else {
+                short_number(f.round())
+            };
+            format!("{f}{} {dir}", g.times)
+        } else {
+            let d = answer - t;
+            if d.abs() < 0.005 {
+                return "spot on".into();
+            }
+            let dir = if d > 0.0 { "too high" } else { "too low" };
+            format!("{} {dir}", fmt_value(self.axis, d.abs()))
+        }
+    }
+}
+
+/// One student as the lecturer's class list shows them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Seat {
+    /// Escaped and cut (see `serve::class::clean_name`).
+    pub name: String,
+    pub state: SeatState,
+    /// Columns × rows.
+    pub size: (u16, u16),
+    /// The student's marker set.
+    pub marker: String,
+    /// Since their last key.
+    pub idle: Duration,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SeatState {
+    Following,
+    /// Exploring on their own (or no lecturer to follow).
+    Own,
+    /// A poll is open and they have not answered.
+    Answering,
+    Answered,
+}
+
+impl SeatState {
+    pub fn label(self) -> &'static str {
+        match self {
+            SeatState::Following => "following",
+            SeatState::Own => "on their own",
+            SeatState::Answering => "answering",
+            SeatState::Answered => "answered",
+        }
+    }
+}
+
+/// The poll as the lecturer sees it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Tally {
+    pub question: Question,
+    /// Every answer given (also by students who left since).
+    pub answers: Vec<f64>,
+    /// Students asked: those here and those who left after answering.
+    pub asked: usize,
+    pub revealed: bool,
+}
+
+/// What the lecturer's explorer shows about the class.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct ClassView {
+    /// The students, in the order they came.
+    pub seats: Vec<Seat>,
+    pub poll: Option<Tally>,
+}
+
+/// The smallest terminal the explorer draws in (the layout's minimum).
+const FULL: (u16, u16) = super::layout::MIN_SIZE;
+
+impl ClassView {
+    /// "31 students · 28 following · 3 on their own · 2 terminals < 80×24",
+    /// with the poll's count while one is open ("23/31 answered") or its
+    /// answer once revealed.
+    pub fn line(&self, g: &ClassGlyphs) -> String {
+        let n = self.seats.len();
+        let count = |s: SeatState| self.seats.iter().filter(|x| x.state == s).count();
+        let plural =
+            |k: usize, one: &str, many: &str| format!("{k} {}", if k == 1 { one } else { many });
+        let mut parts = vec![plural(n, "student", "students")];
+        match &self.poll {
+            Some(t) if !t.revealed => {
+                parts.push(format!("{}/{} answered", t.answers.len(), t.asked));
+            }
+            Some(t) => {
+                parts.push(format!(
+                    "revealed {} ({})",
+                    t.question.value(t.question.truth),
+                    plural(t.answers.len(), "answer", "answers")
+                ));
+            }
+            None => {
+                parts.push(format!("{} following", count(SeatState::Following)));
+                parts.push(format!("{} on their own", count(SeatState::Own)));
+            }
+        }
+        let small = self
+            .seats
+            .iter()
+            .filter(|s| s.size.0 < FULL.0 || s.size.1 < FULL.1)
+            .count();
+        if small > 0 {
+            parts.push(format!(
+                "{} < {}{}{}",
+                plural(small, "terminal", "terminals"),
+                FULL.0,
+                g.times,
+                FULL.1
+            ));
+        }
+        parts.join(g.sep)
+    }
+}
+
+/// A student's poll.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Asked {
+    pub question: Question,
+    /// Their answer, once sent.
+    pub answer: Option<f64>,
+    pub revealed: bool,
+}
+
+impl Asked {
+    /// The line that stands in for the claims while the poll is on.
+    pub fn line(&self, g: &ClassGlyphs, width: usize) -> String {
+        let q = &self.question;
+        let sep = g.sep;
+        if self.revealed {
+            let truth = format!("the model: {}", q.value(q.truth));
+            return match self.answer {
+                Some(a) => format!(
+                    "{truth}{sep}you: {}{sep}{}",
+                    fmt_value(q.axis, a),
+                    q.off(a, g)
+                ),
+                None => format!("{truth}{sep}you did not answer"),
+            };
+        }
+        match self.answer {
+            None => {
+                let ask = format!("Predict: {}", q.text(g));
+                [
+                    " Move the marker and press Enter",
+                    " Marker, then Enter",
+                    "",
+                ]
+                .iter()
+                .map(|how| format!("{ask}{how}"))
+                .find(|s| s.chars().count() <= width)
+                .unwrap_or(ask)
+            }
+            Some(a) => format!(
+                "you answered {}{sep}Enter again changes it{sep}waiting for the reveal",
+                q.value(a)
+            ),
+        }
+    }
+}
+
+/// The class as one explorer sees it: the lecturer's view, or a student's
+/// poll, and the value a lecturer typed for a poll (taken by the server).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Classroom {
+    /// Set for the lecturer of a served class.
+    pub view: Option<ClassView>,
+    /// Set for a student while a poll is on.
+    pub asked: Option<Asked>,
+    /// The true value the lecturer typed for a new poll, until the server
+    /// takes it.
+    pub typed: Option<(Axis, f64)>,
+}
+
+/// How long, in words: `45s`, `2m03s`, `1h02m`.
+pub fn duration(d: Duration) -> String {
+    let s = d.as_secs();
+    match s {
+        0..60 => format!("{s}s"),
+        60..3600 => format!("{}m{:02}s", s / 60, s % 60),
+        _ => format!("{}h{:02}m", s / 3600, s / 60 % 60),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(axis: Axis, ask: Ask, truth: f64) -> Question {
+        Question { axis, ask, truth }
+    }
+
+    #[test]
+    fn the_question_follows_the_view_and_the_claims() {
+        let claims = crate::figure::claims(&crate::presets::load("fig2").unwrap());
+        let s = Question::of_claims(View::Slopes, &claims).unwrap();
+        assert_eq!(s.ask, Ask::Share { rising: true });
+        assert_eq!(s.truth, claims[0].at);
+        assert_eq!(s.text(&UNICODE), "where does the plastic share pass ½?");
+        let i = Question::of_claims(View::Indices, &claims).unwrap();
+        assert_eq!(i.text(&UNICODE), "where does Ψ_P reach 1?");
+        assert_eq!(i.truth, claims[1].at);
+        // fig3 claims only the total slope's minimum: that is the question,
+        // on either view, its truth the claim's own number.
+        let fig3 = crate::figure::claims(&crate::presets::load("fig3").unwrap());
+        for view in [View::Slopes, View::Indices] {
+            let m = Question::of_claims(view, &fig3).unwrap();
+            assert_eq!(m.ask, Ask::Minimum);
+            assert_eq!((m.axis, m.truth), (Axis::Zeta, fig3[0].at));
+            assert_eq!(m.text(&UNICODE), "where is the total slope smallest?");
+            assert_eq!(m.value(m.truth), "ζ = 3.191");
+        }
+        // Elsewhere the minimum comes last: fig4 asks the share.
+        let fig4 = crate::figure::claims(&crate::presets::load("fig4").unwrap());
+        let f = Question::of_claims(View::Slopes, &fig4).unwrap();
+        assert_eq!(f.ask, Ask::Share { rising: false });
+        // No claim at all: the lecturer types the value.
+        assert_eq!(Question::of_claims(View::Slopes, &[]), None);
+        // Only an index claim: the slopes view asks it.
+        let only = [claims[1].clone()];
+        assert_eq!(
+            Question::of_claims(View::Slopes, &only).map(|q| q.truth),
+            Some(claims[1].at)
+        );
+    }
+
+    #[test]
+    fn durations_read_short() {
+        assert_eq!(duration(Duration::from_secs(45)), "45s");
+        assert_eq!(duration(Duration::from_secs(123)), "2m03s");
+        assert_eq!(duration(Duration::from_secs(3720)), "1h02m");
+    }
+
+    #[test]
+    fn how_far_off() {
+        let z = q(Axis::Zeta, Ask::Typed, 321.5);
+        assert_eq!(z.off(643.0, &UNICODE), "2× too high");
+        assert_eq!(z.off(160.75, &ASCII), "2x too low");
+        assert_eq!(z.off(322.0, &UNICODE), "spot on");
+        assert_eq!(z.off(562.34, &UNICODE), "1.7× too high");
+        assert_eq!(z.off(3215.0 * 1.26, &UNICODE), "13× too high");
+        let h = q(Axis::Hurst, Ask::Typed, 0.8);
+        assert_eq!(h.off(0.7, &UNICODE), "0.1 too low");
+        assert_eq!(h.off(0.8, &UNICODE), "spot on");
+        let r = q(Axis::HRms, Ask::Typed, 2e-8);
+        assert_eq!(r.value(2e-8), "h_rms = 20 nm");
+    }
+
+    #[test]
+    fn the_class_line() {
+        let seat = |state, size| Seat {
+            name: "a".into(),
+            state,
+            size,
+            marker: "braille".into(),
+            idle: Duration::ZERO,
+        };
+        let mut v = ClassView {
+            seats: vec![
+                seat(SeatState::Following, (100, 30)),
+                seat(SeatState::Following, (79, 30)),
+                seat(SeatState::Own, (80, 23)),
+            ],
+            poll: None,
+        };
+        assert_eq!(
+            v.line(&UNICODE),
+            "3 students · 2 following · 1 on their own · 2 terminals < 80×24"
+        );
+        v.seats.truncate(1);
+        assert_eq!(v.line(&ASCII), "1 student - 1 following - 0 on their own");
+        v.poll = Some(Tally {
+            question: q(Axis::Zeta, Ask::Share { rising: true }, 321.5),
+            answers: vec![100.0],
+            asked: 2,
+            revealed: false,
+        });
+        assert_eq!(v.line(&UNICODE), "1 student · 1/2 answered");
+        v.poll.as_mut().unwrap().revealed = true;
+        assert_eq!(
+            v.line(&UNICODE),
+            "1 student · revealed ζ = 321.5 (1 answer)"
+        );
+    }
+
+    #[test]
+    fn a_students_line_fits_80_columns() {
+        let mut a = Asked {
+            question: q(Axis::Zeta, Ask::Share { rising: false }, 321.5),
+            answer: None,
+            revealed: false,
+        };
+        for w in [80, 60, 40] {
+            let l = a.line(&UNICODE, w);
+            assert!(l.starts_with("Predict: where does the plastic share fall below ½?"));
+            assert!(l.chars().count() <= w.max(51), "{l}");
+        }
+        a.answer = Some(643.0);
+        assert!(a.line(&UNICODE, 80).starts_with("you answered ζ = 643"));
+        a.revealed = true;
+        assert_eq!(
+            a.line(&UNICODE, 80),
+            "the model: ζ = 321.5 · you: 643 · 2× too high"
+        );
+        a.answer = None;
+        assert_eq!(
+            a.line(&ASCII, 80),
+            "the model: ζ = 321.5 - you did not answer"
+        );
+    }
+}

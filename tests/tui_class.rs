@@ -1,0 +1,249 @@
+//! The class panels without a server: what the lecturer's and a student's
+//! explorer draw and which keys they take when the class fills them in.
+
+mod common;
+
+use std::time::Duration;
+
+use common::app::{ch, fig, press, screen, type_text};
+use crossterm::event::{KeyCode, KeyModifiers};
+use rough_model::Axis;
+use roughtui::tui::app::{App, Message, Mode};
+use roughtui::tui::class::{Ask, Asked, ClassView, Question, Seat, SeatState, Tally};
+use roughtui::tui::keys::message_for_key;
+
+fn lecturer(name: &str) -> App {
+    let mut a = fig(name);
+    a.class.view = Some(ClassView::default());
+    a
+}
+
+fn key(app: &App, code: KeyCode) -> Option<Message> {
+    message_for_key(app, &common::key(code, KeyModifiers::NONE))
+}
+
+fn seat(name: &str, state: SeatState, size: (u16, u16)) -> Seat {
+    Seat {
+        name: name.into(),
+        state,
+        size,
+        marker: "braille".into(),
+        idle: Duration::from_secs(75),
+    }
+}
+
+#[test]
+fn only_the_lecturer_has_the_poll_and_class_keys() {
+    let plain = fig("fig2");
+    for c in ['v', 'V', 'w', 'S'] {
+        assert_eq!(key(&plain, KeyCode::Char(c)), None, "{c}");
+    }
+    let l = lecturer("fig2");
+    assert_eq!(key(&l, KeyCode::Char('v')), Some(Message::Poll));
+    assert_eq!(key(&l, KeyCode::Char('V')), Some(Message::PollTyped));
+    assert_eq!(key(&l, KeyCode::Char('w')), Some(Message::ToggleClass));
+    assert_eq!(key(&l, KeyCode::Char('S')), Some(Message::SavePoll));
+    let mut s = fig("fig2");
+    s.student = true;
+    s.lecturer_keys = true;
+    assert_eq!(key(&s, KeyCode::Char('v')), None);
+    assert_eq!(key(&s, KeyCode::Enter), Some(Message::StartValue));
+    // While a poll waits for them, a student's Enter answers.
+    let q = Question {
+        axis: Axis::Zeta,
+        ask: Ask::Share { rising: true },
+        truth: 321.5,
+    };
+    s.class.asked = Some(Asked {
+        question: q,
+        answer: None,
+        revealed: false,
+    });
+    assert_eq!(key(&s, KeyCode::Enter), Some(Message::Answer));
+    assert!(screen(&s).contains("Predict: where does the plastic share pass ½?"));
+    assert!(!screen(&s).contains("Ψ_P reaches 1 at"));
+    s.class.asked.as_mut().unwrap().revealed = true;
+    assert_eq!(key(&s, KeyCode::Enter), Some(Message::StartValue));
+    assert!(screen(&s).contains("the model: ζ = 321.5 · you did not answer"));
+}
+
+#[test]
+fn the_lecturer_types_a_polls_value_inside_the_sweep() {
+    let mut l = lecturer("fig3");
+    ch(&mut l, 'V');
+    assert!(matches!(l.mode, Mode::Truth(Axis::Zeta, _)));
+    assert!(screen(&l).contains("poll: the true ζ = "));
+    type_text(&mut l, "2e4");
+    press(&mut l, KeyCode::Enter, KeyModifiers::NONE);
+    assert!(
+        matches!(l.mode, Mode::Truth(..)),
+        "an outside value was taken"
+    );
+    let s = l.status.as_ref().unwrap();
+    assert!(s.error);
+    assert_eq!(
+        s.text,
+        "ζ = 20000 is outside the sweep 1…1e4: the class answers inside it"
+    );
+    assert_eq!(l.class.typed, None);
+    press(&mut l, KeyCode::Char('u'), KeyModifiers::CONTROL);
+    type_text(&mut l, "abc");
+    press(&mut l, KeyCode::Enter, KeyModifiers::NONE);
+    assert_eq!(l.class.typed, None);
+    press(&mut l, KeyCode::Char('u'), KeyModifiers::CONTROL);
+    type_text(&mut l, "250");
+    press(&mut l, KeyCode::Enter, KeyModifiers::NONE);
+    assert_eq!(l.mode, Mode::Main);
+    assert_eq!(l.class.typed, Some((Axis::Zeta, 250.0)));
+    // Esc leaves the prompt without a poll.
+    l.class.typed = None;
+    ch(&mut l, 'V');
+    press(&mut l, KeyCode::Esc, KeyModifiers::NONE);
+    assert_eq!((l.mode.clone(), l.class.typed), (Mode::Main, None));
+}
+
+#[test]
+fn the_lecturer_sees_the_class_and_the_histogram() {
+    let mut l = lecturer("fig2");
+    l.class.view = Some(ClassView {
+        seats: vec![
+            seat("alice", SeatState::Answered, (100, 30)),
+            seat("bob", SeatState::Answering, (70, 20)),
+        ],
+        poll: Some(Tally {
+            question: Question {
+                axis: Axis::Zeta,
+                ask: Ask::Share { rising: true },
+                truth: 321.5,
+            },
+            answers: vec![100.0, 100.0, 1000.0],
+            asked: 4,
+            revealed: false,
+        }),
+    });
+    let s = screen(&l);
+    assert!(
+        s.lines()
+            .nth(1)
+            .unwrap()
+            .starts_with("2 students · 3/4 answered · 1 terminal < 80×24"),
+        "{s}"
+    );
+    // Two bars, the one of two answers twice as high (in eighths of a cell).
+    let bars = |s: &str, col: usize| -> usize {
+        s.lines()
+            .filter_map(|l| l.chars().nth(col))
+            .filter_map(|c| "▁▂▃▄▅▆▇█".chars().position(|b| b == c))
+            .map(|i| i + 1)
+            .sum()
+    };
+    let cols: Vec<usize> = (0..80).filter(|c| bars(&s, *c) > 0).collect();
+    assert_eq!(cols.len(), 2, "{s}");
+    assert_eq!(bars(&s, cols[0]), 2 * bars(&s, cols[1]), "{s}");
+    assert!(s.contains(" 3/4 answered "), "{s}");
+    // The reveal: the true value's column.
+    l.class
+        .view
+        .as_mut()
+        .unwrap()
+        .poll
+        .as_mut()
+        .unwrap()
+        .revealed = true;
+    let s = screen(&l);
+    assert!(s.contains("┃"), "{s}");
+    assert!(s.contains("ζ = 321.5 · 3 answers"), "{s}");
+    // On the load view (not along ζ) only the count, and where to look.
+    l.view = roughtui::figure::View::Load;
+    let s = screen(&l);
+    assert!(!s.contains('█') && !s.contains('┃'), "{s}");
+    assert!(s.contains("on a chart along ζ"), "{s}");
+    // w: the class list.
+    ch(&mut l, 'w');
+    assert_eq!(l.mode, Mode::Class);
+    let s = screen(&l);
+    let row = s.lines().find(|r| r.contains("bob")).unwrap();
+    for cell in ["bob", "answering", "70×20", "braille", "1m15s"] {
+        assert!(row.contains(cell), "{cell} in {row}");
+    }
+    assert!(s.contains("w closes"), "{s}");
+    ch(&mut l, 'w');
+    assert_eq!(l.mode, Mode::Main);
+}
+
+#[test]
+fn in_the_ascii_set_every_class_panel_is_ascii() {
+    use roughtui::tui::glyphs::Glyphs;
+    let ascii = |a: &App, what: &str| {
+        let s = screen(a);
+        let bad: String = s.chars().filter(|c| !c.is_ascii()).collect();
+        assert!(bad.is_empty(), "{what}: {bad:?} in\n{s}");
+        s
+    };
+    let q = Question {
+        axis: Axis::Zeta,
+        ask: Ask::Share { rising: false },
+        truth: 321.5,
+    };
+    let mut l = lecturer("fig2");
+    l.theme = l.theme.with_glyphs(Glyphs::Ascii);
+    l.class.view = Some(ClassView {
+        seats: vec![
+            seat("José", SeatState::Answered, (100, 30)),
+            seat(&format!("{}…", "ζ".repeat(31)), SeatState::Own, (70, 20)),
+        ],
+        poll: Some(Tally {
+            question: q,
+            answers: vec![100.0, 100.0, 1000.0, 3000.0],
+            asked: 4,
+            revealed: false,
+        }),
+    });
+    let s = ascii(&l, "open poll");
+    assert!(
+        s.contains("2 students | 4/4 answered | 1 terminal < 80x24"),
+        "{s}"
+    );
+    assert!(s.contains('#'), "no bars:\n{s}");
+    l.class
+        .view
+        .as_mut()
+        .unwrap()
+        .poll
+        .as_mut()
+        .unwrap()
+        .revealed = true;
+    let s = ascii(&l, "revealed poll");
+    assert!(s.contains("revealed zeta = 321.5 (4 answers)"), "{s}");
+    ch(&mut l, 'w');
+    let s = ascii(&l, "class list");
+    assert!(s.contains("Jose"), "{s}");
+    assert!(s.contains("70x20"), "{s}");
+    ch(&mut l, 'w');
+    ch(&mut l, 'V');
+    let s = ascii(&l, "truth prompt");
+    assert!(s.contains("poll: the true zeta = "), "{s}");
+
+    let mut st = fig("fig2");
+    st.theme = st.theme.with_glyphs(Glyphs::Ascii);
+    st.student = true;
+    st.lecturer_keys = true;
+    st.class.asked = Some(Asked {
+        question: q,
+        answer: None,
+        revealed: false,
+    });
+    let s = ascii(&st, "question");
+    assert!(
+        s.contains("Predict: where does the plastic share fall below 1/2?"),
+        "{s}"
+    );
+    st.class.asked.as_mut().unwrap().answer = Some(1000.0);
+    ascii(&st, "answered");
+    st.class.asked.as_mut().unwrap().revealed = true;
+    let s = ascii(&st, "revealed");
+    assert!(
+        s.contains("the model: zeta = 321.5 | you: 1000 | 3.1x too high"),
+        "{s}"
+    );
+}
