@@ -239,6 +239,43 @@ fn claims_on_a_step_function_find_the_step() {
 }
 
 #[test]
+fn a_minimum_on_steps_is_where_the_slope_drops_to_it() {
+    // SurfaceTopography's line scan of 1024 points (rough-surface's test
+    // data) with R* = 10 µm: the size effect lifts the total slope again
+    // at fine scales, and the lowest step lies inside the sweep.
+    let p = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/crates/rough-surface/tests/data/line_xz.txt"
+    );
+    let src = roughtui::surface::SurfaceSource::read(p.as_ref(), Default::default()).unwrap();
+    let mut s = roughtui::snapshot::State::measured(src).unwrap();
+    roughtui::set(&mut s, Axis::RStar, "10um").unwrap();
+    let c = claims(&s);
+    let min = c
+        .iter()
+        .find(|c| c.kind == ClaimKind::TotalMinimum)
+        .unwrap();
+    assert!(min.step, "{min:?}");
+    // At one of the data's wavevectors (a line's: integer multiples of q0).
+    assert!((min.at - min.at.round()).abs() < 1e-9, "{}", min.at);
+    let total = |z: f64| {
+        let p = s.params.with(Axis::Zeta, z).unwrap();
+        let (psi, _) = s.roughness().psi_in_use(&p, s.size_effect, s.moments);
+        rough_model::slopes(s.model, psi).total
+    };
+    // The slope takes its minimum there, and was higher just before.
+    assert_eq!(total(min.at), min.value);
+    assert!(total(min.at * (1.0 - 1e-9)) > min.value);
+    assert!(total(min.at + 0.5) >= min.value);
+    assert!(
+        min.text()
+            .starts_with("total slope drops to its minimum 11.53 at ζ = "),
+        "{}",
+        min.text()
+    );
+}
+
+#[test]
 fn snapshots_of_the_measured_views() {
     for size in [(80, 24), (160, 48)] {
         let mut a = surface(size);

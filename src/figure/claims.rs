@@ -70,8 +70,14 @@ impl Claim {
                 };
                 format!("{psi} {verb} 1")
             }
-            (ClaimKind::TotalMinimum, _, _) => {
+            (ClaimKind::TotalMinimum, _, false) => {
                 format!("total slope's minimum {}", short_number(self.value))
+            }
+            (ClaimKind::TotalMinimum, _, true) => {
+                format!(
+                    "total slope drops to its minimum {}",
+                    short_number(self.value)
+                )
             }
         };
         let place = format!("{} = {}", self.axis.symbol(), self.number());
@@ -166,10 +172,30 @@ pub fn claims(state: &State) -> Vec<Claim> {
         }
     }
     let minima = bracketed(&total_v).filter_map(|i| refine(&xs, &total_v, i, log, &total));
+    // Along ζ, a discrete spectrum's moments are constant between its
+    // wavevectors: the lowest step begins at one, where the slope drops.
+    let table = roughness
+        .table()
+        .filter(|t| t.is_discrete() && state.sweep.axis() == Axis::Zeta);
     for (at, value) in minima.take(MAX_PER_KIND) {
-        out.push(claim(ClaimKind::TotalMinimum, at, false, value, false));
+        let step = table.and_then(|t| step_start(t, at));
+        out.push(claim(
+            ClaimKind::TotalMinimum,
+            step.unwrap_or(at),
+            false,
+            value,
+            step.is_some(),
+        ));
     }
     out
+}
+
+/// The ζ of the table's last wavevector at or below ζ = `at` (within the
+/// table's own 1e-12), where the sums take their value at `at`.
+fn step_start(t: &rough_model::MomentTable, at: f64) -> Option<f64> {
+    let q = at * t.q0() * (1.0 + 1e-12);
+    let k = t.nodes().partition_point(|&n| n <= q);
+    k.checked_sub(1).map(|k| t.nodes()[k] / t.q0())
 }
 
 /// A sign change of a function along a sweep.
