@@ -158,6 +158,9 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         .with_context(|| format!("cannot listen on {}", opts.listen))?;
     let addr = listener.local_addr()?;
     let fingerprint = host_key::fingerprint(&key);
+    // The console log's writer exists before the banner, so that a server
+    // that has printed its banner has all its threads.
+    let log = Log::new(opts.quiet);
     // The banner; a console that is gone (a closed pipe) does not stop the
     // server.
     let mut out = std::io::stdout().lock();
@@ -216,7 +219,7 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         class_code: opts.class_code,
         wrong_codes: WrongCodes::default(),
         class: Class::default(),
-        log: Log::new(opts.quiet),
+        log,
         marker: opts.marker,
         follow: watch::Sender::new(None),
         last: Mutex::new(None),
