@@ -9,4 +9,10 @@ for view in slopes indices map load; do
 done
 "$bin" export --preset fig3 --view map --format svg > docs/fig3-map.svg
 "$bin" export --preset fig4 --view map --format svg > docs/fig4-map.svg
+# The example surface (surfaces/example.txt, a Gwyddion-style height map):
+# its spectrum and its indices.
+for view in spectrum indices; do
+    "$bin" export --surface surfaces/example.txt --view "$view" --format svg \
+        > "docs/example-$view.svg"
+done
 echo "wrote docs/*.svg" >&2

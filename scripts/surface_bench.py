@@ -5,6 +5,7 @@ Script: scripts/surface_bench.py (a benchmark, not a test)
 Pinned: SurfaceTopography==1.27.1 (requirements line below).
 
     cargo build --release -p rough-surface --example read_surface
+    cargo build --release            # optional: the explorer's figures too
     python3 scripts/surface_bench.py [--n 1024] [--runs 3]
 
 Makes a 1024 x 1024 map with SurfaceTopography's `fourier_synthesis`
@@ -16,6 +17,11 @@ turn, `runs` times each:
   FFT, moment table, display spectrum; the file's SHA-256 beside);
 - SurfaceTopography: `read_topography`, `detrend('height')`, one moment
   (`moment_power_spectrum(order=2)`, Hann window, one FFT).
+
+With target/release/roughtui built, also `roughtui bench --surface` on the
+same file: the explorer's first screen (file read, moments tabulated,
+first 160x48 frame drawn), a zeta step and an H0/E step (update and frame),
+and that process's peak memory.
 
 Each under /usr/bin/time -v: wall time of the work itself (timed inside
 the process, so Python's start-up and imports are reported apart) and the
@@ -35,6 +41,7 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.join(HERE, "..")
 EXAMPLE = os.path.join(ROOT, "target", "release", "examples", "read_surface")
+ROUGHTUI = os.path.join(ROOT, "target", "release", "roughtui")
 
 ST_CODE = r"""
 import sys, time
@@ -94,6 +101,17 @@ def main():
         print(f"  SurfaceTopography read + one moment             {t[0]:7.1f} ms, peak {max(r for _, r, _ in theirs):5.1f} MB"
               f" (+ {t[2]:.0f} ms to import)")
         print(f"  ratio {t[0] / o[0]:.1f}x")
+        if os.path.exists(ROUGHTUI):
+            best = None
+            for _ in range(a.runs):
+                out, rss = timed([ROUGHTUI, "bench", "--surface", path])
+                first = float(re.search(r"\(([\d.]+) ms in all\)", out).group(1))
+                if best is None or first < best[0]:
+                    best = (first, rss, out)
+            print(f"  roughtui explorer: first screen {best[0]:.1f} ms, peak {best[1]:.1f} MB;"
+                  f" best of {a.runs}:")
+            for line in best[2].splitlines():
+                print(f"    {line.strip()}")
 
 
 if __name__ == "__main__":

@@ -12,7 +12,8 @@ use rough_model::Axis;
     about = "Explore elasto-plastic rough contact with size-dependent hardness (Ciavarella 2024)",
     long_about = "Explore elasto-plastic rough contact with size-dependent hardness \
                   (Ciavarella, Lubricants 2024, 12(3), 83). Without a command, opens the \
-                  full-screen explorer on fig2, a preset, or a saved snapshot.",
+                  full-screen explorer on fig2, a preset, a saved snapshot, or a measured \
+                  surface (--surface FILE: a topography map, a line scan or a PSD table).",
     after_help = "The explorer needs a terminal of at least 80×24; in it, ? lists the keys \
                   (Enter types a value, s saves, q quits). NO_COLOR=1 (or c) draws without colour; \
                   ASCII only where the locale is not UTF-8 (M switches). \
@@ -23,6 +24,8 @@ pub struct Cli {
     pub command: Option<Command>,
     #[command(flatten)]
     pub source: Source,
+    #[command(flatten)]
+    pub setup: Setup,
     /// What the explorer draws with: braille dots, half blocks, blocks or
     /// ASCII only [default: from the locale and TERM]. `M` switches.
     #[arg(long, value_enum, value_name = "SET")]
@@ -52,8 +55,8 @@ impl From<MarkerArg> for crate::tui::glyphs::Glyphs {
 
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Print a view (slopes, indices, regime map, load) as CSV or SVG on
-    /// stdout; fig2 unless --preset or --load says otherwise.
+    /// Print a view (slopes, indices, regime map, load, spectrum) as CSV or
+    /// SVG on stdout; fig2 unless --preset, --load or --surface says otherwise.
     Export(ExportArgs),
     /// Time each way of computing the initial slopes against the reference data.
     Bench(BenchArgs),
@@ -71,14 +74,69 @@ pub struct Source {
     /// A snapshot file (RON, schema version 1).
     #[arg(long, value_name = "FILE")]
     pub load: Option<PathBuf>,
+    /// A measured surface: a topography map (plain-text matrix with
+    /// Gwyddion's header), a line scan or a PSD table, detected from its
+    /// content.
+    #[arg(long, value_name = "FILE")]
+    pub surface: Option<PathBuf>,
+}
+
+/// How to read a surface, and parameters set on the command line.
+#[derive(Debug, Args, Clone, Default)]
+pub struct Setup {
+    /// The surface's data is periodic: only its mean is removed, no window.
+    #[arg(long, requires = "surface")]
+    pub periodic: bool,
+    /// The sample spacing of data without a size header, e.g. 50nm (units
+    /// as the value prompt takes them: m cm mm µm um nm pm).
+    #[arg(long, value_name = "LENGTH", requires = "surface", allow_hyphen_values = true, value_parser = parse_pixel_size)]
+    pub pixel_size: Option<f64>,
+    /// Set a parameter, e.g. --set h0-over-e=0.001 --set r-star=0.5mm
+    /// (repeatable; units as the value prompt takes them). AXIS is one of
+    /// h0-over-e, h-rms, zeta, hurst, r-star.
+    #[arg(long = "set", value_name = "AXIS=VALUE", value_parser = parse_set)]
+    pub set: Vec<(Axis, String)>,
+}
+
+/// `--pixel-size`: a length > 0.
+fn parse_pixel_size(s: &str) -> Result<f64, String> {
+    let v = crate::tui::value_input::parse_value(Axis::HRms, s)?;
+    if v > 0.0 {
+        Ok(v)
+    } else {
+        Err(format!("\"{}\" is not a length > 0", s.trim()))
+    }
+}
+
+/// `--set AXIS=VALUE`: the axis known and the value a number (with a unit
+/// for lengths); whether it is in range is checked on the scene.
+fn parse_set(s: &str) -> Result<(Axis, String), String> {
+    let (axis, value) = s
+        .split_once('=')
+        .ok_or("must be AXIS=VALUE, e.g. h0-over-e=0.001 or r-star=0.5mm")?;
+    let names = || {
+        AxisArg::value_variants()
+            .iter()
+            .filter_map(|v| v.to_possible_value().map(|p| p.get_name().to_string()))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let axis: Axis = AxisArg::from_str(axis.trim(), true)
+        .map_err(|_| format!("unknown parameter '{}': one of {}", axis.trim(), names()))?
+        .into();
+    crate::tui::value_input::parse_value(axis, value)?;
+    Ok((axis, value.trim().to_string()))
 }
 
 #[derive(Debug, Args)]
 pub struct ExportArgs {
     #[command(flatten)]
     pub source: Source,
+    #[command(flatten)]
+    pub setup: Setup,
     /// What to export: the slopes against the swept parameter, the
-    /// plasticity indices, the regime map, or the areas against the load.
+    /// plasticity indices, the regime map, the areas against the load, or a
+    /// measured surface's spectrum (q, psd, fit).
     #[arg(long, value_enum, default_value_t = ViewArg::Slopes)]
     pub view: ViewArg,
     /// CSV numbers, or an SVG picture of the view.
@@ -165,6 +223,7 @@ pub enum ViewArg {
     Indices,
     Map,
     Load,
+    Spectrum,
 }
 
 impl From<ViewArg> for crate::figure::View {
@@ -175,6 +234,7 @@ impl From<ViewArg> for crate::figure::View {
             ViewArg::Indices => View::Indices,
             ViewArg::Map => View::Map,
             ViewArg::Load => View::Load,
+            ViewArg::Spectrum => View::Spectrum,
         }
     }
 }
@@ -228,6 +288,8 @@ pub struct ServeArgs {
     pub lecturer_keys: Option<PathBuf>,
     #[command(flatten)]
     pub source: Source,
+    #[command(flatten)]
+    pub setup: Setup,
     /// Most connections at once.
     #[arg(long, default_value_t = 64, value_parser = clap::value_parser!(u32).range(1..=10_000))]
     pub max_sessions: u32,
@@ -278,6 +340,16 @@ pub struct BenchArgs {
     /// Timed passes per method (the median is reported).
     #[arg(long, default_value_t = 15)]
     pub passes: u32,
+    /// Time a measured surface instead: the file to the first screen, ζ
+    /// and H0/E steps, peak memory.
+    #[arg(long, value_name = "FILE")]
+    pub surface: Option<PathBuf>,
+    /// The surface's data is periodic (as for the explorer).
+    #[arg(long, requires = "surface")]
+    pub periodic: bool,
+    /// The surface's sample spacing (as for the explorer).
+    #[arg(long, value_name = "LENGTH", requires = "surface", allow_hyphen_values = true, value_parser = parse_pixel_size)]
+    pub pixel_size: Option<f64>,
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]

@@ -40,7 +40,10 @@ fn run(cli: Cli) -> anyhow::Result<()> {
         }
         Some(Command::Bench(a)) => roughtui::bench::run(&a),
         Some(Command::Serve(a)) => {
-            let state = load_source(&a.source)?;
+            let state = load_source(&a.source, &a.setup)?;
+            if let Some(w) = state.surface_warning() {
+                println!("warning: {w}");
+            }
             use roughtui::serve::code::ClassCode;
             let class_code = match (&a.class_code, &a.class_code_file) {
                 (Some(w), _) => Some(ClassCode::word(w).context("--class-code")?),
@@ -61,7 +64,7 @@ fn run(cli: Cli) -> anyhow::Result<()> {
             })
         }
         None => {
-            let state = load_source(&cli.source)?;
+            let state = load_source(&cli.source, &cli.setup)?;
             tui::run(
                 state,
                 cli.source.load.as_deref(),

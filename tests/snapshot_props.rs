@@ -115,6 +115,7 @@ fn state() -> impl Strategy<Value = State> {
                     sweep,
                     model,
                     moments,
+                    surface: None,
                 }
             },
         )

@@ -350,7 +350,7 @@ proptest::proptest! {
             proptest::prop_assert!(c.iter().all(|(x, y)| (0.0..=1.0).contains(x) && (0.0..=1.0).contains(y)));
         }
         if let (View::Map, Some(r)) = (a.view, Regions::of_size(a.size)) {
-            let spec = a.map.peek().map(|m| m.spec);
+            let spec = a.map.peek().map(|m| m.spec.clone());
             proptest::prop_assert_eq!(spec, a.map_spec(r.graph));
         }
         let _ = text(&a);

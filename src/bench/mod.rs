@@ -7,6 +7,7 @@
 //! hard-coded: every row is a measurement of this run. Timings of whole
 //! computations follow the table, one line each ([`timings`]).
 
+pub mod measured;
 mod table;
 mod targets;
 
@@ -178,9 +179,30 @@ pub fn report(passes: u32, whole_commands: bool) -> anyhow::Result<String> {
     Ok(out)
 }
 
-/// `roughtui bench`.
+/// ζ and H0/E steps timed per measured surface.
+const SURFACE_STEPS: usize = 41;
+
+/// `roughtui bench`: the slopes table and timings, then a synthetic
+/// 1024 × 1024 measured surface; with `--surface FILE`, that file instead.
 pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
+    if let Some(path) = &args.surface {
+        let options = rough_surface::Options {
+            periodic: args.periodic,
+            pixel_size: args.pixel_size,
+        };
+        let t = measured::time_file(path, options, SURFACE_STEPS)?;
+        print!(
+            "{}",
+            measured::report(&path.display().to_string(), &t, SURFACE_STEPS)
+        );
+        return Ok(());
+    }
     print!("{}", report(args.passes, true)?);
+    let t = measured::time_synthetic(1024, SURFACE_STEPS)?;
+    print!(
+        "{}",
+        measured::report("synthetic 1024 × 1024 map", &t, SURFACE_STEPS)
+    );
     Ok(())
 }
 

@@ -1,9 +1,10 @@
 //! `roughtui export`: any view as CSV or SVG on stdout.
 //!
-//! The state comes from `--preset`/`--load` (fig2 when neither is given)
-//! with `--model`, `--moments`, `--size-effect` and `--sweep` applied on
-//! top. Options that do not apply to the chosen view are refused, so that
-//! a mistyped command never silently prints something else.
+//! The state comes from `--preset`/`--load`/`--surface` (fig2 when none is
+//! given) with `--set`, `--model`, `--moments`, `--size-effect` and
+//! `--sweep` applied on top. Options that do not apply to the chosen view
+//! or scene are refused, so that a mistyped command never silently prints
+//! something else.
 
 mod slopes;
 mod views;
@@ -14,7 +15,10 @@ use anyhow::bail;
 use rough_model::Sweep;
 
 pub use slopes::{write_csv, HEADER};
-pub use views::{write_indices, write_load, write_map, INDICES_HEADER, LOAD_HEADER, MAP_HEADER};
+pub use views::{
+    write_indices, write_load, write_map, write_spectrum, INDICES_HEADER, LOAD_HEADER, MAP_HEADER,
+    SPECTRUM_HEADER,
+};
 
 use crate::cli::{ExportArgs, FormatArg, OnOff};
 use crate::figure::{render_svg, FigureOptions, View, DEFAULT_GRID};
@@ -30,11 +34,21 @@ pub const MAX_SVG_POINTS: usize = 20_000;
 /// The state `args` describe: the source with every override applied,
 /// checked.
 pub fn state_of(args: &ExportArgs) -> anyhow::Result<State> {
-    let mut state = crate::load_source(&args.source)?;
+    let mut state = crate::load_source(&args.source, &args.setup)?;
+    if let Some(w) = state.surface_warning() {
+        // The export goes on with the file as it is now; the user is told.
+        let _ = writeln!(std::io::stderr(), "roughtui: warning: {w}");
+    }
     if let Some(m) = args.model {
         state.model = m.into();
     }
     if let Some(m) = args.moments {
+        if state.is_measured() {
+            bail!(
+                "--moments does not apply to a measured surface: its moments are summed \
+                 from the data, not from a power law"
+            );
+        }
         state.moments = m.into();
     }
     let scene = (state.size_effect, state.sweep);
@@ -61,6 +75,19 @@ pub fn options_of(args: &ExportArgs) -> anyhow::Result<(View, FigureOptions)> {
         bail!(
             "--sweep does not apply to --view load: it shows the areas at the current parameters"
         );
+    }
+    if view == View::Spectrum {
+        for (given, opt) in [
+            (args.sweep.is_some(), "--sweep"),
+            (args.points.is_some(), "--points"),
+        ] {
+            if given {
+                bail!(
+                    "{opt} does not apply to --view spectrum: it shows the data's spectrum \
+                     (the fit over q0…q1, q1 set with --set zeta=VALUE)"
+                );
+            }
+        }
     }
     if view == View::Map {
         if args.points.is_some() {
@@ -109,5 +136,6 @@ pub fn run(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
         View::Indices => write_indices(out, &state, opts.points),
         View::Map => write_map(out, &state, &opts),
         View::Load => write_load(out, &state, opts.points),
+        View::Spectrum => write_spectrum(out, &state),
     }
 }

@@ -4,7 +4,7 @@
 use std::io::Write;
 
 use crate::csv_number;
-use crate::figure::{FigureOptions, IndexSeries, LoadCurve, MapSpec, RegimeMap};
+use crate::figure::{FigureOptions, IndexSeries, LoadCurve, MapSpec, RegimeMap, SpectrumSeries};
 use crate::snapshot::State;
 
 /// The index view's CSV header, fixed by the command's contract.
@@ -13,6 +13,10 @@ pub const INDICES_HEADER: &str = "x,psi_gw,psi_p,psi_star,psi_star_asymptotic,ha
 pub const MAP_HEADER: &str = "x,y,psi,elastic,plastic,total,plastic_share";
 /// The load view's CSV header.
 pub const LOAD_HEADER: &str = "load,elastic,plastic,total";
+/// The spectrum view's CSV header: q (1/m), the data's PSD (C^iso in m⁴ or
+/// C1D in m³, SurfaceTopography's convention) and the power law fitted
+/// over [q0, q1] (empty outside that band).
+pub const SPECTRUM_HEADER: &str = "q,psd,fit";
 
 /// Rows computed and written at a time, so memory stays bounded.
 const BLOCK: usize = 1 << 14;
@@ -111,6 +115,19 @@ pub fn write_map(out: &mut impl Write, state: &State, opts: &FigureOptions) -> a
         }
         out.write_all(buf.as_bytes())?;
     }
+    out.flush()?;
+    Ok(())
+}
+
+/// A measured surface's spectrum and the power law fitted over [q0, q1].
+pub fn write_spectrum(out: &mut impl Write, state: &State) -> anyhow::Result<()> {
+    let s = SpectrumSeries::of(state)?;
+    writeln!(out, "{SPECTRUM_HEADER}")?;
+    let mut buf = String::new();
+    for i in 0..s.q.len() {
+        push_row(&mut buf, &[Some(s.q[i]), Some(s.psd[i]), s.fit[i]]);
+    }
+    out.write_all(buf.as_bytes())?;
     out.flush()?;
     Ok(())
 }

@@ -2,8 +2,13 @@
 //! parameters: where the plastic share passes ½, where the index in use
 //! (Ψ* with the size effect, Ψ_P without) crosses 1, and where the total
 //! slope has a minimum inside the sweep.
+//!
+//! On a measured surface whose moments are sums over the data's
+//! wavevectors, the moments are a step function of ζ: a crossing may be a
+//! jump at one of the data's wavevectors. Bisection then closes on the jump,
+//! and the claim says it is one.
 
-use rough_model::{psi_in_use, slopes, Axis};
+use rough_model::{slopes, Axis};
 
 use super::minimum::{bracketed, refine};
 use super::number::short_number;
@@ -39,6 +44,9 @@ pub struct Claim {
     /// The quantity at `at`: the level crossed (½ or 1), or the total
     /// slope at its minimum.
     pub value: f64,
+    /// The quantity jumps across the level there (a step of a measured
+    /// spectrum's sums, at one of its wavevectors) rather than passing it.
+    pub step: bool,
 }
 
 impl Claim {
@@ -48,15 +56,28 @@ impl Claim {
     /// way of naming hardness ("… at H0/E = 0.00523 (E/H0 = 191.2)").
     pub fn text(&self) -> String {
         let psi = if self.size_effect { "Ψ*" } else { "Ψ_P" };
-        let what = match (self.kind, self.rising) {
-            (ClaimKind::ShareHalf, true) => "plastic share passes ½".to_string(),
-            (ClaimKind::ShareHalf, false) => "plastic share falls below ½".to_string(),
-            (ClaimKind::IndexOne, rising) => {
-                let verb = if rising { "reaches" } else { "falls below" };
+        let what = match (self.kind, self.rising, self.step) {
+            (ClaimKind::ShareHalf, true, false) => "plastic share passes ½".to_string(),
+            (ClaimKind::ShareHalf, false, false) => "plastic share falls below ½".to_string(),
+            (ClaimKind::ShareHalf, true, true) => "plastic share jumps past ½".to_string(),
+            (ClaimKind::ShareHalf, false, true) => "plastic share drops below ½".to_string(),
+            (ClaimKind::IndexOne, rising, step) => {
+                let verb = match (rising, step) {
+                    (true, false) => "reaches",
+                    (false, false) => "falls below",
+                    (true, true) => "jumps past",
+                    (false, true) => "drops below",
+                };
                 format!("{psi} {verb} 1")
             }
-            (ClaimKind::TotalMinimum, _) => {
+            (ClaimKind::TotalMinimum, _, false) => {
                 format!("total slope's minimum {}", short_number(self.value))
+            }
+            (ClaimKind::TotalMinimum, _, true) => {
+                format!(
+                    "total slope drops to its minimum {}",
+                    short_number(self.value)
+                )
             }
         };
         let place = format!("{} = {}", self.axis.symbol(), self.number());
@@ -108,9 +129,10 @@ const MAX_PER_KIND: usize = 4;
 /// be missed; a minimum on a plateau that rounding cannot resolve (the
 /// exact total slope at 1 + 1e-20) is left out.
 pub fn claims(state: &State) -> Vec<Claim> {
+    let roughness = state.roughness();
     let index = |x: f64| {
         let p = at(&state.params, state.sweep.axis(), x);
-        psi_in_use(&p, state.size_effect, state.moments).0
+        roughness.psi_in_use(&p, state.size_effect, state.moments).0
     };
     let share = |x: f64| slopes(state.model, index(x)).plastic_share() - 0.5;
     let psi = |x: f64| index(x).to_f64() - 1.0;
@@ -126,13 +148,14 @@ pub fn claims(state: &State) -> Vec<Claim> {
         total_v.push(s.total);
     }
     let log = state.sweep.axis().is_log();
-    let claim = |kind, at, rising, value| Claim {
+    let claim = |kind, at, rising, value, step| Claim {
         kind,
         axis: state.sweep.axis(),
         at,
         rising,
         size_effect: state.size_effect,
         value,
+        step,
     };
     let mut out = Vec::new();
     for (kind, level, vs, f) in [
@@ -144,27 +167,68 @@ pub fn claims(state: &State) -> Vec<Claim> {
         ),
         (ClaimKind::IndexOne, 1.0, &psi_v, &psi),
     ] {
-        for (at, rising) in crossings(log, &xs, vs, f) {
-            out.push(claim(kind, at, rising, level));
+        for Crossing { at, rising, step } in crossings(log, &xs, vs, f) {
+            out.push(claim(kind, at, rising, level, step));
         }
     }
     let minima = bracketed(&total_v).filter_map(|i| refine(&xs, &total_v, i, log, &total));
+    // Along ζ, a discrete spectrum's moments are constant between its
+    // wavevectors: the lowest step begins at one, where the slope drops.
+    let table = roughness
+        .table()
+        .filter(|t| t.is_discrete() && state.sweep.axis() == Axis::Zeta);
     for (at, value) in minima.take(MAX_PER_KIND) {
-        out.push(claim(ClaimKind::TotalMinimum, at, false, value));
+        let step = table.and_then(|t| step_start(t, at));
+        out.push(claim(
+            ClaimKind::TotalMinimum,
+            step.unwrap_or(at),
+            false,
+            value,
+            step.is_some(),
+        ));
     }
     out
 }
 
-/// Zeros of `f` where its samples `vs` at `xs` change sign: (where,
-/// rising).
-fn crossings(log: bool, xs: &[f64], vs: &[f64], f: &dyn Fn(f64) -> f64) -> Vec<(f64, bool)> {
+/// The ζ of the table's last wavevector at or below ζ = `at` (within the
+/// table's own 1e-12), where the sums take their value at `at`.
+fn step_start(t: &rough_model::MomentTable, at: f64) -> Option<f64> {
+    let q = at * t.q0() * (1.0 + 1e-12);
+    let k = t.nodes().partition_point(|&n| n <= q);
+    k.checked_sub(1).map(|k| t.nodes()[k] / t.q0())
+}
+
+/// A sign change of a function along a sweep.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Crossing {
+    at: f64,
+    rising: bool,
+    /// The function jumps there (its values either side of the closed
+    /// bracket differ by more than a continuous function's could).
+    step: bool,
+}
+
+/// A jump larger than this across a bracket of 1e-14 relative is a step:
+/// a continuous share or index moves by ~1e-13 at most there.
+const STEP: f64 = 1e-9;
+
+/// Zeros of `f` where its samples `vs` at `xs` change sign.
+fn crossings(log: bool, xs: &[f64], vs: &[f64], f: &dyn Fn(f64) -> f64) -> Vec<Crossing> {
     let mut out = Vec::new();
     for i in 0..xs.len().saturating_sub(1) {
         let (a, b) = (vs[i], vs[i + 1]);
         if a.is_nan() || b.is_nan() || (a < 0.0) == (b < 0.0) {
             continue;
         }
-        out.push((bisect(log, xs[i], xs[i + 1], f), a < 0.0));
+        let (lo, hi) = bisect(log, xs[i], xs[i + 1], f);
+        let step = (f(hi) - f(lo)).abs() > STEP;
+        out.push(Crossing {
+            // A step lies at the bracket's upper end: sums over |q| ≤ q1
+            // take a wavevector in once q1 reaches it.
+            at: if step { hi } else { 0.5 * (lo + hi) },
+            rising: a < 0.0,
+            step,
+        });
         if out.len() == MAX_PER_KIND {
             break;
         }
@@ -173,8 +237,8 @@ fn crossings(log: bool, xs: &[f64], vs: &[f64], f: &dyn Fn(f64) -> f64) -> Vec<(
 }
 
 /// The sign change of `f` in [lo, hi], halving in log space on log axes,
-/// until the bracket is 1e-14 relative or cannot shrink.
-fn bisect(log: bool, mut lo: f64, mut hi: f64, f: &dyn Fn(f64) -> f64) -> f64 {
+/// until the bracket is 1e-14 relative or cannot shrink: the bracket.
+fn bisect(log: bool, mut lo: f64, mut hi: f64, f: &dyn Fn(f64) -> f64) -> (f64, f64) {
     let neg_lo = f(lo) < 0.0;
     for _ in 0..200 {
         let mid = if log {
@@ -191,7 +255,7 @@ fn bisect(log: bool, mut lo: f64, mut hi: f64, f: &dyn Fn(f64) -> f64) -> f64 {
             hi = mid;
         }
     }
-    0.5 * (lo + hi)
+    (lo, hi)
 }
 
 #[cfg(test)]
@@ -208,8 +272,33 @@ mod tests {
         let vs: Vec<f64> = xs.iter().map(|&x| f(x)).collect();
         let c = crossings(true, &xs, &vs, &f);
         assert_eq!(c.len(), 1);
-        assert!((c[0].0 / root - 1.0).abs() < 1e-13, "{}", c[0].0);
-        assert!(c[0].1);
+        assert!((c[0].at / root - 1.0).abs() < 1e-13, "{}", c[0].at);
+        assert!(c[0].rising && !c[0].step);
+    }
+
+    #[test]
+    fn bisection_finds_a_step_where_it_is() {
+        // A step function like a discrete spectrum's sums: 0.4 below the
+        // node, 1.3 from it on.
+        let s = Sweep::new(Axis::Zeta, 1.0, 1e4).unwrap();
+        let node = 45.254833995939045f64;
+        let f = |x: f64| if x >= node { 0.3 } else { -0.6 };
+        let xs: Vec<f64> = s.points(SAMPLES).collect();
+        let vs: Vec<f64> = xs.iter().map(|&x| f(x)).collect();
+        let c = crossings(true, &xs, &vs, &f);
+        assert_eq!(c.len(), 1);
+        assert!(c[0].step && c[0].rising);
+        assert!((c[0].at / node - 1.0).abs() < 1e-13, "{}", c[0].at);
+        let claim = Claim {
+            kind: ClaimKind::IndexOne,
+            axis: Axis::Zeta,
+            at: c[0].at,
+            rising: true,
+            size_effect: false,
+            value: 1.0,
+            step: true,
+        };
+        assert_eq!(claim.text(), "Ψ_P jumps past 1 at ζ = 45.25");
     }
 
     #[test]
@@ -221,6 +310,7 @@ mod tests {
             rising: false,
             size_effect: true,
             value: 1.0,
+            step: false,
         };
         assert_eq!(c.text(), "Ψ* falls below 1 at ζ = 5324");
         assert_eq!(c.short_text(), "Ψ* = 1 at ζ = 5324");
@@ -231,6 +321,7 @@ mod tests {
             rising: true,
             size_effect: false,
             value: 0.5,
+            step: false,
         };
         assert_eq!(c.text(), "plastic share passes ½ at h_rms = 2.5e-8 m");
         assert_eq!(c.short_text(), "plastic share ½ at h_rms = 2.5e-8 m");
@@ -241,6 +332,7 @@ mod tests {
             rising: false,
             size_effect: false,
             value: 1.0,
+            step: false,
         };
         assert_eq!(
             c.text(),
@@ -254,6 +346,7 @@ mod tests {
             rising: false,
             size_effect: true,
             value: 3.90981,
+            step: false,
         };
         assert_eq!(c.text(), "total slope's minimum 3.91 at ζ = 3.19");
         assert_eq!(c.short_text(), "total slope min 3.91 at ζ = 3.19");

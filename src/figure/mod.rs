@@ -4,7 +4,9 @@
 //!
 //! Every number here comes from the model crate (`rough_model`): this module
 //! only arranges grids and sweeps around it. The views cycle in the order of
-//! [`View::ALL`] (slopes → indices → map → load).
+//! [`View::ALL`] (slopes → indices → map → load, then spectrum on a measured
+//! surface: the other views exist for every scene, the spectrum only for
+//! measured data).
 //!
 //! - [`IndexSeries`]: Ψ_GW, Ψ_P, Ψ*, eq. 13's Ψ*asy and H_y/H0 along the sweep.
 //! - [`LoadCurve`]: A/A0 elastic, plastic, total against p̄/H in [0, 1] at
@@ -18,6 +20,8 @@
 //! - [`claims`]: where the plastic share passes ½ and where the index in use
 //!   crosses 1 along the sweep, located by bisection, and where the total
 //!   slope has a minimum (golden section, then Newton on its derivative).
+//! - [`SpectrumSeries`]: a measured surface's spectrum, the power law
+//!   fitted over the band [q0, q1] and the cutoff q1.
 //! - [`render_svg`]: any view as a self-contained SVG document (the
 //!   explorer saves it with `snapshot::save_file_new`).
 
@@ -27,16 +31,18 @@ mod map;
 mod minimum;
 mod number;
 mod series;
+mod spectrum;
 mod svg;
 
 pub use claims::{claims, Claim, ClaimKind};
 pub use colour::{
     share_ansi16, share_ansi256, share_char, share_colour, ANSI16_SCALE, ANSI256_SCALE, RAMP,
 };
-pub use map::{MapCache, MapSpec, RegimeMap, DEFAULT_GRID};
+pub use map::{axis_arg, MapCache, MapSpec, RegimeMap, DEFAULT_GRID};
 pub use number::short_number;
 pub use rough_model::slopes::{ELASTIC_BELOW, PLASTIC_ABOVE};
 pub use series::{IndexSeries, LoadCurve};
+pub use spectrum::{NotMeasured, SpectrumSeries};
 pub use svg::render_svg;
 
 use rough_model::Axis;
@@ -53,11 +59,34 @@ pub enum View {
     Map,
     /// Contact areas against the load at the current parameters.
     Load,
+    /// A measured surface's spectrum with the fitted power law and q1.
+    Spectrum,
 }
 
 impl View {
     /// Every view, in Tab order.
-    pub const ALL: [View; 4] = [View::Slopes, View::Indices, View::Map, View::Load];
+    pub const ALL: [View; 5] = [
+        View::Slopes,
+        View::Indices,
+        View::Map,
+        View::Load,
+        View::Spectrum,
+    ];
+
+    /// The views a scene has, in Tab order: the spectrum only on a
+    /// measured surface.
+    pub fn cycle(measured: bool) -> &'static [View] {
+        if measured {
+            &View::ALL
+        } else {
+            &View::ALL[..4]
+        }
+    }
+
+    /// Whether a scene (`measured` or not) has this view.
+    pub fn exists(self, measured: bool) -> bool {
+        View::cycle(measured).contains(&self)
+    }
 
     /// The view's name on the command line (`--view NAME`).
     pub fn name(self) -> &'static str {
@@ -66,6 +95,7 @@ impl View {
             View::Indices => "indices",
             View::Map => "map",
             View::Load => "load",
+            View::Spectrum => "spectrum",
         }
     }
 
@@ -74,16 +104,19 @@ impl View {
         View::ALL.into_iter().find(|v| v.name() == name)
     }
 
-    /// The next view in Tab order (after load comes slopes).
-    pub fn next(self) -> View {
-        let i = View::ALL.iter().position(|&v| v == self).unwrap_or(0);
-        View::ALL[(i + 1) % View::ALL.len()]
+    /// The next view in Tab order of a scene (`measured` or not): after
+    /// load comes slopes, or the spectrum on a measured surface.
+    pub fn next(self, measured: bool) -> View {
+        let all = View::cycle(measured);
+        let i = all.iter().position(|&v| v == self).unwrap_or(0);
+        all[(i + 1) % all.len()]
     }
 
     /// The previous view in Tab order (Shift-Tab).
-    pub fn prev(self) -> View {
-        let i = View::ALL.iter().position(|&v| v == self).unwrap_or(0);
-        View::ALL[(i + View::ALL.len() - 1) % View::ALL.len()]
+    pub fn prev(self, measured: bool) -> View {
+        let all = View::cycle(measured);
+        let i = all.iter().position(|&v| v == self).unwrap_or(0);
+        all[(i + all.len() - 1) % all.len()]
     }
 }
 
@@ -122,16 +155,22 @@ mod tests {
 
     #[test]
     fn views_cycle_in_tab_order_both_ways() {
-        let mut v = View::Slopes;
-        let mut seen = vec![];
-        for _ in 0..4 {
-            seen.push(v.name());
-            assert_eq!(v.next().prev(), v);
-            v = v.next();
+        for (measured, n) in [(false, 4), (true, 5)] {
+            let mut v = View::Slopes;
+            let mut seen = vec![];
+            for _ in 0..n {
+                seen.push(v.name());
+                assert_eq!(v.next(measured).prev(measured), v);
+                v = v.next(measured);
+            }
+            assert_eq!(seen[..4], ["slopes", "indices", "map", "load"]);
+            assert_eq!(v, View::Slopes);
         }
-        assert_eq!(seen, ["slopes", "indices", "map", "load"]);
-        assert_eq!(v, View::Slopes);
-        assert_eq!(View::Slopes.prev(), View::Load);
+        assert_eq!(View::Slopes.prev(false), View::Load);
+        assert_eq!(View::Slopes.prev(true), View::Spectrum);
+        assert_eq!(View::Load.next(true), View::Spectrum);
+        // A view the scene lacks goes on from the start.
+        assert_eq!(View::Spectrum.next(false), View::Indices);
     }
 
     #[test]

@@ -2,7 +2,7 @@
 
 use std::ops::Range;
 
-use rough_model::{areas, slopes, Indices, Params, Slopes, SweepError};
+use rough_model::{areas, slopes, Params, Slopes, SweepError};
 
 use crate::snapshot::State;
 
@@ -17,7 +17,8 @@ pub struct IndexSeries {
     pub psi_p: Vec<f64>,
     /// Ψ* = √V/H_y.
     pub psi_star: Vec<f64>,
-    /// Eq. 13's asymptotic Ψ*; `None` where undefined (R* = 0, H = 1).
+    /// Eq. 13's asymptotic Ψ*; `None` where undefined (R* = 0, H = 1, a
+    /// measured surface).
     pub psi_star_asymptotic: Vec<Option<f64>>,
     /// H_y/H0 (whatever the size-effect switch says: Ψ* always uses it).
     pub hardness_ratio: Vec<f64>,
@@ -42,10 +43,11 @@ impl IndexSeries {
         }
         let mut s = IndexSeries::default();
         let axis = state.sweep.axis();
+        let roughness = state.roughness();
         let last = (points - 1) as f64;
         for i in range.start.min(points)..range.end.min(points) {
             let x = state.sweep.at(i as f64 / last);
-            let ix = Indices::of(&at(&state.params, axis, x), state.moments);
+            let ix = roughness.indices(&at(&state.params, axis, x), state.moments);
             s.x.push(x);
             s.psi_gw.push(ix.psi_gw);
             s.psi_p.push(ix.psi_p);
@@ -102,7 +104,7 @@ impl LoadCurve {
         if points < 2 {
             return Err(SweepError::TooFewPoints(points));
         }
-        let ix = Indices::of(&state.params, state.moments);
+        let ix = state.roughness().indices(&state.params, state.moments);
         let psi = ix.psi_in_use(state.size_effect);
         let range = range.start.min(points)..range.end.min(points);
         let n = range.len();

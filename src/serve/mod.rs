@@ -158,8 +158,8 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         .with_context(|| format!("cannot listen on {}", opts.listen))?;
     let addr = listener.local_addr()?;
     let fingerprint = host_key::fingerprint(&key);
-    // The log's thread starts before the banner, so that the server runs
-    // all its threads once the banner is out.
+    // The console log's writer exists before the banner, so that a server
+    // that has printed its banner has all its threads.
     let log = Log::new(opts.quiet);
     // The banner; a console that is gone (a closed pipe) does not stop the
     // server.

@@ -11,11 +11,11 @@ use std::io;
 use std::path::{Path, PathBuf};
 
 use ron::error::SpannedError;
-use rough_model::{Axis, Model, Moments, ParamError, ParamValues, SweepError};
+use rough_model::{Axis, Model, Moments, ParamError, ParamValues, RoughnessError, SweepError};
 use serde::de::DeserializeOwned;
 use serde_path_to_error::Segment;
 
-use super::{SnapshotFile, SweepFile, MAX_BYTES, MAX_DEPTH, VERSION};
+use super::{SnapshotFile, SurfaceFile, SurfaceProblem, SweepFile, MAX_BYTES, MAX_DEPTH, VERSION};
 
 /// Why a snapshot text was rejected (without the file name; [`LoadError`]
 /// adds it).
@@ -37,6 +37,8 @@ pub enum SnapshotError {
     Version(u32),
     /// Values that parse but are out of their domain.
     Invalid(Invalid),
+    /// The measured surface it names cannot be shown.
+    Surface(SurfaceProblem),
 }
 
 /// What is wrong at a position in the text. `within` and `field` are dotted
@@ -107,6 +109,9 @@ pub enum Invalid {
     Moments(ParamError),
     /// An empty sweep or one outside its axis' domain.
     Sweep(SweepError),
+    /// A sweep or value a measured surface does not have (h_rms or H, ζ
+    /// beyond the data).
+    Surface(RoughnessError),
     /// `name` or `caption` is too long or not printable.
     Text {
         field: &'static str,
@@ -216,6 +221,7 @@ fn shape_at(path: &str) -> Option<Expected> {
         "" => Expected::Group(fields::<SnapshotFile>()),
         "params" => Expected::Group(fields::<ParamValues>()),
         "sweep" => Expected::Group(fields::<SweepFile>()),
+        "surface" => Expected::Group(fields::<SurfaceFile>()),
         "sweep.axis" => Expected::OneOf(variants::<Axis>()),
         "model" => Expected::OneOf(variants::<Model>()),
         "moments" => Expected::OneOf(variants::<Moments>()),
@@ -367,6 +373,7 @@ impl fmt::Display for Invalid {
             Invalid::Params(e) => write!(f, "params: {e}"),
             Invalid::Moments(e) => write!(f, "{e}"),
             Invalid::Sweep(e) => write!(f, "{e}"),
+            Invalid::Surface(e) => write!(f, "{e}"),
             Invalid::Text {
                 field,
                 problem: TextProblem::TooLong { chars, max },
@@ -415,6 +422,7 @@ impl fmt::Display for SnapshotError {
             } => write!(f, "line {line}, column {column}: {problem}"),
             SnapshotError::Version(v) => ParseProblem::Version(Some(i64::from(*v))).fmt(f),
             SnapshotError::Invalid(e) => write!(f, "{e}"),
+            SnapshotError::Surface(e) => write!(f, "{e}"),
         }
     }
 }

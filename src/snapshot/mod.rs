@@ -10,8 +10,20 @@
 //!     sweep: (axis: Zeta, from: 1.0, to: 10000.0),
 //!     model: Exact,
 //!     moments: Asymptotic,              // optional, Truncated when absent
+//!     surface: (path: "../data/steel.txt", sha256: "9f86…", periodic: true, pixel_size: 5e-8),
+//!                                       // optional: a measured surface
 //! )
 //! ```
+//!
+//! A measured surface is recorded by its path relative to the snapshot's
+//! folder (absolute where there is no relative way), its SHA-256, and how
+//! it was read (`periodic` and `pixel_size` optional, false and none when
+//! absent). For such a snapshot `h_rms`, `hurst` and `q0` in `params` are
+//! the data's (√m0 over the whole band, a fit's H, the data's q0), written
+//! for reference and recomputed from the file on loading. A surface file
+//! that is missing or refused makes the snapshot refused, naming both; one
+//! whose SHA-256 differs is loaded as it is now and the difference reported
+//! ([`State::surface_warning`]).
 //!
 //! The schema is fixed: later fields may only be added as optional with
 //! defaults. The swept parameter's value in `params` is where the marker stands.
@@ -43,12 +55,13 @@
 
 mod error;
 mod save;
+mod surface;
 
 use std::fs::File;
 use std::io::Read;
 use std::path::Path;
 
-use rough_model::{Axis, Curves, Model, Moments, ParamValues, Params, SceneSpec, Sweep};
+use rough_model::{Axis, Curves, Model, Moments, ParamValues, Params, Roughness, SceneSpec, Sweep};
 use serde::de::Error as _;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
@@ -56,6 +69,9 @@ pub use error::{
     Expected, Invalid, LoadError, LoadProblem, ParseProblem, SnapshotError, TextProblem,
 };
 pub use save::{check_stem, default_stem, save_file_new, save_new, MAX_STEM_BYTES};
+pub use surface::{SurfaceFile, SurfaceProblem};
+
+use crate::surface::SurfaceSource;
 
 /// The only schema version this build reads and writes.
 pub const VERSION: u32 = 1;
@@ -89,6 +105,14 @@ pub struct SnapshotFile {
     pub model: Model,
     #[serde(default, skip_serializing_if = "is_truncated")]
     pub moments: Moments,
+    /// Written and read as a plain group (`surface: (path: …)`), not `Some(…)`.
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "surface::ser",
+        deserialize_with = "surface::de"
+    )]
+    pub surface: Option<SurfaceFile>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -132,6 +156,9 @@ pub struct State {
     pub sweep: Sweep,
     pub model: Model,
     pub moments: Moments,
+    /// The measured surface the scene is computed on; `None` for the
+    /// paper's power law.
+    pub surface: Option<SurfaceSource>,
 }
 
 /// `text` as the value of a text field: at most `max` characters, none of
@@ -160,8 +187,15 @@ pub fn check_caption(caption: &str) -> Result<(), Invalid> {
 
 impl State {
     /// Checks the size and encoding of raw file contents, then parses and
-    /// validates them. A leading UTF-8 byte-order mark is skipped.
+    /// validates them. A leading UTF-8 byte-order mark is skipped. A
+    /// surface's relative path is taken from the current folder.
     pub fn from_bytes(bytes: &[u8]) -> Result<State, SnapshotError> {
+        State::from_bytes_in(bytes, None)
+    }
+
+    /// [`State::from_bytes`] for a snapshot in the folder `base`, which a
+    /// surface's relative path starts from (the current folder if `None`).
+    pub fn from_bytes_in(bytes: &[u8], base: Option<&Path>) -> Result<State, SnapshotError> {
         check_size(bytes.len())?;
         let text = std::str::from_utf8(bytes).map_err(|e| {
             // The valid prefix is UTF-8 by definition.
@@ -169,23 +203,39 @@ impl State {
             let (line, column) = error::line_col(valid);
             SnapshotError::NotUtf8 { line, column }
         })?;
-        parse(text)
+        parse(text, base)
     }
 
-    /// Parses and validates a snapshot text.
+    /// Parses and validates a snapshot text (a surface's relative path
+    /// taken from the current folder).
     pub fn from_ron(text: &str) -> Result<State, SnapshotError> {
         check_size(text.len())?;
-        parse(text)
+        parse(text, None)
     }
 
     /// Validates a parsed file: version, text fields, parameters, moments
-    /// and sweep.
+    /// and sweep; reads its surface, if any, from the current folder.
     pub fn from_file(f: SnapshotFile) -> Result<State, SnapshotError> {
+        State::from_file_in(f, None)
+    }
+
+    /// [`State::from_file`] with a surface's relative path taken from `base`.
+    pub fn from_file_in(f: SnapshotFile, base: Option<&Path>) -> Result<State, SnapshotError> {
         if f.version != VERSION {
             return Err(SnapshotError::Version(f.version));
         }
         let params = Params::new(f.params).map_err(Invalid::Params)?;
         let sweep = Sweep::new(f.sweep.axis, f.sweep.from, f.sweep.to).map_err(Invalid::Sweep)?;
+        let surface = match &f.surface {
+            Some(sf) => Some(surface::read(sf, base).map_err(SnapshotError::Surface)?),
+            None => None,
+        };
+        let params = match &surface {
+            // What the data fixes comes from the data.
+            Some(src) => Params::new(crate::surface::fixed_values(src, params.values()))
+                .map_err(Invalid::Params)?,
+            None => params,
+        };
         let state = State {
             name: f.name,
             caption: f.caption,
@@ -194,23 +244,67 @@ impl State {
             sweep,
             model: f.model,
             moments: f.moments,
+            surface,
         };
         state.check()?;
         Ok(state)
     }
 
-    /// What parameters and sweep cannot check alone: the text fields, and
-    /// whether the moments can be computed at these parameters. A state that
-    /// passes loads back after [`save_new`].
+    /// What parameters and sweep cannot check alone: the text fields,
+    /// whether the moments can be computed at these parameters, and, on a
+    /// measured surface, that the sweep is over a parameter and both the
+    /// sweep and ζ lie within the data. A state that passes loads back
+    /// after [`save_new`].
     pub fn check(&self) -> Result<(), Invalid> {
         check_name(&self.name)?;
         if let Some(c) = &self.caption {
             check_caption(c)?;
         }
+        let r = self.roughness();
+        r.check_sweep(&self.sweep).map_err(Invalid::Surface)?;
+        r.check(&self.params).map_err(Invalid::Surface)?;
+        if r.is_measured() {
+            return Ok(());
+        }
         self.moments.check(&self.params).map_err(Invalid::Moments)
     }
 
+    /// The source of the scene's moments: the power law, or the measured
+    /// surface's table.
+    pub fn roughness(&self) -> Roughness {
+        match &self.surface {
+            Some(s) => Roughness::Measured(std::sync::Arc::clone(&s.measured.table)),
+            None => Roughness::SelfAffine,
+        }
+    }
+
+    /// Whether the scene is a measured surface's.
+    pub fn is_measured(&self) -> bool {
+        self.surface.is_some()
+    }
+
+    /// What loading found changed about the surface file, if anything: its
+    /// SHA-256 differs from the one the snapshot recorded.
+    pub fn surface_warning(&self) -> Option<String> {
+        let s = self.surface.as_ref()?;
+        let was = s.recorded_sha256.as_ref()?;
+        Some(format!(
+            "surface {} changed since the snapshot was saved (SHA-256 {}… then, {}… now): \
+             showing it as it is now",
+            s.file_name(),
+            &was[..was.len().min(12)],
+            &s.measured.sha256[..s.measured.sha256.len().min(12)]
+        ))
+    }
+
+    /// The file form, a surface's path relative to the current folder.
     pub fn to_file(&self) -> SnapshotFile {
+        self.to_file_in(None)
+    }
+
+    /// The file form for a snapshot in the folder `base`: a surface's path
+    /// is written relative to it (to the current folder if `None`).
+    pub fn to_file_in(&self, base: Option<&Path>) -> SnapshotFile {
         SnapshotFile {
             version: VERSION,
             name: self.name.clone(),
@@ -224,13 +318,20 @@ impl State {
             },
             model: self.model,
             moments: self.moments,
+            surface: self.surface.as_ref().map(|s| surface::file_of(s, base)),
         }
     }
 
-    /// The snapshot as RON text (floats round-trip exactly).
+    /// The snapshot as RON text (floats round-trip exactly), a surface's
+    /// path relative to the current folder.
     pub fn to_ron(&self) -> String {
+        self.to_ron_in(None)
+    }
+
+    /// [`State::to_ron`] for a snapshot in the folder `base`.
+    pub fn to_ron_in(&self, base: Option<&Path>) -> String {
         let cfg = ron::ser::PrettyConfig::new().depth_limit(1);
-        let mut s = ron::ser::to_string_pretty(&self.to_file(), cfg)
+        let mut s = ron::ser::to_string_pretty(&self.to_file_in(base), cfg)
             .expect("a snapshot of plain numbers and text always serializes");
         s.push('\n');
         s
@@ -245,6 +346,7 @@ impl State {
             size_effect: self.size_effect,
             model: self.model,
             moments: self.moments,
+            roughness: self.roughness(),
             curves,
             points,
         }
@@ -263,7 +365,7 @@ fn check_size(len: usize) -> Result<(), SnapshotError> {
 
 /// Parses text already within [`MAX_BYTES`]: ron with its recursion limit
 /// at [`MAX_DEPTH`], wrapped so that an error knows its field path.
-fn parse(text: &str) -> Result<State, SnapshotError> {
+fn parse(text: &str, base: Option<&Path>) -> Result<State, SnapshotError> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     if text.trim().is_empty() {
         return Err(SnapshotError::Empty);
@@ -277,7 +379,7 @@ fn parse(text: &str) -> Result<State, SnapshotError> {
     })?;
     de.end()
         .map_err(|e| error::parse_error("", de.span_error(e)))?;
-    State::from_file(file)
+    State::from_file_in(file, base)
 }
 
 /// Reads and validates the snapshot at `path`; the error names the file.
@@ -297,7 +399,7 @@ pub fn read_file(path: &Path) -> Result<State, LoadError> {
     file.take(MAX_BYTES + 1)
         .read_to_end(&mut bytes)
         .map_err(|e| fail(LoadProblem::Read(e)))?;
-    State::from_bytes(&bytes).map_err(|e| {
+    State::from_bytes_in(&bytes, path.parent()).map_err(|e| {
         fail(LoadProblem::Snapshot(match e {
             // Only a regular file's length is its size.
             SnapshotError::TooLarge { .. } => SnapshotError::TooLarge {

@@ -95,7 +95,7 @@ pub fn save_new(dir: &Path, stem: &str, state: &State) -> anyhow::Result<PathBuf
     save_with(
         dir,
         (stem, "ron", "snapshot"),
-        state.to_ron().as_bytes(),
+        state.to_ron_in(Some(dir)).as_bytes(),
         |f, b| f.write_all(b),
     )
 }

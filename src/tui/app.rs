@@ -5,15 +5,20 @@
 use std::path::PathBuf;
 use std::time::SystemTime;
 
-use rough_model::{persson_elastic, slopes, Axis, Curves, SceneSpec, Slopes, Surface, Sweep};
+use rough_model::{Axis, Curves, SceneSpec};
 
 use super::caption::{self, KeptCaption};
 use super::class::Classroom;
 use super::ghost::Ghost;
 use super::layout::Regions;
 use super::line_edit::{Edit, LineEdit};
-use super::plots::{compute_indices, compute_load, compute_plot, IndexPlot, LoadPlot, Plot};
+use super::measured;
+use super::plots::{
+    compute_indices, compute_load, compute_plot, compute_spectrum, IndexPlot, LoadPlot, Plot,
+    SpectrumPlot,
+};
 use super::prompt;
+pub use super::readout::Readout;
 pub use super::status::Hint;
 pub use super::steps::{default_range, step_value, HURST_STEPS, LOG_STEPS};
 use super::theme::Theme;
@@ -34,6 +39,8 @@ pub enum Message {
     },
     /// Load preset number n (0 = fig1).
     LoadPreset(usize),
+    /// Back to the measured surface the session started on.
+    LoadSurface,
     CycleSweep,
     ToggleModel,
     ToggleSizeEffect,
@@ -46,7 +53,8 @@ pub enum Message {
     NextMapY,
     /// Write the current view as an SVG picture into the save folder.
     SavePicture,
-    /// Pin the current curves as a ghost, or clear the ghost.
+    /// Pin the current curves (on a measured surface first the fitted
+    /// power law) as a ghost, or clear the ghost.
     ToggleGhost,
     StartSave,
     /// Open the prompt for the selected slider's value.
@@ -122,41 +130,18 @@ pub struct Status {
     pub hint: Option<Hint>,
 }
 
-/// Everything the readout shows, at the current parameters.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Readout {
-    pub surface: Surface,
-    /// The index in use (Ψ_P or Ψ*).
-    pub psi: f64,
-    pub slopes: Slopes,
-    /// The other model's slopes at the same ψ.
-    pub other: Slopes,
-    pub persson: f64,
-}
-
-impl Readout {
-    pub fn of(state: &State) -> Readout {
-        let surface = Surface::of(&state.params, state.moments);
-        let psi = surface.indices.psi_in_use(state.size_effect);
-        Readout {
-            surface,
-            psi: psi.to_f64(),
-            slopes: slopes(state.model, psi),
-            other: slopes(state.model.other(), psi),
-            persson: persson_elastic(psi),
-        }
-    }
-}
-
 /// What the curves along the sweep depend on; they are recomputed only
 /// when it changes.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 struct CurveKey {
     spec: SceneSpec,
 }
 
 /// What the load view depends on: the state at the marker and the points.
 type LoadKey = (rough_model::Params, SceneSpec);
+
+/// What the spectrum view depends on: the surface and the cutoff ζ.
+type SpectrumKey = (rough_model::Roughness, f64, usize);
 
 pub struct App {
     pub state: State,
@@ -179,6 +164,8 @@ pub struct App {
     pub plot_cover: Option<Cover>,
     pub indices: IndexPlot,
     pub load: LoadPlot,
+    /// A measured surface's spectrum, the fit over the band and q1.
+    pub spectrum: SpectrumPlot,
     /// The regime map, computed only when something it depends on changes.
     pub map: MapCache,
     /// The figure's checkable claims at the current parameters.
@@ -198,6 +185,9 @@ pub struct App {
     pub student: bool,
     /// Whether the class has a lecturer to follow (`--lecturer-keys`).
     pub lecturer_keys: bool,
+    /// The measured surface's scene the session started on, which `5`
+    /// returns to after a preset; `None` without a surface.
+    pub home: Option<State>,
     /// The served class as this explorer sees it (nothing when not served).
     pub class: Classroom,
     pub quit: bool,
@@ -206,6 +196,7 @@ pub struct App {
     key: Option<CurveKey>,
     indices_key: Option<CurveKey>,
     load_key: Option<LoadKey>,
+    spectrum_key: Option<SpectrumKey>,
     claims_key: Option<CurveKey>,
     /// The loaded scene's caption and the scene it describes.
     captioned: KeptCaption,
@@ -230,6 +221,7 @@ impl App {
             plot_cover: None,
             indices: IndexPlot::default(),
             load: LoadPlot::default(),
+            spectrum: SpectrumPlot::default(),
             map: MapCache::new(),
             claims: Vec::new(),
             readout,
@@ -239,12 +231,14 @@ impl App {
             ghost: None,
             student: false,
             lecturer_keys: false,
+            home: None,
             class: Classroom::default(),
             quit: false,
             recomputes: 0,
             key: None,
             indices_key: None,
             load_key: None,
+            spectrum_key: None,
             claims_key: None,
             captioned: KeptCaption::default(),
         };
@@ -253,6 +247,13 @@ impl App {
             .iter()
             .position(|a| *a == app.state.sweep.axis())
             .unwrap_or(0);
+        measured::fix_selection(&mut app);
+        if app.state.is_measured() {
+            app.home = Some(app.state.clone());
+        }
+        if let Some(w) = app.state.surface_warning() {
+            app.set_status(w, true);
+        }
         app.refresh();
         app
     }
@@ -267,12 +268,12 @@ impl App {
     }
 
     /// The range of a slider: the sweep's for the swept parameter, else the
-    /// default one.
+    /// default one (ζ up to the data's largest on a measured surface).
     pub fn range(&self, axis: Axis) -> (f64, f64) {
         if axis == self.state.sweep.axis() {
             (self.state.sweep.from(), self.state.sweep.to())
         } else {
-            default_range(axis)
+            measured::range(self, axis)
         }
     }
 
@@ -311,6 +312,9 @@ impl App {
             self.ghost = None;
             self.set_status("ghost cleared: the sweep changed", false);
         }
+        if !self.view.exists(self.state.is_measured()) {
+            self.view = View::Slopes;
+        }
         self.readout = Readout::of(&self.state);
         let Some(regions) = Regions::of_size(self.size) else {
             return;
@@ -318,13 +322,13 @@ impl App {
         let points = (usize::from(regions.graph.width) * 2).max(2);
         let key = self.curve_key(points);
         let claims_key = self.curve_key(2);
-        if self.claims_key != Some(claims_key) {
+        if self.claims_key.as_ref() != Some(&claims_key) {
             self.claims = claims(&self.state);
             self.claims_key = Some(claims_key);
         }
         match self.view {
             View::Slopes => {
-                if self.key != Some(key) {
+                if self.key.as_ref() != Some(&key) {
                     self.plot = compute_plot(&key.spec);
                     self.key = Some(key);
                     self.recomputes += 1;
@@ -333,13 +337,13 @@ impl App {
                 let dots = self.theme.glyphs.dots();
                 Cover::keep(&mut self.plot_cover, &self.plot, regions.graph, dots);
             }
-            View::Indices if self.indices_key != Some(key) => {
+            View::Indices if self.indices_key.as_ref() != Some(&key) => {
                 self.indices = compute_indices(&self.state, points);
                 self.indices_key = Some(key);
             }
             View::Load => {
                 let load_key = (self.state.params, key.spec);
-                if self.load_key != Some(load_key) {
+                if self.load_key.as_ref() != Some(&load_key) {
                     self.load = compute_load(&self.state, points);
                     self.load_key = Some(load_key);
                 }
@@ -347,6 +351,13 @@ impl App {
             View::Map => {
                 if let Some(spec) = self.map_spec(regions.graph) {
                     self.map.get(&spec);
+                }
+            }
+            View::Spectrum => {
+                let key = (self.state.roughness(), self.state.params.zeta(), points);
+                if self.spectrum_key.as_ref() != Some(&key) {
+                    self.spectrum = compute_spectrum(&self.state, points);
+                    self.spectrum_key = Some(key);
                 }
             }
             _ => {}
@@ -405,13 +416,16 @@ impl App {
         }
     }
 
-    fn load(&mut self, state: State) {
+    /// Shows `state` as freshly loaded (not modified, no file), keeping
+    /// the selected slider where the scene has it.
+    pub fn load_state(&mut self, state: State) {
         let axis = self.selected_axis();
         self.state = state;
         self.modified = false;
         self.file = None;
         self.captioned = KeptCaption::of(&self.state);
         self.selected = Axis::ALL.iter().position(|a| *a == axis).unwrap_or(0);
+        measured::fix_selection(self);
     }
 }
 
@@ -422,10 +436,10 @@ pub const HURST_ONE_ASYMPTOTIC: &str =
 
 /// The one place that changes an [`App`].
 pub fn update(app: &mut App, msg: Message) {
-    let n = Axis::ALL.len();
     match msg {
-        Message::SelectPrev => app.selected = (app.selected + n - 1) % n,
-        Message::SelectNext => app.selected = (app.selected + 1) % n,
+        Message::SelectPrev => app.selected = measured::next_selectable(app, app.selected, false),
+        Message::SelectNext => app.selected = measured::next_selectable(app, app.selected, true),
+        Message::Step { .. } if measured::refuse_fixed(app, app.selected_axis()) => {}
         Message::Step { up, fine } => {
             let axis = app.selected_axis();
             let old = app.state.params.get(axis);
@@ -449,29 +463,14 @@ pub fn update(app: &mut App, msg: Message) {
             };
             match presets::load(name) {
                 Ok(s) => {
-                    app.load(s);
+                    app.load_state(s);
                     app.set_status(format!("loaded {name}"), false);
                 }
                 Err(e) => app.set_status(format!("{e:#}"), true),
             }
         }
-        Message::CycleSweep => {
-            let cur = app.state.sweep.axis();
-            let i = Axis::ALL.iter().position(|a| *a == cur).unwrap_or(0);
-            let axis = Axis::ALL[(i + 1) % n];
-            let (lo, hi) = default_range(axis);
-            match Sweep::new(axis, lo, hi) {
-                Ok(s) => {
-                    app.state.sweep = s;
-                    app.modified = true;
-                    let hint = Hint::RStarNeedsSizeEffect;
-                    if hint.applies(&app.state) {
-                        app.set_hint(hint);
-                    }
-                }
-                Err(e) => app.set_status(e.to_string(), true),
-            }
-        }
+        Message::LoadSurface => measured::load_surface(app),
+        Message::CycleSweep => measured::cycle_sweep(app),
         Message::ToggleModel => {
             app.state.model = app.state.model.other();
             app.modified = true;
@@ -479,6 +478,9 @@ pub fn update(app: &mut App, msg: Message) {
         Message::ToggleSizeEffect => {
             app.state.size_effect = !app.state.size_effect;
             app.modified = true;
+        }
+        Message::ToggleMoments if app.state.is_measured() => {
+            app.set_status(measured::MOMENTS_DO_NOT_APPLY, true)
         }
         Message::ToggleMoments => {
             let moments = app.state.moments.other();
@@ -489,8 +491,8 @@ pub fn update(app: &mut App, msg: Message) {
                 app.set_status(HURST_ONE_ASYMPTOTIC, true);
             }
         }
-        Message::NextView => app.view = app.view.next(),
-        Message::PrevView => app.view = app.view.prev(),
+        Message::NextView => app.view = app.view.next(app.state.is_measured()),
+        Message::PrevView => app.view = app.view.prev(app.state.is_measured()),
         Message::NextMapY => {
             let graph = Regions::of_size(app.size).map(|r| r.graph);
             if let Some(spec) = graph.and_then(|g| app.map_spec(g)) {
@@ -498,20 +500,7 @@ pub fn update(app: &mut App, msg: Message) {
             }
         }
         Message::SavePicture => app.save_picture(),
-        Message::ToggleGhost => {
-            if app.ghost.take().is_some() {
-                app.set_status("ghost cleared", false);
-            } else if app.view != View::Slopes {
-                app.set_status("g pins the slopes view's curves: Tab to it", false);
-            } else {
-                app.ghost = Some(Ghost {
-                    plot: app.plot.clone(),
-                    state: app.state.clone(),
-                });
-                // The status row shows what the ghost is.
-                app.status = None;
-            }
-        }
+        Message::ToggleGhost => measured::toggle_ghost(app),
         Message::StartSave => {
             // The prefill is a file name: no separators or control characters.
             let name: String = app
@@ -530,7 +519,10 @@ pub fn update(app: &mut App, msg: Message) {
             app.mode = Mode::Prompt(LineEdit::new(&stem, PROMPT_MAX_CHARS));
         }
         Message::StartValue => {
-            app.mode = Mode::Value(app.selected_axis(), LineEdit::new("", PROMPT_MAX_CHARS));
+            let axis = app.selected_axis();
+            if !measured::refuse_fixed(app, axis) {
+                app.mode = Mode::Value(axis, LineEdit::new("", PROMPT_MAX_CHARS));
+            }
         }
         Message::ToggleHelp => {
             app.help_page = 0;

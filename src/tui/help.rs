@@ -67,6 +67,12 @@ pub const SYMBOLS: &[(&str, &str)] = &[
     ("", "would be 0.078, not 0.738"),
 ];
 
+/// The symbols only a measured surface shows, listed after ζ on one.
+pub const MEASURED_SYMBOLS: &[(&str, &str)] = &[
+    ("q0 q1", "the band of wavevectors the moments sum over"),
+    ("H fit", "a power-law fit over q0…q1, for orientation only"),
+];
+
 /// Where [`SYMBOLS`] names the regime marks: the glyph set's own.
 const MARKS: &str = "ψ ◦ ●";
 
@@ -105,7 +111,14 @@ pub fn lines(app: &App) -> Vec<(bool, Line<'static>)> {
         ));
     }
     lines.push((true, Line::styled("symbols:", t.title)));
-    for &(sym, what) in SYMBOLS {
+    let measured: &[(&str, &str)] = if app.state.is_measured() {
+        MEASURED_SYMBOLS
+    } else {
+        &[]
+    };
+    let after_zeta = SYMBOLS.iter().position(|s| s.0 == "ζ").map_or(0, |i| i + 1);
+    let (before, after) = SYMBOLS.split_at(after_zeta);
+    for &(sym, what) in before.iter().chain(measured).chain(after) {
         let sym = if sym == MARKS {
             use super::glyphs::Mark;
             [Mark::PsiOne, Mark::ShareLow, Mark::ShareHigh]

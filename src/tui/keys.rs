@@ -26,6 +26,8 @@ pub enum Context {
     NotStudent,
     /// A student's explorer in a class with a lecturer to follow.
     Follower,
+    /// An explorer whose session has a measured surface to return to.
+    Surface,
     /// A student's explorer while a poll waits for their answer.
     Answering,
     /// The lecturer's explorer in a served class.
@@ -57,7 +59,11 @@ impl Context {
     fn is_role(self) -> bool {
         matches!(
             self,
-            Context::Student | Context::NotStudent | Context::Follower | Context::Lecturer
+            Context::Student
+                | Context::NotStudent
+                | Context::Follower
+                | Context::Surface
+                | Context::Lecturer
         )
     }
 
@@ -66,6 +72,7 @@ impl Context {
         match self {
             Context::Student => app.student,
             Context::NotStudent => !app.student,
+            Context::Surface => app.home.is_some(),
             Context::Follower | Context::Answering => app.student && app.lecturer_keys,
             Context::Lecturer => app.class.view.is_some(),
             // The class list's title names its keys.
@@ -139,7 +146,7 @@ pub struct Binding {
 
 use Context::{
     Answering, Any, ClassList, Follower, Help, Lecturer, Main, MainAndHelp, NotStudent, Prompt,
-    Student,
+    Student, Surface,
 };
 use KeyCode::{
     BackTab, Backspace, Delete, Down, End, Enter, Esc, Home, Left, PageDown, PageUp, Right, Tab, Up,
@@ -197,17 +204,18 @@ pub const BINDINGS: &[Binding] = &[
     bind(Main, &[(key(Up), M::SelectPrev), (ch('k'), M::SelectPrev), (key(Down), M::SelectNext), (ch('j'), M::SelectNext)], "↑ ↓  k j", "select a slider", Some("↑↓ select")),
     bind(Main, &[(key(Left), DOWN), (ch('h'), DOWN), (key(Right), UP), (ch('l'), UP)], "← →  h l", "change it (¼ decade; H: 0.05)", Some("←→ change")),
     bind(Main, &[(shift(Left), FINE_DOWN), (ch('H'), FINE_DOWN), (shift(Right), FINE_UP), (ch('L'), FINE_UP)], "⇧← ⇧→  H L", "fine step (1/40 decade; H: 0.01)", None),
-    bind(Main, &[(key(Tab), M::NextView), (shift(BackTab), M::PrevView), (key(BackTab), M::PrevView)], "Tab ⇧Tab", "next / previous view: slopes, indices, map, load", Some("Tab view")),
+    bind(Main, &[(key(Tab), M::NextView), (shift(BackTab), M::PrevView), (key(BackTab), M::PrevView)], "Tab ⇧Tab", "next / previous view (a surface adds its spectrum)", Some("Tab view")),
     bind(Main, &[(ch('1'), M::LoadPreset(0)), (ch('2'), M::LoadPreset(1)), (ch('3'), M::LoadPreset(2)), (ch('4'), M::LoadPreset(3))], "1 2 3 4", "load the paper's fig1 … fig4", Some("1-4 figs")),
+    bind(Surface, &[(ch('5'), M::LoadSurface)], "5", "back to the measured surface", Some("5 surface")),
     bind(Main, &[(key(Enter), M::StartValue)], "Enter", "type its value (25nm, 2 mm, 1e-3)", None),
     bind(Main, &[(ch('x'), M::CycleSweep)], "x", "sweep the next parameter", Some("x sweep")),
     bind(Main, &[(ch('m'), M::ToggleModel)], "m", "exact / closed-form model", Some("m model")),
     bind(Main, &[(ch('e'), M::ToggleSizeEffect)], "e", "size effect on / off", Some("e size")),
-    bind(Main, &[(ch('a'), M::ToggleMoments)], "a", "truncated / asymptotic moments (eq. 10)", Some("a moments")),
+    bind(Main, &[(ch('a'), M::ToggleMoments)], "a", "truncated / asymptotic moments (eq. 10; power law)", Some("a moments")),
     bind(Main, &[(ch('y'), M::NextMapY)], "y", "the regime map's next y parameter", None),
     bind(NotStudent, &[(ch('s'), M::StartSave)], "s", "save a snapshot here (.ron)", Some("s save")),
     bind(Student, &[(ch('s'), M::StartSave)], "s", "show the snapshot (.ron text) to copy", Some("s snapshot")),
-    bind(Main, &[(ch('g'), M::ToggleGhost)], "g", "pin the curves as a dim ghost / clear it", None),
+    bind(Main, &[(ch('g'), M::ToggleGhost)], "g", "pin a dim ghost (a surface: its fit first) / clear", None),
     bind(NotStudent, &[(ch('p'), M::SavePicture)], "p", "save the view as a picture here (.svg)", Some("p picture")),
     bind(Student, &[(ch('p'), M::SavePicture)], "p", "no pictures over SSH: s shows the snapshot", None),
     bind(MainAndHelp, &[(ch('?'), M::ToggleHelp)], "?", "show / hide this help", Some("? help")),

@@ -232,3 +232,67 @@ pub fn compute_load(state: &State, points: usize) -> LoadPlot {
         slope: c.slopes.total,
     }
 }
+
+/// The spectrum view's curves on log-log axes: the data, the power law
+/// fitted over [q0, q1], and the cutoff q1.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct SpectrumPlot {
+    /// (log10 q, log10 PSD) of the data.
+    pub data: Vec<(f64, f64)>,
+    /// The fitted power law over [q0, q1], same axes.
+    pub fit: Vec<(f64, f64)>,
+    /// log10 q1, the cutoff (the marker).
+    pub q1: f64,
+    /// log10 q0.
+    pub q0: f64,
+    pub x_bounds: [f64; 2],
+    pub y_bounds: [f64; 2],
+    /// "C^iso (m⁴)" or "C1D (m³)".
+    pub label: &'static str,
+}
+
+/// Whole decades around the finite values of `v` (at least one).
+fn decades_around(v: impl Iterator<Item = f64>) -> [f64; 2] {
+    let (lo, hi) = v
+        .filter(|x| x.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
+            (a.min(x), b.max(x))
+        });
+    if !(lo.is_finite() && hi.is_finite()) {
+        return [0.0, 1.0];
+    }
+    let lo = lo.floor();
+    [lo, hi.ceil().max(lo + 1.0)]
+}
+
+pub fn compute_spectrum(state: &State, points: usize) -> SpectrumPlot {
+    let Ok(s) = crate::figure::SpectrumSeries::of(state) else {
+        return SpectrumPlot::default();
+    };
+    let data = log_curve(true, &s.q, s.psd.iter().copied());
+    let x_bounds = decades_around(data.iter().map(|p| p.0));
+    let y_bounds = decades_around(data.iter().map(|p| p.1));
+    let (a, b) = (s.q0.log10(), s.q1.log10().min(x_bounds[1]));
+    let n = points.clamp(2, 400);
+    let fit = if s.power_law.is_some() && b > a {
+        let qs: Vec<f64> = (0..n)
+            .map(|i| 10f64.powf(a + (b - a) * i as f64 / (n - 1) as f64))
+            .collect();
+        let ys = qs.iter().map(|&q| s.fit_at(q).unwrap_or(f64::NAN));
+        log_curve(true, &qs, ys)
+            .into_iter()
+            .filter(|p| p.1 >= y_bounds[0] && p.1 <= y_bounds[1])
+            .collect()
+    } else {
+        Vec::new()
+    };
+    SpectrumPlot {
+        data,
+        fit,
+        q1: s.q1.log10(),
+        q0: a,
+        x_bounds,
+        y_bounds,
+        label: s.psd_label(),
+    }
+}

@@ -4,6 +4,7 @@
 
 pub mod app;
 pub mod client;
+pub mod measured;
 pub mod room;
 pub mod serve;
 pub mod tmux;

@@ -161,7 +161,8 @@ impl Pane {
         String::from_utf8_lossy(&o.stdout).trim().to_string()
     }
 
-    /// Polls the pane until `pred` holds (10 s at most).
+    /// Polls the pane until `pred` holds (20 s at most: a loaded 2-core
+    /// machine can hold a resize back for seconds).
     pub fn wait_for(&self, what: &str, pred: impl Fn(&str) -> bool) -> String {
         let start = Instant::now();
         loop {
@@ -170,7 +171,7 @@ impl Pane {
                 return s;
             }
             assert!(
-                start.elapsed() < Duration::from_secs(10),
+                start.elapsed() < Duration::from_secs(20),
                 "timed out waiting for {what}; the pane shows:\n{s}"
             );
             std::thread::sleep(Duration::from_millis(30));

@@ -94,6 +94,25 @@ impl Indices {
 }
 
 impl Indices {
+    /// Indices from values computed elsewhere (a measured surface's moments).
+    pub(crate) fn from_parts(
+        psi_gw: f64,
+        psi_p: Dd,
+        psi_star: Dd,
+        psi_star_asymptotic: Option<f64>,
+        hardness_ratio: f64,
+    ) -> Indices {
+        Indices {
+            psi_gw,
+            psi_p: psi_p.to_f64(),
+            psi_star: psi_star.to_f64(),
+            psi_star_asymptotic,
+            hardness_ratio,
+            psi_p_dd: psi_p,
+            psi_star_dd: psi_star,
+        }
+    }
+
     /// The log-domain path for inputs whose intermediate factors leave the
     /// f64 range (see [`Logs`]).
     fn from_logs(p: &Params, c: &Core) -> Indices {

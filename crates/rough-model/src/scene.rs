@@ -7,6 +7,7 @@ use std::ops::{Add, Div, Mul};
 use crate::dd::{Dd, PI, PI2_HALF};
 use crate::indices::psi_from_core;
 use crate::params::{Axis, Params, Shown};
+use crate::roughness::{self, Roughness};
 use crate::slopes::{slopes_sq, Model, SQRT_2_OVER_PI};
 use crate::spectrum::{Core, Moments};
 
@@ -208,7 +209,7 @@ impl Curves {
 }
 
 /// What a view asks for.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct SceneSpec {
     /// Parameters; the swept one is overridden at each point.
     pub base: Params,
@@ -216,8 +217,11 @@ pub struct SceneSpec {
     /// Index in use Ψ* and normalization by H_y when true; Ψ_P and H0 otherwise.
     pub size_effect: bool,
     pub model: Model,
-    /// Truncated or asymptotic (eq. 10) spectrum moments.
+    /// Truncated or asymptotic (eq. 10) spectrum moments (the power law's;
+    /// a measured surface has its own).
     pub moments: Moments,
+    /// The power law, or a measured surface's moment table.
+    pub roughness: Roughness,
     pub curves: Curves,
     /// Number of points, both ends included (≥ 2).
     pub points: usize,
@@ -350,11 +354,17 @@ enum Kernel {
     Fixed(Core),
     /// The Hurst exponent changes everything.
     General,
+    /// A measured surface: the moments at each point's ζ from its table
+    /// (a binary search), then ψ² from them.
+    Measured,
 }
 
 impl Kernel {
     fn new(spec: &SceneSpec) -> Kernel {
         let p = &spec.base;
+        if spec.roughness.is_measured() {
+            return Kernel::Measured;
+        }
         match spec.sweep.axis() {
             Axis::Zeta => {
                 let hu = p.hurst();
@@ -483,6 +493,17 @@ impl Kernel {
                 &Core::new(&at(), spec.moments, spec.size_effect),
                 spec.size_effect,
             )),
+            Kernel::Measured => {
+                let p = at();
+                match spec.roughness.table() {
+                    Some(t) => roughness::psi_sq(&p, &t.at_zeta(p.zeta()), spec.size_effect),
+                    None => from_psi(psi_from_core(
+                        &p,
+                        &Core::new(&p, spec.moments, spec.size_effect),
+                        spec.size_effect,
+                    )),
+                }
+            }
         }
     }
 }

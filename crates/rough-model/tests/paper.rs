@@ -24,6 +24,7 @@ fn scene(h_rms: f64, h0_over_e: f64, size_effect: bool, to: f64) -> Scene {
         size_effect,
         model: Model::ClosedForm,
         moments: Moments::Asymptotic,
+        roughness: rough_model::Roughness::SelfAffine,
         curves: Curves::ALL,
         points: 4001,
     })

@@ -193,6 +193,7 @@ fn scene(preset: &str, size_effect: bool, h_rms: f64, h0: f64, to: f64) -> Scene
         size_effect,
         model: Model::Exact,
         moments: Moments::Truncated,
+        roughness: rough_model::Roughness::SelfAffine,
         curves: Curves::ALL,
         points: 400,
     })
@@ -268,6 +269,7 @@ proptest! {
             size_effect: se,
             model,
             moments,
+            roughness: rough_model::Roughness::SelfAffine,
             curves: Curves::ALL,
             points: 37,
         };
@@ -322,6 +324,7 @@ fn asymptotic_moments_at_hurst_one() {
         size_effect: false,
         model: Model::ClosedForm,
         moments: Moments::Asymptotic,
+        roughness: rough_model::Roughness::SelfAffine,
         curves: Curves::ALL,
         points: 11,
     })

@@ -4,6 +4,7 @@
 //! caption under the chart, with the claims located live under it.
 
 mod map;
+mod spectrum;
 
 use anyhow::anyhow;
 use plotters::coord::types::RangedCoordf64;
@@ -51,6 +52,7 @@ pub fn render_svg(view: View, state: &State, opts: &FigureOptions) -> anyhow::Re
             View::Indices => indices(&chart_area, state, opts)?,
             View::Map => map::draw(&chart_area, state, opts)?,
             View::Load => load(&chart_area, state, opts)?,
+            View::Spectrum => spectrum::draw(&chart_area, state)?,
         }
         caption(&caption_area, &lines)?;
         root.present().map_err(plot_err)?;
@@ -238,8 +240,12 @@ fn guide(c: &mut Chart, a: (f64, f64), b: (f64, f64), colour: RGBColor) -> anyho
 }
 
 fn legend<'a, 'b: 'a>(c: &mut Chart<'a, 'b>) -> anyhow::Result<()> {
+    legend_at(c, SeriesLabelPosition::UpperLeft)
+}
+
+fn legend_at<'a, 'b: 'a>(c: &mut Chart<'a, 'b>, at: SeriesLabelPosition) -> anyhow::Result<()> {
     c.configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
+        .position(at)
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
         .label_font(("sans-serif", 14))
@@ -247,13 +253,18 @@ fn legend<'a, 'b: 'a>(c: &mut Chart<'a, 'b>) -> anyhow::Result<()> {
         .map_err(plot_err)
 }
 
-/// "fig2 · closed form, asymptotic moments, size effect off".
+/// "fig2 · closed form, asymptotic moments, size effect off"; a measured
+/// surface's moments are "measured".
 fn title(state: &State, what: &str) -> String {
+    let moments = if state.is_measured() {
+        "measured"
+    } else {
+        state.moments.label()
+    };
     format!(
-        "{} — {what} ({}, {} moments, size effect {})",
+        "{} — {what} ({}, {moments} moments, size effect {})",
         state.name,
         state.model.label(),
-        state.moments.label(),
         if state.size_effect { "on" } else { "off" }
     )
 }
@@ -384,8 +395,11 @@ fn indices(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::Result<(
         solid,
         "Ψ* (size-dependent H_y)",
     )?;
-    let dashed = Stroke::Dashed;
-    line(&mut c, xy, (&s.x, &asy), PSI_ASY, dashed, "Ψ*asy (eq. 13)")?;
+    // Eq. 13 is a power law's: no line on a measured surface.
+    if !state.is_measured() {
+        let dashed = Stroke::Dashed;
+        line(&mut c, xy, (&s.x, &asy), PSI_ASY, dashed, "Ψ*asy (eq. 13)")?;
+    }
     legend(&mut c)
 }
 

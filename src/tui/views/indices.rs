@@ -34,7 +34,12 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         },
         ..t.psi_asy
     };
-    let curves = [&t.psi_gw, &t.psi_p, &t.psi_star, &asy, &t.psi_one];
+    // Eq. 13 is a power law's: not listed on a measured surface.
+    let curves: Vec<&CurveStyle> = if app.state.is_measured() {
+        vec![&t.psi_gw, &t.psi_p, &t.psi_star, &t.psi_one]
+    } else {
+        vec![&t.psi_gw, &t.psi_p, &t.psi_star, &asy, &t.psi_one]
+    };
     chart::legend(t, &curves, area, buf);
     let (x, y) = (Scale::of_axis(axis, p.x_bounds), Scale::decades(p.y_bounds));
     chart::axes(t, (&x, &y), axis.symbol(), (area, g), buf);

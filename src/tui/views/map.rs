@@ -76,7 +76,11 @@ pub fn contour_color(palette: Palette) -> Color {
 /// The chart panel `area` with its graph `g`.
 pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     let t = &app.theme;
-    let Some(map) = app.map.peek().filter(|m| Some(m.spec) == app.map_spec(g)) else {
+    let Some(map) = app
+        .map
+        .peek()
+        .filter(|m| Some(&m.spec) == app.map_spec(g).as_ref())
+    else {
         return;
     };
     let spec = &map.spec;

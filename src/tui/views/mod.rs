@@ -10,6 +10,7 @@ mod map;
 pub(crate) mod overlap;
 mod side;
 mod slopes;
+mod spectrum;
 
 pub use map::{ansi16, contour_color, share_color};
 
@@ -42,6 +43,7 @@ impl Widget for &App {
             View::Indices => indices::render(self, chart, buf),
             View::Map => map::render(self, chart, buf),
             View::Load => load::render(self, chart, buf),
+            View::Spectrum => spectrum::render(self, chart, buf),
         }
         class::render_poll(self, chart, buf);
         render_footer(self, r.footer, buf);
@@ -108,7 +110,11 @@ fn render_header(app: &App, area: Rect, buf: &mut Buffer) {
             fmt_short(axis, s.sweep.from()),
             fmt_short(axis, s.sweep.to()),
             s.model.label(),
-            s.moments.label(),
+            if s.is_measured() {
+                "measured"
+            } else {
+                s.moments.label()
+            },
             if s.size_effect { "on" } else { "off" },
         );
         g.text(&text).into_owned()

@@ -8,6 +8,7 @@ use ratatui::widgets::{Paragraph, Widget};
 
 use rough_model::Axis;
 
+use crate::figure::short_number;
 use crate::tui::app::App;
 use crate::tui::fmt::{fmt_len, fmt_num, fmt_param, fmt_rel, fmt_share, fmt_short};
 use crate::tui::glyphs::SliderBar;
@@ -18,10 +19,15 @@ pub fn render_sliders(app: &App, area: Rect, rows: u16, buf: &mut Buffer) {
     let g = t.glyphs;
     Line::styled("Parameters", t.title).render(Rect { height: 1, ..area }, buf);
     let swept = app.state.sweep.axis();
+    let roughness = app.state.roughness();
     for (i, axis) in Axis::ALL.into_iter().enumerate() {
         let y = area.y + 1 + i as u16 * rows;
         if y >= area.bottom() {
             break;
+        }
+        if !roughness.is_parameter(axis) {
+            render_measured(app, axis, Rect::new(area.x, y, area.width, rows), buf);
+            continue;
         }
         let selected = i == app.selected;
         let (lo, hi) = app.range(axis);
@@ -45,6 +51,57 @@ pub fn render_sliders(app: &App, area: Rect, rows: u16, buf: &mut Buffer) {
             Line::styled(format!("   {bar}"), bar_style)
                 .render(Rect::new(area.x, y + 1, area.width, 1), buf);
         }
+    }
+}
+
+/// A line the data fixes on a measured surface, read-only (dim): h_rms as
+/// √m0 at the cutoff, H as a least-squares power-law fit over [q0, q1]
+/// with its band; with two rows per slider, the fit's amplitude and points
+/// (or what h_rms is) under it.
+fn render_measured(app: &App, axis: Axis, area: Rect, buf: &mut Buffer) {
+    let t = &app.theme;
+    let r = &app.readout;
+    // Two digits: the band's ends fit the panel at 80 columns.
+    let q = |v: f64| format!("{v:.1e}");
+    let (first, second) = match axis {
+        Axis::Hurst => match r.fit {
+            Some(f) => (
+                format!(
+                    "  {:<5}  {:>9}  q {}{}{}",
+                    "H fit",
+                    fmt_num(f.fit.hurst),
+                    q(f.fit.q_lo),
+                    // The band whole at 80 columns in every glyph set.
+                    if t.glyphs.ascii_text() { "-" } else { "…" },
+                    q(f.fit.q_hi)
+                ),
+                format!(
+                    "   C(q0) {} · h_rms {} · {} pts",
+                    short_number(f.fit.psd_at_q0),
+                    f.h_rms.map_or("—".into(), fmt_len),
+                    f.fit.points
+                ),
+            ),
+            None => (
+                format!("  {:<5}  {:>9}  too few points", "H fit", "—"),
+                "   no power law fits the band q0…q1".into(),
+            ),
+        },
+        _ => (
+            format!(
+                "  {:<5}  {:>9}  √m0 at ζ",
+                axis.symbol(),
+                fmt_len(r.surface.spectrum.h_rms_actual)
+            ),
+            "   measured, not a parameter".into(),
+        ),
+    };
+    let (first, second) = (t.glyphs.text(&first), t.glyphs.text(&second));
+    let w = usize::from(area.width);
+    Line::styled(format!("{first:<w$}"), t.dim).render(Rect { height: 1, ..area }, buf);
+    if area.height > 1 {
+        Line::styled(second.into_owned(), t.dim)
+            .render(Rect::new(area.x, area.y + 1, area.width, 1), buf);
     }
 }
 
@@ -103,6 +160,7 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
     let asym = match (ix.psi_star_asymptotic, ix.asymptotic_deviation()) {
         (Some(a), Some(d)) => format!("{} ({:+.1}% vs Ψ*)", fmt_num(a), d * 100.0),
         (Some(a), None) => fmt_num(a),
+        (None, _) if s.is_measured() => "n/a on measured data".into(),
         (None, _) => "n/a (R* = 0 or H = 1)".into(),
     };
     let sl = &r.slopes;

@@ -1,0 +1,135 @@
+//! A snapshot's measured surface: its file form (path, SHA-256, how it was
+//! read), and reading the file it names back when the snapshot is loaded.
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+use rough_surface::{Options, Problem, SurfaceError};
+use serde::{Deserialize, Deserializer, Serialize, Serializer};
+
+use crate::surface::{relative_to, SurfaceSource};
+
+/// The `surface` group of a snapshot.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SurfaceFile {
+    /// Relative to the snapshot's folder, or absolute.
+    pub path: String,
+    /// SHA-256 of the file's bytes when the snapshot was saved, lower-case hex.
+    pub sha256: String,
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub periodic: bool,
+    /// Sample spacing in metres for data without a size header; written as
+    /// a plain number, not `Some(…)`.
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "ser_number",
+        deserialize_with = "de_number"
+    )]
+    pub pixel_size: Option<f64>,
+}
+
+fn is_false(b: &bool) -> bool {
+    !*b
+}
+
+fn ser_number<S: Serializer>(v: &Option<f64>, s: S) -> Result<S::Ok, S::Error> {
+    v.unwrap_or_default().serialize(s)
+}
+
+fn de_number<'de, D: Deserializer<'de>>(d: D) -> Result<Option<f64>, D::Error> {
+    f64::deserialize(d).map(Some)
+}
+
+pub(super) fn ser<S: Serializer>(v: &Option<SurfaceFile>, s: S) -> Result<S::Ok, S::Error> {
+    match v {
+        Some(f) => f.serialize(s),
+        None => s.serialize_none(),
+    }
+}
+
+pub(super) fn de<'de, D: Deserializer<'de>>(d: D) -> Result<Option<SurfaceFile>, D::Error> {
+    SurfaceFile::deserialize(d).map(Some)
+}
+
+/// Why a snapshot's surface could not be shown.
+#[derive(Clone, Debug, PartialEq)]
+pub enum SurfaceProblem {
+    /// No file where the snapshot says (as recorded, and where that led).
+    Missing { recorded: String, looked: PathBuf },
+    /// The file is there but refused (file, line and problem inside).
+    Bad(SurfaceError),
+    /// `pixel_size` is not a length > 0.
+    PixelSize(f64),
+}
+
+impl fmt::Display for SurfaceProblem {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            SurfaceProblem::Missing { recorded, looked } => write!(
+                f,
+                "its surface file {recorded} is missing (looked for {}): \
+                 put the file back there or fix surface.path",
+                looked.display()
+            ),
+            SurfaceProblem::Bad(e) => write!(f, "its surface: {e}"),
+            SurfaceProblem::PixelSize(v) => write!(
+                f,
+                "surface.pixel_size = {v} is out of range: it must be a length > 0 in metres"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for SurfaceProblem {}
+
+/// Reads the surface `sf` names, its relative path taken from `base` (the
+/// current folder if `None`). A SHA-256 other than the recorded one is kept
+/// in the source, to be reported; the file is shown as it is now.
+pub(super) fn read(sf: &SurfaceFile, base: Option<&Path>) -> Result<SurfaceSource, SurfaceProblem> {
+    if let Some(v) = sf.pixel_size {
+        if !(v.is_finite() && v > 0.0) {
+            return Err(SurfaceProblem::PixelSize(v));
+        }
+    }
+    let recorded = Path::new(&sf.path);
+    let path = match base {
+        Some(b) if recorded.is_relative() => b.join(recorded),
+        _ => recorded.to_path_buf(),
+    };
+    let options = Options {
+        periodic: sf.periodic,
+        pixel_size: sf.pixel_size,
+    };
+    let mut src = SurfaceSource::read(&path, options).map_err(|e| {
+        let missing = matches!(&e.problem, Problem::Read(_)) && !path.exists();
+        if missing {
+            SurfaceProblem::Missing {
+                recorded: sf.path.clone(),
+                looked: crate::surface::absolute(&path),
+            }
+        } else {
+            SurfaceProblem::Bad(e)
+        }
+    })?;
+    if src.measured.sha256 != sf.sha256 {
+        src.recorded_sha256 = Some(sf.sha256.clone());
+    }
+    Ok(src)
+}
+
+/// The file form of `src` for a snapshot in `base` (the current folder if
+/// `None`): the path relative to it where possible. The SHA-256 is the
+/// file's as read (a changed file's new one: the snapshot now describes it).
+pub(super) fn file_of(src: &SurfaceSource, base: Option<&Path>) -> SurfaceFile {
+    let base = base
+        .map(Path::to_path_buf)
+        .unwrap_or_else(|| std::env::current_dir().unwrap_or_else(|_| PathBuf::from(".")));
+    SurfaceFile {
+        path: relative_to(&src.path, &base).to_string_lossy().into_owned(),
+        sha256: src.measured.sha256.clone(),
+        periodic: src.options.periodic,
+        pixel_size: src.options.pixel_size,
+    }
+}

@@ -1,0 +1,318 @@
+//! A measured surface as a scene: the file it came from, how it was read,
+//! what it holds, and the scene a surface opens on.
+//!
+//! Reading, detrending, windowing and the FFT are `rough_surface`'s; the
+//! model sees only the moment table ([`rough_model::Roughness::Measured`]).
+//! Here: the file's identity (absolute path, SHA-256, reading options), the
+//! scene a new surface starts with, and the least-squares power law over the
+//! band on screen, read in the paper's convention for display and for the
+//! fitted ghost.
+
+use std::path::{Component, Path, PathBuf};
+use std::sync::Arc;
+
+use rough_model::{Axis, Dim, Model, Moments, ParamValues, Params, Sweep};
+use rough_surface::{Kind, Measured, Options, PowerLawFit, SurfaceError};
+
+use crate::snapshot::{State, MAX_CAPTION_CHARS, MAX_NAME_CHARS};
+
+/// A measured surface, read from a file.
+#[derive(Clone, Debug)]
+pub struct SurfaceSource {
+    /// The file, absolute and canonical (links resolved).
+    pub path: PathBuf,
+    /// How it was read (`--periodic`, `--pixel-size`).
+    pub options: Options,
+    pub measured: Arc<Measured>,
+    /// When loaded from a snapshot that recorded another SHA-256: that one
+    /// (the file changed since the snapshot was saved).
+    pub recorded_sha256: Option<String>,
+}
+
+/// Two sources are the same surface when they are the same file, read the
+/// same way, with the same content (the table compares in O(1)).
+impl PartialEq for SurfaceSource {
+    fn eq(&self, other: &SurfaceSource) -> bool {
+        self.path == other.path
+            && self.options == other.options
+            && self.measured.sha256 == other.measured.sha256
+            && self.measured.table == other.measured.table
+    }
+}
+
+/// The file made absolute against the current directory (not resolving
+/// links, so that the path recorded is the one the user gave).
+pub fn absolute(path: &Path) -> PathBuf {
+    let joined = if path.is_absolute() {
+        path.to_path_buf()
+    } else {
+        std::env::current_dir()
+            .map(|d| d.join(path))
+            .unwrap_or_else(|_| path.to_path_buf())
+    };
+    // Components drop the "." of "./steel.txt".
+    joined.components().collect()
+}
+
+impl SurfaceSource {
+    /// Reads the surface in `path` (one message naming file, line and
+    /// problem when refused).
+    pub fn read(path: &Path, options: Options) -> Result<SurfaceSource, SurfaceError> {
+        let measured = rough_surface::read(path, &options)?;
+        Ok(SurfaceSource {
+            // The file was just read: its canonical path exists, and the
+            // same file reached two ways compares equal.
+            path: std::fs::canonicalize(path).unwrap_or_else(|_| absolute(path)),
+            options,
+            measured: Arc::new(measured),
+            recorded_sha256: None,
+        })
+    }
+
+    /// The file's name without its extension: the scene's name.
+    pub fn stem(&self) -> String {
+        let stem = self
+            .path
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_else(|| "surface".into());
+        printable(&stem, MAX_NAME_CHARS)
+    }
+
+    /// The file's name, printable.
+    pub fn file_name(&self) -> String {
+        let name = self
+            .path
+            .file_name()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        printable(&name, 80)
+    }
+
+    /// The lower cutoff q0 of the data, 1/m.
+    pub fn q0(&self) -> f64 {
+        self.measured.table.q0()
+    }
+
+    /// The largest magnification the data allows.
+    pub fn zeta_max(&self) -> f64 {
+        self.measured.table.zeta_max()
+    }
+
+    pub fn dim(&self) -> Dim {
+        self.measured.kind.dim()
+    }
+
+    /// The least-squares power law through the spectrum over the band
+    /// [q0, ζ q0] (`None` with fewer than two points in it).
+    pub fn fit(&self, zeta: f64) -> Option<PowerLawFit> {
+        let q0 = self.q0();
+        // The band's ends are data points: a cutoff a rounding below one
+        // still takes it.
+        self.measured
+            .fit(q0 * (1.0 - 1e-12), zeta * q0 * (1.0 + 1e-12))
+    }
+
+    /// What the file held, in words: "a 512 × 512 map of 10 µm × 10 µm".
+    pub fn describe(&self) -> String {
+        use crate::tui::fmt::fmt_len;
+        match self.measured.kind {
+            Kind::Map { nx, ny, lx, ly } => {
+                format!("a {nx} × {ny} map of {} × {}", fmt_len(lx), fmt_len(ly))
+            }
+            Kind::Line { n, l } => format!("a line scan of {n} points over {}", fmt_len(l)),
+            Kind::Psd { dim, points } => format!(
+                "{} PSD table of {points} points",
+                match dim {
+                    Dim::Areal => "an isotropic",
+                    Dim::Profile => "a profile",
+                }
+            ),
+        }
+    }
+}
+
+/// `text` without control characters, at most `max` characters.
+fn printable(text: &str, max: usize) -> String {
+    text.chars()
+        .map(|c| if c.is_control() { '_' } else { c })
+        .take(max)
+        .collect()
+}
+
+/// The paper's amplitude of a fitted power law: Z (m^(2−2H)) of
+/// C_Persson = Z q^(−2(1+H)) and the h_rms of that spectrum from q0 to
+/// infinity, √(π Z q0^(−2H)/H) (`PowerLawFit::persson_z`: areal C^iso is
+/// (2π)² C_Persson; a profile C1D is read as the profile of an isotropic
+/// surface). `None` unless 0 < H ≤ 1 (the power law's domain).
+pub fn fit_amplitude(fit: &PowerLawFit) -> Option<(f64, f64)> {
+    if !(fit.hurst > 0.0 && fit.hurst <= 1.0) {
+        return None;
+    }
+    let (z, h_rms) = (fit.persson_z()?, fit.h_rms()?);
+    (h_rms > 0.0).then_some((z, h_rms))
+}
+
+/// The self-affine parameters of the power law fitted over `state`'s band:
+/// the fit's H and h_rms, the data's q0, the state's H0/E, ζ and R*.
+pub fn fitted_params(state: &State) -> Result<Params, String> {
+    let src = state
+        .surface
+        .as_ref()
+        .ok_or("no measured surface: the fit is of one")?;
+    let fit = src
+        .fit(state.params.zeta())
+        .ok_or("fewer than two spectrum points in the band q0…q1: no power-law fit")?;
+    let (_, h_rms) = fit_amplitude(&fit).ok_or_else(|| {
+        format!(
+            "the fit's H = {:.3} is outside (0, 1]: no self-affine power law to compare",
+            fit.hurst
+        )
+    })?;
+    Params::new(ParamValues {
+        h_rms,
+        hurst: fit.hurst,
+        q0: src.q0(),
+        ..state.params.values()
+    })
+    .map_err(|e| e.to_string())
+}
+
+/// The values a measured state holds for the parameters the data fixes:
+/// h_rms = √m0 of the whole data, H of the fit over the whole band (kept
+/// inside (0, 1]), q0 of the data. Written into snapshots for reference;
+/// recomputed from the file when one is loaded.
+pub fn fixed_values(src: &SurfaceSource, mut v: ParamValues) -> ParamValues {
+    let t = &src.measured.table;
+    v.q0 = t.q0();
+    let m0 = t.at_zeta(t.zeta_max()).m0;
+    v.h_rms = if m0 > 0.0 && m0.is_finite() {
+        m0.sqrt()
+    } else {
+        v.h_rms
+    };
+    let hu = src.fit(src.zeta_max()).map_or(0.8, |f| f.hurst);
+    v.hurst = if hu.is_finite() {
+        hu.clamp(0.01, 1.0)
+    } else {
+        0.8
+    };
+    v
+}
+
+impl State {
+    /// The scene a surface opens on: the paper's material (H0/E = 0.01,
+    /// R* = 1 mm, size effect on), the sweep over ζ from 1 to the largest ζ
+    /// the data allows and the marker there, the exact model (the data
+    /// deserve the exact solution; the paper's closed form is a key away).
+    pub fn measured(src: SurfaceSource) -> anyhow::Result<State> {
+        let zeta_max = src.zeta_max();
+        if !(zeta_max > 1.0 && zeta_max.is_finite()) {
+            anyhow::bail!(
+                "surface {}: its spectrum spans no band (largest ζ {zeta_max}): \
+                 nothing to sweep",
+                src.path.display()
+            );
+        }
+        let values = fixed_values(
+            &src,
+            ParamValues {
+                h0_over_e: 1e-2,
+                h_rms: 1e-8,
+                zeta: zeta_max,
+                hurst: 0.8,
+                r_star: 1e-3,
+                q0: 1.0,
+            },
+        );
+        let params = Params::new(values)?;
+        let caption = printable(
+            &format!(
+                "{}: {}, q0 = {} /m, ζ up to {}; the paper's material H0/E = 0.01, R* = 1 mm.",
+                src.file_name(),
+                src.describe(),
+                crate::figure::short_number(src.q0()),
+                crate::figure::short_number(zeta_max)
+            ),
+            MAX_CAPTION_CHARS,
+        );
+        let state = State {
+            name: src.stem(),
+            caption: Some(caption),
+            params,
+            size_effect: true,
+            sweep: Sweep::new(Axis::Zeta, 1.0, zeta_max)?,
+            model: Model::Exact,
+            moments: Moments::Truncated,
+            surface: Some(src),
+        };
+        state.check()?;
+        Ok(state)
+    }
+}
+
+/// `path` relative to the folder `base` where both are absolute and share
+/// a root ("../data/steel.txt"); else `path` itself.
+pub fn relative_to(path: &Path, base: &Path) -> PathBuf {
+    let base = absolute(base);
+    let base = base.canonicalize().unwrap_or(base);
+    let dir = path.parent().unwrap_or(path);
+    let dir_c = dir.canonicalize().unwrap_or_else(|_| dir.to_path_buf());
+    let path = match path.file_name() {
+        Some(f) => dir_c.join(f),
+        None => path.to_path_buf(),
+    };
+    let (p, b): (Vec<Component>, Vec<Component>) =
+        (path.components().collect(), base.components().collect());
+    if p.first() != b.first() {
+        return path;
+    }
+    let common = p.iter().zip(&b).take_while(|(x, y)| x == y).count();
+    let mut out = PathBuf::new();
+    for _ in common..b.len() {
+        out.push("..");
+    }
+    for c in &p[common..] {
+        out.push(c);
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn relative_paths() {
+        let d = tempfile::tempdir().unwrap();
+        let sub = d.path().join("a").join("b");
+        std::fs::create_dir_all(&sub).unwrap();
+        let f = d.path().join("a").join("s.txt");
+        std::fs::write(&f, "1 2\n").unwrap();
+        assert_eq!(relative_to(&f, &sub), PathBuf::from("../s.txt"));
+        assert_eq!(relative_to(&f, &d.path().join("a")), PathBuf::from("s.txt"));
+        assert_eq!(relative_to(&f, d.path()), PathBuf::from("a/s.txt"));
+    }
+
+    #[test]
+    fn the_fit_in_the_papers_convention() {
+        // fig2: C^iso = (2π)² Z q^(−3.6), Z = 1e-8, q0 = 1e5 → h_rms 19.8166 nm.
+        let q0 = 1e5f64;
+        let psd = |q: f64| (2.0 * std::f64::consts::PI).powi(2) * 1e-8 * q.powf(-3.6);
+        let fit = PowerLawFit {
+            dim: Dim::Areal,
+            hurst: 0.8,
+            slope: -3.6,
+            q0,
+            psd_at_q0: psd(q0),
+            q_lo: q0,
+            q_hi: 1e9,
+            points: 5,
+        };
+        let (z, h) = fit_amplitude(&fit).unwrap();
+        assert!((z / 1e-8 - 1.0).abs() < 1e-14, "{z}");
+        assert!((h / 1.9816636488030044e-8 - 1.0).abs() < 1e-14, "{h}");
+        let bad = PowerLawFit { hurst: 1.2, ..fit };
+        assert_eq!(fit_amplitude(&bad), None);
+    }
+}

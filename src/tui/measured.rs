@@ -1,0 +1,153 @@
+//! The explorer on a measured surface: what the data fixes is shown, not
+//! set (h_rms and H), ζ ends at the data's largest, the moments convention
+//! does not apply, `5` returns to the surface after a preset, and `g` pins
+//! the power law fitted over the band as well as the curves.
+
+use rough_model::{Axis, Moments, RoughnessError, Sweep};
+
+use super::app::{default_range, App};
+use super::ghost::{Ghost, GhostKind};
+use super::plots::compute_plot;
+use super::status::Hint;
+use crate::figure::View;
+use crate::surface::fitted_params;
+
+/// What `a` says on a measured surface.
+pub const MOMENTS_DO_NOT_APPLY: &str = "a: no moments convention on a measured surface: \
+     its moments are summed from the data (truncated at q1 = ζ q0)";
+
+/// The slider after (or before) `from` that is a parameter of the scene.
+pub fn next_selectable(app: &App, from: usize, forward: bool) -> usize {
+    let n = Axis::ALL.len();
+    let r = app.state.roughness();
+    let mut i = from % n;
+    for _ in 0..n {
+        i = if forward {
+            (i + 1) % n
+        } else {
+            (i + n - 1) % n
+        };
+        if r.is_parameter(Axis::ALL[i]) {
+            return i;
+        }
+    }
+    from % n
+}
+
+/// Keeps the selection on a parameter of the scene (a surface loaded with
+/// h_rms selected moves on to ζ… the next one).
+pub fn fix_selection(app: &mut App) {
+    if !app.state.roughness().is_parameter(app.selected_axis()) {
+        app.selected = next_selectable(app, app.selected, true);
+    }
+}
+
+/// Refuses changing `axis` when the data fixes it: true if refused (the
+/// status says why).
+pub fn refuse_fixed(app: &mut App, axis: Axis) -> bool {
+    if app.state.roughness().is_parameter(axis) {
+        return false;
+    }
+    app.set_status(RoughnessError::NotAParameter(axis).to_string(), true);
+    true
+}
+
+/// The default range of `axis` in the current scene: ζ up to the data's
+/// largest on a measured surface.
+pub fn range(app: &App, axis: Axis) -> (f64, f64) {
+    let (lo, hi) = default_range(axis);
+    if axis == Axis::Zeta {
+        return (lo, hi.min(app.state.roughness().zeta_max()));
+    }
+    (lo, hi)
+}
+
+/// `x`: sweep the next parameter of the scene over its range.
+pub fn cycle_sweep(app: &mut App) {
+    let cur = app.state.sweep.axis();
+    let i = Axis::ALL.iter().position(|a| *a == cur).unwrap_or(0);
+    let r = app.state.roughness();
+    let axis = (1..=Axis::ALL.len())
+        .map(|k| Axis::ALL[(i + k) % Axis::ALL.len()])
+        .find(|a| r.is_parameter(*a))
+        .unwrap_or(cur);
+    let (lo, hi) = range(app, axis);
+    match Sweep::new(axis, lo, hi) {
+        Ok(s) => {
+            app.state.sweep = s;
+            app.modified = true;
+            let hint = Hint::RStarNeedsSizeEffect;
+            if hint.applies(&app.state) {
+                app.set_hint(hint);
+            }
+        }
+        Err(e) => app.set_status(e.to_string(), true),
+    }
+}
+
+/// `5`: back to the measured surface the session started on.
+pub fn load_surface(app: &mut App) {
+    match app.home.clone() {
+        Some(s) => {
+            let name = s.name.clone();
+            app.load_state(s);
+            app.set_status(format!("loaded {name} (measured surface)"), false);
+        }
+        None => app.set_status(
+            "no measured surface in this session: start with --surface FILE",
+            true,
+        ),
+    }
+}
+
+/// `g`: on the slopes view, pin the curves as a ghost or clear it; on a
+/// measured surface first the power law fitted over [q0, q1] (the
+/// self-affine scene with the fit's H and h_rms, truncated moments), then
+/// the curves themselves, then nothing.
+pub fn toggle_ghost(app: &mut App) {
+    let measured = app.state.is_measured();
+    let was = app.ghost.take().map(|g| g.kind);
+    if app.view != View::Slopes {
+        if was.is_some() {
+            app.set_status("ghost cleared", false);
+        } else {
+            app.set_status("g pins the slopes view's curves: Tab to it", false);
+        }
+        return;
+    }
+    match (measured, was) {
+        (true, None) => pin_fit(app),
+        (false, None) | (true, Some(GhostKind::Fit)) => {
+            app.ghost = Some(Ghost {
+                plot: app.plot.clone(),
+                state: app.state.clone(),
+                kind: GhostKind::Curves,
+            });
+            // The status row shows what the ghost is.
+            app.status = None;
+        }
+        (_, Some(_)) => app.set_status("ghost cleared", false),
+    }
+}
+
+fn pin_fit(app: &mut App) {
+    let params = match fitted_params(&app.state) {
+        Ok(p) => p,
+        Err(e) => {
+            app.set_status(format!("no fit to pin: {e}"), true);
+            return;
+        }
+    };
+    let mut fit = app.state.clone();
+    fit.surface = None;
+    fit.caption = None;
+    fit.moments = Moments::Truncated;
+    fit.params = params;
+    let spec = fit.scene_spec(rough_model::Curves::ALL, app.plot.points.max(2));
+    app.ghost = Some(Ghost {
+        plot: compute_plot(&spec),
+        state: fit,
+        kind: GhostKind::Fit,
+    });
+    app.status = None;
+}
