@@ -2,28 +2,13 @@
 //! the usage errors. Accuracy against the mpmath reference is checked in
 //! `views_reference.rs`.
 
+mod common;
+
+use common::cli::{run, stdout, BIN};
 use std::io::Read;
 use std::process::{Command, Output, Stdio};
 
-const BIN: &str = env!("CARGO_BIN_EXE_roughtui");
 const HEADER: &str = "x,psi,hardness_ratio,elastic,plastic,total,persson_elastic";
-
-fn run(args: &[&str]) -> Output {
-    Command::new(BIN)
-        .args(args)
-        .stdin(Stdio::null())
-        .output()
-        .unwrap()
-}
-
-/// Stdout of a successful run (nothing on stderr).
-fn stdout(args: &[&str]) -> String {
-    let out = run(args);
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(0), "{args:?}: {err}");
-    assert!(err.is_empty(), "{err}");
-    String::from_utf8(out.stdout).unwrap()
-}
 
 /// A snapshot file `name.ron` in `dir` with fig2's surface and these
 /// fields changed: (hurst, r_star, size_effect).

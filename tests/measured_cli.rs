@@ -3,26 +3,11 @@
 //! `--preset fig2 --moments truncated` within 1e-12 in every column; the
 //! spectrum view's CSV and SVG; every refusal exits 2 with one message.
 
+mod common;
+
+use common::cli::{stdout, BIN};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output, Stdio};
-
-const BIN: &str = env!("CARGO_BIN_EXE_roughtui");
-
-fn run(args: &[&str]) -> Output {
-    Command::new(BIN)
-        .args(args)
-        .stdin(Stdio::null())
-        .output()
-        .unwrap()
-}
-
-fn stdout(args: &[&str]) -> String {
-    let out = run(args);
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(0), "{args:?}: {err}");
-    assert!(err.is_empty(), "{err}");
-    String::from_utf8(out.stdout).unwrap()
-}
+use std::process::{Command, Stdio};
 
 /// Exit 2, nothing on stdout, and each of `words` in the one message.
 fn refused<S: AsRef<std::ffi::OsStr> + std::fmt::Debug>(args: &[S], words: &[&str]) {

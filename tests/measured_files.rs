@@ -7,27 +7,16 @@
 //! every bad input of the list is one message with file, line and problem
 //! and status 2, from `export`, the explorer and `serve` alike.
 
+mod common;
+
+use common::cli::{stdout, BIN};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
-
-const BIN: &str = env!("CARGO_BIN_EXE_roughtui");
 
 fn data(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("crates/rough-surface/tests/data")
         .join(name)
-}
-
-fn stdout(args: &[&str]) -> String {
-    let out = Command::new(BIN)
-        .args(args)
-        .stdin(Stdio::null())
-        .output()
-        .unwrap();
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(0), "{args:?}: {err}");
-    assert!(err.is_empty(), "{err}");
-    String::from_utf8(out.stdout).unwrap()
 }
 
 fn rel(a: f64, b: f64) -> f64 {
