@@ -132,6 +132,7 @@ pub fn synthetic(n: usize) -> anyhow::Result<State> {
         spectrum,
         sha256: "0".repeat(64),
         summary: format!("synthetic map {n} × {n}"),
+        notes: Vec::new(),
     };
     State::measured(SurfaceSource {
         path: std::path::PathBuf::from(format!("synthetic-{n}x{n}.txt")),

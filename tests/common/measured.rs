@@ -52,6 +52,7 @@ pub fn line_state() -> State {
         spectrum: terms.iter().map(|&(q, w)| (q, w * l)).collect(),
         sha256: "0".repeat(64),
         summary: "line scan of 128 points".to_string(),
+        notes: Vec::new(),
     };
     State::measured(source("line.txt", m)).unwrap()
 }

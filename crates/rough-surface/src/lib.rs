@@ -81,6 +81,17 @@ pub struct Measured {
     /// One line saying what was read and how it was treated, e.g.
     /// "map 256 × 128, 12 µm × 6 µm, plane removed, Hann window".
     pub summary: String,
+    /// What the reader assumed or repaired, one line each, in the words the
+    /// screen's status line, the side panel, export's stderr and CSV
+    /// comments all print: "heights read in µm (the width's unit;
+    /// --height-unit to change)", "decimal commas read", "312 undefined
+    /// points (0.4 %) filled". Empty when the file said everything.
+    ///
+    /// Contract between readers and the map pipeline: a reader stores an
+    /// undefined point (NaN, `nan`, an empty cell, a masked or invalid
+    /// point of x3p/gwy) as `f64::NAN` in the heights it hands on; the
+    /// pipeline fills or refuses them and adds the note.
+    pub notes: Vec<String>,
 }
 
 impl Measured {
@@ -164,6 +175,7 @@ pub fn parse(bytes: &[u8], opts: &Options) -> Result<Measured, (Option<usize>, P
         spectrum: computed.spectrum,
         sha256,
         summary,
+        notes: Vec::new(),
     })
 }
 
