@@ -91,6 +91,10 @@ pub struct Setup {
     /// as the value prompt takes them: m cm mm µm um nm pm).
     #[arg(long, value_name = "LENGTH", requires = "surface", allow_hyphen_values = true, value_parser = parse_pixel_size)]
     pub pixel_size: Option<f64>,
+    /// The channel of a Gwyddion .gwy file: its number or its title (the
+    /// first channel of heights when not given).
+    #[arg(long, value_name = "N|TITLE", requires = "surface")]
+    pub channel: Option<String>,
     /// Set a parameter, e.g. --set h0-over-e=0.001 --set r-star=0.5mm
     /// (repeatable; units as the value prompt takes them). AXIS is one of
     /// h0-over-e, h-rms, zeta, hurst, r-star.
@@ -350,6 +354,9 @@ pub struct BenchArgs {
     /// The surface's sample spacing (as for the explorer).
     #[arg(long, value_name = "LENGTH", requires = "surface", allow_hyphen_values = true, value_parser = parse_pixel_size)]
     pub pixel_size: Option<f64>,
+    /// The channel of a Gwyddion .gwy file (as for the explorer).
+    #[arg(long, value_name = "N|TITLE", requires = "surface")]
+    pub channel: Option<String>,
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]
