@@ -115,14 +115,21 @@ fn member(
         )));
     }
     let mut out = Vec::with_capacity(declared as usize);
+    let unpack = |e: std::io::Error| bad(format!("{name} cannot be unpacked: {e}"));
     (&mut f)
-        .take(declared + 1)
+        .take(declared)
         .read_to_end(&mut out)
-        .map_err(|e| bad(format!("{name} cannot be unpacked: {e}")))?;
-    if out.len() as u64 != declared {
+        .map_err(unpack)?;
+    let mut more = [0u8; 1];
+    let extra = f.read(&mut more).map_err(unpack)?;
+    if out.len() as u64 != declared || extra > 0 {
         return Err(bad(format!(
             "{name} unpacks to {} bytes where the zip says {declared} (the file is damaged)",
-            out.len()
+            if extra > 0 {
+                "more".to_string()
+            } else {
+                out.len().to_string()
+            }
         )));
     }
     Ok(out)
@@ -255,13 +262,21 @@ pub(crate) fn read(bytes: &[u8]) -> Result<Grid, Failure> {
     let root = doc.root_element();
     let record1 = child(root, "Record1").ok_or_else(|| bad("main.xml has no Record1"))?;
     let record3 = child(root, "Record3").ok_or_else(|| bad("main.xml has no Record3"))?;
-    // The checksum of main.xml itself.
+    // The checksum of main.xml itself, in md5sum's format ("HEX *NAME");
+    // a line naming another member (SurfaceTopography 1.27 writes
+    // bindata/data.bin's there) is left to main.xml's own checksums.
     if let Some(name) = text_at(root, &["Record4", "ChecksumFile"]).filter(|n| !n.is_empty()) {
         let name = link(&dir, name)?;
         if zip.index_for_name(&name).is_some() {
-            let sum = member(&mut zip, &name, 1 << 16, None)?;
-            let sum = String::from_utf8_lossy(&sum);
-            check_md5("main.xml", &xml_bytes, sum.split_whitespace().next())?;
+            let sums = member(&mut zip, &name, 1 << 16, None)?;
+            for line in String::from_utf8_lossy(&sums).lines() {
+                let mut w = line.split_whitespace();
+                let sum = w.next();
+                let of = w.next().map(|n| n.trim_start_matches('*'));
+                if of.is_none_or(|n| n == "main.xml") {
+                    check_md5("main.xml", &xml_bytes, sum)?;
+                }
+            }
         }
     }
     let feature = text_at(record1, &["FeatureType"]).unwrap_or("");
