@@ -88,15 +88,17 @@ fn other_zip(zip: &Zip<'_>) -> String {
     }
 }
 
-/// The member `name`, unpacked: refused above `limit` bytes, or when it
-/// does not hold `expected` bytes.
-fn member(
-    zip: &mut Zip<'_>,
+type Member<'z, 'a> = zip::read::ZipFile<'z, Cursor<&'a [u8]>>;
+
+/// The member `name` and the bytes it unpacks to: refused above `limit`
+/// bytes, or when it does not hold `expected` bytes.
+fn open<'z, 'a>(
+    zip: &'z mut Zip<'a>,
     name: &str,
     limit: u64,
     expected: Option<(u64, &dyn Fn() -> String)>,
-) -> Result<Vec<u8>, Failure> {
-    let mut f = zip
+) -> Result<(Member<'z, 'a>, u64), Failure> {
+    let f = zip
         .by_name(name)
         .map_err(|e| bad(format!("{name} is missing or unreadable ({e})")))?;
     let declared = f.size();
@@ -114,25 +116,94 @@ fn member(
             limit >> 20
         )));
     }
+    Ok((f, declared))
+}
+
+fn unpacking(name: &str) -> impl Fn(std::io::Error) -> Failure + '_ {
+    move |e| bad(format!("{name} cannot be unpacked: {e}"))
+}
+
+/// Refuses a member with bytes beyond its declared size.
+fn no_more(f: &mut Member<'_, '_>, name: &str, declared: u64) -> Result<(), Failure> {
+    let mut more = [0u8; 1];
+    if f.read(&mut more).map_err(unpacking(name))? > 0 {
+        return Err(bad(format!(
+            "{name} unpacks to more bytes where the zip says {declared} (the file is damaged)"
+        )));
+    }
+    Ok(())
+}
+
+/// The member `name`, unpacked (see [`open`]).
+fn member(
+    zip: &mut Zip<'_>,
+    name: &str,
+    limit: u64,
+    expected: Option<(u64, &dyn Fn() -> String)>,
+) -> Result<Vec<u8>, Failure> {
+    let (mut f, declared) = open(zip, name, limit, expected)?;
     let mut out = Vec::with_capacity(declared as usize);
-    let unpack = |e: std::io::Error| bad(format!("{name} cannot be unpacked: {e}"));
     (&mut f)
         .take(declared)
         .read_to_end(&mut out)
-        .map_err(unpack)?;
-    let mut more = [0u8; 1];
-    let extra = f.read(&mut more).map_err(unpack)?;
-    if out.len() as u64 != declared || extra > 0 {
+        .map_err(unpacking(name))?;
+    if out.len() as u64 != declared {
         return Err(bad(format!(
             "{name} unpacks to {} bytes where the zip says {declared} (the file is damaged)",
-            if extra > 0 {
-                "more".to_string()
-            } else {
-                out.len().to_string()
-            }
+            out.len()
         )));
     }
+    no_more(&mut f, name, declared)?;
     Ok(out)
+}
+
+/// Unpacks the member `name` of `expected` bytes a piece at a time (each a
+/// multiple of 8 bytes but the last), handing each to `each` while another
+/// thread computes its MD5; returns the MD5 (lower-case hex). The data is
+/// never held whole.
+fn stream(
+    zip: &mut Zip<'_>,
+    name: &str,
+    expected: (u64, &dyn Fn() -> String),
+    mut each: impl FnMut(&[u8]),
+) -> Result<String, Failure> {
+    const PIECE: usize = 1 << 20;
+    let (mut f, declared) = open(zip, name, crate::MAX_BYTES, Some(expected))?;
+    let (tx, rx) = std::sync::mpsc::sync_channel::<Vec<u8>>(8);
+    std::thread::scope(|s| {
+        let sum = s.spawn(move || {
+            let mut m = Md5::new();
+            for piece in rx {
+                m.update(&piece);
+            }
+            m.finalize().iter().map(|b| format!("{b:02x}")).collect()
+        });
+        let mut left = declared;
+        let mut buf = vec![0u8; PIECE.min(declared as usize)];
+        let read = (|| {
+            while left > 0 {
+                let n = PIECE.min(left as usize);
+                f.read_exact(&mut buf[..n]).map_err(|e| {
+                    if e.kind() == std::io::ErrorKind::UnexpectedEof {
+                        bad(format!(
+                            "{name} unpacks to fewer bytes than the zip says ({declared}): \
+                             the file is damaged"
+                        ))
+                    } else {
+                        unpacking(name)(e)
+                    }
+                })?;
+                each(&buf[..n]);
+                // The MD5 thread has gone only if it panicked.
+                let _ = tx.send(buf[..n].to_vec());
+                left -= n as u64;
+            }
+            no_more(&mut f, name, declared)
+        })();
+        drop(tx);
+        let sum = sum.join().expect("MD5 thread");
+        read.map(|()| sum)
+    })
 }
 
 fn md5_hex(b: &[u8]) -> String {
@@ -142,14 +213,20 @@ fn md5_hex(b: &[u8]) -> String {
 /// Refuses `data` (member `name`) when its MD5 is not `recorded` (a
 /// missing or malformed checksum is not checked).
 fn check_md5(name: &str, data: &[u8], recorded: Option<&str>) -> Result<(), Failure> {
-    let Some(r) = recorded.map(str::trim) else {
-        return Ok(());
-    };
+    match recorded {
+        Some(r) => check_sum(name, &md5_hex(data), r),
+        None => Ok(()),
+    }
+}
+
+/// Refuses member `name` when its MD5 `got` is not `recorded` (a
+/// malformed checksum is not checked).
+fn check_sum(name: &str, got: &str, recorded: &str) -> Result<(), Failure> {
+    let r = recorded.trim();
     let r = r.get(..32).unwrap_or(r);
     if r.len() != 32 || !r.bytes().all(|c| c.is_ascii_hexdigit()) {
         return Ok(());
     }
-    let got = md5_hex(data);
     if !got.eq_ignore_ascii_case(r) {
         return Err(bad(format!(
             "the MD5 checksum of {name} is {got} where the file records {}: \
@@ -358,16 +435,10 @@ pub(crate) fn read(bytes: &[u8]) -> Result<Grid, Failure> {
             .ok_or_else(|| bad("main.xml has no PointDataLink"))?;
         let path = link(&dir, path)?;
         let says = || format!("main.xml's {nx} × {ny} × {layers} points of {tname}");
-        let data = member(
-            &mut zip,
-            &path,
-            crate::MAX_BYTES,
-            Some(((points * width) as u64, &says)),
-        )?;
-        check_md5(&path, &data, text_at(data_link, &["MD5ChecksumPointData"]))?;
-        z = data[..layer * width]
-            .chunks_exact(width)
-            .map(|b| {
+        z.reserve_exact(layer);
+        let sum = stream(&mut zip, &path, ((points * width) as u64, &says), |piece| {
+            let room = layer - z.len();
+            z.extend(piece.chunks_exact(width).take(room).map(|b| {
                 let raw = get(b);
                 if raw.is_finite() {
                     raw * dz
@@ -375,9 +446,11 @@ pub(crate) fn read(bytes: &[u8]) -> Result<Grid, Failure> {
                     nonfinite += 1;
                     f64::NAN
                 }
-            })
-            .collect();
-        drop(data);
+            }));
+        })?;
+        if let Some(r) = text_at(data_link, &["MD5ChecksumPointData"]) {
+            check_sum(&path, &sum, r)?;
+        }
         if let Some(vpath) = text_at(data_link, &["ValidPointsLink"]).filter(|p| !p.is_empty()) {
             let vpath = link(&dir, vpath)?;
             let need = points.div_ceil(8) as u64;
