@@ -366,6 +366,40 @@ proptest! {
     }
 }
 
+/// The members of an x3p file.
+fn members(name: &str) -> Vec<(String, Vec<u8>)> {
+    use std::io::Read;
+    let b = bytes(name);
+    let mut z = zip::ZipArchive::new(std::io::Cursor::new(&b[..])).unwrap();
+    (0..z.len())
+        .map(|i| {
+            let mut f = z.by_index(i).unwrap();
+            let mut v = Vec::new();
+            f.read_to_end(&mut v).unwrap();
+            (f.name().unwrap().to_string(), v)
+        })
+        .collect()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
+
+    /// main.xml, data.bin or valid.bin changed and packed again (so the
+    /// zip's own checks pass and the reader's are what is tested).
+    #[test]
+    fn mutated_members_never_panic(
+        which in 0usize..3,
+        ops in prop::collection::vec((any::<u8>(), any::<usize>(), any::<u8>()), 1..4),
+    ) {
+        let mut m = members("hand_bin.x3p");
+        let k = which.min(m.len() - 1);
+        m[k].1 = mutate(&m[k].1, &ops);
+        let files: Vec<(&str, &[u8])> = m.iter().map(|(n, b)| (n.as_str(), &b[..])).collect();
+        let _ = parse(&zip_of(&files), &Options::default());
+        prop_assert!(LARGEST.load(Ordering::Relaxed) < CEILING);
+    }
+}
+
 #[test]
 fn problems_are_format_lines() {
     let e = parse(&nest(100), &Options::default()).unwrap_err();
