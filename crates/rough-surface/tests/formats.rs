@@ -289,6 +289,19 @@ fn gwy_channels_by_number_title_and_unit() {
         .unwrap_err()
         .to_string();
     assert!(e.ends_with("--channel applies to Gwyddion .gwy files, which hold several channels"));
+    // A file without a channel of heights.
+    let one = bytes("one.gwy");
+    let at = one.windows(11).position(|w| w == b"unitstr\0snm").unwrap() + 9;
+    let mut volts = one.clone();
+    volts[at..at + 2].copy_from_slice(b"mV");
+    assert_eq!(
+        read_grid(&volts, &Options::default())
+            .unwrap_err()
+            .1
+            .to_string(),
+        "Gwyddion .gwy: no channel holds heights (sizes and values in a unit of length): \
+         0 'Topography' (mV)"
+    );
     // One channel: no note.
     assert!(read_grid(&bytes("one.gwy"), &Options::default())
         .unwrap()
