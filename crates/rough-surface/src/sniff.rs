@@ -44,6 +44,11 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
     if starts(crate::gwy::MAGIC) {
         return Format::Gwy;
     }
+    if starts(b"\xff\xfe") || starts(b"\xfe\xff") {
+        return Format::Other(
+            "UTF-16 text (Windows' \"Unicode\"): save it as UTF-8 or ANSI text".to_string(),
+        );
+    }
     if starts(b"GWYO") || starts(b"GWYQ") {
         return other("a Gwyddion file of another version");
     }
@@ -210,6 +215,7 @@ mod tests {
         assert!(other(b"VK4_\0\0", "vk4").contains("Keyence .vk4"));
         assert!(other(b"date 2020\0\0\0", "plu").contains("Sensofar .plu"));
         assert!(other(b"\0\x01\x02", "bin").contains("Gwyddion"));
+        assert!(other(b"\xff\xfe1\0 \0", "txt").starts_with("UTF-16 text"));
     }
 
     #[test]
