@@ -158,8 +158,9 @@ pub fn sha256_hex(bytes: &[u8]) -> String {
 ///   first data row has them) decimal commas:
 ///   - a contact.engineering TXT download (a `# Columns:` header);
 ///   - a height matrix: a size header (`# Width:`/`# Height:`), or one, or
-///     three or more numbers per row; one row or one column is a line
-///     scan;
+///     four or more numbers per row; one row or one column is a line
+///     scan (three numbers a row are an XYZ point cloud, refused with
+///     what to do);
 ///   - two columns: a line scan `x z` or a PSD table `q C^iso`
 ///     (`columns`' rules);
 /// - any other format recognised (NetCDF, HDF5, .npy, TIFF, Zygo, Keyence,

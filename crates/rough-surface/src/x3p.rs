@@ -142,7 +142,9 @@ fn member(
     expected: Option<(u64, &dyn Fn() -> String)>,
 ) -> Result<Vec<u8>, Failure> {
     let (mut f, declared) = open(zip, name, limit, expected)?;
-    let mut out = Vec::with_capacity(declared as usize);
+    // Grown as the bytes arrive beyond 16 MiB: a member that claims more
+    // than it holds allocates no more than it holds.
+    let mut out = Vec::with_capacity(declared.min(16 << 20) as usize);
     (&mut f)
         .take(declared)
         .read_to_end(&mut out)
@@ -435,8 +437,11 @@ pub(crate) fn read(bytes: &[u8]) -> Result<Grid, Failure> {
             .ok_or_else(|| bad("main.xml has no PointDataLink"))?;
         let path = link(&dir, path)?;
         let says = || format!("main.xml's {nx} × {ny} × {layers} points of {tname}");
-        z.reserve_exact(layer);
         let sum = stream(&mut zip, &path, ((points * width) as u64, &says), |piece| {
+            // Sized once data.bin's size is checked and its first piece in.
+            if z.capacity() == 0 {
+                z.reserve_exact(layer);
+            }
             let room = layer - z.len();
             z.extend(piece.chunks_exact(width).take(room).map(|b| {
                 let raw = get(b);

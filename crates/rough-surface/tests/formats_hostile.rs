@@ -172,6 +172,15 @@ fn zip_bombs_and_wrong_sizes() {
         refuse(&z),
         "x3p: main.xml says 65536 × 65536 × 1 points: more than a file is read with"
     );
+    // Four layers of 8192² float64 that data.bin claims to hold: beyond
+    // the size limit, refused before it is unpacked.
+    let layers = main_xml(8192, 8192, "").replace("<SizeZ>1<", "<SizeZ>4<");
+    let mut z = pack(&d, layers.as_bytes(), "");
+    claim(&mut z, "bindata/data.bin", 1 << 31);
+    assert_eq!(
+        refuse(&z),
+        "x3p: bindata/data.bin unpacks to 2147483648 bytes: more than the 512 MB read"
+    );
     // data.bin unpacks to more than its header says (a bomb that lies).
     let zeros = vec![0u8; 8 << 20];
     let mut z = pack(&zeros, &x, &s);
