@@ -236,27 +236,15 @@ fn parse_file(
             });
         }
         sniff::Format::Text => {
-            let (text, note) = sniff::decode(bytes)?;
-            notes.extend(note);
+            let (text, mut assumed) = sniff::text(bytes)?;
+            notes.append(&mut assumed);
             text
         }
-    };
-    let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
-    // Decimal commas (Gwyddion's ASCII export in a locale that writes
-    // them): read when the first data row has them.
-    let commas = matches!(text::head(text), Err((_, Problem::DecimalComma(_))));
-    let owned;
-    let text = if commas {
-        owned = text.replace(',', ".");
-        notes.push("decimal commas read".to_string());
-        owned.as_str()
-    } else {
-        text
     };
     // The hash runs beside the parse.
     let (sha256, read) = std::thread::scope(|s| {
         let hash = s.spawn(|| sha256_hex(bytes));
-        let read = read_text(text, opts);
+        let read = read_text(&text, opts);
         (hash.join().expect("hash thread"), read)
     });
     let (kind, computed, summary) = read?;

@@ -192,6 +192,24 @@ pub(crate) fn decode(bytes: &[u8]) -> Result<(Cow<'_, str>, Option<String>), Fai
     }
 }
 
+/// A text file's bytes as the text to parse and what was assumed: UTF-8
+/// or Windows-1252 ([`decode`]), a byte-order mark dropped, decimal commas
+/// read as points when the first data row has them (Gwyddion's ASCII
+/// export in a locale that writes them, its "use dot" off).
+pub(crate) fn text(bytes: &[u8]) -> Result<(Cow<'_, str>, Vec<String>), Failure> {
+    let (text, note) = decode(bytes)?;
+    let mut notes: Vec<String> = note.into_iter().collect();
+    let text = match text {
+        Cow::Borrowed(t) => Cow::Borrowed(t.strip_prefix('\u{feff}').unwrap_or(t)),
+        Cow::Owned(t) => Cow::Owned(t),
+    };
+    if matches!(crate::text::head(&text), Err((_, Problem::DecimalComma(_)))) {
+        notes.push("decimal commas read".to_string());
+        return Ok((Cow::Owned(text.replace(',', ".")), notes));
+    }
+    Ok((text, notes))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
