@@ -24,7 +24,9 @@ Writes into crates/rough-surface/tests/data/formats/:
   deg, and a second height channel titled "Height (retrace)" in µm), a
   channel with a mask;
 - Gwyddion ASCII data matrices as Gwyddion writes them in a locale with
-  decimal commas (its default "use dot" off), one UTF-8 and one Latin-1;
+  decimal commas (its default "use dot" off), one UTF-8 and one Latin-1,
+  and two exports (Phase in deg, then Height in m) concatenated in one
+  file, whose height channel SurfaceTopography is checked to read;
 - for each x3p and .gwy file the same heights as a text matrix
   (`NAME.txt`, sizes and heights in metres, shortest round-trip digits),
   for the comparison of heights and moments;
@@ -38,6 +40,9 @@ Writes into crates/rough-surface/tests/data/formats/:
   nor a DataList, and adds the z axis's Offset to the heights (x3pio and
   roughtui leave it to the placement: the heights agree up to that
   constant).
+
+x3p files carry the date they were written (main.xml, the zip's times): a
+new run changes their bytes, not their heights.
 
 requirements: x3pio==2.0.0 gwyfile==0.3.0 SurfaceTopography==1.27.1
 """
@@ -348,8 +353,22 @@ def ascii_files():
     with open(os.path.join(OUT, "gwy_ascii_latin1.txt"), "w", encoding="latin-1") as f:
         f.write(text)
     zr = np.array([[float(f"{v:.6e}") for v in row] for row in z])
-    # SurfaceTopography 1.27.1 reads neither: the reference is the values
-    # as printed.
+    # Two channels concatenated (Gwyddion's exports of a phase and a height
+    # channel in one file): SurfaceTopography reads the height channel.
+    phase = rng.normal(size=z.shape)
+    two = ["# Channel: Phase", "# Width: 6.000 µm", "# Height: 5.000 µm", "# Value units: deg"]
+    two += ["\t".join(f"{v:.6e}" for v in row) for row in phase]
+    two += ["# Channel: Height", "# Width: 6.000 µm", "# Height: 5.000 µm", "# Value units: m"]
+    two += ["\t".join(f"{v:.6e}" for v in row) for row in z]
+    path = os.path.join(OUT, "gwy_ascii_two.txt")
+    with open(path, "w", encoding="utf-8") as f:
+        f.write("\n".join(two) + "\n")
+    t = read_topography(path)
+    k = get_unit_conversion_factor(t.unit, "m")
+    zr0 = np.array([[float(f"{v:.6e}") for v in row] for row in z])
+    same(np.asarray(t.heights(), float).T * k, zr0, "two channels vs SurfaceTopography")
+    # SurfaceTopography 1.27.1 reads neither decimal commas nor Latin-1:
+    # the reference is the values as printed.
     for name in ["gwy_ascii_comma", "gwy_ascii_latin1"]:
         reference(name, 12, 10, 6e-6, 5e-6, zr)
 

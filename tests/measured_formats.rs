@@ -109,7 +109,7 @@ fn files_not_read_exit_2_with_a_way_forward() {
     let txt = data("sur_d.txt");
     refused(
         &["export", "--surface", &txt, "--channel", "1"],
-        &["--channel applies to Gwyddion .gwy files"],
+        &["--channel applies to files of several channels"],
     );
 }
 

@@ -8,6 +8,7 @@
 
 mod bins;
 mod ce;
+mod channels;
 mod columns;
 mod error;
 mod fit;
@@ -199,16 +200,18 @@ fn parse_file(
         }
     }
     let format = sniff::format(bytes, ext);
-    if opts.channel.is_some() && format != sniff::Format::Gwy {
-        if let sniff::Format::Other(s) = format {
-            return Err((None, Problem::Format(s)));
-        }
-        return Err((
+    let no_channels = || {
+        Err((
             None,
             Problem::Option(
-                "--channel applies to Gwyddion .gwy files, which hold several channels".to_string(),
+                "--channel applies to files of several channels (Gwyddion's .gwy, \
+                 its ASCII exports concatenated)"
+                    .to_string(),
             ),
-        ));
+        ))
+    };
+    if opts.channel.is_some() && format == sniff::Format::X3p {
+        return no_channels();
     }
     let mut notes = Vec::new();
     let text = match format {
@@ -241,10 +244,22 @@ fn parse_file(
             text
         }
     };
+    // Several channels: one is read.
+    let blocks = channels::blocks(&text)?;
+    let (text, skipped) = if blocks.is_empty() {
+        if opts.channel.is_some() {
+            return no_channels();
+        }
+        (&text[..], 0)
+    } else {
+        let (b, note) = channels::pick(&blocks, opts.channel.as_deref())?;
+        notes.push(note);
+        (b.text, b.first_line - 1)
+    };
     // The hash runs beside the parse.
     let (sha256, read) = std::thread::scope(|s| {
         let hash = s.spawn(|| sha256_hex(bytes));
-        let read = read_text(&text, opts);
+        let read = read_text(text, opts).map_err(|(l, p)| (l.map(|l| l + skipped), p));
         (hash.join().expect("hash thread"), read)
     });
     let (kind, computed, summary) = read?;

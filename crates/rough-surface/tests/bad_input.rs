@@ -264,10 +264,28 @@ fn other_refusals() {
         map(SIZE, &GOOD),
         map("", &GOOD)
     );
+    // Two channels (Gwyddion's exports concatenated): the first of
+    // heights is read, an error in it names the file's line.
+    let f = file(two.as_bytes());
+    let m = read(&f.path, &Options::default()).unwrap();
     assert_eq!(
-        refuse(&two),
-        "bad surface FILE, line 9: a header line ('Channel: Phase') after the data: \
-         one channel per file, please"
+        m.notes,
+        vec![
+            "channel 0 'Height' (nm) read; also in the file: 1 'Phase' (m) (--channel N or TITLE)"
+        ]
+    );
+    assert_eq!(
+        refuse(&two.replacen("2 1 4 3", "2 1 x 3", 1)),
+        "bad surface FILE, line 6: 'x' is not a number"
+    );
+    let wrong = two.replace("Value units: nm", "Value units: V").replace(
+        "# Channel: Phase\n",
+        "# Channel: Phase\n# Value units: deg\n",
+    );
+    assert_eq!(
+        refuse(&wrong),
+        "bad surface FILE: no channel holds heights (values in a unit of length): \
+         0 'Height' (V), 1 'Phase' (deg)"
     );
     let dir = tempfile::tempdir().unwrap();
     let e = read(dir.path(), &Options::default()).unwrap_err();

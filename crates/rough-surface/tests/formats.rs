@@ -243,6 +243,19 @@ fn gwyddion_ascii_with_decimal_commas_and_latin1() {
         ]
     );
     assert_eq!(m.table, want.table);
+    // Two channels concatenated: the height channel, as SurfaceTopography
+    // reads it (scripts/formats_reference.py checks that it does).
+    let two = read(&dir().join("gwy_ascii_two.txt"), &Options::default()).unwrap();
+    assert_eq!(
+        two.notes,
+        vec![
+            "channel 1 'Height' (m) read; also in the file: 0 'Phase' (deg) \
+             (--channel N or TITLE)"
+                .to_string()
+        ]
+    );
+    assert_eq!(two.kind, want.kind);
+    assert_eq!(two.table, want.table);
     // A comma that separates numbers is not a decimal mark.
     let m = parse(b"# Width: 4 m\n1.5,2,3,4.25\n", &Options::default()).unwrap();
     assert!(m.notes.is_empty());
@@ -288,7 +301,10 @@ fn gwy_channels_by_number_title_and_unit() {
     let e = read(&dir().join("sur_d.x3p"), &with("1"))
         .unwrap_err()
         .to_string();
-    assert!(e.ends_with("--channel applies to Gwyddion .gwy files, which hold several channels"));
+    assert!(e.ends_with(
+        "--channel applies to files of several channels (Gwyddion's .gwy, its ASCII \
+         exports concatenated)"
+    ));
     // A file without a channel of heights.
     let one = bytes("one.gwy");
     let at = one.windows(11).position(|w| w == b"unitstr\0snm").unwrap() + 9;
