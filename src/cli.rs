@@ -91,8 +91,9 @@ pub struct Setup {
     /// as the value prompt takes them: m cm mm µm um nm pm).
     #[arg(long, value_name = "LENGTH", requires = "surface", allow_hyphen_values = true, value_parser = parse_pixel_size)]
     pub pixel_size: Option<f64>,
-    /// The channel of a Gwyddion .gwy file: its number or its title (the
-    /// first channel of heights when not given).
+    /// The channel of a file of several (Gwyddion's .gwy, its ASCII
+    /// exports concatenated): its number or its title (the first channel of
+    /// heights when not given).
     #[arg(long, value_name = "N|TITLE", requires = "surface")]
     pub channel: Option<String>,
     /// Set a parameter, e.g. --set h0-over-e=0.001 --set r-star=0.5mm
@@ -354,7 +355,7 @@ pub struct BenchArgs {
     /// The surface's sample spacing (as for the explorer).
     #[arg(long, value_name = "LENGTH", requires = "surface", allow_hyphen_values = true, value_parser = parse_pixel_size)]
     pub pixel_size: Option<f64>,
-    /// The channel of a Gwyddion .gwy file (as for the explorer).
+    /// The channel of a file of several (as for the explorer).
     #[arg(long, value_name = "N|TITLE", requires = "surface")]
     pub channel: Option<String>,
 }

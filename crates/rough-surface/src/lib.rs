@@ -43,9 +43,9 @@ pub struct Options {
     pub periodic: bool,
     /// Sample spacing in metres, for data without a size header.
     pub pixel_size: Option<f64>,
-    /// The channel of a Gwyddion .gwy file to read: its number (the N of
-    /// `/N/data`) or its title; `None` takes the first whose values are
-    /// heights (a unit of length).
+    /// The channel to read of a file of several: its number (a .gwy's N of
+    /// `/N/data`; a text file's channels from 0 in order) or its title;
+    /// `None` takes the first whose values are heights (a unit of length).
     pub channel: Option<String>,
 }
 
