@@ -28,7 +28,7 @@ pub struct SurfaceFile {
         deserialize_with = "de_number"
     )]
     pub pixel_size: Option<f64>,
-    /// The channel of a Gwyddion .gwy file read (its number or title), when
+    /// The channel read of a file of several (its number or title), when
     /// one was chosen.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub channel: Option<String>,
