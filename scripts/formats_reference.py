@@ -23,6 +23,12 @@ Writes into crates/rough-surface/tests/data/formats/:
   heights in nm), three channels (Height in m, Amplitude in V, Phase in
   deg, and a second height channel titled "Height (retrace)" in µm), a
   channel with a mask;
+- .gwy files written by Gwyddion 2.62 itself (Debian's `gwyddion`, run
+  headless with `--convert-to-gwy`) from four of the x3p files: Gwyddion's
+  own x3p reader and serialisation, checked against x3pio's reading (the
+  heights exactly up to the z offset, which Gwyddion adds as
+  SurfaceTopography does; the mask on the invalid points); without gwyddion
+  installed these are left as they are;
 - Gwyddion ASCII data matrices as Gwyddion writes them in a locale with
   decimal commas (its default "use dot" off), one UTF-8 and one Latin-1,
   and two exports (Phase in deg, then Height in m) concatenated in one
@@ -49,6 +55,8 @@ requirements: x3pio==2.0.0 gwyfile==0.3.0 SurfaceTopography==1.27.1
 import hashlib
 import io
 import os
+import shutil
+import subprocess
 import zipfile
 
 import gwyfile
@@ -341,6 +349,36 @@ def check_gwy(name, path, n, uxy, uz, to, channel=None, suffix=""):
     write_text(name + suffix, h, slx, sly)
 
 
+GWYDDION_FROM = ["sur_d", "sur_valid_i", "st_sur_i", "hand_bin"]
+
+
+def gwyddion_files():
+    """.gwy files written by Gwyddion itself (the Debian package, headless:
+    `gwyddion --convert-to-gwy=OUT.gwy FILE.x3p`) from x3p files above:
+    Gwyddion reads them with its own x3p reader (invalid points become its
+    mask) and writes its own serialisation (with a /0/meta container).
+    Checked: the heights (up to the z offset Gwyddion adds) and the mask
+    equal x3pio's reading of the x3p."""
+    if shutil.which("gwyddion") is None:
+        print("gwyddion not installed: the gwyddion_*.gwy files are left as they are")
+        return
+    for name in GWYDDION_FROM:
+        out = os.path.join(OUT, f"gwyddion_{name}.gwy")
+        subprocess.run(["gwyddion", "--no-splash", f"--convert-to-gwy={out}",
+                        os.path.join(OUT, name + ".x3p")], check=True,
+                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        c = gwyfile.load(out)
+        f = c["/0/data"]
+        z = np.array(f.data, float).reshape(f["yres"], f["xres"])
+        m = c.get("/0/mask")
+        if m is not None:
+            z[np.asarray(m.data).reshape(z.shape) > 0.5] = np.nan
+        x = np.asarray(x3pio.read(os.path.join(OUT, name + ".x3p"), verify=False).layers[0].z, float)
+        # Gwyddion, like SurfaceTopography, adds the z axis's Offset.
+        off = np.nanmean(z - x)
+        same(z - off, x, f"gwyddion_{name} vs x3pio")
+
+
 def ascii_files():
     """Gwyddion's ASCII export in a decimal-comma locale (its "use dot" off):
     a header of comments, values tab-separated with decimal commas."""
@@ -378,6 +416,7 @@ def main():
     x3p_files()
     hand_files()
     gwy_files()
+    gwyddion_files()
     ascii_files()
     with open(os.path.join(OUT, "reference.txt"), "w") as f:
         f.write("# Written by scripts/formats_reference.py: what x3pio "

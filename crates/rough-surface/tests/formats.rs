@@ -107,6 +107,38 @@ fn heights_as_x3pio_and_gwyfile_read_them() {
     eprintln!("largest height difference: {worst:.1e} of the largest height");
 }
 
+#[test]
+fn gwy_files_written_by_gwyddion_itself() {
+    // Gwyddion 2.62 converted four of the x3p files (its own x3p reader and
+    // serialisation, with a /0/meta container and its mask of the invalid
+    // points): the same heights as x3pio reads from the x3p, up to the z
+    // offset Gwyddion adds, and the same undefined points.
+    let refs = refs();
+    for name in ["sur_d", "sur_valid_i", "st_sur_i", "hand_bin"] {
+        let file = format!("gwyddion_{name}.gwy");
+        let g = read_grid(&bytes(&file), &Options::default()).unwrap();
+        let r = refs.iter().find(|r| r.name == name).unwrap();
+        assert_eq!((g.nx, g.ny), (r.nx, r.ny), "{file}");
+        assert!(rel(g.lx, r.lx) < 1e-15 && rel(g.ly, r.ly) < 1e-15, "{file}");
+        let want = heights(name);
+        let pairs: Vec<(f64, f64)> = g.z.iter().copied().zip(want.iter().copied()).collect();
+        assert!(
+            pairs.iter().all(|(a, b)| a.is_nan() == b.is_nan()),
+            "{file}"
+        );
+        let defined = pairs.iter().filter(|(a, _)| !a.is_nan());
+        let n = defined.clone().count() as f64;
+        let offset = defined.clone().map(|(a, b)| a - b).sum::<f64>() / n;
+        let scale = defined.clone().fold(0f64, |m, (_, b)| m.max(b.abs()));
+        for (a, b) in defined {
+            assert!(
+                (a - offset - b).abs() <= 1e-12 * scale,
+                "{file}: {a} vs {b}"
+            );
+        }
+    }
+}
+
 /// The moments of `a` and `b` at every ζ of a's table.
 fn same_moments(a: &Measured, b: &Measured, what: &str) -> f64 {
     match (a.kind, b.kind) {
@@ -182,6 +214,7 @@ fn moments_of_masked_files() {
         ("hand_list.x3p", 1),
         ("hand_bin.x3p", 3),
         ("mask.gwy", 3),
+        ("gwyddion_sur_valid_i.gwy", 3),
     ] {
         let m = read(&dir().join(file), &Options::default()).unwrap_or_else(|e| panic!("{e}"));
         assert!(matches!(m.kind, Kind::Map { .. }), "{file}");

@@ -357,11 +357,18 @@ proptest! {
 
     #[test]
     fn mutated_files_never_panic(
-        which in 0usize..5,
+        which in 0usize..6,
         ops in prop::collection::vec((any::<u8>(), any::<usize>(), any::<u8>()), 1..6),
         cut in any::<usize>(),
     ) {
-        let name = ["sur_d.x3p", "sur_valid_i.x3p", "hand_bin.x3p", "one.gwy", "three.gwy"][which];
+        let name = [
+            "sur_d.x3p",
+            "sur_valid_i.x3p",
+            "hand_bin.x3p",
+            "one.gwy",
+            "three.gwy",
+            "gwyddion_sur_valid_i.gwy",
+        ][which];
         let mut b = mutate(&bytes(name), &ops);
         if cut % 3 == 0 && !b.is_empty() {
             b.truncate(cut % b.len());
