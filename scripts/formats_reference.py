@@ -24,7 +24,7 @@ Writes into crates/rough-surface/tests/data/formats/:
   deg, and a second height channel titled "Height (retrace)" in µm), a
   channel with a mask;
 - .gwy files written by Gwyddion 2.62 itself (Debian's `gwyddion`, run
-  headless with `--convert-to-gwy`) from four of the x3p files: Gwyddion's
+  headless with `--convert-to-gwy`) from five of the x3p files: Gwyddion's
   own x3p reader and serialisation, checked against x3pio's reading (the
   heights exactly up to the z offset, which Gwyddion adds as
   SurfaceTopography does; the mask on the invalid points); without gwyddion
@@ -349,7 +349,7 @@ def check_gwy(name, path, n, uxy, uz, to, channel=None, suffix=""):
     write_text(name + suffix, h, slx, sly)
 
 
-GWYDDION_FROM = ["sur_d", "sur_valid_i", "st_sur_i", "hand_bin"]
+GWYDDION_FROM = ["sur_d", "sur_valid_i", "st_sur_i", "hand_bin", "hand_list"]
 
 
 def gwyddion_files():

@@ -109,12 +109,12 @@ fn heights_as_x3pio_and_gwyfile_read_them() {
 
 #[test]
 fn gwy_files_written_by_gwyddion_itself() {
-    // Gwyddion 2.62 converted four of the x3p files (its own x3p reader and
+    // Gwyddion 2.62 converted five of the x3p files (its own x3p reader and
     // serialisation, with a /0/meta container and its mask of the invalid
     // points): the same heights as x3pio reads from the x3p, up to the z
     // offset Gwyddion adds, and the same undefined points.
     let refs = refs();
-    for name in ["sur_d", "sur_valid_i", "st_sur_i", "hand_bin"] {
+    for name in ["sur_d", "sur_valid_i", "st_sur_i", "hand_bin", "hand_list"] {
         let file = format!("gwyddion_{name}.gwy");
         let g = read_grid(&bytes(&file), &Options::default()).unwrap();
         let r = refs.iter().find(|r| r.name == name).unwrap();
