@@ -361,8 +361,7 @@ pub(crate) fn read(bytes: &[u8]) -> Result<Grid, Failure> {
     let feature = text_at(record1, &["FeatureType"]).unwrap_or("");
     let irregular = || {
         bad(format!(
-            "{}: {}",
-            "a point cloud (irregular x and y)",
+            "a point cloud (irregular x and y): {}",
             crate::sniff::XYZ_HINT
         ))
     };
