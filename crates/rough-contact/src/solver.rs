@@ -312,17 +312,39 @@ impl Bccg {
     }
 }
 
-/// Make mean(p) exact by a uniform shift s of the loaded nodes, clipped to
-/// [0, cap]: the root of the monotone piecewise-linear Σ clip(pᵢ + s) = target,
-/// by Newton's method kept inside a bracket.
+/// Make mean(p) exact by a uniform shift s of the free nodes (0 < p < cap),
+/// clipped to [0, cap]: the root of the monotone piecewise-linear
+/// Σ clip(pᵢ + s) = target, by Newton's method kept inside a bracket. Nodes
+/// at the cap stay there unless the free nodes cannot make up the load
+/// alone; nodes out of contact stay out unless the loaded ones cannot carry
+/// it even at the cap.
 pub(crate) fn impose_mean(p: &mut [f64], cap: f64, target: f64) {
-    let loaded: f64 = p.iter().filter(|&&v| v > 0.0).count() as f64;
-    // If the loaded nodes cannot carry the load even at the cap, shift all.
-    let all = loaded * cap < target;
+    let (mut n_free, mut n_cap) = (0.0, 0.0);
+    for &v in p.iter() {
+        match class(v, cap) {
+            Set::Free => n_free += 1.0,
+            Set::Cap => n_cap += 1.0,
+            Set::Zero => {}
+        }
+    }
+    let cap_load = if n_cap > 0.0 { n_cap * cap } else { 0.0 };
+    // Which nodes move: 0 free only, 1 all loaded, 2 all.
+    let level = if cap_load < target && (n_free + n_cap) * cap >= target && n_free > 0.0 {
+        0
+    } else if (n_free + n_cap) * cap >= target {
+        1
+    } else {
+        2
+    };
+    let moves = |v: f64| match level {
+        0 => v > 0.0 && v < cap,
+        1 => v > 0.0,
+        _ => true,
+    };
     let eval = |p: &[f64], s: f64| -> (f64, f64) {
         let (mut sum, mut slope) = (0.0, 0.0);
         for &v in p {
-            if v > 0.0 || all {
+            if moves(v) {
                 let w = v + s;
                 if w >= cap {
                     sum += cap;
@@ -336,7 +358,12 @@ pub(crate) fn impose_mean(p: &mut [f64], cap: f64, target: f64) {
         }
         (sum - target, slope)
     };
-    let count = if all { p.len() as f64 } else { loaded.max(1.0) };
+    let count = match level {
+        0 => n_free,
+        1 => n_free + n_cap,
+        _ => p.len() as f64,
+    }
+    .max(1.0);
     let p_max = p.iter().cloned().fold(0.0, f64::max);
     let (mut lo, mut hi) = (-p_max, if cap.is_finite() { cap } else { target / count });
     let mut s = 0.0;
@@ -362,7 +389,7 @@ pub(crate) fn impose_mean(p: &mut [f64], cap: f64, target: f64) {
     }
     if s != 0.0 {
         for v in p.iter_mut() {
-            if *v > 0.0 || all {
+            if moves(*v) {
                 *v = (*v + s).clamp(0.0, cap);
             }
         }
