@@ -196,6 +196,11 @@ impl Compliance {
         (nf * nf) as f64 / sum
     }
 
+    /// The largest eigenvalue of K, the Lipschitz constant of the gradient.
+    pub(crate) fn max_eigenvalue(&self) -> f64 {
+        self.kernel.iter().cloned().fold(0.0, f64::max)
+    }
+
     /// u = K ∗ p, both n × n row-major.
     pub(crate) fn apply(&mut self, p: &[f64], u: &mut [f64]) {
         let n = self.n;

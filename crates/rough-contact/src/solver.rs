@@ -124,54 +124,8 @@ impl Bccg {
         // garbage; the solver then returns to the best one and stops.
         let (mut best, mut best_it) = (f64::INFINITY, 0usize);
         let stop = loop {
-            self.op.apply(p, &mut self.u);
-            // Raw gap and λ from the free set.
-            let (mut sum_f, mut n_f) = (0.0, 0usize);
-            let (mut zero_min, mut cap_max) = (f64::INFINITY, f64::NEG_INFINITY);
-            for i in 0..n2 {
-                let g = self.u[i] - self.h[i];
-                gap[i] = g;
-                match class(p[i], cap) {
-                    Set::Free => {
-                        sum_f += g;
-                        n_f += 1;
-                    }
-                    Set::Zero => zero_min = zero_min.min(g),
-                    Set::Cap => cap_max = cap_max.max(g),
-                }
-            }
-            let lambda = if n_f > 0 {
-                -sum_f / n_f as f64
-            } else {
-                // No free node: any λ between the bounds' gaps; the middle.
-                let lo = if cap_max.is_finite() {
-                    -cap_max
-                } else {
-                    -zero_min
-                };
-                let hi = if zero_min.is_finite() {
-                    -zero_min
-                } else {
-                    -cap_max
-                };
-                0.5 * (lo + hi)
-            };
-            let mut viol = 0.0;
-            let mut g_sq = 0.0;
-            for i in 0..n2 {
-                gap[i] += lambda;
-                let gi = gap[i];
-                let v = match class(p[i], cap) {
-                    Set::Free => {
-                        g_sq += gi * gi;
-                        gi
-                    }
-                    Set::Zero => gi.min(0.0),
-                    Set::Cap => gi.max(0.0),
-                };
-                viol += v * v;
-            }
-            residual = (viol / n2 as f64).sqrt() / self.h_rms;
+            let (res, g_sq, n_f) = self.kkt(p, cap, gap);
+            residual = res;
             if residual <= opts.tolerance {
                 break Stop::Converged;
             }
@@ -188,10 +142,10 @@ impl Bccg {
                     residual = best;
                     break Stop::Converged;
                 }
-                return Err(ContactError::NotConverged {
-                    iterations: it,
-                    residual: best,
-                });
+                let (its, res) = self.projected(p, cap, target, opts, gap, progress, it)?;
+                it = its;
+                residual = res;
+                break Stop::Converged;
             }
             if !progress(it, residual) {
                 break Stop::Cancelled;
@@ -245,7 +199,10 @@ impl Bccg {
             }
             tau_prev = tau;
 
-            // Step, release, project.
+            // Step, release, project. A node released from a bound moves by
+            // the pressure that would close its own gap alone (1/K(0)), not
+            // by the CG step, which belongs to the free set's conditioning.
+            let tau_r = tau.min(self.op.diagonal_inverse());
             let mut released = false;
             for i in 0..n2 {
                 let gi = gap[i];
@@ -254,11 +211,11 @@ impl Bccg {
                     Set::Free => (pi - tau * self.t[i]).clamp(0.0, cap),
                     Set::Zero if gi < 0.0 => {
                         released = true;
-                        (-tau * gi).min(cap)
+                        (-tau_r * gi).min(cap)
                     }
                     Set::Cap if gi > 0.0 => {
                         released = true;
-                        (cap - tau * gi).max(0.0)
+                        (cap - tau_r * gi).max(0.0)
                     }
                     _ => pi,
                 };
@@ -269,6 +226,124 @@ impl Bccg {
         match stop {
             Stop::Cancelled => Err(ContactError::Cancelled),
             Stop::Converged => Ok(self.result(p_mean, cap, p, gap, it, residual)),
+        }
+    }
+
+    /// u = Kp, the gap with λ from the free set, and the residual of the
+    /// stopping rule; also Σ_F g² and |F| for the conjugate gradient.
+    fn kkt(&mut self, p: &[f64], cap: f64, gap: &mut [f64]) -> (f64, f64, usize) {
+        let n2 = self.n2;
+        self.op.apply(p, &mut self.u);
+        // Raw gap and λ from the free set.
+        let (mut sum_f, mut n_f) = (0.0, 0usize);
+        let (mut zero_min, mut cap_max) = (f64::INFINITY, f64::NEG_INFINITY);
+        for i in 0..n2 {
+            let g = self.u[i] - self.h[i];
+            gap[i] = g;
+            match class(p[i], cap) {
+                Set::Free => {
+                    sum_f += g;
+                    n_f += 1;
+                }
+                Set::Zero => zero_min = zero_min.min(g),
+                Set::Cap => cap_max = cap_max.max(g),
+            }
+        }
+        let lambda = if n_f > 0 {
+            -sum_f / n_f as f64
+        } else {
+            // No free node: any λ between the bounds' gaps; the middle.
+            let lo = if cap_max.is_finite() {
+                -cap_max
+            } else {
+                -zero_min
+            };
+            let hi = if zero_min.is_finite() {
+                -zero_min
+            } else {
+                -cap_max
+            };
+            0.5 * (lo + hi)
+        };
+        let mut viol = 0.0;
+        let mut g_sq = 0.0;
+        for i in 0..n2 {
+            gap[i] += lambda;
+            let gi = gap[i];
+            let v = match class(p[i], cap) {
+                Set::Free => {
+                    g_sq += gi * gi;
+                    gi
+                }
+                Set::Zero => gi.min(0.0),
+                Set::Cap => gi.max(0.0),
+            };
+            viol += v * v;
+        }
+        ((viol / n2 as f64).sqrt() / self.h_rms, g_sq, n_f)
+    }
+
+    /// Accelerated projected gradient (FISTA with O'Donoghue–Candès
+    /// restarts) on the same problem, with the exact Euclidean projection on
+    /// {0 ≤ p ≤ H, mean p = p̄}: slower than the conjugate gradient but
+    /// convergent whatever the sets do; taken over when the conjugate
+    /// gradient stalls (contacts where most nodes sit at the hardness).
+    #[allow(clippy::too_many_arguments)]
+    fn projected(
+        &mut self,
+        p: &mut [f64],
+        cap: f64,
+        target: f64,
+        opts: &Options,
+        gap: &mut [f64],
+        progress: &mut dyn FnMut(usize, f64) -> bool,
+        mut it: usize,
+    ) -> Result<(usize, f64), ContactError> {
+        let n2 = self.n2;
+        let step = 1.0 / self.op.max_eigenvalue();
+        let mut y = p.to_vec();
+        let mut prev = p.to_vec();
+        let mut theta: f64 = 1.0;
+        loop {
+            self.op.apply(&y, &mut self.u);
+            for i in 0..n2 {
+                self.t[i] = y[i] - step * (self.u[i] - self.h[i]);
+            }
+            impose_mean_on(&mut self.t, cap, target, Level::All);
+            let mut dot = 0.0;
+            for i in 0..n2 {
+                dot += (y[i] - self.t[i]) * (self.t[i] - prev[i]);
+            }
+            let beta = if dot > 0.0 {
+                theta = 1.0;
+                0.0
+            } else {
+                let next = 0.5 * (1.0 + (1.0 + 4.0 * theta * theta).sqrt());
+                let b = (theta - 1.0) / next;
+                theta = next;
+                b
+            };
+            for i in 0..n2 {
+                y[i] = self.t[i] + beta * (self.t[i] - prev[i]);
+                prev[i] = self.t[i];
+            }
+            it += 1;
+            if it % 10 == 0 {
+                p.copy_from_slice(&prev);
+                let (residual, _, _) = self.kkt(p, cap, gap);
+                if residual <= opts.tolerance {
+                    return Ok((it, residual));
+                }
+                if !progress(it, residual) {
+                    return Err(ContactError::Cancelled);
+                }
+                if it >= opts.max_iterations {
+                    return Err(ContactError::NotConverged {
+                        iterations: it,
+                        residual,
+                    });
+                }
+            }
         }
     }
 
@@ -319,6 +394,19 @@ impl Bccg {
 /// alone; nodes out of contact stay out unless the loaded ones cannot carry
 /// it even at the cap.
 pub(crate) fn impose_mean(p: &mut [f64], cap: f64, target: f64) {
+    impose_mean_on(p, cap, target, Level::Auto);
+}
+
+/// Which nodes the shift of [`impose_mean_on`] moves.
+#[derive(Clone, Copy, PartialEq)]
+pub(crate) enum Level {
+    /// As few as can make up the load (see [`impose_mean`]).
+    Auto,
+    /// Every node: the exact Euclidean projection on the constraints.
+    All,
+}
+
+pub(crate) fn impose_mean_on(p: &mut [f64], cap: f64, target: f64, how: Level) {
     let (mut n_free, mut n_cap) = (0.0, 0.0);
     for &v in p.iter() {
         match class(v, cap) {
@@ -329,7 +417,9 @@ pub(crate) fn impose_mean(p: &mut [f64], cap: f64, target: f64) {
     }
     let cap_load = if n_cap > 0.0 { n_cap * cap } else { 0.0 };
     // Which nodes move: 0 free only, 1 all loaded, 2 all.
-    let level = if cap_load < target && (n_free + n_cap) * cap >= target && n_free > 0.0 {
+    let level = if how == Level::All {
+        2
+    } else if cap_load < target && (n_free + n_cap) * cap >= target && n_free > 0.0 {
         0
     } else if (n_free + n_cap) * cap >= target {
         1
