@@ -328,7 +328,7 @@ impl Bccg {
                 prev[i] = self.t[i];
             }
             it += 1;
-            if it % 10 == 0 {
+            if it.is_multiple_of(10) {
                 p.copy_from_slice(&prev);
                 let (residual, _, _) = self.kkt(p, cap, gap);
                 if residual <= opts.tolerance {
