@@ -177,3 +177,19 @@ fn synthesis_has_the_spectrum_it_was_asked_for() {
     let ratio = acc / seeds as f64 / expected;
     assert!((ratio - 1.0).abs() < 0.05, "⟨|∇h|²⟩ ratio {ratio}");
 }
+
+#[test]
+fn progress_can_cancel() {
+    let mut c = Contact::new(surface(8), N, 1.0, 1.0, Boundary::Periodic).unwrap();
+    let mut calls = 0;
+    let r = c.solve_with_progress(1e-3, 0.05, &Options::default(), &mut |it, res| {
+        calls += 1;
+        assert!(res.is_finite() && it < 3);
+        it < 2
+    });
+    assert_eq!(r, Err(ContactError::Cancelled));
+    assert_eq!(calls, 3);
+    // The next solve starts afresh and converges.
+    let r = c.solve(1e-3, 0.05, &Options::default()).unwrap();
+    assert!(r.residual <= 1e-10);
+}
