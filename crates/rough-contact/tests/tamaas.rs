@@ -7,7 +7,7 @@ use rough_contact::{Boundary, Contact, Options};
 use std::path::PathBuf;
 
 const N: usize = 256;
-const MIN_CASES: usize = 7;
+const MIN_CASES: usize = 9;
 
 fn data(name: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
