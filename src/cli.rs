@@ -174,6 +174,10 @@ pub struct ExportArgs {
     /// units).
     #[arg(long, value_name = "AXIS:FROM:TO", value_parser = parse_sweep)]
     pub sweep: Option<(Axis, f64, f64)>,
+    /// Seed of the simulated surface's random phases (contact views only;
+    /// default 1).
+    #[arg(long, value_name = "N")]
+    pub seed: Option<u64>,
 }
 
 /// Most points an export computes along a curve.
@@ -229,18 +233,24 @@ pub enum ViewArg {
     Map,
     Load,
     Spectrum,
+    /// The boundary-element simulation beside the theory, against the load.
+    Contact,
+    /// The simulation's plastic share against ζ beside the theory's.
+    ContactSweep,
 }
 
-impl From<ViewArg> for crate::figure::View {
-    fn from(v: ViewArg) -> Self {
+impl ViewArg {
+    /// The figure view, or `None` for the contact views (src/contact.rs).
+    pub fn figure(self) -> Option<crate::figure::View> {
         use crate::figure::View;
-        match v {
+        Some(match self {
             ViewArg::Slopes => View::Slopes,
             ViewArg::Indices => View::Indices,
             ViewArg::Map => View::Map,
             ViewArg::Load => View::Load,
             ViewArg::Spectrum => View::Spectrum,
-        }
+            ViewArg::Contact | ViewArg::ContactSweep => return None,
+        })
     }
 }
 
