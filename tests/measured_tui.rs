@@ -126,12 +126,14 @@ fn zeta_steps_move_the_marker_and_the_measured_h_rms() {
 fn tab_reaches_the_spectrum_only_on_a_surface() {
     let mut a = surface((80, 24));
     let mut seen = vec![];
-    for _ in 0..5 {
+    for _ in 0..6 {
         seen.push(a.view);
         press(&mut a, KeyCode::Tab, KeyModifiers::NONE);
     }
     assert_eq!(seen, View::ALL);
     assert_eq!(a.view, View::Slopes);
+    press(&mut a, KeyCode::BackTab, KeyModifiers::SHIFT);
+    assert_eq!(a.view, View::Contact);
     press(&mut a, KeyCode::BackTab, KeyModifiers::SHIFT);
     assert_eq!(a.view, View::Spectrum);
     let text = screen(&a);
@@ -281,14 +283,16 @@ fn snapshots_of_the_measured_views() {
         let tag = format!("{}x{}", size.0, size.1);
         insta::assert_snapshot!(format!("surface_slopes_{tag}"), drawn(&a));
         update(&mut a, Message::PrevView);
+        update(&mut a, Message::PrevView);
         assert_eq!(a.view, View::Spectrum);
         // The cutoff inside the data: q1 = 1e7.
         for _ in 0..8 {
             ch(&mut a, 'h');
         }
         insta::assert_snapshot!(format!("surface_spectrum_{tag}"), drawn(&a));
-        update(&mut a, Message::NextView);
-        update(&mut a, Message::NextView);
+        for _ in 0..3 {
+            update(&mut a, Message::NextView);
+        }
         insta::assert_snapshot!(format!("surface_indices_{tag}"), drawn(&a));
     }
     let a = App::new(line_state(), Theme::plain(), (80, 24));
@@ -296,7 +300,7 @@ fn snapshots_of_the_measured_views() {
 }
 
 /// Every character of a measured surface's screens in the ASCII set: the
-/// five views (the spectrum's title, axes and legend), the read-only h_rms
+/// six views (the spectrum's title, axes and legend), the read-only h_rms
 /// and H lines, the help's pages with the surface's symbols, the fitted
 /// ghost and `a`'s refusal on the status line.
 #[test]
@@ -311,7 +315,7 @@ fn a_surface_in_the_ascii_set_draws_only_ascii() {
                 Theme::new(Glyphs::Ascii, Palette::Ansi16, true),
                 size,
             );
-            for _ in 0..5 {
+            for _ in 0..6 {
                 let s = drawn(&a);
                 assert!(
                     bad(&s).is_empty(),
@@ -349,10 +353,12 @@ fn a_surface_in_the_ascii_set_draws_only_ascii() {
         (80, 24),
     );
     update(&mut a, Message::PrevView);
+    update(&mut a, Message::PrevView);
     for _ in 0..8 {
         ch(&mut a, 'h');
     }
     insta::assert_snapshot!("surface_spectrum_80x24_ascii", drawn(&a));
+    update(&mut a, Message::NextView);
     update(&mut a, Message::NextView);
     insta::assert_snapshot!("surface_slopes_80x24_ascii", drawn(&a));
 }

@@ -9,13 +9,16 @@
 //! shortest wavelength), N ≤ [`MAX_GRID`]. Pressures are in units of E*,
 //! so the cap is H_use/E*.
 
+pub mod engine;
+pub mod scene;
 mod svg;
 
 use std::io::Write;
 
 use anyhow::{bail, Context};
-use rough_contact::{moments, synthesise, Boundary, Contact, LoadResult, Options, PowerLaw};
+use rough_contact::{Contact, LoadResult, Options};
 use rough_model::{areas, Areas};
+use scene::SceneKey;
 
 use crate::cli::{ExportArgs, FormatArg};
 use crate::csv_number;
@@ -69,38 +72,19 @@ pub struct Simulation {
 impl Simulation {
     /// The power-law scene of `state` with phases from `seed`.
     pub fn of(state: &State, seed: u64) -> anyhow::Result<Simulation> {
-        if state.is_measured() {
-            bail!(
-                "the contact view solves the paper's power-law surface; a measured surface's \
-                 heights are not kept after its moments are tabulated, so it cannot be solved \
-                 here yet"
-            );
-        }
-        let p = &state.params;
-        let surface = state.roughness().surface(p, state.moments);
-        let ix = surface.indices;
-        let n = grid_for(p.zeta())?;
-        let length = 2.0 * std::f64::consts::PI / p.q0();
-        let law = PowerLaw {
-            z: surface.spectrum.z,
-            hurst: p.hurst(),
-            q0: p.q0(),
-            q1: p.zeta() * p.q0(),
-        };
-        let mut h = synthesise(n, length, &law, seed)?;
-        let target = surface.spectrum.rms_slope;
-        let got = moments(&h, n, length)?.rms_slope;
-        let k = if got > 0.0 { target / got } else { 0.0 };
-        h.iter_mut().for_each(|v| *v *= k);
-        let hardness = p.h0_over_e() * ix.hardness_in_use(state.size_effect);
+        let key = SceneKey::of(state, seed)?;
+        let ix = state
+            .roughness()
+            .surface(&state.params, state.moments)
+            .indices;
         Ok(Simulation {
-            contact: Contact::new(h, n, length, 1.0, Boundary::Periodic)?,
-            hardness,
+            contact: key.build()?,
+            hardness: key.hardness(),
             psi: ix.psi_in_use(state.size_effect),
             model: state.model,
-            zeta: p.zeta(),
+            zeta: key.zeta(),
             seed,
-            rms_slope: target,
+            rms_slope: key.rms_slope(),
         })
     }
 

@@ -142,5 +142,6 @@ pub fn run(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
         View::Map => write_map(out, &state, &opts),
         View::Load => write_load(out, &state, opts.points),
         View::Spectrum => write_spectrum(out, &state),
+        View::Contact => crate::contact::export(args, out),
     }
 }

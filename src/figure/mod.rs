@@ -61,25 +61,38 @@ pub enum View {
     Load,
     /// A measured surface's spectrum with the fitted power law and q1.
     Spectrum,
+    /// The scene's surface solved by the boundary-element contact beside
+    /// the theory's areas (the explorer only; `export --view contact`).
+    Contact,
 }
 
 impl View {
     /// Every view, in Tab order.
-    pub const ALL: [View; 5] = [
+    pub const ALL: [View; 6] = [
         View::Slopes,
         View::Indices,
         View::Map,
         View::Load,
         View::Spectrum,
+        View::Contact,
+    ];
+
+    /// The views of a power-law scene, in Tab order.
+    const POWER_LAW: [View; 5] = [
+        View::Slopes,
+        View::Indices,
+        View::Map,
+        View::Load,
+        View::Contact,
     ];
 
     /// The views a scene has, in Tab order: the spectrum only on a
-    /// measured surface.
+    /// measured surface; the contact view last.
     pub fn cycle(measured: bool) -> &'static [View] {
         if measured {
             &View::ALL
         } else {
-            &View::ALL[..4]
+            &View::POWER_LAW
         }
     }
 
@@ -96,6 +109,7 @@ impl View {
             View::Map => "map",
             View::Load => "load",
             View::Spectrum => "spectrum",
+            View::Contact => "contact",
         }
     }
 
@@ -105,7 +119,7 @@ impl View {
     }
 
     /// The next view in Tab order of a scene (`measured` or not): after
-    /// load comes slopes, or the spectrum on a measured surface.
+    /// load comes the spectrum on a measured surface, then contact.
     pub fn next(self, measured: bool) -> View {
         let all = View::cycle(measured);
         let i = all.iter().position(|&v| v == self).unwrap_or(0);
@@ -155,7 +169,7 @@ mod tests {
 
     #[test]
     fn views_cycle_in_tab_order_both_ways() {
-        for (measured, n) in [(false, 4), (true, 5)] {
+        for (measured, n) in [(false, 5), (true, 6)] {
             let mut v = View::Slopes;
             let mut seen = vec![];
             for _ in 0..n {
@@ -166,9 +180,11 @@ mod tests {
             assert_eq!(seen[..4], ["slopes", "indices", "map", "load"]);
             assert_eq!(v, View::Slopes);
         }
-        assert_eq!(View::Slopes.prev(false), View::Load);
-        assert_eq!(View::Slopes.prev(true), View::Spectrum);
+        assert_eq!(View::Slopes.prev(false), View::Contact);
+        assert_eq!(View::Load.next(false), View::Contact);
+        assert_eq!(View::Slopes.prev(true), View::Contact);
         assert_eq!(View::Load.next(true), View::Spectrum);
+        assert_eq!(View::Spectrum.next(true), View::Contact);
         // A view the scene lacks goes on from the start.
         assert_eq!(View::Spectrum.next(false), View::Indices);
     }

@@ -19,6 +19,8 @@ pub struct Shown {
     pub map_y: Option<Axis>,
     pub modified: bool,
     pub file: Option<String>,
+    /// The contact view's load, plot (`b`) and seed.
+    pub contact: (usize, bool, u64),
 }
 
 impl Shown {
@@ -30,12 +32,19 @@ impl Shown {
             map_y: app.map_y,
             modified: app.modified,
             file: app.file.clone(),
+            contact: (app.contact.load, app.contact.sweep, app.contact.seed),
         }
     }
 
     /// Makes `app` show this.
     pub fn apply(&self, app: &mut App) {
+        let c = &mut app.contact;
+        let moved = (c.load, c.sweep, c.seed) != self.contact;
+        (c.load, c.sweep, c.seed) = self.contact;
         app.show(&self.state, self.selected, self.view, self.map_y);
+        if moved {
+            crate::tui::app::update(app, Message::Tick);
+        }
         app.modified = self.modified;
         app.file.clone_from(&self.file);
     }
@@ -176,6 +185,9 @@ fn edits(msg: &Message) -> bool {
             | M::NextView
             | M::PrevView
             | M::NextMapY
+            | M::ContactLoad { .. }
+            | M::ContactSweep
+            | M::ContactSeed
             // Typing a slider's value: the lecturer's next move would
             // overwrite it.
             | M::StartValue

@@ -135,9 +135,13 @@ async fn run(start: Start) {
     let (mut caps, why) = client.caps(shared.marker);
     // The server's own NO_COLOR turns colour off for everyone.
     caps.color &= std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty());
-    let Ok(ex) = Session::new(buf.clone(), shared.state.clone(), caps.theme(), size) else {
+    let Ok(mut ex) = Session::new(buf.clone(), shared.state.clone(), caps.theme(), size) else {
         return;
     };
+    // The contact solver's worker wakes this session (Tick) as it works.
+    let solver = Arc::new(tokio::sync::Notify::new());
+    let wake = Arc::clone(&solver);
+    ex.app.contact.waker = Arc::new(move || wake.notify_one());
     // The first screen's line on switching the drawing, until the first
     // key or HINT_FOR.
     let mut hint = Some(term::hint(caps.glyphs, why.as_deref()));
@@ -298,6 +302,12 @@ async fn run(start: Start) {
                 // The open class list's idle times move on.
                 s.ex.app.class.view = Some(shared.class.view());
                 list_tick = Instant::now() + LIST_TICK;
+                dirty = true;
+            }
+            () = solver.notified(), if s.ex.app.contact.busy() => {
+                if s.ex.update(Message::Tick).is_err() {
+                    break;
+                }
                 dirty = true;
             }
             () = sleep_until(deadline) => break,

@@ -90,6 +90,15 @@ pub enum Message {
     /// Ctrl-L: paint the whole screen again (the session acts on it; over
     /// SSH after asking the terminal for its size).
     Redraw,
+    /// The contact view's keys: the next or previous load, the plastic
+    /// share against ζ (`b`), another surface (`r`: the next seed).
+    ContactLoad {
+        up: bool,
+    },
+    ContactSweep,
+    ContactSeed,
+    /// The contact solver made progress (sent by the session, not a key).
+    Tick,
     Quit,
 }
 
@@ -190,6 +199,8 @@ pub struct App {
     pub home: Option<State>,
     /// The served class as this explorer sees it (nothing when not served).
     pub class: Classroom,
+    /// The contact view's simulation.
+    pub contact: super::contact::ContactPane,
     pub quit: bool,
     /// How many times the curves were computed (for tests of the cache).
     pub recomputes: usize,
@@ -233,6 +244,7 @@ impl App {
             lecturer_keys: false,
             home: None,
             class: Classroom::default(),
+            contact: Default::default(),
             quit: false,
             recomputes: 0,
             key: None,
@@ -316,6 +328,8 @@ impl App {
             self.view = View::Slopes;
         }
         self.readout = Readout::of(&self.state);
+        let shown = self.view == View::Contact;
+        self.contact.refresh(&self.state, shown);
         let Some(regions) = Regions::of_size(self.size) else {
             return;
         };
@@ -581,6 +595,10 @@ pub fn update(app: &mut App, msg: Message) {
             };
             app.set_status(text, false);
         }
+        Message::ContactLoad { .. } | Message::ContactSweep | Message::ContactSeed => {
+            super::contact::on_key(app, msg)
+        }
+        Message::Tick => {}
         Message::Quit => app.quit = true,
     }
     app.captioned.apply(&mut app.state);

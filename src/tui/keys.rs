@@ -34,6 +34,8 @@ pub enum Context {
     Lecturer,
     /// The lecturer's class list is open.
     ClassList,
+    /// The explorer showing the contact view.
+    ContactView,
     /// Everywhere: the explorer, the help, a prompt, a terminal too small.
     Any,
 }
@@ -51,6 +53,9 @@ impl Context {
                 | (Context::ClassList, Mode::Class)
                 | (Context::Any, _)
         ) || (app.mode == Mode::Main && self.listed(app) && self.is_role())
+            || (self == Context::ContactView
+                && app.mode == Mode::Main
+                && app.view == crate::figure::View::Contact)
             || (self == Context::Answering
                 && app.mode == Mode::Main
                 && app.class.asked.is_some_and(|a| !a.revealed))
@@ -75,6 +80,8 @@ impl Context {
             Context::Surface => app.home.is_some(),
             Context::Follower | Context::Answering => app.student && app.lecturer_keys,
             Context::Lecturer => app.class.view.is_some(),
+            // The contact view's keys, in its help only.
+            Context::ContactView => app.view == crate::figure::View::Contact,
             // The class list's title names its keys.
             Context::ClassList => false,
             _ => true,
@@ -145,8 +152,8 @@ pub struct Binding {
 }
 
 use Context::{
-    Answering, Any, ClassList, Follower, Help, Lecturer, Main, MainAndHelp, NotStudent, Prompt,
-    Student, Surface,
+    Answering, Any, ClassList, ContactView, Follower, Help, Lecturer, Main, MainAndHelp,
+    NotStudent, Prompt, Student, Surface,
 };
 use KeyCode::{
     BackTab, Backspace, Delete, Down, End, Enter, Esc, Home, Left, PageDown, PageUp, Right, Tab, Up,
@@ -212,6 +219,9 @@ pub const BINDINGS: &[Binding] = &[
     bind(Main, &[(ch('m'), M::ToggleModel)], "m", "exact / closed-form model", Some("m model")),
     bind(Main, &[(ch('e'), M::ToggleSizeEffect)], "e", "size effect on / off", Some("e size")),
     bind(Main, &[(ch('a'), M::ToggleMoments)], "a", "truncated / asymptotic moments (eq. 10; power law)", Some("a moments")),
+    bind(ContactView, &[(ch('['), M::ContactLoad { up: false }), (ch(']'), M::ContactLoad { up: true })], "[ ]", "contact view: lower / higher load p̄/H (¼ decade)", Some("[] load")),
+    bind(ContactView, &[(ch('b'), M::ContactSweep)], "b", "contact view: plastic share vs ζ / areas vs load", Some("b vs ζ")),
+    bind(ContactView, &[(ch('r'), M::ContactSeed)], "r", "contact view: another surface (next seed)", None),
     bind(Main, &[(ch('y'), M::NextMapY)], "y", "the regime map's next y parameter", None),
     bind(NotStudent, &[(ch('s'), M::StartSave)], "s", "save a snapshot here (.ron)", Some("s save")),
     bind(Student, &[(ch('s'), M::StartSave)], "s", "show the snapshot (.ron text) to copy", Some("s snapshot")),

@@ -1,11 +1,14 @@
 //! The full-screen explorer: an Elm loop over [`app::update`]. It blocks on
 //! the next terminal event and draws only after an event that changed
-//! something, so an idle session writes nothing to the terminal.
+//! something, so an idle session writes nothing to the terminal. While the
+//! contact solver works for the view on screen it waits at most [`TICK`]
+//! for an event, then reads the solver's progress ([`app::Message::Tick`]).
 
 pub mod app;
 pub mod caps;
 pub mod caption;
 pub mod class;
+pub mod contact;
 pub mod fmt;
 pub mod ghost;
 pub mod glyphs;
@@ -33,6 +36,10 @@ use crossterm::event::{self, Event, KeyCode};
 use crate::snapshot::State;
 use caps::Caps;
 use session::Session;
+
+/// How often the explorer looks at the contact solver's progress while it
+/// works.
+pub const TICK: std::time::Duration = std::time::Duration::from_millis(100);
 
 /// Runs the explorer on `state` until `q`. The terminal is restored on every
 /// way out.
@@ -88,6 +95,9 @@ pub fn run(
     draw(&mut session)?;
     loop {
         let (msg, arrived) = loop {
+            if session.app.contact.busy() && !event::poll(TICK)? {
+                break (app::Message::Tick, Instant::now());
+            }
             let ev = event::read()?;
             let arrived = Instant::now();
             if let (Some(c), Event::Key(k)) = (panic_key, &ev) {

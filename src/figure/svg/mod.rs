@@ -53,6 +53,10 @@ pub fn render_svg(view: View, state: &State, opts: &FigureOptions) -> anyhow::Re
             View::Map => map::draw(&chart_area, state, opts)?,
             View::Load => load(&chart_area, state, opts)?,
             View::Spectrum => spectrum::draw(&chart_area, state)?,
+            View::Contact => anyhow::bail!(
+                "the contact view's picture is drawn by crate::contact (export --view contact \
+                 --format svg)"
+            ),
         }
         caption(&caption_area, &lines)?;
         root.present().map_err(plot_err)?;

@@ -4,6 +4,7 @@
 
 mod chart;
 pub mod class;
+pub mod contact;
 mod indices;
 mod load;
 mod map;
@@ -44,6 +45,7 @@ impl Widget for &App {
             View::Map => map::render(self, chart, buf),
             View::Load => load::render(self, chart, buf),
             View::Spectrum => spectrum::render(self, chart, buf),
+            View::Contact => contact::render(self, chart, buf),
         }
         class::render_poll(self, chart, buf);
         render_footer(self, r.footer, buf);

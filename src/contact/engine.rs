@@ -1,0 +1,423 @@
+//! Contact solutions off the UI thread, shared and cached.
+//!
+//! An explorer asks the [`Engine`] for a list of [`Task`]s (a scene and a
+//! load each) and gets a [`Ticket`]. One worker thread per distinct list
+//! solves the tasks not yet cached, the explorer's chosen task first,
+//! storing each result in a cache keyed by the task's inputs, and calls
+//! every holder's waker as it makes progress (at most every
+//! [`WAKE_EVERY`]) and when a task ends. Explorers asking for the same list
+//! (the followers of a served class) hold tickets of one job; when the last
+//! ticket is dropped (the scene changed) the job is cancelled at its next
+//! iteration. At most as many jobs solve at once as the machine has cores;
+//! the others wait their turn.
+
+use std::collections::{HashMap, VecDeque};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::{Arc, Condvar, Mutex, OnceLock, Weak};
+use std::time::{Duration, Instant};
+
+use rough_contact::{ContactError, LoadResult, Options};
+
+use super::scene::{classify, Node, SceneKey};
+
+/// What wakes an explorer: called from the worker thread.
+pub type Waker = Arc<dyn Fn() + Send + Sync>;
+
+/// Progress is reported at most this often (finished tasks always).
+pub const WAKE_EVERY: Duration = Duration::from_millis(100);
+
+/// The cache's bound, in bytes of contact maps (one byte a node).
+pub const CACHE_BYTES: usize = 256 << 20;
+
+/// One solution to compute: a scene at a load p̄/H_use.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Task {
+    pub scene: SceneKey,
+    /// p̄/H_use as f64 bits.
+    load: u64,
+}
+
+impl Task {
+    pub fn new(scene: SceneKey, p_over_h: f64) -> Task {
+        Task {
+            scene,
+            load: p_over_h.to_bits(),
+        }
+    }
+
+    pub fn p_over_h(&self) -> f64 {
+        f64::from_bits(self.load)
+    }
+}
+
+/// A solved task: the areas and the contact map.
+#[derive(Debug)]
+pub struct Solved {
+    pub result: LoadResult,
+    /// n × n row-major.
+    pub map: Vec<Node>,
+    /// Wall time of the solve.
+    pub took: Duration,
+}
+
+/// What a task ended with.
+pub type Outcome = Result<Arc<Solved>, String>;
+
+/// Where a job stands.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Progress {
+    /// Tasks ended (solved, failed or found in the cache).
+    pub done: usize,
+    pub total: usize,
+    /// Whether the job waits for a free core.
+    pub queued: bool,
+    /// The task being solved: its iterations and residual so far.
+    pub iteration: usize,
+    pub residual: f64,
+    /// The first residual of the task being solved (for the bar).
+    pub first_residual: f64,
+    pub finished: bool,
+}
+
+impl Progress {
+    /// The fraction done, the current task counted by how far its residual
+    /// has fallen (in decades) from the first towards the tolerance.
+    pub fn fraction(&self) -> f64 {
+        if self.total == 0 || self.finished {
+            return 1.0;
+        }
+        let tol = Options::default().tolerance;
+        let part = if self.residual > 0.0 && self.first_residual > tol {
+            ((self.first_residual / self.residual).ln() / (self.first_residual / tol).ln())
+                .clamp(0.0, 0.99)
+        } else {
+            0.0
+        };
+        ((self.done as f64 + part) / self.total as f64).clamp(0.0, 1.0)
+    }
+}
+
+struct Job {
+    tasks: Vec<Task>,
+    /// Index into `tasks` of the one to solve next if not yet done.
+    first: AtomicUsize,
+    cancel: AtomicBool,
+    state: Mutex<JobState>,
+}
+
+struct JobState {
+    holders: usize,
+    wakers: Vec<(u64, Waker)>,
+    progress: Progress,
+}
+
+impl Job {
+    fn wake(&self) {
+        let wakers: Vec<Waker> = match self.state.lock() {
+            Ok(s) => s.wakers.iter().map(|(_, w)| Arc::clone(w)).collect(),
+            Err(_) => return,
+        };
+        for w in wakers {
+            w();
+        }
+    }
+
+    fn set(&self, f: impl FnOnce(&mut Progress)) {
+        if let Ok(mut s) = self.state.lock() {
+            f(&mut s.progress);
+        }
+    }
+}
+
+/// A holder's claim on a job: dropping the last one cancels it.
+pub struct Ticket {
+    job: Arc<Job>,
+    id: u64,
+}
+
+impl Ticket {
+    pub fn progress(&self) -> Progress {
+        self.job
+            .state
+            .lock()
+            .map(|s| s.progress.clone())
+            .unwrap_or_default()
+    }
+
+    /// Solve task `i` of the list next (the explorer's chosen load).
+    pub fn prefer(&self, i: usize) {
+        self.job.first.store(i, Ordering::Relaxed);
+    }
+
+    pub fn tasks(&self) -> &[Task] {
+        &self.job.tasks
+    }
+}
+
+impl Drop for Ticket {
+    fn drop(&mut self) {
+        if let Ok(mut s) = self.job.state.lock() {
+            s.wakers.retain(|(id, _)| *id != self.id);
+            s.holders -= 1;
+            if s.holders == 0 {
+                self.job.cancel.store(true, Ordering::Relaxed);
+            }
+        }
+    }
+}
+
+#[derive(Default)]
+struct Cache {
+    map: HashMap<Task, Outcome>,
+    order: VecDeque<(Task, usize)>,
+    bytes: usize,
+}
+
+impl Cache {
+    fn put(&mut self, task: Task, outcome: Outcome) {
+        let bytes = outcome.as_ref().map_or(64, |s| s.map.len() + 64);
+        if self.map.insert(task, outcome).is_none() {
+            self.order.push_back((task, bytes));
+            self.bytes += bytes;
+        }
+        while self.bytes > CACHE_BYTES && self.order.len() > 1 {
+            if let Some((old, b)) = self.order.pop_front() {
+                self.map.remove(&old);
+                self.bytes -= b;
+            }
+        }
+    }
+}
+
+/// The cache, the running jobs and the cores they may use.
+pub struct Engine {
+    cache: Mutex<Cache>,
+    running: Mutex<HashMap<Vec<Task>, Weak<Job>>>,
+    slots: Mutex<usize>,
+    freed: Condvar,
+    next_id: AtomicUsize,
+    /// Solves started (for tests of the cache and the sharing).
+    pub solves: AtomicUsize,
+}
+
+impl Engine {
+    /// An engine solving at most `cores` jobs at once.
+    pub fn new(cores: usize) -> Arc<Engine> {
+        Arc::new(Engine {
+            cache: Mutex::default(),
+            running: Mutex::default(),
+            slots: Mutex::new(cores.max(1)),
+            freed: Condvar::new(),
+            next_id: AtomicUsize::new(0),
+            solves: AtomicUsize::new(0),
+        })
+    }
+
+    /// The process's engine: every explorer of a `serve` shares it.
+    pub fn global() -> Arc<Engine> {
+        static GLOBAL: OnceLock<Arc<Engine>> = OnceLock::new();
+        Arc::clone(GLOBAL.get_or_init(|| {
+            let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+            Engine::new(cores)
+        }))
+    }
+
+    /// Jobs running or waiting for a core.
+    pub fn running(&self) -> usize {
+        let running = self.running.lock().unwrap_or_else(|e| e.into_inner());
+        running.values().filter(|w| w.strong_count() > 0).count()
+    }
+
+    /// What the cache holds for `task`.
+    pub fn get(&self, task: &Task) -> Option<Outcome> {
+        self.cache.lock().ok()?.map.get(task).cloned()
+    }
+
+    /// A ticket on the job solving `tasks` (task `first` first), started
+    /// unless one is running; `wake` is called as it progresses.
+    pub fn request(self: &Arc<Self>, tasks: Vec<Task>, first: usize, wake: Waker) -> Ticket {
+        let id = self.next_id.fetch_add(1, Ordering::Relaxed) as u64;
+        let mut running = self.running.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(job) = running.get(&tasks).and_then(Weak::upgrade) {
+            let joined = match job.state.lock() {
+                Ok(mut s) if !job.cancel.load(Ordering::Relaxed) => {
+                    s.holders += 1;
+                    s.wakers.push((id, Arc::clone(&wake)));
+                    true
+                }
+                _ => false,
+            };
+            if joined {
+                job.first.store(first, Ordering::Relaxed);
+                return Ticket { job, id };
+            }
+        }
+        let job = Arc::new(Job {
+            first: AtomicUsize::new(first),
+            cancel: AtomicBool::new(false),
+            state: Mutex::new(JobState {
+                holders: 1,
+                wakers: vec![(id, wake)],
+                progress: Progress {
+                    total: tasks.len(),
+                    queued: true,
+                    ..Progress::default()
+                },
+            }),
+            tasks: tasks.clone(),
+        });
+        running.insert(tasks, Arc::downgrade(&job));
+        drop(running);
+        let (engine, worker) = (Arc::clone(self), Arc::clone(&job));
+        std::thread::Builder::new()
+            .name("contact".into())
+            .spawn(move || engine.work(&worker))
+            .map(drop)
+            .unwrap_or_else(|e| {
+                job.set(|p| p.finished = true);
+                self.cache_failure(&job.tasks, &format!("cannot start the solver: {e}"));
+            });
+        Ticket { job, id }
+    }
+
+    fn cache_failure(&self, tasks: &[Task], why: &str) {
+        if let Ok(mut c) = self.cache.lock() {
+            for t in tasks {
+                c.put(*t, Err(why.to_string()));
+            }
+        }
+    }
+
+    /// Waits for a core; false if the job was cancelled meanwhile.
+    fn acquire(&self, job: &Job) -> bool {
+        let mut free = self.slots.lock().unwrap_or_else(|e| e.into_inner());
+        loop {
+            if job.cancel.load(Ordering::Relaxed) {
+                return false;
+            }
+            if *free > 0 {
+                *free -= 1;
+                return true;
+            }
+            free = self
+                .freed
+                .wait_timeout(free, Duration::from_millis(50))
+                .unwrap_or_else(|e| e.into_inner())
+                .0;
+        }
+    }
+
+    fn release(&self) {
+        *self.slots.lock().unwrap_or_else(|e| e.into_inner()) += 1;
+        self.freed.notify_one();
+    }
+
+    fn work(&self, job: &Arc<Job>) {
+        if self.acquire(job) {
+            job.set(|p| p.queued = false);
+            job.wake();
+            self.solve_all(job);
+            self.release();
+        }
+        job.set(|p| p.finished = true);
+        job.wake();
+        let mut running = self.running.lock().unwrap_or_else(|e| e.into_inner());
+        if running
+            .get(&job.tasks)
+            .is_some_and(|w| w.as_ptr() == Arc::as_ptr(job))
+        {
+            running.remove(&job.tasks);
+        }
+    }
+
+    fn solve_all(&self, job: &Job) {
+        let n = job.tasks.len();
+        let mut ended = vec![false; n];
+        // The surface of the last scene built, reused by its next loads.
+        let mut built: Option<(SceneKey, rough_contact::Contact)> = None;
+        loop {
+            if job.cancel.load(Ordering::Relaxed) {
+                return;
+            }
+            let first = job.first.load(Ordering::Relaxed).min(n.saturating_sub(1));
+            let next = if n > 0 && !ended[first] {
+                Some(first)
+            } else {
+                ended.iter().position(|e| !e)
+            };
+            let Some(i) = next else { return };
+            ended[i] = true;
+            let task = job.tasks[i];
+            if self.get(&task).is_none() {
+                let outcome = self.solve_one(job, task, &mut built);
+                if outcome.is_err() && job.cancel.load(Ordering::Relaxed) {
+                    return;
+                }
+                if let Ok(mut c) = self.cache.lock() {
+                    c.put(task, outcome);
+                }
+            }
+            job.set(|p| {
+                p.done += 1;
+                p.iteration = 0;
+                p.residual = 0.0;
+                p.first_residual = 0.0;
+            });
+            job.wake();
+        }
+    }
+
+    fn solve_one(
+        &self,
+        job: &Job,
+        task: Task,
+        built: &mut Option<(SceneKey, rough_contact::Contact)>,
+    ) -> Outcome {
+        self.solves.fetch_add(1, Ordering::Relaxed);
+        let start = Instant::now();
+        if built.as_ref().map(|b| b.0) != Some(task.scene) {
+            *built = None;
+            let c = task.scene.build().map_err(|e| format!("{e:#}"))?;
+            *built = Some((task.scene, c));
+        }
+        let Some((_, contact)) = built.as_mut() else {
+            return Err("no surface".into());
+        };
+        let hardness = task.scene.hardness();
+        let mut last_wake = Instant::now();
+        let mut progress = |it: usize, r: f64| {
+            if job.cancel.load(Ordering::Relaxed) {
+                return false;
+            }
+            if last_wake.elapsed() >= WAKE_EVERY {
+                last_wake = Instant::now();
+                job.set(|p| {
+                    if p.first_residual == 0.0 {
+                        p.first_residual = r;
+                    }
+                    p.iteration = it;
+                    p.residual = r;
+                });
+                job.wake();
+            } else if it == 1 {
+                job.set(|p| p.first_residual = r);
+            }
+            true
+        };
+        let r = contact.solve_with_progress(
+            task.p_over_h() * hardness,
+            hardness,
+            &Options::default(),
+            &mut progress,
+        );
+        match r {
+            Ok(result) => Ok(Arc::new(Solved {
+                result,
+                map: classify(contact.pressure(), hardness),
+                took: start.elapsed(),
+            })),
+            Err(ContactError::Cancelled) => Err("cancelled".into()),
+            Err(e) => Err(format!("at p̄/H = {}: {e}", task.p_over_h())),
+        }
+    }
+}

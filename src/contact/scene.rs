@@ -1,0 +1,137 @@
+//! What a contact solution depends on, as a hashable key: the surface (its
+//! spectrum, grid and seed), the pressure cap and the load. Two explorers
+//! on the same inputs ask for the same key, whatever else differs between
+//! their scenes (model, view, sweep), and so share one solution.
+
+use anyhow::bail;
+use rough_contact::{moments, synthesise, Boundary, Contact, PowerLaw};
+
+use super::{grid_for, MAX_GRID};
+use crate::snapshot::State;
+
+/// The surface and cap of one simulation; every field is an input of
+/// [`Surface::build`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct SceneKey {
+    /// Power law: amplitude Z, Hurst exponent, q0, ζ (as f64 bits).
+    z: u64,
+    hurst: u64,
+    q0: u64,
+    zeta: u64,
+    /// The rms slope the realisation is rescaled to (f64 bits).
+    rms_slope: u64,
+    /// H_use/E*, the pressure cap (f64 bits).
+    hardness: u64,
+    /// Grid side.
+    pub n: usize,
+    pub seed: u64,
+}
+
+/// Why a scene cannot be simulated, in the explorer's words.
+pub fn unsolvable(state: &State) -> Option<String> {
+    if state.is_measured() {
+        return Some(
+            "a measured surface's heights are not kept after its moments are tabulated: \
+             the simulation solves the paper's power law only"
+                .into(),
+        );
+    }
+    let zeta = state.params.zeta();
+    grid_for(zeta).err().map(|_| {
+        format!(
+            "ζ = {} needs a grid of {} nodes a side (8 per shortest wavelength); the \
+             simulation solves up to {MAX_GRID} (ζ ≤ {}): lower ζ to compare",
+            crate::tui::fmt::fmt_num(zeta),
+            (8.0 * zeta).ceil(),
+            MAX_GRID / 8
+        )
+    })
+}
+
+impl SceneKey {
+    /// The power-law scene of `state` with phases from `seed`.
+    pub fn of(state: &State, seed: u64) -> anyhow::Result<SceneKey> {
+        if state.is_measured() {
+            bail!(
+                "the contact view solves the paper's power-law surface; a measured surface's \
+                 heights are not kept after its moments are tabulated, so it cannot be solved \
+                 here yet"
+            );
+        }
+        let p = &state.params;
+        let surface = state.roughness().surface(p, state.moments);
+        let ix = surface.indices;
+        let hardness = p.h0_over_e() * ix.hardness_in_use(state.size_effect);
+        Ok(SceneKey {
+            z: surface.spectrum.z.to_bits(),
+            hurst: p.hurst().to_bits(),
+            q0: p.q0().to_bits(),
+            zeta: p.zeta().to_bits(),
+            rms_slope: surface.spectrum.rms_slope.to_bits(),
+            hardness: hardness.to_bits(),
+            n: grid_for(p.zeta())?,
+            seed,
+        })
+    }
+
+    /// H_use/E*.
+    pub fn hardness(&self) -> f64 {
+        f64::from_bits(self.hardness)
+    }
+
+    pub fn zeta(&self) -> f64 {
+        f64::from_bits(self.zeta)
+    }
+
+    pub fn rms_slope(&self) -> f64 {
+        f64::from_bits(self.rms_slope)
+    }
+
+    /// The surface synthesised and rescaled, ready to be loaded (pressures
+    /// in units of E*).
+    pub fn build(&self) -> anyhow::Result<Contact> {
+        let f = f64::from_bits;
+        let (n, q0) = (self.n, f(self.q0));
+        let length = 2.0 * std::f64::consts::PI / q0;
+        let law = PowerLaw {
+            z: f(self.z),
+            hurst: f(self.hurst),
+            q0,
+            q1: f(self.zeta) * q0,
+        };
+        let mut h = synthesise(n, length, &law, self.seed)?;
+        let got = moments(&h, n, length)?.rms_slope;
+        let k = if got > 0.0 {
+            self.rms_slope() / got
+        } else {
+            0.0
+        };
+        h.iter_mut().for_each(|v| *v *= k);
+        Ok(Contact::new(h, n, length, 1.0, Boundary::Periodic)?)
+    }
+}
+
+/// One node of a contact map.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+#[repr(u8)]
+pub enum Node {
+    Out = 0,
+    Elastic = 1,
+    Plastic = 2,
+}
+
+/// The contact map of a solved pressure field: n × n row-major.
+pub fn classify(pressure: &[f64], hardness: f64) -> Vec<Node> {
+    pressure
+        .iter()
+        .map(|&p| {
+            if p <= 0.0 {
+                Node::Out
+            } else if p >= hardness {
+                Node::Plastic
+            } else {
+                Node::Elastic
+            }
+        })
+        .collect()
+}

@@ -1,0 +1,277 @@
+//! The contact view's state: which load and which plot (`b`), the ticket
+//! on the engine's job for the scene on screen, the results read from the
+//! engine's cache and the theory's curves beside them. Only
+//! [`ContactPane::refresh`] (from `update`) changes it; the worker thread
+//! never touches an [`super::app::App`], it wakes the session, which sends
+//! [`super::app::Message::Tick`].
+
+use std::sync::Arc;
+
+use rough_model::{areas, psi_in_use, slopes, Axis, Model};
+
+use crate::contact::engine::{Engine, Outcome, Progress, Task, Ticket, Waker};
+use crate::contact::scene::{unsolvable, SceneKey};
+use crate::contact::{grid_for, DEFAULT_SEED, MAX_GRID};
+use crate::snapshot::State;
+
+/// Loads of the contact view, p̄/H_use: 1e-3 to 1, four per decade.
+pub const LOADS: usize = 13;
+/// The load shown first: p̄ = 0.01 H.
+pub const DEFAULT_LOAD: usize = 4;
+/// Points along a theory curve.
+const THEORY_POINTS: usize = 96;
+
+/// p̄/H of load `k` (0 … [`LOADS`] − 1).
+pub fn load_value(k: usize) -> f64 {
+    if k + 1 >= LOADS {
+        1.0
+    } else {
+        10f64.powf(-3.0 + k as f64 / 4.0)
+    }
+}
+
+/// ζ of the `b` plot: 1, 2, 4, … up to what the grid resolves.
+pub fn sweep_zetas() -> Vec<f64> {
+    (0..)
+        .map(|k| 2f64.powi(k))
+        .take_while(|z| grid_for(*z).is_ok())
+        .collect()
+}
+
+/// What the chart shows beside the simulation.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Theory {
+    /// Load plot: (log10 p̄/H, log10 A/A0) of total, elastic, plastic.
+    /// `b` plot: (log10 ζ, S_pl/S_tot) with the size effect off, on.
+    pub curves: Vec<Vec<(f64, f64)>>,
+    /// The theory's areas at the chosen load (load plot).
+    pub at_load: Option<rough_model::Areas>,
+}
+
+/// What the requested tasks are for.
+#[derive(Clone, Debug, PartialEq)]
+struct Request {
+    tasks: Vec<Task>,
+    /// The theory's inputs: model, moments, the scene's parameters, the load.
+    theory: (
+        Model,
+        rough_model::Moments,
+        rough_model::Params,
+        bool,
+        usize,
+    ),
+}
+
+pub struct ContactPane {
+    pub engine: Arc<Engine>,
+    /// Called from the worker when there is something new to draw.
+    pub waker: Waker,
+    /// The chosen load, index into [`LOADS`].
+    pub load: usize,
+    /// `b`: the plastic share against ζ instead of the areas against load.
+    pub sweep: bool,
+    pub seed: u64,
+    /// Why the scene cannot be simulated (then nothing is requested).
+    pub why_not: Option<String>,
+    /// The tasks on screen and what the cache holds for each.
+    pub tasks: Vec<Task>,
+    pub results: Vec<Option<Outcome>>,
+    pub progress: Progress,
+    pub theory: Theory,
+    request: Option<Request>,
+    ticket: Option<Ticket>,
+}
+
+impl Default for ContactPane {
+    fn default() -> Self {
+        ContactPane {
+            engine: Engine::global(),
+            waker: Arc::new(|| {}),
+            load: DEFAULT_LOAD,
+            sweep: false,
+            seed: DEFAULT_SEED,
+            why_not: None,
+            tasks: vec![],
+            results: vec![],
+            progress: Progress::default(),
+            theory: Theory::default(),
+            request: None,
+            ticket: None,
+        }
+    }
+}
+
+impl ContactPane {
+    /// Whether a job is under way for the scene on screen (the session
+    /// then wakes for its progress).
+    pub fn busy(&self) -> bool {
+        self.ticket.is_some() && !self.progress.finished
+    }
+
+    /// The result for the chosen load (load plot), if solved.
+    pub fn chosen(&self) -> Option<&Outcome> {
+        if self.sweep {
+            return None;
+        }
+        self.results.get(self.load).and_then(Option::as_ref)
+    }
+
+    /// Brings the pane up to `state`: a changed scene cancels the job on
+    /// the old one (by dropping its ticket) and, if `shown`, requests the
+    /// new one; the results are read from the cache.
+    pub fn refresh(&mut self, state: &State, shown: bool) {
+        let request = self.request_for(state);
+        if request.as_ref().map(|r| &r.tasks) != self.request.as_ref().map(|r| &r.tasks) {
+            self.ticket = None;
+            self.progress = Progress::default();
+        }
+        if request != self.request {
+            self.theory = request
+                .as_ref()
+                .map(|r| self.theory_of(state, r))
+                .unwrap_or_default();
+            self.tasks = request
+                .as_ref()
+                .map(|r| r.tasks.clone())
+                .unwrap_or_default();
+            self.request = request;
+        }
+        if !shown {
+            return;
+        }
+        self.results = self.tasks.iter().map(|t| self.engine.get(t)).collect();
+        let all_in = self.results.iter().all(Option::is_some);
+        if self.ticket.is_none() && !all_in {
+            let first = if self.sweep { 0 } else { self.load };
+            let t = self
+                .engine
+                .request(self.tasks.clone(), first, Arc::clone(&self.waker));
+            self.ticket = Some(t);
+        }
+        if let Some(t) = &self.ticket {
+            if !self.sweep {
+                t.prefer(self.load);
+            }
+            self.progress = t.progress();
+            if self.progress.finished {
+                // Read once more: the last result came with the end.
+                self.results = self.tasks.iter().map(|t| self.engine.get(t)).collect();
+            }
+        } else {
+            self.progress = Progress {
+                done: self.tasks.len(),
+                total: self.tasks.len(),
+                finished: true,
+                ..Progress::default()
+            };
+        }
+    }
+
+    fn request_for(&mut self, state: &State) -> Option<Request> {
+        self.why_not = unsolvable(state);
+        let theory = (
+            state.model,
+            state.moments,
+            state.params,
+            state.size_effect,
+            self.load,
+        );
+        let mut tasks = vec![];
+        if self.sweep && !state.is_measured() {
+            self.why_not = None;
+            for se in [false, true] {
+                for z in sweep_zetas() {
+                    let mut s = state.clone();
+                    s.size_effect = se;
+                    s.params = s.params.with(Axis::Zeta, z).ok()?;
+                    let key = SceneKey::of(&s, self.seed).ok()?;
+                    tasks.push(Task::new(key, load_value(self.load)));
+                }
+            }
+        } else if self.why_not.is_none() {
+            match SceneKey::of(state, self.seed) {
+                Ok(key) => tasks = (0..LOADS).map(|k| Task::new(key, load_value(k))).collect(),
+                Err(e) => self.why_not = Some(format!("{e:#}")),
+            }
+        }
+        Some(Request { tasks, theory })
+    }
+
+    fn theory_of(&self, state: &State, _r: &Request) -> Theory {
+        let p = state.params;
+        if self.sweep && state.is_measured() {
+            return Theory::default();
+        }
+        if self.sweep {
+            let zs = sweep_zetas();
+            let hi = zs.last().copied().unwrap_or(1.0).log10();
+            let curves = [false, true]
+                .into_iter()
+                .map(|se| {
+                    (0..THEORY_POINTS)
+                        .filter_map(|i| {
+                            let x = hi * i as f64 / (THEORY_POINTS - 1) as f64;
+                            let pz = p.with(Axis::Zeta, 10f64.powf(x)).ok()?;
+                            let (psi, _) = psi_in_use(&pz, se, state.moments);
+                            let share = slopes(state.model, psi).plastic_share();
+                            share.is_finite().then_some((x, share))
+                        })
+                        .collect()
+                })
+                .collect();
+            return Theory {
+                curves,
+                at_load: None,
+            };
+        }
+        let ix = state.roughness().surface(&p, state.moments).indices;
+        let psi = ix.psi_in_use(state.size_effect);
+        let mut curves = vec![vec![]; 3];
+        for i in 0..THEORY_POINTS {
+            let x = -3.0 + 3.0 * i as f64 / (THEORY_POINTS - 1) as f64;
+            let Ok(a) = areas(state.model, psi, 10f64.powf(x).min(1.0)) else {
+                continue;
+            };
+            for (c, v) in curves.iter_mut().zip([a.total, a.elastic, a.plastic]) {
+                if v > 0.0 && v.is_finite() {
+                    c.push((x, v.log10()));
+                }
+            }
+        }
+        Theory {
+            curves,
+            at_load: areas(state.model, psi, load_value(self.load)).ok(),
+        }
+    }
+}
+
+/// The grid cap in words, for the view's messages.
+pub fn grid_cap() -> String {
+    format!("{MAX_GRID}² (ζ ≤ {})", MAX_GRID / 8)
+}
+
+/// The contact view's keys.
+pub fn on_key(app: &mut super::app::App, msg: super::app::Message) {
+    use super::app::Message;
+    let pane = &mut app.contact;
+    match msg {
+        Message::ContactLoad { up } => {
+            let k = if up {
+                (pane.load + 1).min(LOADS - 1)
+            } else {
+                pane.load.saturating_sub(1)
+            };
+            if k == pane.load {
+                app.set_status("p̄/H runs from 1e-3 to 1 in the contact view", false);
+            }
+            app.contact.load = k;
+        }
+        Message::ContactSweep => pane.sweep = !pane.sweep,
+        Message::ContactSeed => {
+            pane.seed = pane.seed.wrapping_add(1);
+            let text = format!("another surface: seed {}", pane.seed);
+            app.set_status(text, false);
+        }
+        _ => {}
+    }
+}

@@ -1,0 +1,492 @@
+//! The contact view: the boundary-element simulation of the scene's
+//! surface beside the theory. A title with the grid, seed and the solver's
+//! progress; a readout at the chosen load; left the contact map at that
+//! load (out of contact, elastic, at the hardness), right A/A0 against
+//! p̄/H_use (log–log) with the simulation's points on the theory's curves,
+//! or (`b`) the plastic share against ζ with and without the size effect.
+//! Drawing only reads what [`crate::tui::contact`] holds.
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::style::{Color, Style};
+use ratatui::symbols::Marker;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Dataset, GraphType, Paragraph, Widget, Wrap};
+
+use super::chart::{self, Scale};
+use crate::contact::scene::Node;
+use crate::tui::app::App;
+use crate::tui::contact::{load_value, sweep_zetas, ContactPane, LOADS};
+use crate::tui::fmt::fmt_num;
+use crate::tui::layout::Y_LABEL_W;
+use crate::tui::theme::{CurveStyle, Theme};
+
+/// The map's colours: elastic light grey, at the hardness blue (the
+/// paper's plastic colour); out of contact the terminal's background.
+const ELASTIC: Color = Color::Gray;
+const PLASTIC: Color = Color::Blue;
+
+/// `v` (a fraction) in per cent with three significant digits.
+pub fn pct(v: f64) -> String {
+    let p = v * 100.0;
+    if !p.is_finite() {
+        "—".into()
+    } else if p == 0.0 {
+        "0".into()
+    } else if p >= 10.0 {
+        format!("{p:.1}")
+    } else if p >= 1.0 {
+        format!("{p:.2}")
+    } else {
+        fmt_num(p)
+    }
+}
+
+/// A plastic share in whole per cent (below 1 %, "<1" unless exactly 0).
+pub fn share_pct(plastic: f64, total: f64) -> String {
+    if total <= 0.0 {
+        return "—".into();
+    }
+    let s = 100.0 * plastic / total;
+    if s > 0.0 && s < 1.0 {
+        "<1".into()
+    } else {
+        format!("{s:.0}")
+    }
+}
+
+/// The load p̄/H as the readout writes it.
+fn load_text(v: f64) -> String {
+    // Four significant digits, trailing zeros dropped (0.01778, 0.01, 1).
+    let decimals = (3 - v.log10().floor() as i32).max(0) as usize;
+    let s = format!("{v:.decimals$}");
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    }
+}
+
+/// The readout's line at the chosen load, the longest form that fits
+/// `width`.
+pub fn readout(pane: &ContactPane, width: usize) -> (String, bool) {
+    let at = load_text(load_value(pane.load));
+    let theory = pane
+        .theory
+        .at_load
+        .map(|a| (pct(a.total), share_pct(a.plastic, a.total)));
+    let sim = match pane.chosen() {
+        _ if pane.why_not.is_some() => Err("-".into()),
+        Some(Ok(s)) => Ok((
+            pct(s.result.area),
+            share_pct(s.result.plastic_area, s.result.area),
+        )),
+        Some(Err(e)) => Err(e.clone()),
+        None => Err(String::new()),
+    };
+    let (th_full, th_short) = match &theory {
+        Some((a, s)) => (
+            format!("theory: {a} %, {s} % plastic"),
+            format!("th. {a}% {s}%pl"),
+        ),
+        None => ("theory: —".into(), "th. —".into()),
+    };
+    let forms: Vec<String> = match &sim {
+        Ok((a, s)) => vec![
+            format!("simulation at p̄ = {at} H: contact {a} %, {s} % plastic · {th_full}"),
+            format!("p̄ = {at} H: sim {a} %, {s} % plastic · {th_full}"),
+            format!("{at} H: sim {a}% {s}%pl · {th_short}"),
+        ],
+        Err(e) if e.is_empty() => vec![
+            format!("simulation at p̄ = {at} H: solving… · {th_full}"),
+            format!("{at} H: sim … · {th_short}"),
+        ],
+        Err(e) if e == "-" => vec![
+            format!("at p̄ = {at} H: no simulation · {th_full}"),
+            format!("{at} H: no sim. · {th_short}"),
+        ],
+        Err(e) => vec![format!("at p̄ = {at} H: {e}")],
+    };
+    let fits = |s: &String| Span::raw(s.as_str()).width() <= width;
+    let line = forms
+        .iter()
+        .find(|s| fits(s))
+        .or(forms.last())
+        .cloned()
+        .unwrap_or_default();
+    (line, matches!(sim, Err(ref e) if !e.is_empty() && e != "-"))
+}
+
+/// The title's right part: the progress bar while solving, else what was
+/// solved.
+fn progress_text(app: &App, width: usize) -> String {
+    let pane = &app.contact;
+    let gl = app.theme.glyphs;
+    let p = &pane.progress;
+    if pane.why_not.is_some() || pane.tasks.is_empty() {
+        return String::new();
+    }
+    if pane.busy() {
+        if p.queued {
+            return "waiting for a free core".into();
+        }
+        let cells = width.clamp(4, 12);
+        let full = (p.fraction() * cells as f64).round() as usize;
+        let (on, off) = if gl.ascii_only() {
+            ("#", "-")
+        } else {
+            ("█", "░")
+        };
+        return format!(
+            "solving {}/{} [{}{}] {:.0} %",
+            p.done,
+            p.total,
+            on.repeat(full.min(cells)),
+            off.repeat(cells - full.min(cells)),
+            100.0 * p.fraction()
+        );
+    }
+    let secs: f64 = pane
+        .results
+        .iter()
+        .flatten()
+        .filter_map(|r| r.as_ref().ok())
+        .map(|s| s.took.as_secs_f64())
+        .sum();
+    let failed = pane.results.iter().flatten().filter(|r| r.is_err()).count();
+    let mut text = format!("{} solved, {:.1} s", pane.tasks.len() - failed, secs);
+    if failed > 0 {
+        text.push_str(&format!(", {failed} failed"));
+    }
+    text
+}
+
+/// The chart panel `area` (its graph `_g` is not used: the panel is split).
+pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
+    let t = &app.theme;
+    let gl = t.glyphs;
+    let pane = &app.contact;
+    let w = usize::from(area.width);
+    let n = pane.tasks.first().map(|t| t.scene.n);
+    let head = if pane.sweep {
+        format!(
+            "plastic share vs ζ at p̄ = {} H · seed {}",
+            load_text(load_value(pane.load)),
+            pane.seed
+        )
+    } else {
+        match n {
+            Some(n) => format!("simulation {n}² · seed {}", pane.seed),
+            None => "simulation".into(),
+        }
+    };
+    let head = gl.text(&head).into_owned();
+    let right = progress_text(app, 12);
+    let mut spans = vec![Span::styled(head.clone(), t.title)];
+    let used = Span::raw(head.as_str()).width();
+    if used + 2 + Span::raw(right.as_str()).width() <= w {
+        spans.push(Span::raw("  "));
+        spans.push(Span::styled(gl.text(&right).into_owned(), t.dim));
+    }
+    Line::from(spans).render(Rect { height: 1, ..area }, buf);
+    if area.height < 8 {
+        return;
+    }
+    let row1 = Rect::new(area.x, area.y + 1, area.width, 1);
+    if pane.sweep {
+        let text = "simulation points · theory S_pl/S_tot lines · b: areas vs load";
+        Line::styled(gl.text(text).into_owned(), t.dim).render(row1, buf);
+    } else {
+        let (line, error) = readout(pane, w);
+        let style = if error { t.error } else { Style::new() };
+        Line::styled(gl.text(&line).into_owned(), style).render(row1, buf);
+    }
+    let body = Rect::new(area.x, area.y + 2, area.width, area.height - 2);
+    if pane.sweep {
+        sweep_chart(app, body, buf);
+        return;
+    }
+    // The map: a square of points, two per cell up where half blocks are
+    // drawn, at most 45 % of the panel's width.
+    let rows = body.height.saturating_sub(1);
+    let side = (rows * 2).min(body.width * 45 / 100);
+    let map = Rect::new(body.x, body.y + 1, side, side / 2);
+    let chart = Rect::new(
+        body.x + side + 1,
+        body.y,
+        body.width.saturating_sub(side + 1),
+        body.height,
+    );
+    map_legend(t, Rect::new(body.x, body.y, side, 1), buf);
+    if let Some(why) = &pane.why_not {
+        let text = gl.text(why).into_owned();
+        Paragraph::new(text)
+            .style(t.dim)
+            .wrap(Wrap { trim: true })
+            .render(Rect::new(body.x, body.y + 1, side.max(1), rows), buf);
+    } else if let Some(Ok(s)) = pane.chosen() {
+        let nn = n.unwrap_or(0);
+        draw_map(t, &s.map, nn, map, buf);
+    }
+    load_chart(app, chart, buf);
+}
+
+/// The map's legend in `area` (one row).
+fn map_legend(t: &Theme, area: Rect, buf: &mut Buffer) {
+    let (e, p) = node_look(t, Node::Elastic, Node::Plastic);
+    let spans = vec![
+        Span::styled(e.0, e.1),
+        Span::raw(" elastic "),
+        Span::styled(p.0, p.1),
+        Span::raw(" at H"),
+    ];
+    Line::from(spans).render(area, buf);
+}
+
+/// A one-point swatch of each of two node kinds (legend).
+fn node_look(t: &Theme, a: Node, b: Node) -> ((&'static str, Style), (&'static str, Style)) {
+    let one = |k: Node| -> (&'static str, Style) {
+        if t.color {
+            let c = if k == Node::Plastic { PLASTIC } else { ELASTIC };
+            if t.glyphs.ascii_only() {
+                (" ", Style::new().bg(c))
+            } else {
+                ("█", Style::new().fg(c))
+            }
+        } else {
+            (plain_char(t, k), Style::new())
+        }
+    };
+    (one(a), one(b))
+}
+
+/// A node's character without colour.
+fn plain_char(t: &Theme, k: Node) -> &'static str {
+    match (k, t.glyphs.ascii_only()) {
+        (Node::Out, _) => " ",
+        (Node::Elastic, true) => "o",
+        (Node::Plastic, true) => "#",
+        (Node::Elastic, false) => "░",
+        (Node::Plastic, false) => "█",
+    }
+}
+
+/// The most loaded node of the block of `map` (n × n) under point
+/// (`px`, `py`) of a `side` × `side` picture.
+fn block(map: &[Node], n: usize, side: usize, px: usize, py: usize) -> Node {
+    let span = |i: usize| {
+        (
+            i * n / side,
+            ((i + 1) * n / side).max(i * n / side + 1).min(n),
+        )
+    };
+    let (x0, x1) = span(px);
+    let (y0, y1) = span(py);
+    let mut best = Node::Out;
+    for y in y0..y1 {
+        for &v in &map[y * n + x0..y * n + x1] {
+            best = best.max(v);
+            if best == Node::Plastic {
+                return best;
+            }
+        }
+    }
+    best
+}
+
+/// The whole periodic cell, each point the most loaded node it covers:
+/// half blocks (two points a cell) in colour, one character a cell (the
+/// more loaded of its two points) without colour or in ASCII.
+fn draw_map(t: &Theme, map: &[Node], n: usize, area: Rect, buf: &mut Buffer) {
+    if n == 0 || map.len() != n * n || area.width == 0 || area.height == 0 {
+        return;
+    }
+    let side = usize::from(area.width);
+    let colour = |k: Node| match k {
+        Node::Out => Color::Reset,
+        Node::Elastic => ELASTIC,
+        Node::Plastic => PLASTIC,
+    };
+    for r in 0..usize::from(area.height) {
+        for c in 0..side {
+            let up = block(map, n, side, c, 2 * r);
+            let low = block(map, n, side, c, (2 * r + 1).min(side - 1));
+            let cell = &mut buf[(area.x + c as u16, area.y + r as u16)];
+            if !t.color {
+                cell.set_symbol(plain_char(t, up.max(low)));
+            } else if t.glyphs.ascii_only() {
+                cell.set_symbol(" ")
+                    .set_style(Style::new().bg(colour(up.max(low))));
+            } else {
+                match (up, low) {
+                    (Node::Out, Node::Out) => {
+                        cell.set_symbol(" ");
+                    }
+                    (Node::Out, l) => {
+                        cell.set_symbol("▄").set_style(Style::new().fg(colour(l)));
+                    }
+                    (u, Node::Out) => {
+                        cell.set_symbol("▀").set_style(Style::new().fg(colour(u)));
+                    }
+                    (u, l) => {
+                        cell.set_symbol("▀")
+                            .set_style(Style::new().fg(colour(u)).bg(colour(l)));
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// A point style of the simulation: the curve's colour, a dot; without
+/// colour the letter `plain`.
+fn point(t: &Theme, c: &CurveStyle, plain: char) -> (Style, Marker) {
+    if t.color && !t.glyphs.ascii_only() {
+        (c.style, Marker::Custom('●'))
+    } else if t.color {
+        (c.style, Marker::Custom(plain))
+    } else {
+        (Style::new(), Marker::Custom(plain))
+    }
+}
+
+fn scatter<'a>(style: (Style, Marker), data: &'a [(f64, f64)]) -> Dataset<'a> {
+    Dataset::default()
+        .graph_type(GraphType::Scatter)
+        .marker(style.1)
+        .style(style.0)
+        .data(data)
+}
+
+/// The graph inside a chart region: a legend row on top, y labels left,
+/// x axis and labels below.
+fn graph_of(area: Rect) -> Option<Rect> {
+    let w = area.width.checked_sub(Y_LABEL_W + 1 + 2)?;
+    let h = area.height.checked_sub(1 + 2)?;
+    (w >= 4 && h >= 3).then(|| Rect::new(area.x + Y_LABEL_W + 1, area.y + 1, w, h))
+}
+
+fn load_chart(app: &App, area: Rect, buf: &mut Buffer) {
+    let t = &app.theme;
+    let pane = &app.contact;
+    let Some(g) = graph_of(area) else {
+        return;
+    };
+    let mut sims: [Vec<(f64, f64)>; 3] = Default::default();
+    for (k, r) in pane.results.iter().enumerate().take(LOADS) {
+        if let Some(Ok(s)) = r {
+            let x = load_value(k).log10();
+            let r = &s.result;
+            for (v, out) in [r.area, r.elastic_area, r.plastic_area]
+                .into_iter()
+                .zip(sims.iter_mut())
+            {
+                if v > 0.0 {
+                    out.push((x, v.log10()));
+                }
+            }
+        }
+    }
+    let lowest = pane
+        .theory
+        .curves
+        .iter()
+        .flatten()
+        .map(|p| p.1)
+        .chain(sims.iter().flatten().map(|p| p.1))
+        .fold(0.0, f64::min);
+    let y0 = lowest.floor().clamp(-6.0, -1.0);
+    let (xb, yb) = ([-3.0, 0.0], [y0, 0.0]);
+    let label = |s: &str| Span::raw(t.glyphs.text(s).into_owned());
+    let legend = Line::from(vec![
+        Span::styled(t.total.sample, t.total.style),
+        label(" theory  "),
+        Span::styled(
+            match point(t, &t.total, 'T').1 {
+                Marker::Custom(c) => c.to_string(),
+                _ => "●".into(),
+            },
+            point(t, &t.total, 'T').0,
+        ),
+        label(" simulation (T E P)"),
+    ]);
+    legend.render(Rect { height: 1, ..area }, buf);
+    chart::axes(
+        t,
+        (&Scale::decades(xb), &Scale::decades(yb)),
+        "p̄/H",
+        (area, g),
+        buf,
+    );
+    let theory = &pane.theory.curves;
+    let at = load_value(pane.load).log10();
+    let marker = [(at, yb[0]), (at, yb[1])];
+    let mut sets = vec![chart::dataset(&t.marker_line, &marker)];
+    for (c, data) in [&t.total, &t.elastic, &t.plastic].into_iter().zip(theory) {
+        sets.push(chart::dataset(c, data));
+    }
+    // The total last: on top where it equals the elastic part.
+    for (k, (c, ch)) in [(&t.total, 'T'), (&t.elastic, 'E'), (&t.plastic, 'P')]
+        .into_iter()
+        .enumerate()
+        .rev()
+    {
+        sets.push(scatter(point(t, c, ch), &sims[k]));
+    }
+    chart::plot(sets, (xb, yb), g, buf);
+}
+
+fn sweep_chart(app: &App, area: Rect, buf: &mut Buffer) {
+    let t = &app.theme;
+    let pane = &app.contact;
+    let Some(g) = graph_of(area) else {
+        return;
+    };
+    if let Some(why) = &pane.why_not {
+        Paragraph::new(t.glyphs.text(why).into_owned())
+            .style(t.dim)
+            .wrap(Wrap { trim: true })
+            .render(g, buf);
+        return;
+    }
+    let zs = sweep_zetas();
+    let mut sims: [Vec<(f64, f64)>; 2] = Default::default();
+    for (i, r) in pane.results.iter().enumerate() {
+        let (set, k) = (i / zs.len(), i % zs.len());
+        if let (Some(Ok(s)), Some(out)) = (r, sims.get_mut(set)) {
+            let r = &s.result;
+            if r.area > 0.0 {
+                out.push((zs[k].log10(), r.plastic_area / r.area));
+            }
+        }
+    }
+    let hi = zs.last().copied().unwrap_or(2.0).log10();
+    let (xb, yb) = ([0.0, hi], [0.0, 1.0]);
+    let (off, on) = (&t.psi_p, &t.psi_star);
+    let name = |s: &str| Span::raw(t.glyphs.text(s).into_owned());
+    let p_off = point(t, off, 'o');
+    let p_on = point(t, on, 'x');
+    let ch = |m: Marker| match m {
+        Marker::Custom(c) => c.to_string(),
+        _ => "●".into(),
+    };
+    Line::from(vec![
+        Span::styled(off.sample, off.style),
+        Span::styled(ch(p_off.1), p_off.0),
+        name(" H0  "),
+        Span::styled(on.sample, on.style),
+        Span::styled(ch(p_on.1), p_on.0),
+        name(" H_y (size effect)"),
+    ])
+    .render(Rect { height: 1, ..area }, buf);
+    let x = Scale::of_axis(rough_model::Axis::Zeta, xb);
+    chart::axes(t, (&x, &Scale::linear(yb, 5.0)), "ζ", (area, g), buf);
+    let theory = &pane.theory.curves;
+    let mut sets = vec![];
+    for (c, data) in [off, on].into_iter().zip(theory) {
+        sets.push(chart::dataset(c, data));
+    }
+    sets.push(scatter(p_off, &sims[0]));
+    sets.push(scatter(p_on, &sims[1]));
+    chart::plot(sets, (xb, yb), g, buf);
+}

@@ -1,0 +1,231 @@
+//! The contact view without a terminal: Tab reaches it, the solver runs off
+//! the UI thread and its results come in through Tick, a change of the
+//! scene cancels the job, results are cached and shared between explorers,
+//! and the screen (insta) at 80×24 and 120×36, coloured, NO_COLOR and ASCII.
+//! Small grids (ζ = 4: 32²) keep the solves fast in a debug build.
+
+mod common;
+
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+use crossterm::event::{KeyCode, KeyModifiers};
+use rough_model::Axis;
+use roughtui::contact::engine::Engine;
+use roughtui::figure::View;
+use roughtui::presets;
+use roughtui::tui::app::{update, App, Message};
+use roughtui::tui::glyphs::Glyphs;
+use roughtui::tui::theme::Theme;
+
+use common::app::{ch, press, screen};
+
+/// fig2 at ζ = `zeta` on its own engine.
+fn app_at(zeta: f64, size: (u16, u16), theme: Theme, engine: &Arc<Engine>) -> App {
+    let mut s = presets::load("fig2").unwrap();
+    s.params = s.params.with(Axis::Zeta, zeta).unwrap();
+    let mut a = App::new(s, theme, size);
+    a.contact.engine = Arc::clone(engine);
+    a
+}
+
+fn to_contact(a: &mut App) {
+    while a.view != View::Contact {
+        press(a, KeyCode::Tab, KeyModifiers::NONE);
+    }
+}
+
+/// Ticks until the job for the scene on screen has ended.
+fn settle(a: &mut App) {
+    let start = Instant::now();
+    while a.contact.busy() {
+        assert!(start.elapsed() < Duration::from_secs(120), "solver hung");
+        std::thread::sleep(Duration::from_millis(5));
+        update(a, Message::Tick);
+    }
+}
+
+#[test]
+fn tab_reaches_the_contact_view_and_its_result_comes_in() {
+    let engine = Engine::new(1);
+    let mut a = app_at(4.0, (160, 48), Theme::colored(), &engine);
+    let mut seen = vec![];
+    for _ in 0..5 {
+        press(&mut a, KeyCode::Tab, KeyModifiers::NONE);
+        seen.push(a.view);
+    }
+    assert_eq!(
+        seen,
+        [
+            View::Indices,
+            View::Map,
+            View::Load,
+            View::Contact,
+            View::Slopes
+        ]
+    );
+    to_contact(&mut a);
+    assert!(a.contact.busy() || a.contact.progress.finished);
+    settle(&mut a);
+    assert_eq!(a.contact.results.len(), 13);
+    let s = a.contact.chosen().unwrap().as_ref().unwrap();
+    assert_eq!(s.result.p_mean, 0.01 * a.contact.tasks[0].scene.hardness());
+    assert_eq!(s.map.len(), 32 * 32);
+    assert!(s.result.residual <= 1e-10 * 100.0);
+    let text = screen(&a);
+    assert!(text.contains("simulation at p̄ = 0.01 H: contact"), "{text}");
+    assert!(text.contains("simulation 32² · seed 1"), "{text}");
+    assert!(text.contains("13 solved"), "{text}");
+}
+
+#[test]
+fn the_readout_gives_the_simulation_and_the_theory_at_the_chosen_load() {
+    let engine = Engine::new(1);
+    let mut a = app_at(16.0, (160, 48), Theme::colored(), &engine);
+    to_contact(&mut a);
+    settle(&mut a);
+    let r = a.contact.chosen().unwrap().as_ref().unwrap().result;
+    let t = a.contact.theory.at_load.unwrap();
+    let (line, error) = roughtui::tui::views::contact::readout(&a.contact, 200);
+    assert!(!error);
+    use roughtui::tui::views::contact::{pct, share_pct};
+    assert_eq!(
+        line,
+        format!(
+            "simulation at p̄ = 0.01 H: contact {} %, {} % plastic · theory: {} %, {} % plastic",
+            pct(r.area),
+            share_pct(r.plastic_area, r.area),
+            pct(t.total),
+            share_pct(t.plastic, t.total)
+        )
+    );
+    // The numbers of docs/theory-vs-simulation.md (fig2, ζ = 16, seed 1).
+    assert_eq!(pct(r.area), "4.46", "{line}");
+    assert_eq!(pct(t.total), "2.31", "{line}");
+    // ] and [ move the load a quarter decade; the readout follows.
+    ch(&mut a, ']');
+    assert_eq!(a.contact.load, 5);
+    let (line, _) = roughtui::tui::views::contact::readout(&a.contact, 200);
+    assert!(line.starts_with("simulation at p̄ = 0.01778 H"), "{line}");
+    for _ in 0..20 {
+        ch(&mut a, '[');
+    }
+    assert_eq!(a.contact.load, 0);
+}
+
+#[test]
+fn a_change_of_the_scene_cancels_the_job() {
+    let engine = Engine::new(1);
+    // 512²: seconds a load in a debug build.
+    let mut a = app_at(64.0, (80, 24), Theme::colored(), &engine);
+    to_contact(&mut a);
+    assert!(a.contact.busy());
+    let old = a.contact.tasks.clone();
+    std::thread::sleep(Duration::from_millis(300));
+    update(&mut a, Message::Tick);
+    // Back to ζ = 4 (the ζ slider is selected in fig2).
+    a.state.params = a.state.params.with(Axis::Zeta, 4.0).unwrap();
+    update(&mut a, Message::Tick);
+    assert_ne!(a.contact.tasks, old);
+    settle(&mut a);
+    let start = Instant::now();
+    while engine.running() > 0 {
+        assert!(start.elapsed() < Duration::from_secs(10), "not cancelled");
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    let solved_old = old.iter().filter(|t| engine.get(t).is_some()).count();
+    assert!(solved_old < 13, "{solved_old} of the old loads solved");
+}
+
+#[test]
+fn results_are_cached_and_shared_between_explorers() {
+    let engine = Engine::new(2);
+    let mut a = app_at(4.0, (80, 24), Theme::colored(), &engine);
+    let mut b = app_at(4.0, (100, 30), Theme::plain(), &engine);
+    to_contact(&mut a);
+    to_contact(&mut b);
+    settle(&mut a);
+    settle(&mut b);
+    let solves = engine.solves.load(std::sync::atomic::Ordering::Relaxed);
+    assert_eq!(solves, 13, "two explorers on one scene solve it once");
+    // Away and back: from the cache, no job.
+    a.state.params = a.state.params.with(Axis::Zeta, 2.0).unwrap();
+    update(&mut a, Message::Tick);
+    settle(&mut a);
+    a.state.params = a.state.params.with(Axis::Zeta, 4.0).unwrap();
+    update(&mut a, Message::Tick);
+    assert!(!a.contact.busy());
+    assert_eq!(engine.solves.load(std::sync::atomic::Ordering::Relaxed), 26);
+    assert!(a.contact.results.iter().all(|r| r.is_some()));
+    // Another seed is another surface.
+    ch(&mut a, 'r');
+    assert_eq!(a.contact.seed, 2);
+    assert!(a.contact.busy());
+}
+
+#[test]
+fn b_shows_the_plastic_share_against_zeta() {
+    let engine = Engine::new(2);
+    let mut a = app_at(4.0, (120, 36), Theme::colored(), &engine);
+    to_contact(&mut a);
+    ch(&mut a, '[');
+    ch(&mut a, '[');
+    ch(&mut a, '[');
+    ch(&mut a, '[');
+    // p̄ = 1e-3 H; the job (up to 1024², slow in debug) is cancelled when
+    // the test drops the explorer.
+    ch(&mut a, 'b');
+    assert!(a.contact.sweep);
+    assert_eq!(a.contact.tasks.len(), 16);
+    assert_eq!(a.contact.theory.curves.len(), 2);
+    // The theory without the size effect is never below the one with it.
+    for (off, on) in a.contact.theory.curves[0]
+        .iter()
+        .zip(&a.contact.theory.curves[1])
+    {
+        assert!(off.1 >= on.1 - 1e-12, "{off:?} {on:?}");
+    }
+    let text = screen(&a);
+    assert!(text.contains("plastic share vs ζ at p̄ = 0.001 H"), "{text}");
+    ch(&mut a, 'b');
+    assert!(!a.contact.sweep);
+}
+
+#[test]
+fn beyond_the_grid_the_view_says_what_it_resolves() {
+    let engine = Engine::new(1);
+    let mut a = app_at(1000.0, (120, 36), Theme::colored(), &engine);
+    to_contact(&mut a);
+    assert!(!a.contact.busy());
+    assert!(a.contact.tasks.is_empty());
+    let text = screen(&a);
+    assert!(text.contains("ζ = 1000 needs a grid of 8000"), "{text}");
+    assert!(text.contains("(ζ ≤ 128)"), "{text}");
+    assert_eq!(engine.running(), 0);
+}
+
+fn snapshot(name: &str, zeta: f64, size: (u16, u16), theme: Theme) {
+    let engine = Engine::new(1);
+    let mut a = app_at(zeta, size, theme, &engine);
+    to_contact(&mut a);
+    settle(&mut a);
+    // The solve time varies: the title's tail is left out.
+    let text: String = screen(&a)
+        .lines()
+        .map(|l| match l.find(" solved, ") {
+            Some(i) => l[..i].to_string(),
+            None => l.to_string(),
+        })
+        .collect::<Vec<_>>()
+        .join("\n");
+    insta::assert_snapshot!(name, text);
+}
+
+#[test]
+fn snapshots() {
+    snapshot("contact_fig2_z8_80x24", 8.0, (80, 24), Theme::colored());
+    snapshot("contact_fig2_z8_120x36", 8.0, (120, 36), Theme::colored());
+    snapshot("contact_fig2_z8_80x24_plain", 8.0, (80, 24), Theme::plain());
+    let ascii = Theme::colored().with_glyphs(Glyphs::Ascii);
+    snapshot("contact_fig2_z8_80x24_ascii", 8.0, (80, 24), ascii);
+}
