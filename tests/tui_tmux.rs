@@ -273,7 +273,7 @@ fn key_to_frame_time_at_160x48() {
 /// Tab and Shift-Tab through all four views; the size-effect key redraws the
 /// regime map.
 #[test]
-fn tab_cycles_the_four_views() {
+fn tab_cycles_the_five_views() {
     if !have_tmux() {
         return;
     }
@@ -284,7 +284,9 @@ fn tab_cycles_the_four_views() {
         ("Tab", "plasticity indices vs ζ"),
         ("Tab", "plastic share over ζ × H0/E"),
         ("Tab", "A/A0 vs p̄/H0"),
+        ("Tab", "simulation 1024² · seed 1"),
         ("Tab", "slope H0·dA/dp̄/A0 vs ζ"),
+        ("BTab", "simulation 1024² · seed 1"),
         ("BTab", "A/A0 vs p̄/H0"),
         ("BTab", "plastic share over ζ × H0/E"),
     ] {

@@ -42,16 +42,21 @@ pub fn pct(v: f64) -> String {
     }
 }
 
-/// A plastic share in whole per cent (below 1 %, "<1" unless exactly 0).
+/// A plastic share in per cent: whole from 10 %, one decimal below ("0"
+/// exactly none, "<0.1" a trace).
 pub fn share_pct(plastic: f64, total: f64) -> String {
     if total <= 0.0 {
         return "—".into();
     }
     let s = 100.0 * plastic / total;
-    if s > 0.0 && s < 1.0 {
-        "<1".into()
-    } else {
+    if s == 0.0 {
+        "0".into()
+    } else if s < 0.05 {
+        "<0.1".into()
+    } else if s >= 9.95 {
         format!("{s:.0}")
+    } else {
+        format!("{s:.1}")
     }
 }
 
