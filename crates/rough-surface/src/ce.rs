@@ -25,7 +25,7 @@ use crate::error::{Failure, Problem};
 use crate::header::per_metre;
 use crate::psd;
 use crate::spectrum::Computed;
-use crate::text::number;
+use crate::text::defined;
 use crate::{Kind, Options};
 
 const AREAL: &str = "q/π × 2D PSD";
@@ -125,8 +125,8 @@ pub(crate) fn read(text: &str, opts: &Options) -> Result<(Kind, Computed), Failu
             ));
         }
         let at = |p| (Some(line_no), p);
-        b.q.push(number(fields[0]).map_err(at)?);
-        b.v.push(number(fields[1]).map_err(at)?);
+        b.q.push(defined(fields[0], "wavevector").map_err(at)?);
+        b.v.push(defined(fields[1], "PSD value").map_err(at)?);
         b.lines.push(line_no);
     }
     let pick = |n: &str| blocks.iter().position(|b| b.name == n && !b.q.is_empty());

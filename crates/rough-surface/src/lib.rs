@@ -10,6 +10,7 @@ mod bins;
 mod ce;
 mod columns;
 mod error;
+mod fill;
 mod fit;
 mod header;
 mod matrix;
@@ -25,6 +26,7 @@ use rough_model::{Dim, MomentTable};
 use sha2::{Digest, Sha256};
 
 pub use error::{Problem, SurfaceError};
+pub use fill::MAX_UNDEFINED;
 pub use fit::PowerLawFit;
 
 /// Files larger than this are refused before they are read (512 MiB).
@@ -175,7 +177,7 @@ pub fn parse(bytes: &[u8], opts: &Options) -> Result<Measured, (Option<usize>, P
         spectrum: computed.spectrum,
         sha256,
         summary,
-        notes: Vec::new(),
+        notes: computed.notes,
     })
 }
 

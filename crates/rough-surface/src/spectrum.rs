@@ -27,11 +27,14 @@ use rustfft::{Fft, FftPlanner};
 
 use crate::bins::Bins;
 use crate::error::Problem;
+use crate::fill;
 
 /// What a surface's heights give the model and the screen.
 pub(crate) struct Computed {
     pub table: MomentTable,
     pub spectrum: Vec<(f64, f64)>,
+    /// What was repaired on the way ([`crate::Measured::notes`]).
+    pub notes: Vec<String>,
 }
 
 /// The residual rms below which detrended heights count as nothing left
@@ -202,7 +205,7 @@ fn columns(t: &mut [Complex<f64>], ny: usize, fft: &Arc<dyn Fft<f64>>) {
 }
 
 /// A map of nx × ny heights (rows of nx along x, one row per y) spanning
-/// lx × ly metres.
+/// lx × ly metres; undefined points (NaN) are filled first.
 pub(crate) fn map(
     mut h: Vec<f64>,
     nx: usize,
@@ -211,6 +214,7 @@ pub(crate) fn map(
     ly: f64,
     periodic: bool,
 ) -> Result<Computed, Problem> {
+    let notes: Vec<String> = fill::fill(&mut h, nx, ny, periodic)?.into_iter().collect();
     detrend(&mut h, nx, ny, periodic)?;
     let s2 = if periodic {
         1.0
@@ -268,12 +272,15 @@ pub(crate) fn map(
     Ok(Computed {
         table,
         spectrum: bins.finish(),
+        notes,
     })
 }
 
-/// A line of n heights spanning l metres.
+/// A line of n heights spanning l metres; undefined points (NaN) are
+/// filled first.
 pub(crate) fn line(mut h: Vec<f64>, l: f64, periodic: bool) -> Result<Computed, Problem> {
     let n = h.len();
+    let notes: Vec<String> = fill::fill(&mut h, n, 1, periodic)?.into_iter().collect();
     detrend(&mut h, n, 1, periodic)?;
     let s2 = if periodic { 1.0 } else { window_1d(&mut h) };
     let mut buf: Vec<Complex<f64>> = h.iter().map(|&v| Complex::new(v, 0.0)).collect();
@@ -299,6 +306,7 @@ pub(crate) fn line(mut h: Vec<f64>, l: f64, periodic: bool) -> Result<Computed, 
     Ok(Computed {
         table,
         spectrum: bins.finish(),
+        notes,
     })
 }
 

@@ -42,13 +42,28 @@ fn fields(data: &str) -> impl Iterator<Item = &str> {
         .filter(|f| !f.is_empty())
 }
 
-/// One field as a finite number.
+/// One field as a number: finite, or NaN for an undefined point (`nan`,
+/// `NaN`, `-nan` as C and numpy print it); infinities are refused.
 pub(crate) fn number(field: &str) -> Result<f64, Problem> {
     match field.parse::<f64>() {
         Ok(v) if v.is_finite() => Ok(v),
+        Ok(v) if v.is_nan() => Ok(f64::NAN),
         Ok(_) => Err(Problem::NotFinite(field.to_string())),
         Err(_) => Err(Problem::NotNumber(field.to_string())),
     }
+}
+
+/// A number that must be defined (`what`: a wavevector, a PSD value).
+pub(crate) fn defined(field: &str, what: &'static str) -> Result<f64, Problem> {
+    match number(field)? {
+        v if v.is_nan() => Err(Problem::UndefinedValue(what)),
+        v => Ok(v),
+    }
+}
+
+/// A delimiter that ends a cell even when the cell is empty.
+fn is_hard(b: u8) -> bool {
+    matches!(b, b',' | b';')
 }
 
 /// A line split at its comment: (data, comment text after `#`).
@@ -59,26 +74,41 @@ fn split_comment(line: &str) -> (&str, Option<&str>) {
     }
 }
 
-/// Numbers of the data part `data`, appended to `out`; how many.
-fn row(data: &str, out: &mut Vec<f64>) -> Result<usize, Problem> {
+/// Numbers of the data part `data`, appended to `out`; how many, and
+/// whether the line ended with a comma or semicolon.
+///
+/// Between commas or semicolons an empty cell is an undefined point (NaN):
+/// `1,,3` and `,2,3` hold three cells. One comma or semicolon at the end of
+/// the line closes the last cell (`1,2,3,` holds three); a row one cell
+/// short that ends with one has its last cell empty ([`parse_chunk`]).
+fn row(data: &str, out: &mut Vec<f64>) -> Result<(usize, bool), Problem> {
     let b = data.as_bytes();
     let (mut i, mut n) = (0, 0);
+    // Commas or semicolons since the last cell (or the line's start).
+    let mut hard = 0usize;
     while i < b.len() {
-        while i < b.len() && is_sep(b[i]) {
+        if is_sep(b[i]) {
+            hard += usize::from(is_hard(b[i]));
             i += 1;
-        }
-        if i == b.len() {
-            break;
+            continue;
         }
         let s = i;
         while i < b.len() && !is_sep(b[i]) {
             i += 1;
         }
+        let empty = if n == 0 { hard } else { hard.saturating_sub(1) };
+        out.extend(std::iter::repeat_n(f64::NAN, empty));
+        n += empty;
         // Separators are ASCII, so s..i lies on character boundaries.
         out.push(number(&data[s..i])?);
         n += 1;
+        hard = 0;
     }
-    Ok(n)
+    if n > 0 && hard > 1 {
+        out.extend(std::iter::repeat_n(f64::NAN, hard - 1));
+        n += hard - 1;
+    }
+    Ok((n, n > 0 && hard > 0))
 }
 
 /// A part of the body, parsed with line numbers relative to its start.
@@ -99,7 +129,11 @@ fn parse_chunk(body: &str, cols: usize, per_value: usize) -> Result<Chunk<'_>, F
         c.lines = i + 1;
         let (data, comment) = split_comment(line);
         let before = c.values.len();
-        let got = row(data, &mut c.values).map_err(|p| (Some(i), p))?;
+        let (mut got, open) = row(data, &mut c.values).map_err(|p| (Some(i), p))?;
+        if open && got + 1 == cols {
+            c.values.push(f64::NAN);
+            got += 1;
+        }
         if got == 0 {
             if let Some(t) = comment {
                 c.comments.push((i, t));
@@ -145,6 +179,30 @@ pub(crate) struct Head<'a> {
     first: Option<(usize, usize, usize)>,
 }
 
+/// Rows looked at to tell a closing comma from an empty last cell.
+const PROBE_ROWS: usize = 64;
+
+/// The cells per row, from the first data row (cells, ends with a comma)
+/// and the text after it: where every row of the first few ends with a
+/// comma or semicolon, it closes the row (`1,2,3,`); otherwise a row ending
+/// with one has an empty last cell (`1,2,` of three columns).
+fn columns(first: (usize, bool), rest: &str) -> usize {
+    let mut probe = Vec::new();
+    let rows = std::iter::once(Ok(first)).chain(
+        rest.split('\n')
+            .map(|l| row(split_comment(l).0, &mut probe))
+            .filter(|r| !matches!(r, Ok((0, _))))
+            .take(PROBE_ROWS),
+    );
+    let (mut all_open, mut one_more) = (true, false);
+    for r in rows {
+        let Ok((n, open)) = r else { break };
+        all_open &= open;
+        one_more |= n + usize::from(open) == first.0 + 1;
+    }
+    first.0 + usize::from(first.1 && one_more && !all_open)
+}
+
 /// Reads the header, up to the first data row.
 pub(crate) fn head(text: &str) -> Result<Head<'_>, Failure> {
     let mut header = Vec::new();
@@ -165,7 +223,8 @@ pub(crate) fn head(text: &str) -> Result<Head<'_>, Failure> {
                     return Err((Some(i + 1), Problem::DecimalComma(w)));
                 }
                 let mut probe = Vec::new();
-                let cols = row(data, &mut probe).map_err(|p| (Some(i + 1), p))?;
+                let first = row(data, &mut probe).map_err(|p| (Some(i + 1), p))?;
+                let cols = columns(first, &text[offset.min(text.len())..]);
                 return Ok(Head {
                     header,
                     first: Some((i + 1, start, cols)),
@@ -278,6 +337,51 @@ mod tests {
         assert_eq!(
             scan(&bad, head(&bad).unwrap()).unwrap_err(),
             (Some(150_002), Problem::NotNumber("x".into()))
+        );
+    }
+
+    #[test]
+    fn empty_cells_and_nan_are_undefined() {
+        let nan = |t: &str| {
+            let s = scan(t, head(t).unwrap()).unwrap();
+            let v: Vec<Option<f64>> = s
+                .values
+                .iter()
+                .map(|v| (!v.is_nan()).then_some(*v))
+                .collect();
+            (s.cols, v)
+        };
+        let (c, v) = nan("1,,3\n,5,6\n7,8,\n");
+        assert_eq!(c, 3);
+        assert_eq!(
+            v,
+            vec![
+                Some(1.),
+                None,
+                Some(3.),
+                None,
+                Some(5.),
+                Some(6.),
+                Some(7.),
+                Some(8.),
+                None
+            ]
+        );
+        // The first row's last cell empty.
+        assert_eq!(
+            nan("1;2;\n4;5;6\n").1,
+            vec![Some(1.), Some(2.), None, Some(4.), Some(5.), Some(6.)]
+        );
+        // A comma closing every row is no cell.
+        assert_eq!(
+            nan("1,2,\n3,4,\n"),
+            (2, vec![Some(1.), Some(2.), Some(3.), Some(4.)])
+        );
+        assert_eq!(nan("1,2,,\n3,4,,\n").0, 3);
+        assert_eq!(nan("nan 2 NaN -nan\n").1, vec![None, Some(2.), None, None]);
+        assert_eq!(
+            head("1 inf\n").err().unwrap(),
+            (Some(1), Problem::NotFinite("inf".into()))
         );
     }
 
