@@ -189,6 +189,8 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         let options = rough_surface::Options {
             periodic: args.periodic,
             pixel_size: args.pixel_size,
+            series: args.series.clone(),
+            direction: args.direction.map(Into::into),
         };
         let t = measured::time_file(path, options, SURFACE_STEPS)?;
         print!(

@@ -4,7 +4,7 @@
 use std::fmt;
 use std::path::{Path, PathBuf};
 
-use rough_surface::{Options, Problem, SurfaceError};
+use rough_surface::{Direction, Options, Problem, SurfaceError};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
 use crate::surface::{relative_to, SurfaceSource};
@@ -28,6 +28,39 @@ pub struct SurfaceFile {
         deserialize_with = "de_number"
     )]
     pub pixel_size: Option<f64>,
+    /// The measurement read from a download of several (`--series`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub series: Option<String>,
+    /// A map read as its profiles along `x` or `y` (`--direction`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub direction: Option<DirectionName>,
+}
+
+/// `direction: x` or `direction: y` in a snapshot.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum DirectionName {
+    #[serde(rename = "x")]
+    X,
+    #[serde(rename = "y")]
+    Y,
+}
+
+impl From<DirectionName> for Direction {
+    fn from(d: DirectionName) -> Direction {
+        match d {
+            DirectionName::X => Direction::X,
+            DirectionName::Y => Direction::Y,
+        }
+    }
+}
+
+impl From<Direction> for DirectionName {
+    fn from(d: Direction) -> DirectionName {
+        match d {
+            Direction::X => DirectionName::X,
+            Direction::Y => DirectionName::Y,
+        }
+    }
 }
 
 fn is_false(b: &bool) -> bool {
@@ -101,6 +134,8 @@ pub(super) fn read(sf: &SurfaceFile, base: Option<&Path>) -> Result<SurfaceSourc
     let options = Options {
         periodic: sf.periodic,
         pixel_size: sf.pixel_size,
+        series: sf.series.clone(),
+        direction: sf.direction.map(Into::into),
     };
     let mut src = SurfaceSource::read(&path, options).map_err(|e| {
         let missing = matches!(&e.problem, Problem::Read(_)) && !path.exists();
@@ -131,5 +166,7 @@ pub(super) fn file_of(src: &SurfaceSource, base: Option<&Path>) -> SurfaceFile {
         sha256: src.measured.sha256.clone(),
         periodic: src.options.periodic,
         pixel_size: src.options.pixel_size,
+        series: src.options.series.clone(),
+        direction: src.options.direction.map(Into::into),
     }
 }

@@ -6,6 +6,7 @@
 //! contact.engineering), so that its numbers are the reference; MODEL.md,
 //! "Measured surfaces", states them.
 
+mod anisotropy;
 mod bins;
 mod ce;
 mod columns;
@@ -14,6 +15,7 @@ mod fill;
 mod fit;
 mod header;
 mod matrix;
+mod profiles;
 mod psd;
 mod spectrum;
 mod text;
@@ -25,6 +27,7 @@ use std::sync::Arc;
 use rough_model::{Dim, MomentTable};
 use sha2::{Digest, Sha256};
 
+pub use anisotropy::{Slopes, RATIO as ANISOTROPY_RATIO};
 pub use error::{Problem, SurfaceError};
 pub use fill::MAX_UNDEFINED;
 pub use fit::PowerLawFit;
@@ -33,12 +36,34 @@ pub use fit::PowerLawFit;
 pub const MAX_BYTES: u64 = 512 << 20;
 
 /// How to read a file whose content does not say everything.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct Options {
     /// The data is periodic: no detrending beyond the mean, no window.
     pub periodic: bool,
     /// Sample spacing in metres, for data without a size header.
     pub pixel_size: Option<f64>,
+    /// The measurement to read from a file holding several (a
+    /// contact.engineering download): its name; the first when `None`.
+    pub series: Option<String>,
+    /// A map read as its profiles along one direction (line-scan
+    /// conventions, [`Kind::Profiles`]) instead of as an area.
+    pub direction: Option<Direction>,
+}
+
+/// A direction on a map: x along its rows, y across them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Direction {
+    X,
+    Y,
+}
+
+impl Direction {
+    pub fn name(self) -> &'static str {
+        match self {
+            Direction::X => "x",
+            Direction::Y => "y",
+        }
+    }
 }
 
 /// What kind of data a file held.
@@ -55,6 +80,16 @@ pub enum Kind {
     Line { n: usize, l: f64 },
     /// A PSD table of `points` rows: areal (C^iso, m⁴) or profile (C1D, m³).
     Psd { dim: Dim, points: usize },
+    /// A map of nx × ny samples over lx × ly read as its profiles along
+    /// `direction` (`--direction`): the PSD averaged over them, profile
+    /// moments as for a line scan.
+    Profiles {
+        direction: Direction,
+        nx: usize,
+        ny: usize,
+        lx: f64,
+        ly: f64,
+    },
 }
 
 impl Kind {
@@ -62,7 +97,7 @@ impl Kind {
     pub fn dim(&self) -> Dim {
         match self {
             Kind::Map { .. } => Dim::Areal,
-            Kind::Line { .. } => Dim::Profile,
+            Kind::Line { .. } | Kind::Profiles { .. } => Dim::Profile,
             Kind::Psd { dim, .. } => *dim,
         }
     }
@@ -94,6 +129,13 @@ pub struct Measured {
     /// point of x3p/gwy) as `f64::NAN` in the heights it hands on; the
     /// pipeline fills or refuses them and adds the note.
     pub notes: Vec<String>,
+    /// The measurement read from a file of several (a contact.engineering
+    /// download's "Topography: NAME"), for the caption.
+    pub measurement: Option<String>,
+    /// A map's rms slopes along x and along y (its spectrum to the largest
+    /// ζ); a note says when they differ by more than
+    /// [`ANISOTROPY_RATIO`].
+    pub slopes: Option<Slopes>,
 }
 
 impl Measured {
@@ -170,26 +212,47 @@ pub fn parse(bytes: &[u8], opts: &Options) -> Result<Measured, (Option<usize>, P
         let read = read_text(text, opts);
         (hash.join().expect("hash thread"), read)
     });
-    let (kind, computed, summary) = read?;
+    let r = read?;
     Ok(Measured {
-        kind,
-        table: Arc::new(computed.table),
-        spectrum: computed.spectrum,
+        kind: r.kind,
+        table: Arc::new(r.computed.table),
+        spectrum: r.computed.spectrum,
         sha256,
-        summary,
-        notes: computed.notes,
+        summary: r.summary,
+        notes: r.computed.notes,
+        measurement: r.measurement,
+        slopes: r.computed.slopes,
     })
 }
 
-fn read_text(
-    text: &str,
-    opts: &Options,
-) -> Result<(Kind, spectrum::Computed, String), (Option<usize>, Problem)> {
+/// What [`read_text`] found.
+struct Reading {
+    kind: Kind,
+    computed: spectrum::Computed,
+    summary: String,
+    measurement: Option<String>,
+}
+
+fn read_text(text: &str, opts: &Options) -> Result<Reading, (Option<usize>, Problem)> {
     let head = text::head(text)?;
     if ce::is_ce(&head.header) {
-        let (kind, c) = ce::read(text, opts)?;
-        let summary = describe(&kind, opts, "contact.engineering PSD");
-        return Ok((kind, c, summary));
+        let r = ce::read(text, opts)?;
+        let summary = describe(&r.kind, opts, &r.label);
+        return Ok(Reading {
+            kind: r.kind,
+            computed: r.computed,
+            summary,
+            measurement: r.measurement,
+        });
+    }
+    if let Some(s) = &opts.series {
+        return Err((
+            None,
+            Problem::Option(format!(
+                "--series '{s}' applies to a contact.engineering download of several \
+                 measurements, not to this file"
+            )),
+        ));
     }
     let scan = text::scan(text, head)?;
     let header = header::Header::read(&scan.header)?;
@@ -211,13 +274,31 @@ fn read_text(
             Problem::Several("several channels: one channel per file, please".to_string()),
         ));
     }
-    let (kind, c) = if header.has_size() || scan.cols != 2 {
+    let (kind, computed) = if header.has_size() || scan.cols != 2 {
         matrix::read(scan, &header, opts)?
     } else {
         columns::read(text, scan, &header, opts)?
     };
+    if let (Some(d), false) = (opts.direction, matches!(kind, Kind::Profiles { .. })) {
+        return Err((
+            None,
+            Problem::Option(format!(
+                "--direction {} applies to a map, not to {}",
+                d.name(),
+                match kind {
+                    Kind::Line { .. } => "a line scan",
+                    _ => "a PSD table",
+                }
+            )),
+        ));
+    }
     let summary = describe(&kind, opts, "PSD table");
-    Ok((kind, c, summary))
+    Ok(Reading {
+        kind,
+        computed,
+        summary,
+        measurement: None,
+    })
 }
 
 /// A length for people: "12 µm".
@@ -254,6 +335,26 @@ fn describe(kind: &Kind, opts: &Options, psd: &str) -> String {
             treat("plane")
         ),
         Kind::Line { n, l } => format!("line scan of {n} points, {}, {}", length(l), treat("line")),
+        Kind::Profiles {
+            direction,
+            nx,
+            ny,
+            lx,
+            ly,
+        } => {
+            let d = direction.name();
+            let count = if direction == Direction::X { ny } else { nx };
+            format!(
+                "map {nx} × {ny}, {} × {}, its {count} profiles along {d}, {}",
+                length(lx),
+                length(ly),
+                if opts.periodic {
+                    "periodic, mean removed".to_string()
+                } else {
+                    format!("plane removed, Hann window along {d}")
+                }
+            )
+        }
         Kind::Psd { dim, points } => format!(
             "{psd}, {points} points, {}",
             match dim {

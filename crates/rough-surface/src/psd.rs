@@ -37,6 +37,7 @@ pub(crate) fn table(
             table,
             spectrum,
             notes: Vec::new(),
+            slopes: None,
         },
     ))
 }

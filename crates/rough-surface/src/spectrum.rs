@@ -28,13 +28,16 @@ use rustfft::{Fft, FftPlanner};
 use crate::bins::Bins;
 use crate::error::Problem;
 use crate::fill;
+use crate::Slopes;
 
 /// What a surface's heights give the model and the screen.
 pub(crate) struct Computed {
     pub table: MomentTable,
     pub spectrum: Vec<(f64, f64)>,
-    /// What was repaired on the way ([`crate::Measured::notes`]).
+    /// What was repaired or noticed on the way ([`crate::Measured::notes`]).
     pub notes: Vec<String>,
+    /// A map's rms slopes along x and y ([`crate::Measured::slopes`]).
+    pub slopes: Option<Slopes>,
 }
 
 /// The residual rms below which detrended heights count as nothing left
@@ -85,7 +88,7 @@ fn remove_plane(h: &mut [f64], nx: usize, ny: usize, mean: f64) {
 }
 
 /// Mean or plane removed; refuses what is flat after it.
-fn detrend(h: &mut [f64], nx: usize, ny: usize, periodic: bool) -> Result<(), Problem> {
+pub(crate) fn detrend(h: &mut [f64], nx: usize, ny: usize, periodic: bool) -> Result<(), Problem> {
     let (mean, var) = moments(h)?;
     if periodic {
         h.iter_mut().for_each(|v| *v -= mean);
@@ -128,7 +131,7 @@ fn window_2d(h: &mut [f64], nx: usize, ny: usize, lx: f64, ly: f64) -> f64 {
 
 /// scipy.signal.get_window('hann', n): the periodic Hann window; returns
 /// s² = n / Σ w².
-fn window_1d(h: &mut [f64]) -> f64 {
+pub(crate) fn window_1d(h: &mut [f64]) -> f64 {
     let n = h.len();
     let mut sum = 0.0;
     for (k, v) in h.iter_mut().enumerate() {
@@ -141,7 +144,7 @@ fn window_1d(h: &mut [f64]) -> f64 {
 
 /// |q| of index k on an axis of n samples spanning l, as
 /// 2π · np.fft.fftfreq(n, l/n) gives it.
-fn freq(k: usize, n: usize, l: f64) -> f64 {
+pub(crate) fn freq(k: usize, n: usize, l: f64) -> f64 {
     let val = 1.0 / (n as f64 * (l / n as f64));
     let k = k.min(n - k);
     2.0 * PI * (k as f64 * val)
@@ -245,6 +248,7 @@ pub(crate) fn map(
     let qy: Vec<f64> = (0..=ny / 2).map(|j| freq(j, ny, ly)).collect();
     let ry: Vec<f64> = (0..=ny / 2).map(|j| gy * j as f64).collect();
     let mut terms = Vec::with_capacity(nh * (ny / 2 + 1));
+    let (mut m2x, mut m2y) = (0.0, 0.0);
     for (kx, col) in t.chunks_exact(ny).enumerate() {
         let mult = if kx == 0 || 2 * kx == nx { 1.0 } else { 2.0 };
         let qx = freq(kx, nx, lx);
@@ -259,6 +263,8 @@ pub(crate) fn map(
                 ((col[ky].norm_sqr() + col[ny - ky].norm_sqr()) * scale, 2.0)
             };
             terms.push(((qx * qx + qy[ky] * qy[ky]).sqrt(), mult * w));
+            m2x += mult * w * qx * qx;
+            m2y += mult * w * qy[ky] * qy[ky];
             bins.add(
                 (rx * rx + ry[ky] * ry[ky]).sqrt(),
                 w * area / count,
@@ -269,10 +275,17 @@ pub(crate) fn map(
     drop(t);
     let q0 = 2.0 * PI / lx.max(ly);
     let table = MomentTable::from_discrete(Dim::Areal, q0, terms).map_err(Problem::Table)?;
+    let slopes = Slopes {
+        x: m2x.sqrt(),
+        y: m2y.sqrt(),
+    };
+    let mut notes = notes;
+    notes.extend(slopes.note());
     Ok(Computed {
         table,
         spectrum: bins.finish(),
         notes,
+        slopes: Some(slopes),
     })
 }
 
@@ -307,6 +320,7 @@ pub(crate) fn line(mut h: Vec<f64>, l: f64, periodic: bool) -> Result<Computed, 
         table,
         spectrum: bins.finish(),
         notes,
+        slopes: None,
     })
 }
 
