@@ -23,10 +23,7 @@ pub fn load_source(src: &Source, setup: &Setup) -> anyhow::Result<State> {
     let mut state = if let Some(path) = &src.load {
         snapshot::load_file(path)?
     } else if let Some(path) = &src.surface {
-        State::measured(surface::SurfaceSource::read(
-            path,
-            setup.surface_options(),
-        )?)?
+        State::measured(surface::SurfaceSource::read(path, setup.surface_options())?)?
     } else {
         presets::load(src.preset.as_deref().unwrap_or("fig2"))?
     };

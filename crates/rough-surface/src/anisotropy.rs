@@ -29,7 +29,7 @@ impl Slopes {
     /// Whether the ratio, either way, passes [`RATIO`].
     pub fn anisotropic(&self) -> bool {
         let r = self.ratio();
-        r > RATIO || r < 1.0 / RATIO
+        !(1.0 / RATIO..=RATIO).contains(&r)
     }
 
     /// Ψ_P of the profiles along x and along y: (E/H0) √(m2/2) with m2
