@@ -18,9 +18,9 @@ mod matrix;
 mod profiles;
 mod psd;
 mod spectrum;
+mod stream;
 mod text;
 
-use std::io::Read;
 use std::path::Path;
 use std::sync::Arc;
 
@@ -161,14 +161,25 @@ pub fn read(path: &Path, opts: &Options) -> Result<Measured, SurfaceError> {
     if meta.len() > MAX_BYTES {
         return Err(fail(None, Problem::TooLarge(meta.len())));
     }
-    let mut bytes = Vec::new();
-    std::fs::File::open(path)
-        .and_then(|f| f.take(MAX_BYTES + 1).read_to_end(&mut bytes))
-        .map_err(|e| fail(None, Problem::Read(e.to_string())))?;
-    if bytes.len() as u64 > MAX_BYTES {
-        return Err(fail(None, Problem::TooLarge(bytes.len() as u64)));
+    let file = std::fs::File::open(path).map_err(|e| fail(None, Problem::Read(e.to_string())))?;
+    match stream::read(file, meta.len()).map_err(|(line, problem)| fail(line, problem))? {
+        stream::Streamed::Whole(bytes) => {
+            if bytes.len() as u64 > MAX_BYTES {
+                return Err(fail(None, Problem::TooLarge(bytes.len() as u64)));
+            }
+            parse(&bytes, opts).map_err(|(line, problem)| fail(line, problem))
+        }
+        stream::Streamed::Matrix { head, rest, sha256 } => {
+            let read = || -> Result<Reading, (Option<usize>, Problem)> {
+                check_options(opts)?;
+                not_a_download(opts)?;
+                from_scan(None, rest.scan(&head)?, opts)
+            };
+            read()
+                .map(|r| measured(r, sha256))
+                .map_err(|(line, problem)| fail(line, problem))
+        }
     }
-    parse(&bytes, opts).map_err(|(line, problem)| fail(line, problem))
 }
 
 /// The SHA-256 of `bytes`, lower-case hex (what a snapshot records).
@@ -189,14 +200,7 @@ pub fn sha256_hex(bytes: &[u8]) -> String {
 /// - two columns: a line scan `x z` or a PSD table `q C^iso`
 ///   (`columns`' rules).
 pub fn parse(bytes: &[u8], opts: &Options) -> Result<Measured, (Option<usize>, Problem)> {
-    if let Some(p) = opts.pixel_size {
-        if !(p.is_finite() && p > 0.0) {
-            return Err((
-                None,
-                Problem::Option(format!("--pixel-size {p} m must be finite and > 0")),
-            ));
-        }
-    }
+    check_options(opts)?;
     let text = std::str::from_utf8(bytes).map_err(|e| {
         let line = bytes[..e.valid_up_to()]
             .iter()
@@ -212,8 +216,35 @@ pub fn parse(bytes: &[u8], opts: &Options) -> Result<Measured, (Option<usize>, P
         let read = read_text(text, opts);
         (hash.join().expect("hash thread"), read)
     });
-    let r = read?;
-    Ok(Measured {
+    Ok(measured(read?, sha256))
+}
+
+fn check_options(opts: &Options) -> Result<(), (Option<usize>, Problem)> {
+    match opts.pixel_size {
+        Some(p) if !(p.is_finite() && p > 0.0) => Err((
+            None,
+            Problem::Option(format!("--pixel-size {p} m must be finite and > 0")),
+        )),
+        _ => Ok(()),
+    }
+}
+
+/// `--series` is refused on what is not a contact.engineering download.
+fn not_a_download(opts: &Options) -> Result<(), (Option<usize>, Problem)> {
+    match &opts.series {
+        Some(s) => Err((
+            None,
+            Problem::Option(format!(
+                "--series '{s}' applies to a contact.engineering download of several \
+                 measurements, not to this file"
+            )),
+        )),
+        None => Ok(()),
+    }
+}
+
+fn measured(r: Reading, sha256: String) -> Measured {
+    Measured {
         kind: r.kind,
         table: Arc::new(r.computed.table),
         spectrum: r.computed.spectrum,
@@ -222,7 +253,7 @@ pub fn parse(bytes: &[u8], opts: &Options) -> Result<Measured, (Option<usize>, P
         notes: r.computed.notes,
         measurement: r.measurement,
         slopes: r.computed.slopes,
-    })
+    }
 }
 
 /// What [`read_text`] found.
@@ -245,22 +276,25 @@ fn read_text(text: &str, opts: &Options) -> Result<Reading, (Option<usize>, Prob
             measurement: r.measurement,
         });
     }
-    if let Some(s) = &opts.series {
-        return Err((
-            None,
-            Problem::Option(format!(
-                "--series '{s}' applies to a contact.engineering download of several \
-                 measurements, not to this file"
-            )),
-        ));
-    }
+    not_a_download(opts)?;
     let scan = text::scan(text, head)?;
+    from_scan(Some(text), scan, opts)
+}
+
+/// A scanned text file as a map, a line or a two-column table (`text`
+/// for the last: `None` when it was streamed, as only matrices are).
+fn from_scan(
+    text: Option<&str>,
+    scan: text::Scan<'_>,
+    opts: &Options,
+) -> Result<Reading, (Option<usize>, Problem)> {
     let header = header::Header::read(&scan.header)?;
-    if let Some(&(line, t)) = scan
+    if let Some((line, t)) = scan
         .later
         .iter()
         .find(|(l, t)| !header::Header::read(&[(*l, t)]).map_or(true, |h| h.is_empty()))
     {
+        let line = *line;
         return Err((
             Some(line),
             Problem::Several(format!(
@@ -274,10 +308,9 @@ fn read_text(text: &str, opts: &Options) -> Result<Reading, (Option<usize>, Prob
             Problem::Several("several channels: one channel per file, please".to_string()),
         ));
     }
-    let (kind, computed) = if header.has_size() || scan.cols != 2 {
-        matrix::read(scan, &header, opts)?
-    } else {
-        columns::read(text, scan, &header, opts)?
+    let (kind, computed) = match text {
+        Some(text) if !is_matrix(&header, scan.cols) => columns::read(text, scan, &header, opts)?,
+        _ => matrix::read(scan, &header, opts)?,
     };
     if let (Some(d), false) = (opts.direction, matches!(kind, Kind::Profiles { .. })) {
         return Err((
@@ -299,6 +332,12 @@ fn read_text(text: &str, opts: &Options) -> Result<Reading, (Option<usize>, Prob
         summary,
         measurement: None,
     })
+}
+
+/// Whether rows of `cols` numbers under `header` are a height matrix
+/// (else a two-column table).
+fn is_matrix(header: &header::Header, cols: usize) -> bool {
+    header.has_size() || cols != 2
 }
 
 /// A length for people: "12 µm".

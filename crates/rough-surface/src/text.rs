@@ -17,7 +17,7 @@ pub(crate) struct Scan<'a> {
     /// comment's text after `#`, trimmed; or a whole non-numeric line).
     pub header: Vec<(usize, &'a str)>,
     /// Comments after the first data row.
-    pub later: Vec<(usize, &'a str)>,
+    pub later: Vec<(usize, String)>,
     /// Numbers per row (the first row's).
     pub cols: usize,
     /// Every row's numbers, row after row.
@@ -111,16 +111,18 @@ fn row(data: &str, out: &mut Vec<f64>) -> Result<(usize, bool), Problem> {
     Ok((n, n > 0 && hard > 0))
 }
 
-/// A part of the body, parsed with line numbers relative to its start.
+/// A part of the body, parsed with line numbers relative to its start
+/// (0-based).
 #[derive(Default)]
-struct Chunk<'a> {
-    values: Vec<f64>,
-    row_lines: Vec<usize>,
-    comments: Vec<(usize, &'a str)>,
-    lines: usize,
+pub(crate) struct Chunk {
+    pub values: Vec<f64>,
+    pub row_lines: Vec<usize>,
+    pub comments: Vec<(usize, String)>,
+    /// Lines in the part (a last line without its end counts).
+    pub lines: usize,
 }
 
-fn parse_chunk(body: &str, cols: usize, per_value: usize) -> Result<Chunk<'_>, Failure> {
+pub(crate) fn parse_chunk(body: &str, cols: usize, per_value: usize) -> Result<Chunk, Failure> {
     let mut c = Chunk {
         values: Vec::with_capacity(body.len() / per_value + cols),
         ..Chunk::default()
@@ -136,7 +138,7 @@ fn parse_chunk(body: &str, cols: usize, per_value: usize) -> Result<Chunk<'_>, F
         }
         if got == 0 {
             if let Some(t) = comment {
-                c.comments.push((i, t));
+                c.comments.push((i, t.to_string()));
             }
             continue;
         }
@@ -176,7 +178,7 @@ pub(crate) struct Head<'a> {
     /// Header lines (see [`Scan::header`]).
     pub header: Vec<(usize, &'a str)>,
     /// The first data row's 1-based line, byte offset and field count.
-    first: Option<(usize, usize, usize)>,
+    pub first: Option<(usize, usize, usize)>,
 }
 
 /// Rows looked at to tell a closing comma from an empty last cell.
@@ -271,7 +273,7 @@ pub(crate) fn scan<'a>(text: &'a str, head: Head<'a>) -> Result<Scan<'a>, Failur
         parts.push(a);
         rest = b;
     }
-    let chunks: Vec<Result<Chunk<'_>, Failure>> = if parts.len() == 1 {
+    let chunks: Vec<Result<Chunk, Failure>> = if parts.len() == 1 {
         vec![parse_chunk(parts[0], cols, per_value)]
     } else {
         std::thread::scope(|sc| {
@@ -296,7 +298,7 @@ pub(crate) fn scan<'a>(text: &'a str, head: Head<'a>) -> Result<Scan<'a>, Failur
         s.values.extend_from_slice(&c.values);
         s.row_lines.extend(c.row_lines.iter().map(|l| l + line0));
         s.later
-            .extend(c.comments.iter().map(|&(l, t)| (l + line0, t)));
+            .extend(c.comments.into_iter().map(|(l, t)| (l + line0, t)));
         line0 += c.lines;
     }
     Ok(s)
@@ -311,7 +313,7 @@ mod tests {
         let t = "# a\nWidth: 3\n\n1 2 3\n4,5;6 # c\n\n# d\n7\t8 9\n";
         let s = scan(t, head(t).unwrap()).unwrap();
         assert_eq!(s.header, vec![(1, "a"), (2, "Width: 3")]);
-        assert_eq!(s.later, vec![(7, "d")]);
+        assert_eq!(s.later, vec![(7, "d".to_string())]);
         assert_eq!(s.cols, 3);
         assert_eq!(s.values, vec![1., 2., 3., 4., 5., 6., 7., 8., 9.]);
         assert_eq!(s.row_lines, vec![4, 5, 8]);
