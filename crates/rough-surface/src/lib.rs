@@ -15,6 +15,7 @@ mod fill;
 mod fit;
 mod header;
 mod matrix;
+mod prepare;
 mod profiles;
 mod psd;
 mod spectrum;

@@ -28,6 +28,7 @@ use rustfft::{Fft, FftPlanner};
 use crate::bins::Bins;
 use crate::error::Problem;
 use crate::fill;
+use crate::prepare;
 use crate::Slopes;
 
 /// What a surface's heights give the model and the screen.
@@ -42,7 +43,7 @@ pub(crate) struct Computed {
 
 /// The residual rms below which detrended heights count as nothing left
 /// (relative to the heights' rms about their mean): rounding leaves ~1e-16.
-const FLAT: f64 = 1e-10;
+pub(crate) const FLAT: f64 = 1e-10;
 
 fn threads() -> usize {
     std::thread::available_parallelism().map_or(1, |n| n.get().min(4))
@@ -100,33 +101,6 @@ pub(crate) fn detrend(h: &mut [f64], nx: usize, ny: usize, periodic: bool) -> Re
         return Err(Problem::Flat { plane: true });
     }
     Ok(())
-}
-
-/// Multiplies by SurfaceTopography's radial Hann window and returns the
-/// normalisation s² = N / Σ w² (the window scaled by s has mean square 1).
-fn window_2d(h: &mut [f64], nx: usize, ny: usize, lx: f64, ly: f64) -> f64 {
-    // get_window_2D: r from grid point (nx//2, ny//2) in physical units,
-    // w = 0.5 + 0.5 cos(π r / r_max) for r ≤ r_max = min(Lx, Ly)/2, else 0.
-    let maxr = lx.min(ly) / 2.0;
-    let (cx, cy) = ((nx / 2) as f64, (ny / 2) as f64);
-    let ax: Vec<f64> = (0..nx)
-        .map(|i| (lx * (i as f64 - cx) / nx as f64).powi(2))
-        .collect();
-    let mut sum = 0.0;
-    for (j, row) in h.chunks_exact_mut(nx).enumerate() {
-        let ay = (ly * (j as f64 - cy) / ny as f64).powi(2);
-        for (v, &a) in row.iter_mut().zip(&ax) {
-            let r = (a + ay).sqrt();
-            let w = if r > maxr {
-                0.0
-            } else {
-                0.5 + 0.5 * (PI * r / maxr).cos()
-            };
-            *v *= w;
-            sum += w * w;
-        }
-    }
-    (nx * ny) as f64 / sum
 }
 
 /// scipy.signal.get_window('hann', n): the periodic Hann window; returns
@@ -218,12 +192,7 @@ pub(crate) fn map(
     periodic: bool,
 ) -> Result<Computed, Problem> {
     let notes: Vec<String> = fill::fill(&mut h, nx, ny, periodic)?.into_iter().collect();
-    detrend(&mut h, nx, ny, periodic)?;
-    let s2 = if periodic {
-        1.0
-    } else {
-        window_2d(&mut h, nx, ny, lx, ly)
-    };
+    let s2 = prepare::prepare(&mut h, (nx, ny), (lx, ly), periodic)?;
     let mut planner = FftPlanner::<f64>::new();
     let nh = nx / 2 + 1;
     let half = rows_half(&h, nx, ny, &planner.plan_fft_forward(nx));
