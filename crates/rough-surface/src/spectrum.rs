@@ -212,34 +212,64 @@ pub(crate) fn map(
         2.0 * PI * ny as f64 / ly / ny as f64,
     );
     let qmax = PI * (nx as f64 / lx).min(ny as f64 / ly);
-    let mut bins = Bins::new(gx.min(gy), qmax);
-    // ky and ny − ky lie at the same |q|: one term for both.
+    // ky and ny − ky lie at the same |q|: one term for both. Blocks of kx
+    // on several threads, each with its own bins and slope sums.
     let qy: Vec<f64> = (0..=ny / 2).map(|j| freq(j, ny, ly)).collect();
     let ry: Vec<f64> = (0..=ny / 2).map(|j| gy * j as f64).collect();
-    let mut terms = Vec::with_capacity(nh * (ny / 2 + 1));
-    let (mut m2x, mut m2y) = (0.0, 0.0);
-    for (kx, col) in t.chunks_exact(ny).enumerate() {
-        let mult = if kx == 0 || 2 * kx == nx { 1.0 } else { 2.0 };
-        let qx = freq(kx, nx, lx);
-        let rx = gx * kx as f64;
-        for ky in 0..=ny / 2 {
-            if kx == 0 && ky == 0 {
-                continue;
-            }
-            let (w, count) = if ky == 0 || 2 * ky == ny {
-                (col[ky].norm_sqr() * scale, 1.0)
-            } else {
-                ((col[ky].norm_sqr() + col[ny - ky].norm_sqr()) * scale, 2.0)
-            };
-            terms.push(((qx * qx + qy[ky] * qy[ky]).sqrt(), mult * w));
-            m2x += mult * w * qx * qx;
-            m2y += mult * w * qy[ky] * qy[ky];
-            bins.add(
-                (rx * rx + ry[ky] * ry[ky]).sqrt(),
-                w * area / count,
-                mult * count,
-            );
-        }
+    let my = ny / 2 + 1;
+    // Every (kx, ky) of the half grid; (0, 0), the mean, is dropped below.
+    let mut terms = vec![(0.0, 0.0); nh * my];
+    let per = nh.div_ceil(threads()).max(1);
+    let parts: Vec<(Bins, f64, f64)> = std::thread::scope(|s| {
+        let handles: Vec<_> = t
+            .chunks(per * ny)
+            .zip(terms.chunks_mut(per * my))
+            .enumerate()
+            .map(|(b, (cols, out))| {
+                let (qy, ry) = (&qy, &ry);
+                s.spawn(move || {
+                    let mut bins = Bins::new(gx.min(gy), qmax);
+                    let (mut m2x, mut m2y) = (0.0, 0.0);
+                    for (c, (col, out)) in cols.chunks_exact(ny).zip(out.chunks_mut(my)).enumerate()
+                    {
+                        let kx = b * per + c;
+                        let mult = if kx == 0 || 2 * kx == nx { 1.0 } else { 2.0 };
+                        let qx = freq(kx, nx, lx);
+                        let rx = gx * kx as f64;
+                        for (ky, term) in out.iter_mut().enumerate() {
+                            if kx == 0 && ky == 0 {
+                                continue;
+                            }
+                            let (w, count) = if ky == 0 || 2 * ky == ny {
+                                (col[ky].norm_sqr() * scale, 1.0)
+                            } else {
+                                ((col[ky].norm_sqr() + col[ny - ky].norm_sqr()) * scale, 2.0)
+                            };
+                            *term = ((qx * qx + qy[ky] * qy[ky]).sqrt(), mult * w);
+                            m2x += mult * w * qx * qx;
+                            m2y += mult * w * qy[ky] * qy[ky];
+                            bins.add(
+                                (rx * rx + ry[ky] * ry[ky]).sqrt(),
+                                w * area / count,
+                                mult * count,
+                            );
+                        }
+                    }
+                    (bins, m2x, m2y)
+                })
+            })
+            .collect();
+        handles
+            .into_iter()
+            .map(|h| h.join().expect("terms"))
+            .collect()
+    });
+    terms.swap_remove(0);
+    let (mut bins, mut m2x, mut m2y) = (Bins::new(gx.min(gy), qmax), 0.0, 0.0);
+    for (b, x, y) in &parts {
+        bins.merge(b);
+        m2x += x;
+        m2y += y;
     }
     drop(t);
     let q0 = 2.0 * PI / lx.max(ly);
