@@ -255,6 +255,9 @@ pub(crate) fn map(
                             );
                         }
                     }
+                    // Sorted here, on this thread: the table's own sort
+                    // then finds the merged terms in order.
+                    out.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
                     (bins, m2x, m2y)
                 })
             })
@@ -264,16 +267,17 @@ pub(crate) fn map(
             .map(|h| h.join().expect("terms"))
             .collect()
     });
-    terms.swap_remove(0);
+    drop(t);
+    let merged = merge_sorted(&terms, per * my);
+    drop(terms);
     let (mut bins, mut m2x, mut m2y) = (Bins::new(gx.min(gy), qmax), 0.0, 0.0);
     for (b, x, y) in &parts {
         bins.merge(b);
         m2x += x;
         m2y += y;
     }
-    drop(t);
     let q0 = 2.0 * PI / lx.max(ly);
-    let table = MomentTable::from_discrete(Dim::Areal, q0, terms).map_err(Problem::Table)?;
+    let table = MomentTable::from_discrete(Dim::Areal, q0, merged).map_err(Problem::Table)?;
     let slopes = Slopes {
         x: m2x.sqrt(),
         y: m2y.sqrt(),
@@ -286,6 +290,30 @@ pub(crate) fn map(
         notes,
         slopes: Some(slopes),
     })
+}
+
+/// The terms of `all`, sorted by q in blocks of `block`, merged in order;
+/// the mean's place (q = 0) left out.
+fn merge_sorted(all: &[(f64, f64)], block: usize) -> Vec<(f64, f64)> {
+    let mut heads: Vec<&[(f64, f64)]> = all.chunks(block).collect();
+    let mut out = Vec::with_capacity(all.len());
+    loop {
+        let mut best: Option<usize> = None;
+        for (k, h) in heads.iter().enumerate() {
+            if let Some(&(q, _)) = h.first() {
+                if best.is_none_or(|b| q < heads[b][0].0) {
+                    best = Some(k);
+                }
+            }
+        }
+        let Some(b) = best else { break };
+        let (first, rest) = heads[b].split_first().expect("a head");
+        if first.0 > 0.0 {
+            out.push(*first);
+        }
+        heads[b] = rest;
+    }
+    out
 }
 
 /// A line of n heights spanning l metres; undefined points (NaN) are
