@@ -164,23 +164,6 @@ fn rows_half(h: &[f64], nx: usize, ny: usize, fft: &Arc<dyn Fft<f64>>) -> Vec<Co
     out
 }
 
-/// Column FFTs of a column-major half spectrum (nh columns of ny).
-fn columns(t: &mut [Complex<f64>], ny: usize, fft: &Arc<dyn Fft<f64>>) {
-    let cols = t.len() / ny;
-    let per = cols.div_ceil(threads()).max(1);
-    std::thread::scope(|s| {
-        for block in t.chunks_mut(per * ny) {
-            let fft = Arc::clone(fft);
-            s.spawn(move || {
-                let mut scratch = vec![Complex::new(0.0, 0.0); fft.get_inplace_scratch_len()];
-                for col in block.chunks_mut(ny) {
-                    fft.process_with_scratch(col, &mut scratch);
-                }
-            });
-        }
-    });
-}
-
 /// A map of nx × ny heights (rows of nx along x, one row per y) spanning
 /// lx × ly metres; undefined points (NaN) are filled first.
 pub(crate) fn map(
@@ -197,10 +180,7 @@ pub(crate) fn map(
     let nh = nx / 2 + 1;
     let half = rows_half(&h, nx, ny, &planner.plan_fft_forward(nx));
     drop(h);
-    let mut t = vec![Complex::new(0.0, 0.0); half.len()];
-    transpose::transpose(&half, &mut t, nh, ny);
-    drop(half);
-    columns(&mut t, ny, &planner.plan_fft_forward(ny));
+    let fft_y = planner.plan_fft_forward(ny);
 
     let n2 = ((nx * ny) as f64).powi(2);
     let scale = s2 / n2;
@@ -220,19 +200,35 @@ pub(crate) fn map(
     // Every (kx, ky) of the half grid; (0, 0), the mean, is dropped below.
     let mut terms = vec![(0.0, 0.0); nh * my];
     let per = nh.div_ceil(threads()).max(1);
+    // The column FFTs a few columns at a time, gathered from the row-major
+    // half spectrum (no transposed copy), each column's terms made at once.
+    const COLS: usize = 8;
     let parts: Vec<(Bins, f64, f64)> = std::thread::scope(|s| {
-        let handles: Vec<_> = t
-            .chunks(per * ny)
-            .zip(terms.chunks_mut(per * my))
+        let handles: Vec<_> = terms
+            .chunks_mut(per * my)
             .enumerate()
-            .map(|(b, (cols, out))| {
-                let (qy, ry) = (&qy, &ry);
+            .map(|(b, out)| {
+                let (qy, ry, half) = (&qy, &ry, &half);
+                let fft = Arc::clone(&fft_y);
                 s.spawn(move || {
                     let mut bins = Bins::new(gx.min(gy), qmax);
                     let (mut m2x, mut m2y) = (0.0, 0.0);
-                    for (c, (col, out)) in cols.chunks_exact(ny).zip(out.chunks_mut(my)).enumerate()
-                    {
-                        let kx = b * per + c;
+                    let mut buf = vec![Complex::new(0.0, 0.0); COLS * ny];
+                    let mut scratch = vec![Complex::new(0.0, 0.0); fft.get_inplace_scratch_len()];
+                    let k0 = b * per;
+                    for (c, out) in out.chunks_mut(my).enumerate() {
+                        let kx = k0 + c;
+                        let slot = c % COLS;
+                        if slot == 0 {
+                            let n = COLS.min(nh - kx);
+                            for (j, row) in half.chunks_exact(nh).enumerate() {
+                                for (m, z) in row[kx..kx + n].iter().enumerate() {
+                                    buf[m * ny + j] = *z;
+                                }
+                            }
+                            fft.process_with_scratch(&mut buf[..n * ny], &mut scratch);
+                        }
+                        let col = &buf[slot * ny..(slot + 1) * ny];
                         let mult = if kx == 0 || 2 * kx == nx { 1.0 } else { 2.0 };
                         let qx = freq(kx, nx, lx);
                         let rx = gx * kx as f64;
@@ -267,7 +263,7 @@ pub(crate) fn map(
             .map(|h| h.join().expect("terms"))
             .collect()
     });
-    drop(t);
+    drop(half);
     let merged = merge_sorted(&terms, per * my);
     drop(terms);
     let (mut bins, mut m2x, mut m2y) = (Bins::new(gx.min(gy), qmax), 0.0, 0.0);
