@@ -135,6 +135,18 @@ impl Setup {
     }
 }
 
+impl BenchArgs {
+    /// How `--surface` is to be read.
+    pub fn surface_options(&self) -> rough_surface::Options {
+        rough_surface::Options {
+            periodic: self.periodic,
+            pixel_size: self.pixel_size,
+            series: self.series.clone(),
+            direction: self.direction.map(Into::into),
+        }
+    }
+}
+
 /// `--pixel-size`: a length > 0.
 fn parse_pixel_size(s: &str) -> Result<f64, String> {
     let v = crate::tui::value_input::parse_value(Axis::HRms, s)?;
