@@ -28,11 +28,23 @@ pub struct SurfaceFile {
         deserialize_with = "de_number"
     )]
     pub pixel_size: Option<f64>,
-    /// The measurement read from a download of several (`--series`).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    /// The measurement read from a download of several (`--series`);
+    /// written plain, `series: "steel"`.
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "ser_plain",
+        deserialize_with = "de_plain"
+    )]
     pub series: Option<String>,
-    /// A map read as its profiles along `x` or `y` (`--direction`).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    /// A map read as its profiles along `x` or `y` (`--direction`);
+    /// written plain, `direction: x`.
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "ser_plain",
+        deserialize_with = "de_plain"
+    )]
     pub direction: Option<DirectionName>,
 }
 
@@ -73,6 +85,17 @@ fn ser_number<S: Serializer>(v: &Option<f64>, s: S) -> Result<S::Ok, S::Error> {
 
 fn de_number<'de, D: Deserializer<'de>>(d: D) -> Result<Option<f64>, D::Error> {
     f64::deserialize(d).map(Some)
+}
+
+fn ser_plain<S: Serializer, T: Serialize>(v: &Option<T>, s: S) -> Result<S::Ok, S::Error> {
+    match v {
+        Some(v) => v.serialize(s),
+        None => s.serialize_none(),
+    }
+}
+
+fn de_plain<'de, D: Deserializer<'de>, T: Deserialize<'de>>(d: D) -> Result<Option<T>, D::Error> {
+    T::deserialize(d).map(Some)
 }
 
 pub(super) fn ser<S: Serializer>(v: &Option<SurfaceFile>, s: S) -> Result<S::Ok, S::Error> {
