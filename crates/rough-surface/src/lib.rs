@@ -10,6 +10,7 @@ mod anisotropy;
 mod bins;
 mod ce;
 mod columns;
+mod decimal;
 mod error;
 mod fill;
 mod fit;

@@ -45,6 +45,9 @@ fn fields(data: &str) -> impl Iterator<Item = &str> {
 /// One field as a number: finite, or NaN for an undefined point (`nan`,
 /// `NaN`, `-nan` as C and numpy print it); infinities are refused.
 pub(crate) fn number(field: &str) -> Result<f64, Problem> {
+    if let Some(v) = crate::decimal::fast(field) {
+        return Ok(v);
+    }
     match field.parse::<f64>() {
         Ok(v) if v.is_finite() => Ok(v),
         Ok(v) if v.is_nan() => Ok(f64::NAN),
