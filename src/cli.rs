@@ -100,6 +100,11 @@ pub struct Setup {
     /// every view then shows that direction alone.
     #[arg(long, value_enum, value_name = "x|y", requires = "surface")]
     pub direction: Option<DirectionArg>,
+    /// The channel of a file of several (Gwyddion's .gwy, its ASCII
+    /// exports concatenated): its number or its title (the first channel of
+    /// heights when not given).
+    #[arg(long, value_name = "N|TITLE", requires = "surface")]
+    pub channel: Option<String>,
     /// Set a parameter, e.g. --set h0-over-e=0.001 --set r-star=0.5mm
     /// (repeatable; units as the value prompt takes them). AXIS is one of
     /// h0-over-e, h-rms, zeta, hurst, r-star.
@@ -131,6 +136,7 @@ impl Setup {
             pixel_size: self.pixel_size,
             series: self.series.clone(),
             direction: self.direction.map(Into::into),
+            channel: self.channel.clone(),
         }
     }
 }
@@ -143,6 +149,7 @@ impl BenchArgs {
             pixel_size: self.pixel_size,
             series: self.series.clone(),
             direction: self.direction.map(Into::into),
+            channel: self.channel.clone(),
         }
     }
 }
@@ -405,6 +412,9 @@ pub struct BenchArgs {
     /// A map's profiles along x or y (as for the explorer).
     #[arg(long, value_enum, value_name = "x|y", requires = "surface")]
     pub direction: Option<DirectionArg>,
+    /// The channel of a file of several (as for the explorer).
+    #[arg(long, value_name = "N|TITLE", requires = "surface")]
+    pub channel: Option<String>,
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]

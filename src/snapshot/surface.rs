@@ -46,6 +46,10 @@ pub struct SurfaceFile {
         deserialize_with = "de_plain"
     )]
     pub direction: Option<DirectionName>,
+    /// The channel read of a file of several (its number or title), when
+    /// one was chosen.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub channel: Option<String>,
 }
 
 /// `direction: x` or `direction: y` in a snapshot.
@@ -159,6 +163,7 @@ pub(super) fn read(sf: &SurfaceFile, base: Option<&Path>) -> Result<SurfaceSourc
         pixel_size: sf.pixel_size,
         series: sf.series.clone(),
         direction: sf.direction.map(Into::into),
+        channel: sf.channel.clone(),
     };
     let mut src = SurfaceSource::read(&path, options).map_err(|e| {
         let missing = matches!(&e.problem, Problem::Read(_)) && !path.exists();
@@ -191,5 +196,6 @@ pub(super) fn file_of(src: &SurfaceSource, base: Option<&Path>) -> SurfaceFile {
         pixel_size: src.options.pixel_size,
         series: src.options.series.clone(),
         direction: src.options.direction.map(Into::into),
+        channel: src.options.channel.clone(),
     }
 }

@@ -73,6 +73,9 @@ pub enum Problem {
     /// An undefined value (NaN, an empty cell) where only heights may be
     /// undefined: a position, a wavevector, a PSD value.
     UndefinedValue(&'static str),
+    /// A binary file (x3p, .gwy) that is damaged or holds what is not
+    /// read, or a file in a format not read (with what to do about it).
+    Format(String),
 }
 
 impl fmt::Display for Problem {
@@ -157,6 +160,7 @@ impl fmt::Display for Problem {
                 crate::fill::share(*count, *total),
                 crate::MAX_UNDEFINED * 100.0
             ),
+            Problem::Format(s) => write!(f, "{s}"),
         }
     }
 }

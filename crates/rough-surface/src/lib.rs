@@ -9,19 +9,24 @@
 mod anisotropy;
 mod bins;
 mod ce;
+mod channels;
 mod columns;
 mod decimal;
 mod error;
 mod fill;
 mod fit;
+mod grid;
+mod gwy;
 mod header;
 mod matrix;
 mod prepare;
 mod profiles;
 mod psd;
+mod sniff;
 mod spectrum;
 mod stream;
 mod text;
+mod x3p;
 
 use std::path::Path;
 use std::sync::Arc;
@@ -33,6 +38,7 @@ pub use anisotropy::{Slopes, RATIO as ANISOTROPY_RATIO};
 pub use error::{Problem, SurfaceError};
 pub use fill::MAX_UNDEFINED;
 pub use fit::PowerLawFit;
+pub use grid::Grid;
 
 /// Files larger than this are refused before they are read (512 MiB).
 pub const MAX_BYTES: u64 = 512 << 20;
@@ -50,6 +56,10 @@ pub struct Options {
     /// A map read as its profiles along one direction (line-scan
     /// conventions, [`Kind::Profiles`]) instead of as an area.
     pub direction: Option<Direction>,
+    /// The channel to read of a file of several: its number (a .gwy's N of
+    /// `/N/data`; a text file's channels from 0 in order) or its title;
+    /// `None` takes the first whose values are heights (a unit of length).
+    pub channel: Option<String>,
 }
 
 /// A direction on a map: x along its rows, y across them.
@@ -163,13 +173,32 @@ pub fn read(path: &Path, opts: &Options) -> Result<Measured, SurfaceError> {
     if meta.len() > MAX_BYTES {
         return Err(fail(None, Problem::TooLarge(meta.len())));
     }
+    let ext = path
+        .extension()
+        .map(|e| e.to_string_lossy().to_ascii_lowercase())
+        .unwrap_or_default();
+    let whole = |bytes: Vec<u8>| {
+        if bytes.len() as u64 > MAX_BYTES {
+            return Err(fail(None, Problem::TooLarge(bytes.len() as u64)));
+        }
+        parse_file(&bytes, opts, &ext).map_err(|(line, problem)| fail(line, problem))
+    };
     let file = std::fs::File::open(path).map_err(|e| fail(None, Problem::Read(e.to_string())))?;
-    match stream::read(file, meta.len()).map_err(|(line, problem)| fail(line, problem))? {
-        stream::Streamed::Whole(bytes) => {
-            if bytes.len() as u64 > MAX_BYTES {
-                return Err(fail(None, Problem::TooLarge(bytes.len() as u64)));
-            }
-            parse(&bytes, opts).map_err(|(line, problem)| fail(line, problem))
+    match stream::read(file, meta.len(), &ext).map_err(|(line, problem)| fail(line, problem))? {
+        stream::Streamed::Whole(bytes) => whole(bytes),
+        // Header lines after the data: several channels, read whole.
+        stream::Streamed::Matrix { rest, .. } if rest.has_headers() || opts.channel.is_some() => {
+            drop(rest);
+            let mut bytes = Vec::new();
+            std::fs::File::open(path)
+                .and_then(|f| {
+                    std::io::Read::read_to_end(
+                        &mut std::io::Read::take(f, MAX_BYTES + 1),
+                        &mut bytes,
+                    )
+                })
+                .map_err(|e| fail(None, Problem::Read(e.to_string())))?;
+            whole(bytes)
         }
         stream::Streamed::Matrix { head, rest, sha256 } => {
             let read = || -> Result<Reading, (Option<usize>, Problem)> {
@@ -178,7 +207,7 @@ pub fn read(path: &Path, opts: &Options) -> Result<Measured, SurfaceError> {
                 from_scan(None, rest.scan(&head)?, opts)
             };
             read()
-                .map(|r| measured(r, sha256))
+                .map(|r| measured(r, sha256, Vec::new()))
                 .map_err(|(line, problem)| fail(line, problem))
         }
     }
@@ -196,29 +225,118 @@ pub fn sha256_hex(bytes: &[u8]) -> String {
 /// line it is about, if any. The format is detected from the content (see
 /// docs/surfaces.md, "Reading the file"):
 ///
-/// - a contact.engineering TXT download (a `# Columns:` header);
-/// - a height matrix: a size header (`# Width:`/`# Height:`), or one, or
-///   three or more numbers per row; one row or one column is a line scan;
-/// - two columns: a line scan `x z` or a PSD table `q C^iso`
-///   (`columns`' rules).
+/// - ISO 25178-72 x3p (a zip holding `main.xml`) and Gwyddion's .gwy
+///   (`GWYP`): maps and profiles;
+/// - text, UTF-8 or else Windows-1252, with decimal points or (when the
+///   first data row has them) decimal commas:
+///   - a contact.engineering TXT download (a `# Columns:` header);
+///   - a height matrix: a size header (`# Width:`/`# Height:`), or one, or
+///     four or more numbers per row; one row or one column is a line
+///     scan (three numbers a row are an XYZ point cloud, refused with
+///     what to do);
+///   - two columns: a line scan `x z` or a PSD table `q C^iso`
+///     (`columns`' rules);
+/// - any other format recognised (NetCDF, HDF5, .npy, TIFF, Zygo, Keyence,
+///   Nanoscope …) is refused with a line saying how to convert it.
 pub fn parse(bytes: &[u8], opts: &Options) -> Result<Measured, (Option<usize>, Problem)> {
+    parse_file(bytes, opts, "")
+}
+
+/// The heights of an x3p or .gwy file as the file holds them, before any
+/// detrending (undefined points NaN); text and other formats are refused.
+pub fn read_grid(bytes: &[u8], opts: &Options) -> Result<Grid, (Option<usize>, Problem)> {
+    match sniff::format(bytes, "") {
+        sniff::Format::X3p => x3p::read(bytes),
+        sniff::Format::Gwy => gwy::read(bytes, opts.channel.as_deref()),
+        sniff::Format::Other(s) => Err((None, Problem::Format(s))),
+        sniff::Format::Text => Err((
+            None,
+            Problem::Format("text: not an x3p or .gwy file".to_string()),
+        )),
+    }
+}
+
+/// [`parse`], told the file's extension (lower case) for formats that
+/// have no magic bytes of their own.
+fn parse_file(
+    bytes: &[u8],
+    opts: &Options,
+    ext: &str,
+) -> Result<Measured, (Option<usize>, Problem)> {
     check_options(opts)?;
-    let text = std::str::from_utf8(bytes).map_err(|e| {
-        let line = bytes[..e.valid_up_to()]
-            .iter()
-            .filter(|&&b| b == b'\n')
-            .count()
-            + 1;
-        (Some(line), Problem::NotText)
-    })?;
-    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let format = sniff::format(bytes, ext);
+    let no_channels = || {
+        Err((
+            None,
+            Problem::Option(
+                "--channel applies to files of several channels (Gwyddion's .gwy, \
+                 its ASCII exports concatenated)"
+                    .to_string(),
+            ),
+        ))
+    };
+    if opts.channel.is_some() && format == sniff::Format::X3p {
+        return no_channels();
+    }
+    let mut notes = Vec::new();
+    let text = match format {
+        sniff::Format::Other(s) => return Err((None, Problem::Format(s))),
+        sniff::Format::X3p | sniff::Format::Gwy => {
+            not_a_download(opts)?;
+            let (sha256, read) = std::thread::scope(|s| {
+                let hash = s.spawn(|| sha256_hex(bytes));
+                let read = read_grid(bytes, opts).and_then(|g| grid::compute(g, opts, &mut notes));
+                (hash.join().expect("hash thread"), read)
+            });
+            let (kind, computed) = read?;
+            if let (Some(d), Kind::Line { .. }) = (opts.direction, kind) {
+                return Err((
+                    None,
+                    Problem::Option(format!(
+                        "--direction {} applies to a map, not to a line scan",
+                        d.name()
+                    )),
+                ));
+            }
+            let what = if format == sniff::Format::X3p {
+                "x3p"
+            } else {
+                "Gwyddion .gwy"
+            };
+            let summary = format!("{what} {}", describe(&kind, opts, ""));
+            let r = Reading {
+                kind,
+                computed,
+                summary,
+                measurement: None,
+            };
+            return Ok(measured(r, sha256, notes));
+        }
+        sniff::Format::Text => {
+            let (text, mut assumed) = sniff::text(bytes)?;
+            notes.append(&mut assumed);
+            text
+        }
+    };
+    // Several channels: one is read.
+    let blocks = channels::blocks(&text)?;
+    let (text, skipped) = if blocks.is_empty() {
+        if opts.channel.is_some() {
+            return no_channels();
+        }
+        (&text[..], 0)
+    } else {
+        let (b, note) = channels::pick(&blocks, opts.channel.as_deref())?;
+        notes.push(note);
+        (b.text, b.first_line - 1)
+    };
     // The hash runs beside the parse.
     let (sha256, read) = std::thread::scope(|s| {
         let hash = s.spawn(|| sha256_hex(bytes));
-        let read = read_text(text, opts);
+        let read = read_text(text, opts).map_err(|(l, p)| (l.map(|l| l + skipped), p));
         (hash.join().expect("hash thread"), read)
     });
-    Ok(measured(read?, sha256))
+    Ok(measured(read?, sha256, notes))
 }
 
 fn check_options(opts: &Options) -> Result<(), (Option<usize>, Problem)> {
@@ -245,14 +363,16 @@ fn not_a_download(opts: &Options) -> Result<(), (Option<usize>, Problem)> {
     }
 }
 
-fn measured(r: Reading, sha256: String) -> Measured {
+/// The surface read, the reader's `notes` before the pipeline's.
+fn measured(r: Reading, sha256: String, mut notes: Vec<String>) -> Measured {
+    notes.extend(r.computed.notes);
     Measured {
         kind: r.kind,
         table: Arc::new(r.computed.table),
         spectrum: r.computed.spectrum,
         sha256,
         summary: r.summary,
-        notes: r.computed.notes,
+        notes,
         measurement: r.measurement,
         slopes: r.computed.slopes,
     }
@@ -308,6 +428,15 @@ fn from_scan(
         return Err((
             Some(header.channels[1]),
             Problem::Several("several channels: one channel per file, please".to_string()),
+        ));
+    }
+    if scan.cols == 3 && scan.rows() >= 4 && !header.has_size() {
+        return Err((
+            scan.row_lines.first().copied(),
+            Problem::Format(format!(
+                "three numbers a row: looks like an XYZ point cloud (x y z), {}",
+                sniff::XYZ_HINT
+            )),
         ));
     }
     let (kind, computed) = match text {

@@ -51,6 +51,14 @@ pub(crate) struct Rest {
 }
 
 impl Rest {
+    /// Whether a comment after the first row is a header line (another
+    /// channel follows: the file is read whole).
+    pub fn has_headers(&self) -> bool {
+        self.later.iter().any(|(l, t)| {
+            crate::header::Header::read(&[(*l, t.as_str())]).map_or(true, |h| !h.is_empty())
+        })
+    }
+
     /// The scan of the file, its header lines read from `head`.
     pub fn scan<'a>(self, head: &'a str) -> Result<Scan<'a>, Failure> {
         let h = text::head(head)?;
@@ -83,13 +91,19 @@ fn utf8(bytes: &[u8], line0: usize) -> Result<&str, Failure> {
     })
 }
 
-/// Reads `file` of `len` bytes: streamed when it is a large matrix.
-pub(crate) fn read(file: impl Read, len: u64) -> Result<Streamed, Failure> {
-    read_in(file, len, STREAM_FROM, BLOCK)
+/// Reads `file` of `len` bytes (its name's extension `ext`): streamed when
+/// it is a large matrix of UTF-8 text with decimal points.
+pub(crate) fn read(file: impl Read, len: u64, ext: &str) -> Result<Streamed, Failure> {
+    read_in(file, (len, ext), STREAM_FROM, BLOCK)
 }
 
 /// [`read`] streaming from `from` bytes on, in blocks of `block`.
-fn read_in(mut file: impl Read, len: u64, from: u64, block: usize) -> Result<Streamed, Failure> {
+fn read_in(
+    mut file: impl Read,
+    (len, ext): (u64, &str),
+    from: u64,
+    block: usize,
+) -> Result<Streamed, Failure> {
     let mut first = Vec::with_capacity(if len < from { len as usize + 1 } else { block });
     if len < from {
         fill(&mut file, &mut first, crate::MAX_BYTES as usize + 1).map_err(|p| (None, p))?;
@@ -121,8 +135,19 @@ fn read_in(mut file: impl Read, len: u64, from: u64, block: usize) -> Result<Str
             return whole(first, file);
         }
     };
-    let h = text::head(head_text)?;
-    let header = crate::header::Header::read(&h.header)?;
+    // Anything but plain UTF-8 text with decimal points (a binary format,
+    // Windows-1252, decimal commas) and any header it cannot read are left
+    // to the whole file's reading, which names them.
+    let plain = crate::sniff::format(&first, ext) == crate::sniff::Format::Text
+        && crate::sniff::text(&first).is_ok_and(|(_, assumed)| assumed.is_empty());
+    let h = text::head(head_text).ok().filter(|_| plain);
+    let header = h
+        .as_ref()
+        .and_then(|h| crate::header::Header::read(&h.header).ok());
+    let (Some(h), Some(header)) = (h, header) else {
+        first.extend_from_slice(&tail);
+        return whole(first, file);
+    };
     let matrix = match h.first {
         Some((_, _, cols)) => !crate::ce::is_ce(&h.header) && crate::is_matrix(&header, cols),
         None => false,
@@ -294,12 +319,12 @@ mod tests {
 
     fn streamed(text: &str, block: usize) -> Result<crate::Measured, Failure> {
         let bytes = text.as_bytes();
-        match read_in(bytes, bytes.len() as u64, 0, block)? {
+        match read_in(bytes, (bytes.len() as u64, ""), 0, block)? {
             Streamed::Whole(_) => panic!("not streamed"),
             Streamed::Matrix { head, rest, sha256 } => {
                 assert_eq!(sha256, crate::sha256_hex(bytes));
                 let r = crate::from_scan(None, rest.scan(&head)?, &Options::default())?;
-                Ok(crate::measured(r, sha256))
+                Ok(crate::measured(r, sha256, Vec::new()))
             }
         }
     }
@@ -338,7 +363,7 @@ mod tests {
         // Two columns are not streamed.
         let two = "1 2\n3 4\n5 6\n7 8\n";
         assert!(matches!(
-            read_in(two.as_bytes(), 16, 0, 4).unwrap(),
+            read_in(two.as_bytes(), (16, ""), 0, 4).unwrap(),
             Streamed::Whole(b) if b == two.as_bytes()
         ));
     }
