@@ -40,12 +40,7 @@ fn run(cli: Cli) -> anyhow::Result<()> {
         }
         Some(Command::Bench(a)) if check_only() => {
             if let Some(f) = &a.surface {
-                let options = rough_surface::Options {
-                    periodic: a.periodic,
-                    pixel_size: a.pixel_size,
-                    channel: a.channel.clone(),
-                };
-                roughtui::surface::SurfaceSource::read(f, options)?;
+                roughtui::surface::SurfaceSource::read(f, a.surface_options())?;
             }
             Ok(())
         }

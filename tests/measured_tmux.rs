@@ -108,7 +108,7 @@ fn a_bad_surface_file_is_one_message_and_status_2() {
     assert_eq!(p.exit_status(), 2);
     let s = p.wait_text("roughtui:");
     assert!(
-        s.contains("roughtui: bad surface bad.txt, line 3: NaN is not a finite number"),
+        s.contains("roughtui: bad surface bad.txt, line 3: an undefined PSD value"),
         "{s}"
     );
     assert_eq!(p.display("#{alternate_on}"), "0");
