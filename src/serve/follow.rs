@@ -61,7 +61,8 @@ pub enum Follow {
     /// explore: a lecturer who comes (back) does not take their scene.
     Away,
     /// A poll is on: the student answers on the poll's scene, and neither
-    /// the lecturer's moves nor their own keys change that.
+    /// the lecturer's moves (nor the lecturer leaving: the poll holds)
+    /// nor their own keys change that.
     Answering,
 }
 
@@ -88,6 +89,12 @@ impl Follow {
     /// Whether lecturer updates are shown.
     pub fn following(self) -> bool {
         self == Follow::Following
+    }
+
+    /// Whether the student is with the class: following the lecturer or
+    /// answering a poll (such a session never idles out).
+    pub fn in_class(self) -> bool {
+        matches!(self, Follow::Following | Follow::Answering)
     }
 
     /// A message the student's keys sent, before it is applied: the first
@@ -129,10 +136,6 @@ impl Follow {
             }
             (Follow::Detached, false) => {
                 *self = Follow::Away;
-                Effect::Say(NO_LECTURER)
-            }
-            (Follow::Answering, false) => {
-                *self = Follow::Alone;
                 Effect::Say(NO_LECTURER)
             }
             _ => Effect::None,
@@ -286,9 +289,10 @@ mod tests {
             assert!(f.following());
             assert_eq!(f.on_poll_end(true), Effect::None);
         }
+        // The lecturer's connection drops: the poll holds.
         let mut f = Follow::Answering;
-        assert_eq!(f.on_lecturer(false), Effect::Say(NO_LECTURER));
-        assert_eq!(f, Follow::Alone);
+        assert_eq!(f.on_lecturer(false), Effect::None);
+        assert_eq!(f, Follow::Answering);
         let mut f = Follow::Answering;
         assert_eq!(f.on_poll_end(false), Effect::Say(NO_LECTURER));
     }

@@ -2,7 +2,10 @@
 //! terminal, fed by the channel's bytes (decoded by [`input`]) and window
 //! changes, and, for a student, by the lecturer's state and the poll; for
 //! the lecturer, by the class list. It ends on `q` / Ctrl-C, when the client
-//! goes, stalls, or idles past `--idle-timeout`.
+//! goes or stalls, when the server stops, or after `--idle-timeout` without
+//! a key — only for a session neither lecturing nor following (answering
+//! a poll counts as following). When the server ends it, the client's
+//! terminal says why on its normal screen.
 
 use std::net::IpAddr;
 use std::sync::Arc;
@@ -54,8 +57,26 @@ pub fn spawn(start: Start) {
     tokio::spawn(run(start));
 }
 
+/// A session that only says why there is no explorer (the class is full)
+/// on the client's normal screen, then ends with status 1.
+pub fn refuse(channel: Channel<Msg>, why: String) {
+    tokio::spawn(async move {
+        let said = async {
+            let text = format!("roughtui: {why}\r\n");
+            let _ = channel.data(text.as_bytes()).await;
+            let _ = channel.exit_status(1).await;
+            let _ = channel.eof().await;
+            let _ = channel.close().await;
+        };
+        let _ = tokio::time::timeout(output::STALL, said).await;
+    });
+}
+
 /// What a student's picture key says instead of writing on the server.
 pub const NO_PICTURE: &str = "no pictures over SSH: s shows the snapshot to copy";
+
+/// What every client's terminal says when the server stops.
+pub const ENDED: &str = "the class has ended";
 
 /// How often the lecturer's open class list updates its idle times.
 const LIST_TICK: Duration = Duration::from_secs(1);
@@ -126,7 +147,8 @@ async fn run(start: Start) {
         client,
     } = start;
     let (mut read, write) = channel.split();
-    let slot = output::spawn(write, conn, kill);
+    let bye = output::Bye::default();
+    let slot = output::spawn(write, conn, kill, bye.clone());
     let buf = FrameBuf::default();
     let mut prelude = Vec::new();
     let _ = crossterm::execute!(prelude, EnterAlternateScreen, Hide);
@@ -191,9 +213,20 @@ async fn run(start: Start) {
     let mut deadline = Instant::now() + idle;
     let mut list_tick = Instant::now() + LIST_TICK;
     let mut dirty = true;
+    let mut ending = shared.ending.subscribe();
+    if *ending.borrow_and_update() {
+        bye.set(ENDED);
+        return;
+    }
 
     loop {
         let listing = is_lecturer && s.ex.app.mode == Mode::Class;
+        // Only a session neither lecturing nor following idles out; the
+        // others' idle time starts when they stop.
+        let idles = !is_lecturer && !s.follow.in_class();
+        if !idles {
+            deadline = Instant::now() + idle;
+        }
         tokio::select! {
             msg = read.wait() => {
                 let Some(msg) = msg else { break };
@@ -300,7 +333,17 @@ async fn run(start: Start) {
                 list_tick = Instant::now() + LIST_TICK;
                 dirty = true;
             }
-            () = sleep_until(deadline) => break,
+            () = sleep_until(deadline), if idles => {
+                bye.set(format!(
+                    "no key for {}: the session ended (ssh again to come back)",
+                    class::duration(idle)
+                ));
+                break;
+            }
+            _ = ending.changed() => {
+                bye.set(ENDED);
+                break;
+            }
             () = sleep_until(hint_until), if hint.is_some() => {
                 hint = None;
                 dirty = true;
@@ -309,7 +352,8 @@ async fn run(start: Start) {
                 let Ok(permit) = permit else { break };
                 let drawn = s.ex.draw_with(|app, f| {
                     let glyphs = app.theme.glyphs;
-                    if let Some(h) = &hint {
+                    // Not over a screen too small for the explorer.
+                    if let Some(h) = hint.as_ref().filter(|_| !app.too_small()) {
                         term::draw_hint(f, h, glyphs);
                     }
                     if let Some(p) = &panel {
@@ -357,7 +401,7 @@ fn on_key(s: &mut Seat, panel: &mut Option<Panel>, key: KeyEvent) -> bool {
             s.effect(e);
             return true;
         }
-        Message::Poll | Message::SavePoll | Message::Answer => {
+        Message::Poll | Message::SavePoll | Message::Answer | Message::CancelPoll => {
             poll::on_key(s, msg);
             return true;
         }

@@ -81,6 +81,8 @@ pub enum Message {
     Answer,
     /// The lecturer's `V`: a poll on a value they type.
     PollTyped,
+    /// The lecturer's `C`: cancel the open poll.
+    CancelPoll,
     /// The lecturer's class list, open or closed.
     ToggleClass,
     /// The next glyph set: braille, half blocks, blocks, ASCII (`M`).
@@ -554,8 +556,12 @@ pub fn update(app: &mut App, msg: Message) {
         },
         Message::PromptAccept => prompt::accept(app),
         Message::Resize(w, h) => app.size = (w, h),
-        Message::Follow | Message::Redraw | Message::Poll | Message::SavePoll | Message::Answer => {
-        }
+        Message::Follow
+        | Message::Redraw
+        | Message::Poll
+        | Message::SavePoll
+        | Message::Answer
+        | Message::CancelPoll => {}
         Message::PollTyped => {
             let axis = app.state.sweep.axis();
             app.mode = Mode::Truth(axis, LineEdit::new("", PROMPT_MAX_CHARS));

@@ -30,6 +30,8 @@ pub enum Context {
     Surface,
     /// A student's explorer while a poll waits for their answer.
     Answering,
+    /// A student's explorer showing a poll's result (until Enter).
+    Revealed,
     /// The lecturer's explorer in a served class.
     Lecturer,
     /// The lecturer's class list is open.
@@ -54,6 +56,9 @@ impl Context {
             || (self == Context::Answering
                 && app.mode == Mode::Main
                 && app.class.asked.is_some_and(|a| !a.revealed))
+            || (self == Context::Revealed
+                && app.mode == Mode::Main
+                && app.class.asked.is_some_and(|a| a.revealed))
     }
 
     fn is_role(self) -> bool {
@@ -73,7 +78,9 @@ impl Context {
             Context::Student => app.student,
             Context::NotStudent => !app.student,
             Context::Surface => app.home.is_some(),
-            Context::Follower | Context::Answering => app.student && app.lecturer_keys,
+            Context::Follower | Context::Answering | Context::Revealed => {
+                app.student && app.lecturer_keys
+            }
             Context::Lecturer => app.class.view.is_some(),
             // The class list's title names its keys.
             Context::ClassList => false,
@@ -146,7 +153,7 @@ pub struct Binding {
 
 use Context::{
     Answering, Any, ClassList, Follower, Help, Lecturer, Main, MainAndHelp, NotStudent, Prompt,
-    Student, Surface,
+    Revealed, Student, Surface,
 };
 use KeyCode::{
     BackTab, Backspace, Delete, Down, End, Enter, Esc, Home, Left, PageDown, PageUp, Right, Tab, Up,
@@ -193,11 +200,13 @@ const FINE_UP: Message = M::Step {
 #[rustfmt::skip]
 pub const BINDINGS: &[Binding] = &[
     bind(Answering, &[(key(Enter), M::Answer)], "Enter", "in a poll: answer with the marker's value", Some("⏎ answer")),
+    bind(Revealed, &[(key(Enter), M::Answer)], "Enter", "after the reveal: dismiss the result", Some("⏎ dismiss")),
     bind(Follower, &[(ch('f'), M::Follow)], "f", "follow the lecturer again", Some("f follow")),
     bind(Lecturer, &[(ch('v'), M::Poll)], "v", "poll: the class predicts; v again reveals", Some("v poll")),
     bind(Lecturer, &[(ch('V'), M::PollTyped)], "V", "poll on a value you type", None),
     bind(Lecturer, &[(ch('w'), M::ToggleClass)], "w", "the class list", Some("w class")),
-    bind(Lecturer, &[(ch('S'), M::SavePoll)], "S", "save the poll's answers here (.csv)", None),
+    bind(Lecturer, &[(ch('C'), M::CancelPoll)], "C", "cancel the open poll (its answers are dropped)", None),
+    bind(Lecturer, &[(ch('S'), M::SavePoll)], "S", "save the last poll's answers here (.csv)", None),
     bind(ClassList, &[(ch('w'), M::ToggleClass), (key(Esc), M::ToggleClass)], "w  Esc", "close the class list", None),
     bind(ClassList, &[(key(Right), M::HelpPage { next: true }), (key(PageDown), M::HelpPage { next: true }), (ch(' '), M::HelpPage { next: true }), (key(Left), M::HelpPage { next: false }), (key(PageUp), M::HelpPage { next: false })], "→ ←  PgDn PgUp", "next / previous page of the class list", None),
     bind(ClassList, &[(ch('q'), M::Quit), (ctrl('c'), M::Quit)], "q  Ctrl-C", "quit", None),
@@ -266,12 +275,28 @@ pub fn message_for_key(app: &App, ev: &KeyEvent) -> Option<Message> {
         return None;
     }
     // While the terminal is too small nothing is shown: only quitting and
-    // redrawing act.
+    // redrawing act; on a student's compact screen also following,
+    // moving the marker and answering.
     if app.too_small() {
-        return BINDINGS
+        let compact = super::views::compact::applies(app);
+        let moves = |m: &Message| {
+            matches!(
+                m,
+                M::Step { .. } | M::SelectPrev | M::SelectNext | M::Answer | M::Follow
+            )
+        };
+        let compact_key = BINDINGS
             .iter()
+            .filter(|b| compact && b.context.covers(app))
             .flat_map(|b| b.keys)
-            .find(|(k, m)| matches!(m, M::Quit | M::Redraw) && k.matches(ev))
+            .find(|(k, m)| moves(m) && k.matches(ev));
+        return compact_key
+            .or_else(|| {
+                BINDINGS
+                    .iter()
+                    .flat_map(|b| b.keys)
+                    .find(|(k, m)| matches!(m, M::Quit | M::Redraw) && k.matches(ev))
+            })
             .map(|(_, m)| *m);
     }
     for b in BINDINGS.iter().filter(|b| b.context.covers(app)) {

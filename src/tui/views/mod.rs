@@ -4,6 +4,7 @@
 
 mod chart;
 pub mod class;
+pub mod compact;
 mod indices;
 mod load;
 mod map;
@@ -30,7 +31,11 @@ use crate::figure::{Claim, View};
 impl Widget for &App {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let Some(r) = Regions::of(area) else {
-            render_too_small(self, area, buf);
+            if compact::applies(self) {
+                compact::render(self, area, buf);
+            } else {
+                render_too_small(self, area, buf);
+            }
             return;
         };
         render_header(self, r.header, buf);
@@ -155,7 +160,14 @@ fn render_caption(app: &App, area: Rect, buf: &mut Buffer) {
     let g = t.glyphs;
     let mut lines: Vec<Line> = class::class_line(app).into_iter().collect();
     let rows = usize::from(area.height.saturating_sub(1)).saturating_sub(lines.len());
-    let text = g.text(app.state.caption.as_deref().unwrap_or(""));
+    // While a poll is open the caption (which may name the answer) waits.
+    let open = app.class.open_question().is_some();
+    let caption = if open {
+        "(the caption shows after the reveal)"
+    } else {
+        app.state.caption.as_deref().unwrap_or("")
+    };
+    let text = g.text(caption);
     lines.extend(
         wrap(&text, usize::from(area.width), rows, g.cut())
             .into_iter()
@@ -164,6 +176,11 @@ fn render_caption(app: &App, area: Rect, buf: &mut Buffer) {
     lines.resize(usize::from(area.height.saturating_sub(1)), Line::raw(""));
     if let Some(poll) = class::poll_line(app, usize::from(area.width)) {
         lines.push(poll);
+        Paragraph::new(lines).render(area, buf);
+        return;
+    }
+    if let Some(line) = class::open_poll_line(app) {
+        lines.push(line);
         Paragraph::new(lines).render(area, buf);
         return;
     }
