@@ -17,6 +17,8 @@ use std::time::Instant;
 
 use tokio::sync::watch;
 
+use super::csv::csv_field;
+pub use super::csv::CSV_HEADER;
 use super::follow::Shown;
 use crate::csv_number;
 pub use crate::tui::class::duration;
@@ -60,25 +62,6 @@ pub fn clean_name(raw: &str) -> String {
 fn invisible(c: char) -> bool {
     matches!(c as u32, 0x200b..=0x200f | 0x202a..=0x202e | 0x2060..=0x206f | 0xfeff)
 }
-
-/// One field of a CSV row: quoted when it holds a comma, quote or line
-/// break; a leading `=`, `+`, `-` or `@` (which a spreadsheet would run as
-/// a formula) gets a `'` before it.
-fn csv_field(s: &str) -> String {
-    let s = if s.starts_with(['=', '+', '-', '@']) {
-        format!("'{s}")
-    } else {
-        s.to_string()
-    };
-    if s.contains([',', '"', '\n', '\r']) {
-        format!("\"{}\"", s.replace('"', "\"\""))
-    } else {
-        s
-    }
-}
-
-/// The first line of a poll's CSV.
-pub const CSV_HEADER: &str = "question,quantity,unit,truth,name,answer,offset";
 
 /// What a student's session tells the class.
 #[derive(Clone, Debug, PartialEq)]
@@ -474,15 +457,6 @@ mod tests {
         assert!(ctl.starts_with("\\x07\\x07"), "{ctl}");
         assert!(!ctl.chars().any(char::is_control));
         assert_eq!(clean_name(&"b".repeat(32)), "b".repeat(32));
-    }
-
-    #[test]
-    fn csv_fields_are_quoted_and_defused() {
-        assert_eq!(csv_field("alice"), "alice");
-        assert_eq!(csv_field("a,b"), "\"a,b\"");
-        assert_eq!(csv_field("say \"hi\""), "\"say \"\"hi\"\"\"");
-        assert_eq!(csv_field("=cmd()"), "'=cmd()");
-        assert_eq!(csv_field("-1,2"), "\"'-1,2\"");
     }
 
     #[test]

@@ -8,6 +8,7 @@ pub mod auth;
 pub mod banner;
 pub mod class;
 pub mod code;
+pub mod csv;
 pub mod follow;
 pub mod handler;
 pub mod host_key;
