@@ -7,6 +7,7 @@ pub mod cli;
 pub mod csv_number;
 pub mod export;
 pub mod figure;
+pub mod lesson;
 pub mod presets;
 pub mod serve;
 pub mod snapshot;

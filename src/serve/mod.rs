@@ -72,6 +72,8 @@ pub struct Options {
     pub quiet: bool,
     /// `--marker`: every session's glyphs, instead of each client's own.
     pub marker: Option<crate::tui::glyphs::Glyphs>,
+    /// `--lesson`: the lesson the lecturer leads.
+    pub lesson: Option<crate::lesson::Lesson>,
 }
 
 /// Connections over a limit that are still told so (the class is full),
@@ -102,6 +104,11 @@ pub struct Shared {
     lecturers: AtomicUsize,
     /// The poll CSVs written.
     saved: Mutex<Vec<PathBuf>>,
+    /// The lesson the lecturer leads, and its polls' CSV once written.
+    pub lesson: Option<Arc<crate::lesson::Lesson>>,
+    pub lesson_csv: Mutex<Option<PathBuf>>,
+    /// Moves on each lecturer's `F`: every student follows again.
+    pub all_follow: watch::Sender<u64>,
     /// Set when the server stops: every session says goodbye.
     pub ending: watch::Sender<bool>,
     /// Students' places (`--max-sessions`, `--max-per-address`), taken at
@@ -112,9 +119,20 @@ pub struct Shared {
 impl Shared {
     fn lecturer_joined(&self, app: &mut crate::tui::app::App) {
         self.lecturers.fetch_add(1, Ordering::SeqCst);
+        if let Some(lesson) = &self.lesson {
+            app.class.lesson = Some(crate::lesson::LessonAt {
+                lesson: Arc::clone(lesson),
+                at: 0,
+            });
+            crate::lesson::show(app);
+        }
         let last = self.last.lock().ok().and_then(|l| l.clone());
         if let Some(shown) = last {
             shown.apply(app);
+            // Back where the lesson was.
+            if let (Some(l), Some(step)) = (app.class.lesson.as_mut(), &shown.step) {
+                l.at = step.at - 1;
+            }
         }
         self.publish(app);
     }
@@ -235,6 +253,9 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         lecturers: AtomicUsize::new(0),
         saved: Mutex::new(Vec::new()),
         ending: watch::Sender::new(false),
+        all_follow: watch::Sender::new(0),
+        lesson: opts.lesson.map(Arc::new),
+        lesson_csv: Mutex::new(None),
         seats: Limits::new(opts.max_sessions, opts.max_per_address),
     });
     if shared.log.on() {

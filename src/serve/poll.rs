@@ -88,14 +88,26 @@ pub(super) fn on_key(s: &mut Seat, msg: Message) {
             match class.poll() {
                 Some(p) if !p.revealed => {
                     class.reveal();
+                    // The lesson's step has had its poll: its answer shows.
+                    if let Some(step) = app.class.step.as_mut() {
+                        step.pending = None;
+                    }
                     let q = &p.question;
-                    app.set_status(
-                        format!(
-                            "revealed: {} · S saves the answers · v asks again",
-                            q.value(q.truth)
-                        ),
+                    let saved = match to_lesson_csv(s) {
+                        Some(Ok(path)) => format!("answers added to {}", path.display()),
+                        Some(Err(e)) => format!("{e:#}"),
+                        None => "S saves the answers".into(),
+                    };
+                    s.ex.app.set_status(
+                        format!("revealed: {} · {saved} · v asks again", q.value(q.truth)),
                         false,
                     );
+                }
+                // A lesson's step with a value to poll: that value.
+                _ if step_value(app).is_some() => {
+                    if let Some(q) = step_value(app) {
+                        open(s, q);
+                    }
                 }
                 _ => match Question::of_claims(app.view, &app.claims) {
                     Some(q) => open(s, q),
@@ -117,6 +129,42 @@ pub(super) fn on_key(s: &mut Seat, msg: Message) {
         Message::SavePoll if s.is_lecturer() => save(s),
         _ => {}
     }
+}
+
+/// The poll of a lesson's step on a value, if the lecturer is at one.
+fn step_value(app: &crate::tui::app::App) -> Option<Question> {
+    let q = app.class.lesson.as_ref()?.step().poll?;
+    (q.ask == Ask::Typed && q.axis == app.state.sweep.axis()).then_some(q)
+}
+
+/// In a lesson, the revealed poll's rows appended to the lesson's one CSV
+/// (made at the first reveal, in the lecturer's save folder); `None`
+/// outside a lesson.
+fn to_lesson_csv(s: &Seat) -> Option<anyhow::Result<std::path::PathBuf>> {
+    use std::io::Write;
+    let lesson = s.shared.lesson.as_ref()?;
+    let rows = s.shared.class.csv_rows()?;
+    let mut slot = s.shared.lesson_csv.lock().ok()?;
+    let path = match slot.as_ref() {
+        Some(p) => p.clone(),
+        None => match crate::lesson::csv_path(&s.ex.app.save_dir, lesson) {
+            Ok(p) => {
+                s.shared.saved(p.clone());
+                *slot = Some(p.clone());
+                p
+            }
+            Err(e) => return Some(Err(e)),
+        },
+    };
+    let written = std::fs::OpenOptions::new()
+        .append(true)
+        .open(&path)
+        .and_then(|mut f| f.write_all(rows.as_bytes()));
+    Some(
+        written
+            .map(|()| path.clone())
+            .map_err(|e| anyhow::anyhow!("cannot add the answers to {}: {e}", path.display())),
+    )
 }
 
 /// After the lecturer's keys: a value typed at `V` opens a poll.

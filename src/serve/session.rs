@@ -26,7 +26,7 @@ use tokio::time::{sleep_until, Instant};
 
 use super::auth::Role;
 use super::class::{self, clean_name, Note, SeatId};
-use super::follow::{Effect, Follow, Shown, FOLLOWING};
+use super::follow::{Effect, Follow, Shown, CALLED_BACK, FOLLOWING};
 use super::input::{self, Decoder};
 use super::limits::clamp_size;
 use super::output::{self, FrameBuf};
@@ -214,6 +214,7 @@ async fn run(start: Start) {
     let mut list_tick = Instant::now() + LIST_TICK;
     let mut dirty = true;
     let mut ending = shared.ending.subscribe();
+    let mut all_follow = shared.all_follow.subscribe();
     if *ending.borrow_and_update() {
         bye.set(ENDED);
         return;
@@ -340,6 +341,17 @@ async fn run(start: Start) {
                 ));
                 break;
             }
+            changed = all_follow.changed(), if !is_lecturer => {
+                if changed.is_err() {
+                    break;
+                }
+                all_follow.mark_unchanged();
+                if s.follow.on_all_follow() == Effect::Catch {
+                    s.effect(Effect::Catch);
+                    s.ex.app.set_status(CALLED_BACK, false);
+                    dirty = true;
+                }
+            }
             _ = ending.changed() => {
                 bye.set(ENDED);
                 break;
@@ -399,6 +411,11 @@ fn on_key(s: &mut Seat, panel: &mut Option<Panel>, key: KeyEvent) -> bool {
         Message::Follow => {
             let e = s.follow.on_follow_key();
             s.effect(e);
+            return true;
+        }
+        Message::AllFollow if s.is_lecturer() => {
+            s.shared.all_follow.send_modify(|n| *n += 1);
+            s.ex.app.set_status("everyone follows you now", false);
             return true;
         }
         Message::Poll | Message::SavePoll | Message::Answer | Message::CancelPoll => {

@@ -83,6 +83,12 @@ pub enum Message {
     PollTyped,
     /// The lecturer's `C`: cancel the open poll.
     CancelPoll,
+    /// The lecturer's `F`: every student follows again.
+    AllFollow,
+    /// A lesson's next (`n`) or previous (`N`) step.
+    LessonStep {
+        next: bool,
+    },
     /// The lecturer's class list, open or closed.
     ToggleClass,
     /// The next glyph set: braille, half blocks, blocks, ASCII (`M`).
@@ -561,7 +567,9 @@ pub fn update(app: &mut App, msg: Message) {
         | Message::Poll
         | Message::SavePoll
         | Message::Answer
-        | Message::CancelPoll => {}
+        | Message::CancelPoll
+        | Message::AllFollow => {}
+        Message::LessonStep { next } => crate::lesson::step(app, next),
         Message::PollTyped => {
             let axis = app.state.sweep.axis();
             app.mode = Mode::Truth(axis, LineEdit::new("", PROMPT_MAX_CHARS));

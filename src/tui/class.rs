@@ -363,6 +363,12 @@ pub struct Classroom {
     /// The true value the lecturer typed for a new poll, until the server
     /// takes it.
     pub typed: Option<(Axis, f64)>,
+    /// The lesson led from this explorer (the lecturer's, or alone to
+    /// rehearse) and its step.
+    pub lesson: Option<crate::lesson::LessonAt>,
+    /// The lesson's step as every screen shows it (a student's from the
+    /// lecturer).
+    pub step: Option<crate::lesson::StepLine>,
 }
 
 impl Classroom {
@@ -372,6 +378,13 @@ impl Classroom {
         let asked = self.asked.filter(|a| !a.revealed).map(|a| a.question);
         let tally = self.view.as_ref().and_then(|v| v.poll.as_ref());
         asked.or_else(|| tally.filter(|t| !t.revealed).map(|t| t.question))
+    }
+
+    /// The question whose answer no screen shows: an open poll's, or the
+    /// poll a lesson's step is about to ask (until its reveal).
+    pub fn hidden_question(&self) -> Option<Question> {
+        self.open_question()
+            .or_else(|| self.step.as_ref().and_then(|s| s.pending))
     }
 }
 

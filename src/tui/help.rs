@@ -151,7 +151,7 @@ fn scene(app: &App, lines: &mut Vec<(bool, Line<'static>)>) {
     }
     let g = app.theme.glyphs;
     lines.push((true, Line::styled("this scene:", app.theme.title)));
-    if app.class.open_question().is_some() {
+    if app.class.hidden_question().is_some() {
         // A poll is open: what would answer it waits for the reveal.
         let l = " the caption and the claims show after the poll's reveal";
         lines.push((false, Line::raw(l)));

@@ -36,6 +36,9 @@ pub enum Context {
     Lecturer,
     /// The lecturer's class list is open.
     ClassList,
+    /// An explorer leading a lesson (`--lesson`: the lecturer, or alone to
+    /// rehearse).
+    Lesson,
     /// Everywhere: the explorer, the help, a prompt, a terminal too small.
     Any,
 }
@@ -69,6 +72,7 @@ impl Context {
                 | Context::Follower
                 | Context::Surface
                 | Context::Lecturer
+                | Context::Lesson
         )
     }
 
@@ -82,6 +86,7 @@ impl Context {
                 app.student && app.lecturer_keys
             }
             Context::Lecturer => app.class.view.is_some(),
+            Context::Lesson => app.class.lesson.is_some(),
             // The class list's title names its keys.
             Context::ClassList => false,
             _ => true,
@@ -152,8 +157,8 @@ pub struct Binding {
 }
 
 use Context::{
-    Answering, Any, ClassList, Follower, Help, Lecturer, Main, MainAndHelp, NotStudent, Prompt,
-    Revealed, Student, Surface,
+    Answering, Any, ClassList, Follower, Help, Lecturer, Lesson, Main, MainAndHelp, NotStudent,
+    Prompt, Revealed, Student, Surface,
 };
 use KeyCode::{
     BackTab, Backspace, Delete, Down, End, Enter, Esc, Home, Left, PageDown, PageUp, Right, Tab, Up,
@@ -203,10 +208,12 @@ pub const BINDINGS: &[Binding] = &[
     bind(Revealed, &[(key(Enter), M::Answer)], "Enter", "after the reveal: dismiss the result", Some("⏎ dismiss")),
     bind(Follower, &[(ch('f'), M::Follow)], "f", "follow the lecturer again", Some("f follow")),
     bind(Lecturer, &[(ch('v'), M::Poll)], "v", "poll: the class predicts; v again reveals", Some("v poll")),
-    bind(Lecturer, &[(ch('V'), M::PollTyped)], "V", "poll on a value you type", None),
+    bind(Lecturer, &[(ch('V'), M::PollTyped)], "V", "poll on a value you type", Some("V typed poll")),
     bind(Lecturer, &[(ch('w'), M::ToggleClass)], "w", "the class list", Some("w class")),
-    bind(Lecturer, &[(ch('C'), M::CancelPoll)], "C", "cancel the open poll (its answers are dropped)", None),
-    bind(Lecturer, &[(ch('S'), M::SavePoll)], "S", "save the last poll's answers here (.csv)", None),
+    bind(Lecturer, &[(ch('C'), M::CancelPoll)], "C", "cancel the open poll (its answers are dropped)", Some("C cancel")),
+    bind(Lecturer, &[(ch('F'), M::AllFollow)], "F", "everyone follow: pull every student back to you", Some("F all follow")),
+    bind(Lesson, &[(ch('n'), M::LessonStep { next: true }), (ch('N'), M::LessonStep { next: false })], "n N", "the lesson's next / previous step", Some("n N step")),
+    bind(Lecturer, &[(ch('S'), M::SavePoll)], "S", "save the last poll's answers here (.csv)", Some("S save poll")),
     bind(ClassList, &[(ch('w'), M::ToggleClass), (key(Esc), M::ToggleClass)], "w  Esc", "close the class list", None),
     bind(ClassList, &[(key(Right), M::HelpPage { next: true }), (key(PageDown), M::HelpPage { next: true }), (ch(' '), M::HelpPage { next: true }), (key(Left), M::HelpPage { next: false }), (key(PageUp), M::HelpPage { next: false })], "→ ←  PgDn PgUp", "next / previous page of the class list", None),
     bind(ClassList, &[(ch('q'), M::Quit), (ctrl('c'), M::Quit)], "q  Ctrl-C", "quit", None),

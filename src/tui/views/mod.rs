@@ -159,9 +159,13 @@ fn render_caption(app: &App, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
     let g = t.glyphs;
     let mut lines: Vec<Line> = class::class_line(app).into_iter().collect();
+    if let Some(step) = &app.class.step {
+        lines.push(Line::styled(g.text(&step.text()).into_owned(), t.title));
+    }
     let rows = usize::from(area.height.saturating_sub(1)).saturating_sub(lines.len());
     // While a poll is open the caption (which may name the answer) waits.
-    let open = app.class.open_question().is_some();
+    // (A lesson's captions are its author's, written for the poll.)
+    let open = app.class.open_question().is_some() && app.class.step.is_none();
     let caption = if open {
         "(the caption shows after the reveal)"
     } else {
@@ -181,6 +185,21 @@ fn render_caption(app: &App, area: Rect, buf: &mut Buffer) {
     }
     if let Some(line) = class::open_poll_line(app) {
         lines.push(line);
+        Paragraph::new(lines).render(area, buf);
+        return;
+    }
+    if let Some(q) = app.class.hidden_question() {
+        // A lesson's step about to poll: its question, not its answer.
+        let how = if app.class.view.is_some() || app.class.lesson.is_some() {
+            " · v opens the poll"
+        } else {
+            ""
+        };
+        let text = format!(
+            "this step asks: {}{how}",
+            q.text(&crate::tui::class::UNICODE)
+        );
+        lines.push(Line::styled(g.text(&text).into_owned(), t.title));
         Paragraph::new(lines).render(area, buf);
         return;
     }

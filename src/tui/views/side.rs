@@ -163,7 +163,7 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
     // While a poll is open the values that answer it are hidden: the
     // plastic share and the slopes for the share, the indices for Ψ = 1,
     // the slopes for the total slope's minimum.
-    let (hide_psi, hide_slopes) = match app.class.open_question().map(|q| q.ask) {
+    let (hide_psi, hide_slopes) = match app.class.hidden_question().map(|q| q.ask) {
         Some(Ask::Share { .. } | Ask::Minimum) => (false, true),
         Some(Ask::Index { .. }) => (true, false),
         _ => (false, false),
