@@ -9,31 +9,13 @@
 
 mod common;
 
-use std::path::{Path, PathBuf};
 use std::process::Command;
 
+use common::lecture::{csvs, lecturer_key, lecturer_line, modes};
 use common::room::Room;
 use common::serve::{have_ssh, Server};
 use common::tmux::have_tmux;
 use rough_model::Axis;
-
-/// A lecturer's key pair in `dir`: the private key's path.
-fn lecturer_key(dir: &Path) -> PathBuf {
-    let key = dir.join("lect");
-    assert!(Command::new("ssh-keygen")
-        .args(["-q", "-t", "ed25519", "-N", "", "-f"])
-        .arg(&key)
-        .status()
-        .unwrap()
-        .success());
-    key
-}
-
-/// The lecturer's OpenSSH command line.
-fn lecturer_line(srv: &Server, key: &Path) -> String {
-    let k = key.to_str().unwrap();
-    srv.ssh_line("lecturer", &["-t", "-i", k, "-o", "IdentitiesOnly=yes"])
-}
 
 /// ζ after `k` coarse steps up from `from` on fig2's sweep.
 fn stepped(from: f64, k: usize) -> f64 {
@@ -52,16 +34,6 @@ fn miss(answer: f64, truth: f64) -> String {
         format!("{pc:.0}")
     };
     format!("{pc} % {}", if answer < truth { "low" } else { "high" })
-}
-
-fn csvs(dir: &Path) -> Vec<PathBuf> {
-    let mut v: Vec<PathBuf> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "csv"))
-        .collect();
-    v.sort();
-    v
 }
 
 /// Nothing of fig2's answer (ζ = 321.5, "≈ 320" in the caption).
@@ -270,16 +242,6 @@ fn a_poll_holds_never_leaks_and_ends_as_the_lecturer_says() {
     room.wait("lect2", "nothing to save", 20, |s| {
         s.contains("no poll to save: v starts one")
     });
-}
-
-/// A pane's terminal modes: whether it is in the alternate screen and
-/// whether its cursor shows.
-fn modes(room: &Room, name: &str) -> (bool, bool) {
-    let t = format!("room:{name}");
-    let o = room.tmux(&["display", "-p", "-t", &t, "#{alternate_on} #{cursor_flag}"]);
-    let s = String::from_utf8_lossy(&o.stdout);
-    let mut f = s.split_whitespace().map(|w| w == "1");
-    (f.next().unwrap(), f.next().unwrap())
 }
 
 #[test]
@@ -528,186 +490,5 @@ fn the_banner_names_real_addresses_the_same_way_twice() {
     assert_eq!(
         b.last().unwrap(),
         &format!("students: ssh -p {port} {host}")
-    );
-}
-
-#[test]
-fn a_lesson_steps_polls_into_one_csv_and_everyone_follows() {
-    if !(have_ssh() && have_tmux()) {
-        return;
-    }
-    let dir = tempfile::tempdir().unwrap();
-    let key = lecturer_key(dir.path());
-    let keys = key.with_extension("pub");
-    let paper = Path::new(env!("CARGO_MANIFEST_DIR")).join("lessons/paper.ron");
-    let srv = Server::start(
-        dir.path(),
-        &[
-            "--lecturer-keys",
-            keys.to_str().unwrap(),
-            "--lesson",
-            paper.to_str().unwrap(),
-        ],
-    );
-    let room = Room::new("lesson", (100, 30));
-    room.open("lect", &lecturer_line(&srv, &key));
-    room.open("ann", &srv.ssh_line("ann", &["-t"]));
-    room.open("bob", &srv.ssh_line("bob", &["-t"]));
-    let all = ["lect", "ann", "bob"];
-    room.wait_all(&all, "step 1", 30, |s| {
-        s.contains("step 1/7 · The claim: realistic hardness is elastic")
-    });
-    // The lecturer's footer and help name the lecturer's keys.
-    let lect = room.capture("lect");
-    assert!(
-        lect.contains("v poll") && lect.contains("n N step"),
-        "{lect}"
-    );
-    room.keys("lect", &["?"]);
-    let help = room.wait("lect", "the help", 20, |s| s.contains("help 1/"));
-    for k in [" v ", " V ", " C ", " F ", " S ", " n N "] {
-        assert!(help.contains(k), "{k}:\n{help}");
-    }
-    room.keys("lect", &["Escape"]);
-    let claim = |fig: &str, i: usize| {
-        roughtui::figure::claims(&roughtui::presets::load(fig).unwrap())[i].at
-    };
-    // Three polls: fig1's share, fig2's share, fig3's minimum.
-    let polls = [
-        (
-            2,
-            "where does the plastic share fall below ½?",
-            claim("fig1", 0),
-        ),
-        (3, "where does the plastic share pass ½?", claim("fig2", 0)),
-        (5, "where is the total slope smallest?", claim("fig3", 0)),
-    ];
-    let mut at = 1;
-    for (step, question, truth) in polls {
-        while at < step {
-            room.keys("lect", &["n"]);
-            at += 1;
-        }
-        let screens = room.wait_all(&all, "the step", 30, |s| {
-            s.contains(&format!("step {step}/7 · "))
-        });
-        // Before the poll opens no screen gives its answer away.
-        let shown = roughtui::figure::short_number(truth);
-        for (i, s) in screens.iter().enumerate() {
-            assert!(!s.contains(&shown), "{shown}:\n{s}");
-            // (Bob has not dismissed the last reveal: it stays.)
-            if i < 2 {
-                assert!(s.contains(&format!("this step asks: {question}")), "{s}");
-            }
-        }
-        room.keys("lect", &["v"]);
-        room.wait_all(&["ann", "bob"], "the question", 30, |s| {
-            s.contains(&format!("Predict: {question}"))
-        });
-        room.keys("ann", &["Enter"]);
-        room.wait("lect", "ann's answer", 30, |s| s.contains("1/2 answered"));
-        room.keys("lect", &["v"]);
-        let lect = room.wait("lect", "the reveal", 30, |s| s.contains("answers added to"));
-        assert!(lect.contains("paper-polls-"), "{lect}");
-        room.wait("bob", "the reveal", 30, |s| {
-            s.contains("you did not answer")
-        });
-        room.wait("ann", "the model's answer", 30, |s| {
-            s.contains("the model: ") && s.contains(&format!(" = {shown} · you: "))
-        });
-        room.keys("ann", &["Enter"]);
-    }
-    let files = csvs(dir.path());
-    assert_eq!(files.len(), 1, "one CSV for the lesson: {files:?}");
-    let text = std::fs::read_to_string(&files[0]).unwrap();
-    let rows: Vec<Vec<&str>> = text
-        .lines()
-        .skip(1)
-        .map(|l| l.split(',').collect())
-        .collect();
-    assert_eq!(
-        text.lines().next(),
-        Some("question,quantity,unit,truth,name,answer,offset")
-    );
-    assert_eq!(rows.len(), 6, "{text}");
-    for (i, (_, question, truth)) in polls.iter().enumerate() {
-        let q = question.replace('½', "1/2");
-        for r in &rows[2 * i..2 * i + 2] {
-            assert_eq!(r[0], q, "{text}");
-            assert_eq!(r[3].parse::<f64>().unwrap(), *truth, "{text}");
-        }
-        assert_eq!(rows[2 * i][4], "ann");
-        assert_eq!(rows[2 * i + 1][4..6], ["bob", "no answer"]);
-    }
-    // N goes back; F pulls a student exploring alone back.
-    room.keys("lect", &["N"]);
-    room.wait_all(&all, "step 4", 30, |s| {
-        s.contains("step 4/7 · The index behind it")
-    });
-    room.keys("bob", &["m"]);
-    room.wait("bob", "on his own", 20, |s| {
-        s.contains("exploring on your own")
-    });
-    room.keys("lect", &["F"]);
-    room.wait("bob", "called back", 20, |s| {
-        s.contains("the lecturer asked everyone to follow: following again")
-    });
-    room.wait("lect", "all following", 20, |s| {
-        s.contains("2 following · 0 on their own")
-    });
-}
-
-#[test]
-fn a_lesson_is_rehearsed_alone_and_a_bad_one_is_refused() {
-    if !have_tmux() {
-        return;
-    }
-    let dir = tempfile::tempdir().unwrap();
-    let paper = Path::new(env!("CARGO_MANIFEST_DIR")).join("lessons/paper.ron");
-    let p = common::tmux::Pane::start(
-        "rehearse",
-        dir.path(),
-        (100, 30),
-        &[],
-        &["--lesson", paper.to_str().unwrap()],
-    );
-    p.wait_text("step 1/7 · The claim: realistic hardness is elastic");
-    p.keys(&["n"]);
-    let s = p.wait_text("step 2/7 · Poll: where does fig. 1 turn plastic?");
-    assert!(
-        s.contains("v opens this step's poll · n next step · N back"),
-        "{s}"
-    );
-    // Nothing of the answer before the poll: fig1's share passes ½ at
-    // E/H0 = 120.2.
-    assert!(
-        s.contains("this step asks: where does the plastic share fall below ½?"),
-        "{s}"
-    );
-    assert!(!s.contains("120.2"), "{s}");
-    for _ in 0..10 {
-        p.keys(&["n"]);
-    }
-    p.wait_text("the lesson's last step: N goes back");
-    p.keys(&["N"]);
-    p.wait_text("step 6/7 · Rougher and softer");
-    p.keys(&["q"]);
-    assert_eq!(p.exit_status(), 0);
-    // A bad lesson: exit 2 and where the problem is.
-    let bad = dir.path().join("bad.ron");
-    std::fs::write(
-        &bad,
-        "(title: \"t\", steps: [(title: \"a\", scene: Preset(\"fig9\"))])",
-    )
-    .unwrap();
-    let o = Command::new(common::tmux::BIN)
-        .args(["--lesson", bad.to_str().unwrap()])
-        .output()
-        .unwrap();
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert_eq!(o.status.code(), Some(2), "{err}");
-    assert!(
-        err.starts_with(&format!("roughtui: the lesson {}, step 1: ", bad.display())),
-        "{err}"
     );
 }

@@ -85,6 +85,14 @@ pub enum Message {
     CancelPoll,
     /// The lecturer's `F`: every student follows again.
     AllFollow,
+    /// The lecturer's scene list (`o`): open it, move in it, load the one
+    /// chosen, close it.
+    OpenScenes,
+    SceneMove {
+        down: bool,
+    },
+    ScenePick,
+    SceneClose,
     /// A lesson's next (`n`) or previous (`N`) step.
     LessonStep {
         next: bool,
@@ -570,6 +578,10 @@ pub fn update(app: &mut App, msg: Message) {
         | Message::CancelPoll
         | Message::AllFollow => {}
         Message::LessonStep { next } => crate::lesson::step(app, next),
+        Message::OpenScenes
+        | Message::SceneMove { .. }
+        | Message::ScenePick
+        | Message::SceneClose => super::scenes::update(app, msg),
         Message::PollTyped => {
             let axis = app.state.sweep.axis();
             app.mode = Mode::Truth(axis, LineEdit::new("", PROMPT_MAX_CHARS));

@@ -369,6 +369,8 @@ pub struct Classroom {
     /// The lesson's step as every screen shows it (a student's from the
     /// lecturer).
     pub step: Option<crate::lesson::StepLine>,
+    /// The lecturer's scene list, while open.
+    pub scenes: Option<crate::tui::scenes::SceneList>,
 }
 
 impl Classroom {

@@ -39,12 +39,17 @@ pub enum Context {
     /// An explorer leading a lesson (`--lesson`: the lecturer, or alone to
     /// rehearse).
     Lesson,
+    /// The lecturer's scene list is open.
+    Scenes,
     /// Everywhere: the explorer, the help, a prompt, a terminal too small.
     Any,
 }
 
 impl Context {
     fn covers(self, app: &App) -> bool {
+        if app.class.scenes.is_some() && app.mode == Mode::Main {
+            return matches!(self, Context::Scenes | Context::Any);
+        }
         matches!(
             (self, &app.mode),
             (Context::Main | Context::MainAndHelp, Mode::Main)
@@ -87,8 +92,8 @@ impl Context {
             }
             Context::Lecturer => app.class.view.is_some(),
             Context::Lesson => app.class.lesson.is_some(),
-            // The class list's title names its keys.
-            Context::ClassList => false,
+            // The class list's and the scene list's titles name their keys.
+            Context::ClassList | Context::Scenes => false,
             _ => true,
         }
     }
@@ -158,7 +163,7 @@ pub struct Binding {
 
 use Context::{
     Answering, Any, ClassList, Follower, Help, Lecturer, Lesson, Main, MainAndHelp, NotStudent,
-    Prompt, Revealed, Student, Surface,
+    Prompt, Revealed, Scenes, Student, Surface,
 };
 use KeyCode::{
     BackTab, Backspace, Delete, Down, End, Enter, Esc, Home, Left, PageDown, PageUp, Right, Tab, Up,
@@ -211,6 +216,10 @@ pub const BINDINGS: &[Binding] = &[
     bind(Lecturer, &[(ch('V'), M::PollTyped)], "V", "poll on a value you type", Some("V typed poll")),
     bind(Lecturer, &[(ch('w'), M::ToggleClass)], "w", "the class list", Some("w class")),
     bind(Lecturer, &[(ch('C'), M::CancelPoll)], "C", "cancel the open poll (its answers are dropped)", Some("C cancel")),
+    bind(Lecturer, &[(ch('o'), M::OpenScenes)], "o", "load a scene for everyone: a preset or a snapshot here", Some("o open")),
+    bind(Scenes, &[(key(Up), M::SceneMove { down: false }), (ch('k'), M::SceneMove { down: false }), (key(Down), M::SceneMove { down: true }), (ch('j'), M::SceneMove { down: true })], "↑ ↓  k j", "choose a scene", None),
+    bind(Scenes, &[(key(Enter), M::ScenePick)], "Enter", "load it", None),
+    bind(Scenes, &[(key(Esc), M::SceneClose), (ch('o'), M::SceneClose)], "Esc  o", "close the list", None),
     bind(Lecturer, &[(ch('F'), M::AllFollow)], "F", "everyone follow: pull every student back to you", Some("F all follow")),
     bind(Lesson, &[(ch('n'), M::LessonStep { next: true }), (ch('N'), M::LessonStep { next: false })], "n N", "the lesson's next / previous step", Some("n N step")),
     bind(Lecturer, &[(ch('S'), M::SavePoll)], "S", "save the last poll's answers here (.csv)", Some("S save poll")),

@@ -17,6 +17,7 @@ pub mod measured;
 pub mod plots;
 pub mod prompt;
 pub mod readout;
+pub mod scenes;
 pub mod session;
 pub mod status;
 pub mod steps;

@@ -59,6 +59,7 @@ impl Widget for &App {
         if self.mode == Mode::Class {
             class::render_list(self, area, buf);
         }
+        super::scenes::render(self, area, buf);
     }
 }
 
