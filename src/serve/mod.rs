@@ -16,6 +16,7 @@ pub mod input;
 pub mod limits;
 pub mod log;
 pub mod output;
+pub mod panel;
 pub mod poll;
 pub mod session;
 pub mod stream;

@@ -14,10 +14,6 @@ use std::time::Duration;
 use crossterm::cursor::Hide;
 use crossterm::event::{Event, KeyEvent};
 use crossterm::terminal::EnterAlternateScreen;
-use ratatui::layout::Rect;
-use ratatui::text::Line;
-use ratatui::widgets::{Block, Borders, Clear, Paragraph, Wrap};
-use ratatui::Frame;
 use russh::server::Msg;
 use russh::{Channel, ChannelMsg};
 use std::io::Write;
@@ -30,6 +26,7 @@ use super::follow::{Effect, Follow, Shown, CALLED_BACK, FOLLOWING};
 use super::input::{self, Decoder};
 use super::limits::clamp_size;
 use super::output::{self, FrameBuf};
+use super::panel::{Key as PanelKey, Panel};
 use super::poll;
 use super::stream::Kill;
 use super::term::{self, ClientTerm};
@@ -80,9 +77,6 @@ pub const ENDED: &str = "the class has ended";
 
 /// How often the lecturer's open class list updates its idle times.
 const LIST_TICK: Duration = Duration::from_secs(1);
-
-/// A student's snapshot text, shown instead of written to the server's disk.
-struct Panel(String);
 
 /// One explorer and its place in the class.
 pub(super) struct Seat {
@@ -209,6 +203,8 @@ async fn run(start: Start) {
     }
     let mut decoder = Decoder::new();
     let mut panel: Option<Panel> = None;
+    // Bytes for the terminal besides frames (the snapshot panel's).
+    let mut raw: Vec<u8> = Vec::new();
     let idle = shared.idle_timeout;
     let mut deadline = Instant::now() + idle;
     let mut list_tick = Instant::now() + LIST_TICK;
@@ -256,16 +252,26 @@ async fn run(start: Start) {
                             if hint.take().is_some() {
                                 dirty = true;
                             }
-                            if panel.is_some() {
-                                // Any key closes the snapshot panel.
-                                panel = None;
-                                dirty = true;
+                            if let Some(p) = &panel {
+                                match p.key(key) {
+                                    PanelKey::Stay(b) => raw.extend(b),
+                                    PanelKey::Close(b) => {
+                                        raw.extend(b);
+                                        panel = None;
+                                        // The explorer whole again.
+                                        if s.ex.update(Message::Redraw).is_err() {
+                                            s.ex.app.quit = true;
+                                            break;
+                                        }
+                                        dirty = true;
+                                    }
+                                }
                                 continue;
                             }
                             if s.ex.message_for(&Event::Key(key)) == Some(Message::Redraw) {
                                 decoder.expect_size();
                             }
-                            if on_key(&mut s, &mut panel, key) {
+                            if on_key(&mut s, &mut panel, &mut raw, key) {
                                 dirty = true;
                             }
                             if s.ex.app.quit {
@@ -360,22 +366,24 @@ async fn run(start: Start) {
                 hint = None;
                 dirty = true;
             }
-            permit = slot.reserve(), if dirty => {
+            permit = slot.reserve(), if dirty || !raw.is_empty() => {
                 let Ok(permit) = permit else { break };
-                let drawn = s.ex.draw_with(|app, f| {
-                    let glyphs = app.theme.glyphs;
-                    // Not over a screen too small for the explorer.
-                    if let Some(h) = hint.as_ref().filter(|_| !app.too_small()) {
-                        term::draw_hint(f, h, glyphs);
+                let mut bytes = std::mem::take(&mut raw);
+                // While the snapshot is shown, changes wait for its close
+                // (which draws the explorer whole).
+                if dirty && panel.is_none() {
+                    let drawn = s.ex.draw_with(|app, f| {
+                        // Not over a screen too small for the explorer.
+                        if let Some(h) = hint.as_ref().filter(|_| !app.too_small()) {
+                            term::draw_hint(f, h, app.theme.glyphs);
+                        }
+                    });
+                    if drawn.is_err() {
+                        break;
                     }
-                    if let Some(p) = &panel {
-                        draw_panel(f, &p.0, glyphs);
-                    }
-                });
-                if drawn.is_err() {
-                    break;
+                    bytes.extend(buf.take());
                 }
-                permit.send(buf.take());
+                permit.send(bytes);
                 dirty = false;
             }
             () = slot.closed() => break,
@@ -397,7 +405,7 @@ async fn run(start: Start) {
 }
 
 /// Applies one key; whether the screen may have changed.
-fn on_key(s: &mut Seat, panel: &mut Option<Panel>, key: KeyEvent) -> bool {
+fn on_key(s: &mut Seat, panel: &mut Option<Panel>, raw: &mut Vec<u8>, key: KeyEvent) -> bool {
     let Some(msg) = s.ex.message_for(&Event::Key(key)) else {
         return false;
     };
@@ -429,7 +437,10 @@ fn on_key(s: &mut Seat, panel: &mut Option<Panel>, key: KeyEvent) -> bool {
     }
     if s.role == Role::Student {
         if msg == Message::StartSave {
-            *panel = Some(Panel(s.ex.app.state.to_ron()));
+            let ascii = s.ex.app.theme.glyphs.ascii_text();
+            let (p, bytes) = Panel::open(s.ex.app.state.to_ron(), ascii);
+            *panel = Some(p);
+            raw.extend(bytes);
             return true;
         }
         if msg == Message::SavePicture {
@@ -445,34 +456,4 @@ fn on_key(s: &mut Seat, panel: &mut Option<Panel>, key: KeyEvent) -> bool {
         }
     }
     s.ex.update(msg).is_ok()
-}
-
-fn draw_panel(f: &mut Frame, ron: &str, glyphs: Glyphs) {
-    let area = f.area();
-    let ron = glyphs.text(ron);
-    let lines: Vec<Line> = ron.lines().map(Line::raw).collect();
-    // As wide as the longest line where the screen allows, so that a copy
-    // gets each line whole.
-    let longest = ron.lines().map(|l| l.chars().count()).max().unwrap_or(0);
-    let h = (lines.len() as u16 + 2).min(area.height);
-    let w = (longest as u16)
-        .saturating_add(2)
-        .clamp(40, 160)
-        .min(area.width);
-    let r = Rect::new(
-        area.x + (area.width - w) / 2,
-        area.y + (area.height - h) / 2,
-        w,
-        h,
-    );
-    f.render_widget(Clear, r);
-    f.render_widget(
-        Paragraph::new(lines).wrap(Wrap { trim: false }).block(
-            Block::default()
-                .borders(Borders::ALL)
-                .border_set(glyphs.border())
-                .title(glyphs.text(" snapshot: copy it into a .ron file · any key closes ")),
-        ),
-        r,
-    );
 }

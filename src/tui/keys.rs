@@ -239,7 +239,7 @@ pub const BINDINGS: &[Binding] = &[
     bind(Main, &[(ch('a'), M::ToggleMoments)], "a", "truncated / asymptotic moments (eq. 10; power law)", Some("a moments")),
     bind(Main, &[(ch('y'), M::NextMapY)], "y", "the regime map's next y parameter", None),
     bind(NotStudent, &[(ch('s'), M::StartSave)], "s", "save a snapshot here (.ron)", Some("s save")),
-    bind(Student, &[(ch('s'), M::StartSave)], "s", "show the snapshot (.ron text) to copy", Some("s snapshot")),
+    bind(Student, &[(ch('s'), M::StartSave)], "s", "show the snapshot (.ron) to copy; y there: clipboard", Some("s snapshot")),
     bind(Main, &[(ch('g'), M::ToggleGhost)], "g", "pin a dim ghost (a surface: its fit first) / clear", None),
     bind(NotStudent, &[(ch('p'), M::SavePicture)], "p", "save the view as a picture here (.svg)", Some("p picture")),
     bind(Student, &[(ch('p'), M::SavePicture)], "p", "no pictures over SSH: s shows the snapshot", None),
