@@ -46,7 +46,7 @@ fn a_lesson_steps_polls_into_one_csv_and_everyone_follows() {
     // The lecturer's footer and help name the lecturer's keys.
     let lect = room.capture("lect");
     assert!(
-        lect.contains("v poll") && lect.contains("n N step"),
+        lect.contains("v V poll") && lect.contains("n N step"),
         "{lect}"
     );
     room.keys("lect", &["?"]);

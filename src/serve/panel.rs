@@ -75,9 +75,14 @@ impl Panel {
             );
             return Key::Stay(out);
         }
+        Key::Close(self.close())
+    }
+
+    /// The bytes that go back to the explorer's screen (then drawn whole).
+    pub fn close(&self) -> Vec<u8> {
         let mut out = Vec::new();
         let _ = crossterm::execute!(out, EnterAlternateScreen, Hide);
-        Key::Close(out)
+        out
     }
 }
 

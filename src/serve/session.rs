@@ -324,6 +324,13 @@ async fn run(start: Start) {
                 if poll::on_poll(&mut s, p) {
                     deadline = Instant::now() + idle;
                     dirty = true;
+                    // A question or a reveal closes the snapshot's text.
+                    if let Some(p) = panel.take() {
+                        raw.extend(p.close());
+                        if s.ex.update(Message::Redraw).is_err() {
+                            break;
+                        }
+                    }
                 }
             }
             changed = roster.changed(), if is_lecturer => {
