@@ -162,6 +162,7 @@ fn main() -> anyhow::Result<()> {
         .iter()
         .enumerate()
         .map(|(i, n)| Seat {
+            id: i as u64 + 1,
             name: (*n).into(),
             state: match (revealed, i < answers.len()) {
                 (true, _) => SeatState::Following,

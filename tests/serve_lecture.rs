@@ -322,6 +322,18 @@ fn nobody_is_dropped_without_a_word() {
     room.wait("cat", "the reveal", 30, |s| {
         s.contains("the model: ζ = 321.5")
     });
+    // The lecturer removes a student from the class list: told why.
+    room.keys("lect", &["w"]);
+    room.wait("lect", "the class list", 20, |s| s.contains("x removes"));
+    room.keys("lect", &["Down", "Up", "x"]);
+    room.wait("lect", "removed", 20, |s| {
+        s.contains("removed ann: told so on their terminal")
+    });
+    room.wait("ann", "the line", 20, |s| {
+        s.contains("roughtui: the lecturer removed you from the class")
+    });
+    assert_eq!(modes(&room, "ann"), (false, true));
+    room.wait("lect", "one student left", 20, |s| s.contains("1 student"));
 }
 
 #[test]

@@ -24,6 +24,7 @@ fn key(app: &App, code: KeyCode) -> Option<Message> {
 
 fn seat(name: &str, state: SeatState, size: (u16, u16)) -> Seat {
     Seat {
+        id: 1,
         name: name.into(),
         state,
         size,

@@ -136,6 +136,8 @@ pub type SeatId = u64;
 #[derive(Debug)]
 pub struct Class {
     inner: Mutex<Inner>,
+    /// The seats the lecturer removed; their sessions end with a line.
+    removed: watch::Sender<std::collections::BTreeSet<SeatId>>,
     roster: watch::Sender<u64>,
     poll: watch::Sender<Option<Arc<Poll>>>,
 }
@@ -144,6 +146,7 @@ impl Default for Class {
     fn default() -> Class {
         Class {
             inner: Mutex::default(),
+            removed: watch::Sender::new(Default::default()),
             roster: watch::Sender::new(0),
             poll: watch::Sender::new(None),
         }
@@ -195,6 +198,21 @@ impl Class {
         drop(c);
         self.changed();
         id
+    }
+
+    /// The lecturer removes a student: their session ends, told why;
+    /// whether they were here.
+    pub fn remove(&self, id: SeatId) -> Option<String> {
+        let name = self.lock().seats.get(&id).map(|s| s.name.clone())?;
+        self.removed.send_modify(|r| {
+            r.insert(id);
+        });
+        Some(name)
+    }
+
+    /// What students watch to learn they were removed.
+    pub fn watch_removed(&self) -> watch::Receiver<std::collections::BTreeSet<SeatId>> {
+        self.removed.subscribe()
     }
 
     /// A student goes; an answer they gave stays in the poll.
@@ -326,6 +344,7 @@ impl Class {
             .seats
             .iter()
             .map(|(id, s)| Seat {
+                id: *id,
                 name: s.name.clone(),
                 state: match open {
                     Some(o) if o.answers.contains_key(id) => SeatState::Answered,

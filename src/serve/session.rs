@@ -72,6 +72,9 @@ pub fn refuse(channel: Channel<Msg>, why: String) {
 /// What a student's picture key says instead of writing on the server.
 pub const NO_PICTURE: &str = "no pictures over SSH: s shows the snapshot to copy";
 
+/// What a student's terminal says when the lecturer removes them.
+pub const REMOVED: &str = "the lecturer removed you from the class";
+
 /// What every client's terminal says when the server stops.
 pub const ENDED: &str = "the class has ended";
 
@@ -211,6 +214,7 @@ async fn run(start: Start) {
     let mut dirty = true;
     let mut ending = shared.ending.subscribe();
     let mut all_follow = shared.all_follow.subscribe();
+    let mut removed = shared.class.watch_removed();
     if *ending.borrow_and_update() {
         bye.set(ENDED);
         return;
@@ -284,6 +288,16 @@ async fn run(start: Start) {
                         if s.marker() != marker {
                             marker = s.marker();
                             s.note(Note::Marker(marker.name().into()));
+                        }
+                        if let Some(id) = s.ex.app.class.remove.take() {
+                            let text = match shared.class.remove(id) {
+                                Some(who) => {
+                                    shared.log.line(&format!("removed {who} (by the lecturer)"));
+                                    format!("removed {who}: told so on their terminal")
+                                }
+                                None => "that student has already left".to_string(),
+                            };
+                            s.ex.app.set_status(text, false);
                         }
                         if is_lecturer && dirty {
                             shared.publish(&s.ex.app);
@@ -363,6 +377,16 @@ async fn run(start: Start) {
                     s.effect(Effect::Catch);
                     s.ex.app.set_status(CALLED_BACK, false);
                     dirty = true;
+                }
+            }
+            changed = removed.changed(), if !is_lecturer => {
+                if changed.is_err() {
+                    break;
+                }
+                let gone = s.seat.is_some_and(|id| removed.borrow_and_update().contains(&id));
+                if gone {
+                    bye.set(REMOVED);
+                    break;
                 }
             }
             _ = ending.changed() => {

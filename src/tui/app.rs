@@ -99,6 +99,12 @@ pub enum Message {
     },
     /// The lecturer's class list, open or closed.
     ToggleClass,
+    /// In the class list: choose the next / previous student, remove the
+    /// one chosen (the serve session acts on it).
+    ClassChoose {
+        down: bool,
+    },
+    RemoveStudent,
     /// The next glyph set: braille, half blocks, blocks, ASCII (`M`).
     CycleGlyphs,
     /// Colour off (as under NO_COLOR) or on again (`c`).
@@ -577,6 +583,8 @@ pub fn update(app: &mut App, msg: Message) {
         | Message::Answer
         | Message::CancelPoll
         | Message::AllFollow => {}
+        Message::ClassChoose { down } => super::class::choose(app, down),
+        Message::RemoveStudent => super::class::remove(app),
         Message::LessonStep { next } => crate::lesson::step(app, next),
         Message::OpenScenes
         | Message::SceneMove { .. }

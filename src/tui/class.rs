@@ -200,6 +200,8 @@ impl Question {
 /// One student as the lecturer's class list shows them.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Seat {
+    /// The student's place in the class (the server's number).
+    pub id: u64,
     /// Escaped and cut (see `serve::class::clean_name`).
     pub name: String,
     pub state: SeatState,
@@ -369,6 +371,10 @@ pub struct Classroom {
     /// The lesson's step as every screen shows it (a student's from the
     /// lecturer).
     pub step: Option<crate::lesson::StepLine>,
+    /// The row chosen in the lecturer's class list (`x` removes it).
+    pub chosen: usize,
+    /// The student the lecturer chose to remove, until the server acts.
+    pub remove: Option<u64>,
     /// The lecturer's scene list, while open.
     pub scenes: Option<crate::tui::scenes::SceneList>,
 }
@@ -388,6 +394,22 @@ impl Classroom {
         self.open_question()
             .or_else(|| self.step.as_ref().and_then(|s| s.pending))
     }
+}
+
+/// The class list's `↑` / `↓`: the previous / next student.
+pub fn choose(app: &mut crate::tui::app::App, down: bool) {
+    let n = app.class.view.as_ref().map_or(0, |v| v.seats.len());
+    if n == 0 {
+        return;
+    }
+    let c = app.class.chosen.min(n - 1);
+    app.class.chosen = if down { (c + 1) % n } else { (c + n - 1) % n };
+}
+
+/// The class list's `x`: the chosen student is to be removed.
+pub fn remove(app: &mut crate::tui::app::App) {
+    let v = app.class.view.as_ref();
+    app.class.remove = v.and_then(|v| v.seats.get(app.class.chosen)).map(|s| s.id);
 }
 
 /// How long, in words: `45s`, `2m03s`, `1h02m`.
@@ -471,6 +493,7 @@ mod tests {
     #[test]
     fn the_class_line() {
         let seat = |state, size| Seat {
+            id: 1,
             name: "a".into(),
             state,
             size,

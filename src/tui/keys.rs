@@ -224,6 +224,8 @@ pub const BINDINGS: &[Binding] = &[
     bind(Lesson, &[(ch('n'), M::LessonStep { next: true }), (ch('N'), M::LessonStep { next: false })], "n N", "the lesson's next / previous step", Some("n N step")),
     bind(Lecturer, &[(ch('S'), M::SavePoll)], "S", "save the last poll's answers here (.csv)", Some("S csv")),
     bind(ClassList, &[(ch('w'), M::ToggleClass), (key(Esc), M::ToggleClass)], "w  Esc", "close the class list", None),
+    bind(ClassList, &[(key(Down), M::ClassChoose { down: true }), (ch('j'), M::ClassChoose { down: true }), (key(Up), M::ClassChoose { down: false }), (ch('k'), M::ClassChoose { down: false })], "↓ ↑  j k", "choose a student", None),
+    bind(ClassList, &[(ch('x'), M::RemoveStudent)], "x", "remove the student chosen (told why)", None),
     bind(ClassList, &[(key(Right), M::HelpPage { next: true }), (key(PageDown), M::HelpPage { next: true }), (ch(' '), M::HelpPage { next: true }), (key(Left), M::HelpPage { next: false }), (key(PageUp), M::HelpPage { next: false })], "→ ←  PgDn PgUp", "next / previous page of the class list", None),
     bind(ClassList, &[(ch('q'), M::Quit), (ctrl('c'), M::Quit)], "q  Ctrl-C", "quit", None),
     bind(Main, &[(key(Up), M::SelectPrev), (ch('k'), M::SelectPrev), (key(Down), M::SelectNext), (ch('j'), M::SelectNext)], "↑ ↓  k j", "select a slider", Some("↑↓ select")),

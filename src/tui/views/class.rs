@@ -233,7 +233,9 @@ pub fn render_list(app: &App, area: Rect, buf: &mut Buffer) {
     let h = (rows.len() as u16 + 3).clamp(4, area.height);
     let per_page = usize::from(h - 3).max(1);
     let pages = rows.len().div_ceil(per_page).max(1);
-    let page = app.help_page % pages;
+    // The page of the chosen student, → ← paging on from there.
+    let chosen = app.class.chosen.min(rows.len().saturating_sub(1));
+    let page = (app.help_page + chosen / per_page) % pages;
     let r = Rect::new(
         area.x + (area.width - w) / 2,
         area.y + (area.height - h) / 2,
@@ -241,7 +243,7 @@ pub fn render_list(app: &App, area: Rect, buf: &mut Buffer) {
         h,
     );
     // The keys and the page first: the class line may be cut.
-    let mut title = " w closes".to_string();
+    let mut title = format!(" w closes{}↑↓ x removes", g.sep);
     if pages > 1 {
         title.push_str(&format!("{}page {}/{pages}", g.sep, page + 1));
     }
@@ -253,9 +255,16 @@ pub fn render_list(app: &App, area: Rect, buf: &mut Buffer) {
     }
     lines.extend(
         rows.into_iter()
+            .enumerate()
             .skip(page * per_page)
             .take(per_page)
-            .map(Line::raw),
+            .map(|(i, row)| {
+                if i == chosen {
+                    Line::styled(row, t.selected)
+                } else {
+                    Line::raw(row)
+                }
+            }),
     );
     Clear.render(r, buf);
     Paragraph::new(lines)
