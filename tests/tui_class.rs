@@ -343,3 +343,25 @@ fn an_open_poll_shows_nothing_of_its_answer() {
     assert!(s.contains("Ψ_P    ?"), "{s}");
     assert!(s.contains("plastic 96.1%"), "{s}");
 }
+
+/// The class list's ↑↓ choose a student (wrapping), x marks them for
+/// removal (the serve session then removes them).
+#[test]
+fn the_class_list_chooses_and_removes() {
+    let mut l = lecturer("fig2");
+    let mut seats = vec![
+        seat("ann", SeatState::Following, (100, 30)),
+        seat("cat", SeatState::Following, (100, 30)),
+    ];
+    seats[1].id = 4;
+    l.class.view = Some(ClassView { seats, poll: None });
+    ch(&mut l, 'w');
+    press(&mut l, KeyCode::Down, KeyModifiers::NONE);
+    assert_eq!(l.class.chosen, 1);
+    press(&mut l, KeyCode::Down, KeyModifiers::NONE);
+    assert_eq!(l.class.chosen, 0);
+    press(&mut l, KeyCode::Up, KeyModifiers::NONE);
+    ch(&mut l, 'x');
+    assert_eq!(l.class.remove, Some(4));
+    assert!(screen(&l).contains("x removes"));
+}
