@@ -30,6 +30,10 @@ pub struct Cli {
     /// ASCII only [default: from the locale and TERM]. `M` switches.
     #[arg(long, value_enum, value_name = "SET")]
     pub marker: Option<MarkerArg>,
+    /// Rehearse a lesson (RON: its steps' scenes, views, captions and
+    /// polls) alone: `n` / `N` step through it.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["preset", "load", "surface"])]
+    pub lesson: Option<PathBuf>,
 }
 
 /// A glyph set on the command line.
@@ -381,6 +385,10 @@ pub struct ServeArgs {
     /// the LANG / LC_* it sends]; each student can switch with `M`.
     #[arg(long, value_enum, value_name = "SET")]
     pub marker: Option<MarkerArg>,
+    /// Lead the class through a lesson (RON): `n` / `N` step, `v` opens a
+    /// step's poll, all its polls go to one CSV.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["preset", "load", "surface"])]
+    pub lesson: Option<PathBuf>,
 }
 
 /// `90s`, `30m`, `2h` (1 s to 24 h).

@@ -8,6 +8,7 @@ pub mod contact;
 pub mod csv_number;
 pub mod export;
 pub mod figure;
+pub mod lesson;
 pub mod presets;
 pub mod serve;
 pub mod snapshot;

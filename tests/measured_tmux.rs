@@ -145,9 +145,10 @@ fn serve_shows_the_surface_and_the_lecturer_switches() {
         ],
     );
     let key = key.to_str().unwrap();
+    // Wide enough for the lecturer's keys and the surface's in the footer.
     let lect = Pane::start_shell(
         "msrv-lect",
-        (100, 30),
+        (120, 30),
         &srv.ssh_line("lecturer", &["-t", "-i", key, "-o", "IdentitiesOnly=yes"]),
     );
     let s = lect.wait_text("Readout");
