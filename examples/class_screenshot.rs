@@ -162,6 +162,7 @@ fn main() -> anyhow::Result<()> {
         .iter()
         .enumerate()
         .map(|(i, n)| Seat {
+            id: i as u64 + 1,
             name: (*n).into(),
             state: match (revealed, i < answers.len()) {
                 (true, _) => SeatState::Following,
@@ -180,12 +181,13 @@ fn main() -> anyhow::Result<()> {
             answers,
             asked: names.len(),
             revealed,
+            sweep: app.state.sweep,
         }),
     });
     let status = if revealed {
         "revealed: ζ = 321.5 · S saves the answers · v asks again"
     } else {
-        "asked 31 students: where does the plastic share pass ½? · v reveals"
+        "asked 31 students: where does the plastic share pass ½? · v reveals · C cancels"
     };
     app.set_status(status, false);
     let mut t = Terminal::new(TestBackend::new(SIZE.0, SIZE.1))?;

@@ -280,20 +280,29 @@ async fn run() -> anyhow::Result<()> {
     }
     // The lecturer saves the answers: 30 rows.
     lect.data(&b"S"[..]).await?;
-    let mut rows = 0;
+    let (mut rows, mut silent) = (0, 0);
     for _ in 0..50 {
         tokio::time::sleep(Duration::from_millis(100)).await;
         let csv = std::fs::read_dir(dir.path())?
             .filter_map(|e| e.ok())
             .find(|e| e.path().extension().is_some_and(|x| x == "csv"));
         if let Some(f) = csv {
-            rows = std::fs::read_to_string(f.path())?.lines().count() - 1;
+            // Past the header: a row per answer, then a "no answer" row
+            // per student who gave none.
+            let text = std::fs::read_to_string(f.path())?;
+            rows = text
+                .lines()
+                .skip(1)
+                .filter(|l| !l.contains(",no answer,"))
+                .count();
+            silent = text.lines().filter(|l| l.contains(",no answer,")).count();
             break;
         }
     }
     anyhow::ensure!(
-        rows == POLLED,
-        "the lecturer saved {rows} answers, not {POLLED}"
+        rows == POLLED && silent == ACTIVE + IDLE,
+        "the lecturer saved {rows} answers and {silent} without, not {POLLED} and {}",
+        ACTIVE + IDLE
     );
     let lecturer_bytes: usize = lect_frames.lock().unwrap().iter().map(|f| f.1).sum();
 

@@ -7,6 +7,7 @@ Pinned: SurfaceTopography==1.27.1 (requirements line below).
     cargo build --release -p rough-surface --example read_surface
     cargo build --release            # optional: the explorer's figures too
     python3 scripts/surface_bench.py [--n 1024] [--runs 3]
+    python3 scripts/surface_bench.py --n 4096 --big   # roughtui alone, big map
 
 Makes a 1024 x 1024 map with SurfaceTopography's `fourier_synthesis`
 (non-periodic: cut from a 2048 x 2048 periodic one) in the Gwyddion text
@@ -57,6 +58,27 @@ print(f"M2 {m2!r}")
 """
 
 
+def make_big(path, n):
+    """An n x n self-affine map (H = 0.8) by numpy's real FFT alone, in
+    Gwyddion's text format with 5 significant digits (a 4096 x 4096 map is
+    ~195 MB): for the big-map figures, where SurfaceTopography's
+    synthesis of a 2n x 2n map would take minutes and gigabytes."""
+    import numpy as np
+    rng = np.random.default_rng(1)
+    qx = np.fft.fftfreq(n)[:, None]
+    qy = np.fft.rfftfreq(n)[None, :]
+    q = np.sqrt(qx ** 2 + qy ** 2)
+    q[0, 0] = 1
+    a = q ** -1.8 * (rng.standard_normal(q.shape) + 1j * rng.standard_normal(q.shape))
+    a[0, 0] = 0
+    h = np.fft.irfft2(a, s=(n, n))
+    h *= 100 / h.std()
+    with open(path, "w") as f:
+        f.write(f"# Channel: Height\n# Width: {10 * n / 1024:g} µm\n"
+                f"# Height: {10 * n / 1024:g} µm\n# Value units: nm\n")
+        np.savetxt(f, h, fmt="%.4e", delimiter="\t")
+
+
 def make(path, n):
     import numpy as np
     from SurfaceTopography.Generation import fourier_synthesis
@@ -79,7 +101,21 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--n", type=int, default=1024)
     ap.add_argument("--runs", type=int, default=3)
+    ap.add_argument("--big", action="store_true",
+                    help="make the map with numpy alone (make_big) and time only "
+                         "`roughtui bench --surface` (e.g. --n 4096 --big)")
     a = ap.parse_args()
+    if a.big:
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "map.txt")
+            make_big(path, a.n)
+            print(f"{a.n} x {a.n} map, {os.path.getsize(path) / 1e6:.1f} MB of text")
+            for _ in range(a.runs):
+                out, rss = timed([ROUGHTUI, "bench", "--surface", path])
+                print(f"  peak {rss:.0f} MB (whole process, /usr/bin/time)")
+                for line in out.splitlines():
+                    print(f"    {line.strip()}")
+        return
     if not os.path.exists(EXAMPLE):
         sys.exit("build first: cargo build --release -p rough-surface --example read_surface")
     with tempfile.TemporaryDirectory() as d:

@@ -30,6 +30,10 @@ pub struct Cli {
     /// ASCII only [default: from the locale and TERM]. `M` switches.
     #[arg(long, value_enum, value_name = "SET")]
     pub marker: Option<MarkerArg>,
+    /// Rehearse a lesson (RON: its steps' scenes, views, captions and
+    /// polls) alone: `n` / `N` step through it.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["preset", "load", "surface"])]
+    pub lesson: Option<PathBuf>,
 }
 
 /// A glyph set on the command line.
@@ -91,6 +95,15 @@ pub struct Setup {
     /// as the value prompt takes them: m cm mm µm um nm pm).
     #[arg(long, value_name = "LENGTH", requires = "surface", allow_hyphen_values = true, value_parser = parse_pixel_size)]
     pub pixel_size: Option<f64>,
+    /// The measurement to read from a contact.engineering download of
+    /// several (its "Topography:" name) [default: the first, named in the
+    /// caption].
+    #[arg(long, value_name = "NAME", requires = "surface")]
+    pub series: Option<String>,
+    /// Read a map as its profiles along x or y (line-scan conventions):
+    /// every view then shows that direction alone.
+    #[arg(long, value_enum, value_name = "x|y", requires = "surface")]
+    pub direction: Option<DirectionArg>,
     /// The channel of a file of several (Gwyddion's .gwy, its ASCII
     /// exports concatenated): its number or its title (the first channel of
     /// heights when not given).
@@ -101,6 +114,48 @@ pub struct Setup {
     /// h0-over-e, h-rms, zeta, hurst, r-star.
     #[arg(long = "set", value_name = "AXIS=VALUE", value_parser = parse_set)]
     pub set: Vec<(Axis, String)>,
+}
+
+/// `--direction`: along x (the map's rows) or y.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum DirectionArg {
+    X,
+    Y,
+}
+
+impl From<DirectionArg> for rough_surface::Direction {
+    fn from(d: DirectionArg) -> Self {
+        match d {
+            DirectionArg::X => rough_surface::Direction::X,
+            DirectionArg::Y => rough_surface::Direction::Y,
+        }
+    }
+}
+
+impl Setup {
+    /// How `--surface` is to be read.
+    pub fn surface_options(&self) -> rough_surface::Options {
+        rough_surface::Options {
+            periodic: self.periodic,
+            pixel_size: self.pixel_size,
+            series: self.series.clone(),
+            direction: self.direction.map(Into::into),
+            channel: self.channel.clone(),
+        }
+    }
+}
+
+impl BenchArgs {
+    /// How `--surface` is to be read.
+    pub fn surface_options(&self) -> rough_surface::Options {
+        rough_surface::Options {
+            periodic: self.periodic,
+            pixel_size: self.pixel_size,
+            series: self.series.clone(),
+            direction: self.direction.map(Into::into),
+            channel: self.channel.clone(),
+        }
+    }
 }
 
 /// `--pixel-size`: a length > 0.
@@ -330,6 +385,10 @@ pub struct ServeArgs {
     /// the LANG / LC_* it sends]; each student can switch with `M`.
     #[arg(long, value_enum, value_name = "SET")]
     pub marker: Option<MarkerArg>,
+    /// Lead the class through a lesson (RON): `n` / `N` step, `v` opens a
+    /// step's poll, all its polls go to one CSV.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["preset", "load", "surface"])]
+    pub lesson: Option<PathBuf>,
 }
 
 /// `90s`, `30m`, `2h` (1 s to 24 h).
@@ -365,6 +424,12 @@ pub struct BenchArgs {
     /// The surface's sample spacing (as for the explorer).
     #[arg(long, value_name = "LENGTH", requires = "surface", allow_hyphen_values = true, value_parser = parse_pixel_size)]
     pub pixel_size: Option<f64>,
+    /// The measurement of a download of several (as for the explorer).
+    #[arg(long, value_name = "NAME", requires = "surface")]
+    pub series: Option<String>,
+    /// A map's profiles along x or y (as for the explorer).
+    #[arg(long, value_enum, value_name = "x|y", requires = "surface")]
+    pub direction: Option<DirectionArg>,
     /// The channel of a file of several (as for the explorer).
     #[arg(long, value_name = "N|TITLE", requires = "surface")]
     pub channel: Option<String>,

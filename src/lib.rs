@@ -8,6 +8,7 @@ pub mod contact;
 pub mod csv_number;
 pub mod export;
 pub mod figure;
+pub mod lesson;
 pub mod presets;
 pub mod serve;
 pub mod snapshot;
@@ -24,12 +25,7 @@ pub fn load_source(src: &Source, setup: &Setup) -> anyhow::Result<State> {
     let mut state = if let Some(path) = &src.load {
         snapshot::load_file(path)?
     } else if let Some(path) = &src.surface {
-        let options = rough_surface::Options {
-            periodic: setup.periodic,
-            pixel_size: setup.pixel_size,
-            channel: setup.channel.clone(),
-        };
-        State::measured(surface::SurfaceSource::read(path, options)?)?
+        State::measured(surface::SurfaceSource::read(path, setup.surface_options())?)?
     } else {
         presets::load(src.preset.as_deref().unwrap_or("fig2"))?
     };

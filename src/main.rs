@@ -40,18 +40,21 @@ fn run(cli: Cli) -> anyhow::Result<()> {
         }
         Some(Command::Bench(a)) if check_only() => {
             if let Some(f) = &a.surface {
-                let options = rough_surface::Options {
-                    periodic: a.periodic,
-                    pixel_size: a.pixel_size,
-                    channel: a.channel.clone(),
-                };
-                roughtui::surface::SurfaceSource::read(f, options)?;
+                roughtui::surface::SurfaceSource::read(f, a.surface_options())?;
             }
             Ok(())
         }
         Some(Command::Bench(a)) => roughtui::bench::run(&a),
         Some(Command::Serve(a)) => {
-            let state = load_source(&a.source, &a.setup)?;
+            let lesson = a
+                .lesson
+                .as_deref()
+                .map(roughtui::lesson::read)
+                .transpose()?;
+            let state = match &lesson {
+                Some(l) => l.steps[0].state.clone(),
+                None => load_source(&a.source, &a.setup)?,
+            };
             if let Some(w) = state.surface_warning() {
                 println!("warning: {w}");
             }
@@ -75,10 +78,19 @@ fn run(cli: Cli) -> anyhow::Result<()> {
                 class_code,
                 quiet: a.quiet,
                 marker: a.marker.map(Into::into),
+                lesson,
             })
         }
         None => {
-            let state = load_source(&cli.source, &cli.setup)?;
+            let lesson = cli
+                .lesson
+                .as_deref()
+                .map(roughtui::lesson::read)
+                .transpose()?;
+            let state = match &lesson {
+                Some(l) => l.steps[0].state.clone(),
+                None => load_source(&cli.source, &cli.setup)?,
+            };
             if check_only() {
                 return Ok(());
             }
@@ -86,6 +98,7 @@ fn run(cli: Cli) -> anyhow::Result<()> {
                 state,
                 cli.source.load.as_deref(),
                 cli.marker.map(Into::into),
+                lesson,
             )
         }
     }

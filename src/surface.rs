@@ -121,11 +121,27 @@ impl SurfaceSource {
                 format!("a {nx} × {ny} map of {} × {}", fmt_len(lx), fmt_len(ly))
             }
             Kind::Line { n, l } => format!("a line scan of {n} points over {}", fmt_len(l)),
+            Kind::Profiles {
+                direction,
+                nx,
+                ny,
+                lx,
+                ly,
+            } => format!(
+                "the profiles along {} of a {nx} × {ny} map of {} × {}",
+                direction.name(),
+                fmt_len(lx),
+                fmt_len(ly)
+            ),
             Kind::Psd { dim, points } => format!(
-                "{} PSD table of {points} points",
+                "{} PSD table of {points} points{}",
                 match dim {
                     Dim::Areal => "an isotropic",
                     Dim::Profile => "a profile",
+                },
+                match &self.measured.measurement {
+                    Some(m) => format!(" (measurement '{m}')"),
+                    None => String::new(),
                 }
             ),
         }

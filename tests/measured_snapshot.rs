@@ -88,6 +88,55 @@ fn how_it_was_read_is_recorded() {
 }
 
 #[test]
+fn the_direction_and_the_measurement_are_recorded() {
+    let d = tempfile::tempdir().unwrap();
+    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("crates/rough-surface/tests/data");
+    // A lay (scripts/direction_reference.py) read along y.
+    let t = d.path().join("map_lay.txt");
+    std::fs::copy(data.join("map_lay.txt"), &t).unwrap();
+    let opts = rough_surface::Options {
+        direction: Some(rough_surface::Direction::Y),
+        ..Default::default()
+    };
+    let s = surface_state(&t, opts.clone());
+    let p = save_new(d.path(), "lay", &s).unwrap();
+    let text = std::fs::read_to_string(&p).unwrap();
+    assert!(text.contains(", direction: y),"), "{text}");
+    let back = load_file(&p).unwrap();
+    assert_eq!(back, s);
+    assert_eq!(back.surface.unwrap().options, opts);
+    // The second measurement of a contact.engineering download.
+    let mut ce = String::new();
+    for (name, k) in [("steel", 1.0), ("glass", 3.0)] {
+        ce.push_str(&format!(
+            "# Topography: {name}\n# q/π × 2D PSD\n# Columns: Wavevector (1/m), PSD (m³)\n"
+        ));
+        for e in 5..=9 {
+            let q = 10f64.powi(e);
+            ce.push_str(&format!("{q:e} {:e}\n", k * 1e-20 * (q / 1e5).powf(-2.6)));
+        }
+    }
+    let t = d.path().join("download.txt");
+    std::fs::write(&t, ce).unwrap();
+    let opts = rough_surface::Options {
+        series: Some("glass".into()),
+        ..Default::default()
+    };
+    let s = surface_state(&t, opts.clone());
+    assert!(s
+        .caption
+        .as_deref()
+        .unwrap()
+        .contains("(measurement 'glass')"));
+    let p = save_new(d.path(), "glass", &s).unwrap();
+    let text = std::fs::read_to_string(&p).unwrap();
+    assert!(text.contains(", series: \"glass\"),"), "{text}");
+    let back = load_file(&p).unwrap();
+    assert_eq!(back, s);
+    assert_eq!(back.surface.unwrap().options, opts);
+}
+
+#[test]
 fn old_snapshots_stay_byte_for_byte() {
     let s = State::from_ron(common::GOOD).unwrap();
     assert!(s.surface.is_none());

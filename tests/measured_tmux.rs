@@ -108,7 +108,7 @@ fn a_bad_surface_file_is_one_message_and_status_2() {
     assert_eq!(p.exit_status(), 2);
     let s = p.wait_text("roughtui:");
     assert!(
-        s.contains("roughtui: bad surface bad.txt, line 3: NaN is not a finite number"),
+        s.contains("roughtui: bad surface bad.txt, line 3: an undefined PSD value"),
         "{s}"
     );
     assert_eq!(p.display("#{alternate_on}"), "0");
@@ -145,9 +145,10 @@ fn serve_shows_the_surface_and_the_lecturer_switches() {
         ],
     );
     let key = key.to_str().unwrap();
+    // Wide enough for the lecturer's keys and the surface's in the footer.
     let lect = Pane::start_shell(
         "msrv-lect",
-        (100, 30),
+        (120, 30),
         &srv.ssh_line("lecturer", &["-t", "-i", key, "-o", "IdentitiesOnly=yes"]),
     );
     let s = lect.wait_text("Readout");

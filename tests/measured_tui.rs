@@ -362,3 +362,26 @@ fn a_surface_in_the_ascii_set_draws_only_ascii() {
     update(&mut a, Message::NextView);
     insta::assert_snapshot!("surface_slopes_80x24_ascii", drawn(&a));
 }
+
+#[test]
+fn a_lay_says_so_on_the_spectrum_view() {
+    let lay = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("crates/rough-surface/tests/data/map_lay.txt");
+    let src = roughtui::surface::SurfaceSource::read(&lay, Default::default()).unwrap();
+    let state = roughtui::snapshot::State::measured(src).unwrap();
+    let mut a = App::new(state, Theme::colored(), (160, 48));
+    press(&mut a, KeyCode::BackTab, KeyModifiers::SHIFT);
+    press(&mut a, KeyCode::BackTab, KeyModifiers::SHIFT);
+    assert_eq!(a.view, View::Spectrum);
+    let text = screen(&a);
+    // scripts/direction_reference.py: h′x/h′y = 0.309/0.0854 = 3.62; Ψ_P
+    // = h′/(√2 H0/E) at the scene's H0/E = 0.01.
+    assert!(
+        text.contains("anisotropic: h′x/h′y = 3.62, Ψ_P across 21.9, along 6.04"),
+        "{text}"
+    );
+    // An isotropic surface says nothing of it.
+    let mut b = surface((160, 48));
+    press(&mut b, KeyCode::BackTab, KeyModifiers::SHIFT);
+    assert!(!screen(&b).contains("anisotropic"));
+}

@@ -253,16 +253,17 @@ fn a_full_class_gets_a_line_not_a_dropped_connection() {
             c
         })
         .collect();
+    // The late student is let in to be told, on their terminal.
     let o = Command::new("ssh")
         .args(srv.ssh_args("late", &["-tt"]))
         .stdin(Stdio::null())
         .output()
         .unwrap();
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert_eq!(o.status.code(), Some(255), "{err}");
-    assert!(
-        err.contains(": the class is full (2 sessions): try again later"),
-        "{err}"
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(1), "{out}");
+    assert_eq!(
+        out,
+        "roughtui: the class is full (2 students): try again later\r\n"
     );
     srv.wait_log("the turn-away line", 20, |l| {
         l.contains("turned away 127.0.0.1: the class is full")
@@ -287,10 +288,10 @@ fn a_full_class_gets_a_line_not_a_dropped_connection() {
         .stdin(Stdio::null())
         .output()
         .unwrap();
-    let err = String::from_utf8_lossy(&o.stderr);
+    let out = String::from_utf8_lossy(&o.stdout);
     assert!(
-        err.contains("too many sessions from 127.0.0.1 (1): try again later"),
-        "{err}"
+        out.contains("roughtui: too many sessions from 127.0.0.1 (1): try again later"),
+        "{out}"
     );
     one.stdin.as_mut().unwrap().write_all(b"q").unwrap();
     assert_eq!(finish(one, 20).0, 0);
@@ -557,8 +558,10 @@ fn thirty_students_predict_then_the_model_answers() {
         s.contains("you answered ζ = ")
     });
     let lect = room.wait("lect", "30/30 answered", 30, |s| {
-        // In the class line and on the chart.
-        s.contains("30 students · 30/30 answered") && s.matches("30/30 answered").count() == 2
+        // In the class line, in place of the claims and on the chart.
+        s.contains("30 students · 30/30 answered")
+            && s.contains("poll open: 30/30 answered")
+            && s.matches("30/30 answered").count() == 3
     });
     // Five answers, six students each: five bars of one height.
     let cols: std::collections::BTreeSet<usize> = lect
@@ -594,21 +597,19 @@ fn thirty_students_predict_then_the_model_answers() {
         let mine = roughtui::figure::short_number(want[i]);
         let line = s.lines().find(|l| l.contains("the model:")).unwrap();
         assert!(line.contains(&format!("you: {mine} · ")), "{i}: {line}");
-        let off = if want[i] > truth {
-            "too high"
-        } else {
-            "too low"
-        };
+        let off = if want[i] > truth { " high" } else { " low" };
         assert!(line.contains(off), "{i}: {line}");
     }
     room.wait_all(&names, "following again", 30, |s| {
         s.contains("following the lecturer")
     });
+    let revealed_line =
+        "30 students · 30 following · 0 on their own · revealed ζ = 321.5 (30 answers)";
     room.wait("lect", "the revealed line", 30, |s| {
-        s.contains("30 students · revealed ζ = 321.5 (30 answers)")
+        s.contains(revealed_line)
     });
 
-    // S: the answers as CSV, name,answer,truth.
+    // S: the answers as CSV, a row per answer.
     room.keys("lect", &["S"]);
     let saved = room.wait("lect", "the CSV saved", 30, |s| s.contains("saved "));
     let csvs = |dir: &Path| -> Vec<PathBuf> {
@@ -624,11 +625,20 @@ fn thirty_students_predict_then_the_model_answers() {
     assert_eq!(files.len(), 1, "{saved}");
     let text = std::fs::read_to_string(&files[0]).unwrap();
     let mut lines = text.lines();
-    assert_eq!(lines.next(), Some("name,answer,truth"));
+    assert_eq!(
+        lines.next(),
+        Some("question,quantity,unit,truth,name,answer,offset")
+    );
     let mut rows: Vec<(String, f64, f64)> = lines
         .map(|l| {
             let f: Vec<&str> = l.split(',').collect();
-            (f[0].into(), f[1].parse().unwrap(), f[2].parse().unwrap())
+            assert_eq!(
+                f[..3],
+                ["where does the plastic share pass 1/2?", "zeta", ""]
+            );
+            let (answer, truth): (f64, f64) = (f[5].parse().unwrap(), f[3].parse().unwrap());
+            assert_eq!(f[6].parse::<f64>().unwrap(), answer - truth, "{l}");
+            (f[4].into(), answer, truth)
         })
         .collect();
     rows.sort_by(|a, b| a.0.cmp(&b.0));
@@ -639,37 +649,32 @@ fn thirty_students_predict_then_the_model_answers() {
         assert_eq!(*t, truth, "{name}");
     }
 
-    // A student's Enter after the reveal answers nothing: it opens their
-    // value prompt, and the class is as it was.
+    // A student's Enter after the reveal dismisses it: they keep
+    // following, and the class is as it was.
     room.keys(&names[0], &["Enter"]);
-    room.wait(&names[0], "the value prompt", 20, |s| {
-        s.contains("ζ = ") && s.contains("now ")
+    room.wait(&names[0], "the reveal dismissed", 20, |s| {
+        !s.contains("the model:") && s.contains("following the lecturer")
     });
-    room.keys(&names[0], &["5", "0", "0", "Enter"]);
+    // The lecturer moves on: the claims come back for the student who
+    // dismissed the result, the others keep theirs; S still saves the
+    // same answers.
+    room.keys("lect", &["Right"]);
+    room.wait(&names[0], "the claims again", 60, |s| {
+        s.contains("plastic share passes ½ at ζ = 321.5")
+    });
+    room.wait_all(&names[1..], "the reveal kept", 60, |s| {
+        s.contains("the model: ζ = 321.5")
+    });
     room.keys("lect", &["S"]);
     room.wait("lect", "a second CSV", 30, |_| csvs(dir.path()).len() == 2);
     for f in csvs(dir.path()) {
         assert_eq!(std::fs::read_to_string(&f).unwrap(), text);
     }
-    assert!(room
-        .capture("lect")
-        .contains("30 students · revealed ζ = 321.5 (30 answers)"));
-
-    // The lecturer moves on: the poll ends, the claims come back.
-    room.keys("lect", &["Right"]);
-    room.wait_all(&names[1..], "the claims again", 60, |s| {
-        s.contains("plastic share passes ½ at ζ = 321.5")
-    });
-    room.wait("lect", "the class line again", 30, |s| {
-        s.contains("30 students · 29 following · 1 on their own")
-    });
+    assert!(room.capture("lect").contains(revealed_line));
     // The class list, in pages at 30 rows.
     room.keys("lect", &["w"]);
     let list = room.wait("lect", "the class list", 20, |s| s.contains("page 1/2"));
-    assert!(
-        list.contains("s00") && list.contains("on their own"),
-        "{list}"
-    );
+    assert!(list.contains("s00") && list.contains("following"), "{list}");
     room.keys("lect", &["Right"]);
     let page = room.wait("lect", "its second page", 20, |s| s.contains("page 2/2"));
     let rows = page.lines().filter(|l| l.contains("100×30")).count();

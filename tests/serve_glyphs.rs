@@ -69,7 +69,7 @@ fn a_c_locale_vt100_client_gets_only_ascii_on_every_screen() {
         (&["2", "p", "c", "Enter"], "unknown unit \"pc\""),
         (
             &["Escape", "s"],
-            "snapshot: copy it into a .ron file | any key closes",
+            "-- y copies it to your clipboard (OSC 52) - any other key goes back --",
         ),
         (&["Escape", "p"], "no pictures over SSH"),
     ];

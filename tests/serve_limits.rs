@@ -84,8 +84,17 @@ async fn idle_sessions_end() {
     let (_h, mut ch) = student(srv.port, 80, 24).await;
     read_until(&mut ch, |s| s.contains("Readout")).await;
     let t = Instant::now();
-    assert_eq!(exit_status(&mut ch).await, Some(0));
+    // Told why, on the normal screen (out of the alternate one, cursor
+    // shown, colours reset).
+    read_until(&mut ch, |s| {
+        s.ends_with(
+            "\x1b[?1049l\x1b[?25h\x1b[0m\x1b[0m\r\n\
+             roughtui: no key for 1s: the session ended (ssh again to come back)\r\n",
+        )
+    })
+    .await;
     let idle = t.elapsed();
+    assert_eq!(exit_status(&mut ch).await, Some(0));
     assert!(
         idle >= Duration::from_millis(800) && idle < Duration::from_secs(5),
         "{idle:?}"
@@ -102,7 +111,9 @@ async fn connections_over_the_limits_are_closed() {
     // Over the limit, a few connections are kept to be told why (over SSH:
     // tests/serve_class.rs), and past those more get no SSH banner at all:
     // the server closes them at once.
-    let told = roughtui::serve::TURNED_AWAY.1;
+    // Two connections more than --max-sessions are kept for the lecturer's
+    // key (a student among them is told the class is full at login).
+    let told = roughtui::serve::TURNED_AWAY.1 + roughtui::serve::LECTURER_PLACES;
     let held: Vec<_> = (0..told)
         .map(|_| {
             let mut c = std::net::TcpStream::connect(("127.0.0.1", srv.port)).unwrap();
@@ -119,8 +130,26 @@ async fn connections_over_the_limits_are_closed() {
     let _ = c.read_to_end(&mut got);
     assert!(got.is_empty(), "{}", String::from_utf8_lossy(&got));
     drop(held);
-    // Told or closed, the third gets no explorer.
-    assert!(client::student(srv.port, "erin", 80, 24).await.is_err());
+    // The third student gets no explorer: a line on their terminal, and
+    // status 1.
+    // (The held connections' places come back as the server notices
+    // they are gone.)
+    let mut tries = 0;
+    let (_he, mut e) = loop {
+        match client::student(srv.port, "erin", 80, 24).await {
+            Ok(c) => break c,
+            Err(_) if tries < 50 => {
+                tries += 1;
+                tokio::time::sleep(Duration::from_millis(200)).await;
+            }
+            Err(e) => panic!("erin never got in to be told: {e}"),
+        }
+    };
+    read_until(&mut e, |s| {
+        s == "roughtui: the class is full (2 students): try again later\r\n"
+    })
+    .await;
+    assert_eq!(exit_status(&mut e).await, Some(1));
     // A place freed is taken again.
     a.data(&b"q"[..]).await.unwrap();
     assert_eq!(exit_status(&mut a).await, Some(0));

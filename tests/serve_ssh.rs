@@ -105,10 +105,10 @@ fn student_explores_over_ssh() {
     });
     // s shows the snapshot to copy; nothing is written on the server.
     p.keys(&["s"]);
-    let s = p.wait_text("snapshot: copy it");
+    let s = p.wait_text("-- your snapshot:");
     assert!(s.contains("version: 1"), "{s}");
     p.keys(&["Escape"]);
-    p.wait_for("panel closed", |s| !s.contains("snapshot: copy it"));
+    p.wait_for("panel closed", |s| !s.contains("-- your snapshot:"));
     p.keys(&["p"]);
     p.wait_text("no pictures over SSH");
     let files: Vec<_> = std::fs::read_dir(dir.path())

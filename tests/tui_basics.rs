@@ -515,7 +515,7 @@ fn only_a_served_student_has_the_follow_key() {
     assert!(help.contains(" f ") && help.contains("follow the lecturer again"));
     // A student's s and p write nothing on the server; the help says so.
     assert!(
-        help.contains("show the snapshot (.ron text) to copy"),
+        help.contains("show the snapshot (.ron) to copy; y there: clipboard"),
         "{help}"
     );
     assert!(help.contains("no pictures over SSH"), "{help}");

@@ -8,7 +8,7 @@ use std::time::Duration;
 use common::app::{ch, fig, press, screen, type_text};
 use crossterm::event::{KeyCode, KeyModifiers};
 use rough_model::Axis;
-use roughtui::tui::app::{App, Message, Mode};
+use roughtui::tui::app::{update, App, Message, Mode};
 use roughtui::tui::class::{Ask, Asked, ClassView, Question, Seat, SeatState, Tally};
 use roughtui::tui::keys::message_for_key;
 
@@ -24,6 +24,7 @@ fn key(app: &App, code: KeyCode) -> Option<Message> {
 
 fn seat(name: &str, state: SeatState, size: (u16, u16)) -> Seat {
     Seat {
+        id: 1,
         name: name.into(),
         state,
         size,
@@ -62,9 +63,15 @@ fn only_the_lecturer_has_the_poll_and_class_keys() {
     assert_eq!(key(&s, KeyCode::Enter), Some(Message::Answer));
     assert!(screen(&s).contains("Predict: where does the plastic share pass ½?"));
     assert!(!screen(&s).contains("Ψ_P reaches 1 at"));
+    // After the reveal, Enter dismisses the result (the session acts on it).
     s.class.asked.as_mut().unwrap().revealed = true;
-    assert_eq!(key(&s, KeyCode::Enter), Some(Message::StartValue));
+    assert_eq!(key(&s, KeyCode::Enter), Some(Message::Answer));
     assert!(screen(&s).contains("the model: ζ = 321.5 · you did not answer"));
+    assert!(screen(&s).contains("⏎ dismiss"));
+    s.class.asked = None;
+    assert_eq!(key(&s, KeyCode::Enter), Some(Message::StartValue));
+    // The lecturer's C cancels.
+    assert_eq!(key(&l, KeyCode::Char('C')), Some(Message::CancelPoll));
 }
 
 #[test]
@@ -119,6 +126,7 @@ fn the_lecturer_sees_the_class_and_the_histogram() {
             answers: vec![100.0, 100.0, 1000.0],
             asked: 4,
             revealed: false,
+            sweep: roughtui::presets::load("fig2").unwrap().sweep,
         }),
     });
     let s = screen(&l);
@@ -197,6 +205,7 @@ fn in_the_ascii_set_every_class_panel_is_ascii() {
             answers: vec![100.0, 100.0, 1000.0, 3000.0],
             asked: 4,
             revealed: false,
+            sweep: roughtui::presets::load("fig2").unwrap().sweep,
         }),
     });
     let s = ascii(&l, "open poll");
@@ -243,7 +252,116 @@ fn in_the_ascii_set_every_class_panel_is_ascii() {
     st.class.asked.as_mut().unwrap().revealed = true;
     let s = ascii(&st, "revealed");
     assert!(
-        s.contains("the model: zeta = 321.5 | you: 1000 | 3.1x too high"),
+        s.contains("the model: zeta = 321.5 | you: 1000 | 3.1x high | Enter dismisses"),
         "{s}"
     );
+}
+
+/// An open poll shows nothing of its answer: not on the lecturer's screen
+/// (the projector), a wide student's, any help page, nor in the readout
+/// while the student walks the marker across the answer.
+#[test]
+fn an_open_poll_shows_nothing_of_its_answer() {
+    let truth = roughtui::figure::claims(&roughtui::presets::load("fig2").unwrap())[0].at;
+    let digits = ["321", "320", "≈"];
+    let clean = |s: &str, what: &str| {
+        for d in digits {
+            assert!(!s.contains(d), "{what} shows {d}:\n{s}");
+        }
+    };
+    let q = Question {
+        axis: Axis::Zeta,
+        ask: Ask::Share { rising: true },
+        truth,
+    };
+    // Before the poll the lecturer's screen names the answer.
+    let mut l = lecturer("fig2");
+    l.size = (100, 30);
+    l.class.view = Some(ClassView {
+        seats: vec![seat("alice", SeatState::Answering, (160, 48))],
+        poll: Some(Tally {
+            question: q,
+            answers: vec![],
+            asked: 1,
+            revealed: true,
+            sweep: l.state.sweep,
+        }),
+    });
+    ch(&mut l, 'c');
+    assert!(screen(&l).contains("321.5"));
+    l.class
+        .view
+        .as_mut()
+        .unwrap()
+        .poll
+        .as_mut()
+        .unwrap()
+        .revealed = false;
+    let s = screen(&l);
+    clean(&s, "the lecturer");
+    assert!(
+        s.contains("poll open: 0/1 answered · v reveals · C cancels"),
+        "{s}"
+    );
+    assert!(s.contains("plastic ?"), "{s}");
+    // Every help page of the lecturer and of a student.
+    let mut st = fig("fig2");
+    st.student = true;
+    st.lecturer_keys = true;
+    st.class.asked = Some(Asked {
+        question: q,
+        answer: None,
+        revealed: false,
+    });
+    for app in [&mut l, &mut st] {
+        for size in [(80, 24), (160, 48)] {
+            update(app, Message::Resize(size.0, size.1));
+            clean(&screen(app), "the screen");
+            ch(app, '?');
+            for page in 0..6 {
+                let s = screen(app);
+                clean(&s, &format!("help page {page} at {size:?}"));
+                press(app, KeyCode::Right, KeyModifiers::NONE);
+            }
+            ch(app, '?');
+        }
+    }
+    // The student walks the marker from 128 across 321.5: the share is
+    // never shown, nor the slopes that make it.
+    for _ in 0..8 {
+        press(&mut st, KeyCode::Right, KeyModifiers::NONE);
+        let s = screen(&st);
+        clean(&s, "the walking student");
+        assert!(s.contains("plastic ?  (until the reveal)"), "{s}");
+    }
+    // The index question hides the indices instead.
+    st.class.asked.as_mut().unwrap().question.ask = Ask::Index {
+        rising: true,
+        size_effect: false,
+    };
+    let s = screen(&st);
+    assert!(s.contains("Ψ_P    ?"), "{s}");
+    assert!(s.contains("plastic 96.1%"), "{s}");
+}
+
+/// The class list's ↑↓ choose a student (wrapping), x marks them for
+/// removal (the serve session then removes them).
+#[test]
+fn the_class_list_chooses_and_removes() {
+    let mut l = lecturer("fig2");
+    let mut seats = vec![
+        seat("ann", SeatState::Following, (100, 30)),
+        seat("cat", SeatState::Following, (100, 30)),
+    ];
+    seats[1].id = 4;
+    l.class.view = Some(ClassView { seats, poll: None });
+    ch(&mut l, 'w');
+    press(&mut l, KeyCode::Down, KeyModifiers::NONE);
+    assert_eq!(l.class.chosen, 1);
+    press(&mut l, KeyCode::Down, KeyModifiers::NONE);
+    assert_eq!(l.class.chosen, 0);
+    press(&mut l, KeyCode::Up, KeyModifiers::NONE);
+    ch(&mut l, 'x');
+    assert_eq!(l.class.remove, Some(4));
+    assert!(screen(&l).contains("x removes"));
 }

@@ -133,6 +133,8 @@ pub fn synthetic(n: usize) -> anyhow::Result<State> {
         sha256: "0".repeat(64),
         summary: format!("synthetic map {n} × {n}"),
         notes: Vec::new(),
+        measurement: None,
+        slopes: None,
     };
     State::measured(SurfaceSource {
         path: std::path::PathBuf::from(format!("synthetic-{n}x{n}.txt")),

@@ -186,11 +186,7 @@ const SURFACE_STEPS: usize = 41;
 /// 1024 × 1024 measured surface; with `--surface FILE`, that file instead.
 pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
     if let Some(path) = &args.surface {
-        let options = rough_surface::Options {
-            periodic: args.periodic,
-            pixel_size: args.pixel_size,
-            channel: args.channel.clone(),
-        };
+        let options = args.surface_options();
         let t = measured::time_file(path, options, SURFACE_STEPS)?;
         print!(
             "{}",

@@ -6,7 +6,7 @@
 //! read it through latest-value channels: the lecturer through a version
 //! number that moves with every change the class list shows (its session
 //! then takes a fresh [`ClassView`]), students through the poll alone,
-//! which changes only when a poll opens, is revealed or closes. So one
+//! which changes only when a poll opens, is revealed or is cancelled. So one
 //! student's key never wakes another student, and a student who sits still
 //! is sent nothing.
 
@@ -17,6 +17,8 @@ use std::time::Instant;
 
 use tokio::sync::watch;
 
+use super::csv::csv_field;
+pub use super::csv::CSV_HEADER;
 use super::follow::Shown;
 use crate::csv_number;
 pub use crate::tui::class::duration;
@@ -59,22 +61,6 @@ pub fn clean_name(raw: &str) -> String {
 /// bidirectional controls, the byte-order mark.
 fn invisible(c: char) -> bool {
     matches!(c as u32, 0x200b..=0x200f | 0x202a..=0x202e | 0x2060..=0x206f | 0xfeff)
-}
-
-/// One field of a CSV row: quoted when it holds a comma, quote or line
-/// break; a leading `=`, `+`, `-` or `@` (which a spreadsheet would run as
-/// a formula) gets a `'` before it.
-fn csv_field(s: &str) -> String {
-    let s = if s.starts_with(['=', '+', '-', '@']) {
-        format!("'{s}")
-    } else {
-        s.to_string()
-    };
-    if s.contains([',', '"', '\n', '\r']) {
-        format!("\"{}\"", s.replace('"', "\"\""))
-    } else {
-        s
-    }
 }
 
 /// What a student's session tells the class.
@@ -126,11 +112,14 @@ struct Student {
     last_key: Instant,
 }
 
+/// The last poll: open, or revealed (kept until the next opens, for `S`).
 #[derive(Debug)]
 struct Open {
     poll: Arc<Poll>,
     /// By seat: the name then, and the answer.
     answers: BTreeMap<u64, (String, f64)>,
+    /// The students who were here at the reveal without an answer.
+    silent: Vec<String>,
 }
 
 #[derive(Debug, Default)]
@@ -147,6 +136,8 @@ pub type SeatId = u64;
 #[derive(Debug)]
 pub struct Class {
     inner: Mutex<Inner>,
+    /// The seats the lecturer removed; their sessions end with a line.
+    removed: watch::Sender<std::collections::BTreeSet<SeatId>>,
     roster: watch::Sender<u64>,
     poll: watch::Sender<Option<Arc<Poll>>>,
 }
@@ -155,6 +146,7 @@ impl Default for Class {
     fn default() -> Class {
         Class {
             inner: Mutex::default(),
+            removed: watch::Sender::new(Default::default()),
             roster: watch::Sender::new(0),
             poll: watch::Sender::new(None),
         }
@@ -208,6 +200,21 @@ impl Class {
         id
     }
 
+    /// The lecturer removes a student: their session ends, told why;
+    /// whether they were here.
+    pub fn remove(&self, id: SeatId) -> Option<String> {
+        let name = self.lock().seats.get(&id).map(|s| s.name.clone())?;
+        self.removed.send_modify(|r| {
+            r.insert(id);
+        });
+        Some(name)
+    }
+
+    /// What students watch to learn they were removed.
+    pub fn watch_removed(&self) -> watch::Receiver<std::collections::BTreeSet<SeatId>> {
+        self.removed.subscribe()
+    }
+
     /// A student goes; an answer they gave stays in the poll.
     pub fn leave(&self, id: SeatId) {
         if self.lock().seats.remove(&id).is_some() {
@@ -235,7 +242,8 @@ impl Class {
         }
     }
 
-    /// Opens a poll on `scene`, replacing any other; its id.
+    /// Opens a poll on `scene`, replacing any other (and the last one's
+    /// answers); its id.
     pub fn open(&self, question: Question, scene: Shown) -> u64 {
         let mut c = self.lock();
         c.next_poll += 1;
@@ -248,6 +256,7 @@ impl Class {
         c.poll = Some(Open {
             poll: Arc::clone(&poll),
             answers: BTreeMap::new(),
+            silent: Vec::new(),
         });
         drop(c);
         self.poll.send_replace(Some(poll.clone()));
@@ -258,12 +267,18 @@ impl Class {
     /// Reveals the open poll's answer; whether there was one to reveal.
     pub fn reveal(&self) -> bool {
         let mut c = self.lock();
-        let Some(open) = c.poll.as_mut().filter(|o| !o.poll.revealed) else {
+        let Inner { seats, poll, .. } = &mut *c;
+        let Some(open) = poll.as_mut().filter(|o| !o.poll.revealed) else {
             return false;
         };
         let mut p = (*open.poll).clone();
         p.revealed = true;
         open.poll = Arc::new(p);
+        open.silent = seats
+            .iter()
+            .filter(|(id, _)| !open.answers.contains_key(id))
+            .map(|(_, s)| s.name.clone())
+            .collect();
         let poll = Arc::clone(&open.poll);
         drop(c);
         self.poll.send_replace(Some(poll));
@@ -271,12 +286,28 @@ impl Class {
         true
     }
 
-    /// Ends the poll (its answers are gone).
-    pub fn close(&self) {
-        if self.lock().poll.take().is_some() {
-            self.poll.send_replace(None);
-            self.changed();
+    /// Cancels the open poll (its answers are dropped); whether one was
+    /// open. A revealed poll is not cancelled: it stays for `S`.
+    pub fn cancel(&self) -> bool {
+        let mut c = self.lock();
+        if c.poll.as_ref().is_none_or(|o| o.poll.revealed) {
+            return false;
         }
+        c.poll = None;
+        drop(c);
+        self.poll.send_replace(None);
+        self.changed();
+        true
+    }
+
+    /// How many polls were opened.
+    pub fn polls(&self) -> u64 {
+        self.lock().next_poll
+    }
+
+    /// How many students came, in all.
+    pub fn seen(&self) -> u64 {
+        self.lock().next_seat
     }
 
     /// The poll, if one is on.
@@ -313,6 +344,7 @@ impl Class {
             .seats
             .iter()
             .map(|(id, s)| Seat {
+                id: *id,
                 name: s.name.clone(),
                 state: match open {
                     Some(o) if o.answers.contains_key(id) => SeatState::Answered,
@@ -332,24 +364,54 @@ impl Class {
                 answers: o.answers.values().map(|a| a.1).collect(),
                 asked: c.seats.len() + gone.count(),
                 revealed: o.poll.revealed,
+                sweep: o.poll.scene.state.sweep,
             }
         });
         ClassView { seats, poll }
     }
 
-    /// The poll's answers as CSV, `name,answer,truth` (values in the
-    /// model's units: metres for lengths), in the order students came.
+    /// The last poll's answers as CSV: [`CSV_HEADER`], then a row per
+    /// answer in the order students came, then a `no answer` row for each
+    /// student here (at the reveal, or now while the poll is open) who
+    /// did not answer. Values in the model's units (metres for lengths);
+    /// `offset` is the answer minus the truth.
     pub fn csv(&self) -> Option<String> {
+        self.csv_rows().map(|rows| format!("{CSV_HEADER}\n{rows}"))
+    }
+
+    /// The same without the header (a lesson's polls go to one file).
+    pub fn csv_rows(&self) -> Option<String> {
         let c = self.lock();
         let o = c.poll.as_ref()?;
-        let truth = csv_number::format(o.poll.question.truth);
-        let mut s = String::from("name,answer,truth\n");
+        let q = &o.poll.question;
+        let ascii = crate::tui::glyphs::Glyphs::Ascii;
+        let head = [
+            csv_field(&ascii.text(&q.text(&crate::tui::class::ASCII))),
+            csv_field(&ascii.text(q.axis.symbol())),
+            q.unit().to_string(),
+            csv_number::format(q.truth),
+        ]
+        .join(",");
+        let mut s = String::new();
         for (name, v) in o.answers.values() {
             s.push_str(&format!(
-                "{},{},{truth}\n",
+                "{head},{},{},{}\n",
                 csv_field(name),
-                csv_number::format(*v)
+                csv_number::format(*v),
+                csv_number::format(*v - q.truth)
             ));
+        }
+        let silent: Vec<String> = if o.poll.revealed {
+            o.silent.clone()
+        } else {
+            c.seats
+                .iter()
+                .filter(|(id, _)| !o.answers.contains_key(id))
+                .map(|(_, st)| st.name.clone())
+                .collect()
+        };
+        for name in silent {
+            s.push_str(&format!("{head},{},no answer,\n", csv_field(&name)));
         }
         Some(s)
     }
@@ -414,15 +476,6 @@ mod tests {
         assert!(ctl.starts_with("\\x07\\x07"), "{ctl}");
         assert!(!ctl.chars().any(char::is_control));
         assert_eq!(clean_name(&"b".repeat(32)), "b".repeat(32));
-    }
-
-    #[test]
-    fn csv_fields_are_quoted_and_defused() {
-        assert_eq!(csv_field("alice"), "alice");
-        assert_eq!(csv_field("a,b"), "\"a,b\"");
-        assert_eq!(csv_field("say \"hi\""), "\"say \"\"hi\"\"\"");
-        assert_eq!(csv_field("=cmd()"), "'=cmd()");
-        assert_eq!(csv_field("-1,2"), "\"'-1,2\"");
     }
 
     #[test]
@@ -514,19 +567,35 @@ mod tests {
         );
         assert_eq!(
             class.csv().unwrap(),
-            "name,answer,truth\nalice,200,321.5\n\"b,\"\"ob\"\"\",1000,321.5\n"
+            "question,quantity,unit,truth,name,answer,offset\n\
+             where does the plastic share pass 1/2?,zeta,,321.5,alice,200,-121.5\n\
+             where does the plastic share pass 1/2?,zeta,,321.5,\"b,\"\"ob\"\"\",1000,678.5\n\
+             where does the plastic share pass 1/2?,zeta,,321.5,carol,no answer,\n"
         );
         assert_eq!(
             class.view().line(&UNICODE),
-            "2 students · revealed ζ = 321.5 (2 answers)"
+            "2 students · 2 following · 0 on their own · revealed ζ = 321.5 (2 answers)"
         );
-        // An answer to an older poll is refused once another opened.
+        // A revealed poll is not cancelled: it stays for S.
+        assert!(!class.cancel());
+        assert!(class.csv().is_some());
+        // An answer to an older poll is refused once another opened; the
+        // new poll replaces the last one's answers.
         let id2 = class.open(question(), shown());
         assert_eq!(class.answer(c, id, 5.0), Err(Refused::Closed));
         class.answer(c, id2, 5.0).unwrap();
-        class.close();
+        // While open, everyone here without an answer is a no-answer row.
+        assert_eq!(
+            class.csv().unwrap().lines().skip(1).collect::<Vec<_>>(),
+            [
+                "where does the plastic share pass 1/2?,zeta,,321.5,carol,5,-316.5",
+                "where does the plastic share pass 1/2?,zeta,,321.5,alice,no answer,"
+            ]
+        );
+        assert!(class.cancel());
         assert_eq!(class.poll(), None);
         assert_eq!(class.csv(), None);
         assert_eq!(class.answer(c, id2, 5.0), Err(Refused::NoPoll));
+        assert_eq!((class.polls(), class.seen()), (2, 3));
     }
 }

@@ -21,6 +21,8 @@ pub struct Shown {
     pub file: Option<String>,
     /// The contact view's load, plot (`b`) and seed.
     pub contact: (usize, bool, u64),
+    /// The lesson's step, when the lecturer leads one.
+    pub step: Option<crate::lesson::StepLine>,
 }
 
 impl Shown {
@@ -33,6 +35,7 @@ impl Shown {
             modified: app.modified,
             file: app.file.clone(),
             contact: (app.contact.load, app.contact.sweep, app.contact.seed),
+            step: app.class.step.clone(),
         }
     }
 
@@ -47,6 +50,7 @@ impl Shown {
         }
         app.modified = self.modified;
         app.file.clone_from(&self.file);
+        app.class.step.clone_from(&self.step);
     }
 }
 
@@ -56,6 +60,7 @@ pub const FOLLOWING: &str = "following the lecturer — any change explores on y
 pub const NO_LECTURER: &str = "no lecturer connected: exploring on your own";
 pub const LECTURER_BACK: &str = "the lecturer is back — f to follow";
 pub const ANSWER_FIRST: &str = "a poll is on: move the marker, then Enter answers";
+pub const CALLED_BACK: &str = "the lecturer asked everyone to follow: following again";
 
 /// A student's relation to the lecturer.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -70,7 +75,8 @@ pub enum Follow {
     /// explore: a lecturer who comes (back) does not take their scene.
     Away,
     /// A poll is on: the student answers on the poll's scene, and neither
-    /// the lecturer's moves nor their own keys change that.
+    /// the lecturer's moves (nor the lecturer leaving: the poll holds)
+    /// nor their own keys change that.
     Answering,
 }
 
@@ -97,6 +103,12 @@ impl Follow {
     /// Whether lecturer updates are shown.
     pub fn following(self) -> bool {
         self == Follow::Following
+    }
+
+    /// Whether the student is with the class: following the lecturer or
+    /// answering a poll (such a session never idles out).
+    pub fn in_class(self) -> bool {
+        matches!(self, Follow::Following | Follow::Answering)
     }
 
     /// A message the student's keys sent, before it is applied: the first
@@ -140,12 +152,18 @@ impl Follow {
                 *self = Follow::Away;
                 Effect::Say(NO_LECTURER)
             }
-            (Follow::Answering, false) => {
-                *self = Follow::Alone;
-                Effect::Say(NO_LECTURER)
-            }
             _ => Effect::None,
         }
+    }
+
+    /// The lecturer's `F`: a student exploring on their own follows again
+    /// (one answering a poll goes on answering).
+    pub fn on_all_follow(&mut self) -> Effect {
+        if *self == Follow::Detached {
+            *self = Follow::Following;
+            return Effect::Catch;
+        }
+        Effect::None
     }
 
     /// A poll opened: whatever the student did, they answer it.
@@ -298,11 +316,24 @@ mod tests {
             assert!(f.following());
             assert_eq!(f.on_poll_end(true), Effect::None);
         }
+        // The lecturer's connection drops: the poll holds.
         let mut f = Follow::Answering;
-        assert_eq!(f.on_lecturer(false), Effect::Say(NO_LECTURER));
-        assert_eq!(f, Follow::Alone);
+        assert_eq!(f.on_lecturer(false), Effect::None);
+        assert_eq!(f, Follow::Answering);
         let mut f = Follow::Answering;
         assert_eq!(f.on_poll_end(false), Effect::Say(NO_LECTURER));
+    }
+
+    #[test]
+    fn everyone_follow_pulls_back_only_the_detached() {
+        let mut f = Follow::start(true);
+        assert_eq!(f.on_all_follow(), Effect::None);
+        f.on_message(&Message::ToggleModel);
+        assert_eq!(f.on_all_follow(), Effect::Catch);
+        assert!(f.following());
+        f.on_poll();
+        assert_eq!(f.on_all_follow(), Effect::None);
+        assert_eq!(f, Follow::Answering);
     }
 
     #[test]

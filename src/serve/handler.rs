@@ -49,6 +49,10 @@ pub struct Handler {
     client: ClientTerm,
     running: bool,
     requests: usize,
+    /// A student's place in the class, held while the connection lasts.
+    seat: Option<super::limits::Permit>,
+    /// A student who found the class full: why, said on their terminal.
+    full: Option<String>,
 }
 
 #[derive(Debug)]
@@ -84,6 +88,8 @@ impl Handler {
             client: ClientTerm::default(),
             running: false,
             requests: 0,
+            seat: None,
+            full: None,
         }
     }
 
@@ -105,7 +111,19 @@ impl Handler {
         }
     }
 
+    /// A student logs in: with a place in the class, or to be told on
+    /// their terminal that the class is full (the lecturer's key needs no
+    /// place).
     fn student(&mut self, user: &str) -> Auth {
+        let ip = self.peer.ip();
+        match self.shared.seats.enter(ip) {
+            Ok(p) => self.seat = Some(p),
+            Err(full) => {
+                let why = super::full_text(full, &self.shared.seats, ip);
+                self.shared.log.line(&format!("turned away {ip}: {why}"));
+                self.full = Some(why);
+            }
+        }
         self.role = Some(Role::Student);
         self.user = user.to_string();
         Auth::Accept
@@ -294,6 +312,10 @@ impl russh::server::Handler for Handler {
         session.channel_success(channel)?;
         self.running = true;
         self.started.notify_one();
+        if let Some(why) = self.full.take() {
+            session::refuse(ch, why);
+            return Ok(());
+        }
         session::spawn(Start {
             shared: Arc::clone(&self.shared),
             channel: ch,

@@ -5,8 +5,10 @@
 //! the bounds.
 
 pub mod auth;
+pub mod banner;
 pub mod class;
 pub mod code;
+pub mod csv;
 pub mod follow;
 pub mod handler;
 pub mod host_key;
@@ -14,6 +16,7 @@ pub mod input;
 pub mod limits;
 pub mod log;
 pub mod output;
+pub mod panel;
 pub mod poll;
 pub mod session;
 pub mod stream;
@@ -70,6 +73,8 @@ pub struct Options {
     pub quiet: bool,
     /// `--marker`: every session's glyphs, instead of each client's own.
     pub marker: Option<crate::tui::glyphs::Glyphs>,
+    /// `--lesson`: the lesson the lecturer leads.
+    pub lesson: Option<crate::lesson::Lesson>,
 }
 
 /// Connections over a limit that are still told so (the class is full),
@@ -98,14 +103,37 @@ pub struct Shared {
     /// connects (again, or a second time) starts from it.
     last: Mutex<Option<Shown>>,
     lecturers: AtomicUsize,
+    /// The poll CSVs written.
+    saved: Mutex<Vec<PathBuf>>,
+    /// The lesson the lecturer leads, and its polls' CSV once written.
+    pub lesson: Option<Arc<crate::lesson::Lesson>>,
+    pub lesson_csv: Mutex<Option<PathBuf>>,
+    /// Moves on each lecturer's `F`: every student follows again.
+    pub all_follow: watch::Sender<u64>,
+    /// Set when the server stops: every session says goodbye.
+    pub ending: watch::Sender<bool>,
+    /// Students' places (`--max-sessions`, `--max-per-address`), taken at
+    /// login; the lecturer's key needs none.
+    pub seats: Limits,
 }
 
 impl Shared {
     fn lecturer_joined(&self, app: &mut crate::tui::app::App) {
         self.lecturers.fetch_add(1, Ordering::SeqCst);
+        if let Some(lesson) = &self.lesson {
+            app.class.lesson = Some(crate::lesson::LessonAt {
+                lesson: Arc::clone(lesson),
+                at: 0,
+            });
+            crate::lesson::show(app);
+        }
         let last = self.last.lock().ok().and_then(|l| l.clone());
         if let Some(shown) = last {
             shown.apply(app);
+            // Back where the lesson was.
+            if let (Some(l), Some(step)) = (app.class.lesson.as_mut(), &shown.step) {
+                l.at = step.at - 1;
+            }
         }
         self.publish(app);
     }
@@ -126,9 +154,16 @@ impl Shared {
 
     fn lecturer_left(&self) {
         if self.lecturers.fetch_sub(1, Ordering::SeqCst) == 1 {
+            // A poll holds: the lecturer may come back to reveal it.
             self.follow.send_replace(None);
-            // Nobody is left to reveal the answer.
-            self.class.close();
+        }
+    }
+
+    /// A poll's CSV was written (the console's goodbye names it).
+    pub fn saved(&self, path: std::path::PathBuf) {
+        self.log.line(&format!("saved {}", path.display()));
+        if let Ok(mut s) = self.saved.lock() {
+            s.push(path);
         }
     }
 }
@@ -175,24 +210,17 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         key_path.display(),
         if generated { "new" } else { "reused" }
     );
-    if lecturer_keys.any() {
-        say!("lecturer: ssh -p {} {}@HOST", addr.port(), auth::LECTURER);
-    } else {
-        say!("no --lecturer-keys: everyone explores alone");
-    }
-    // On all interfaces the students need the machine's own name.
-    let host = if addr.ip().is_unspecified() {
-        "HOST".to_string()
-    } else {
-        addr.ip().to_string()
-    };
+    let mut extra = Vec::new();
     if opts.class_code.is_some() {
-        say!("class code: on (students type it at \"class code:\")");
+        extra.push("class code: on (students type it at \"class code:\")".to_string());
     }
     if !opts.quiet {
-        say!("log: a line per join and leave (times UTC), a summary each minute");
+        extra.push("log: a line per join and leave (times UTC), a summary each minute".into());
     }
-    say!("students: ssh -p {} {host}", addr.port());
+    let lecturer = lecturer_keys.any().then_some(auth::LECTURER);
+    for line in banner::lines(addr, lecturer, &extra) {
+        say!("{line}");
+    }
     let _ = out.flush();
     drop(out);
 
@@ -224,21 +252,36 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         follow: watch::Sender::new(None),
         last: Mutex::new(None),
         lecturers: AtomicUsize::new(0),
+        saved: Mutex::new(Vec::new()),
+        ending: watch::Sender::new(false),
+        all_follow: watch::Sender::new(0),
+        lesson: opts.lesson.map(Arc::new),
+        lesson_csv: Mutex::new(None),
+        seats: Limits::new(opts.max_sessions, opts.max_per_address),
     });
     if shared.log.on() {
         tokio::spawn(summaries(Arc::clone(&shared)));
     }
-    let limits = Limits::new(opts.max_sessions, opts.max_per_address);
+    // Connections: the students' places and the lecturer's on top (a
+    // student past the students' limit is told at login, see `seats`).
+    let limits = Limits::new(
+        opts.max_sessions + LECTURER_PLACES,
+        opts.max_per_address + LECTURER_PLACES,
+    );
     let turned_away = Limits::new(TURNED_AWAY.0, TURNED_AWAY.1);
     let login = login_deadline();
+    let mut stop = Stop::new()?;
     loop {
-        let (socket, peer) = match listener.accept().await {
-            Ok(x) => x,
-            // Out of file descriptors and the like: wait, then go on.
-            Err(_) => {
-                tokio::time::sleep(Duration::from_millis(100)).await;
-                continue;
-            }
+        let (socket, peer) = tokio::select! {
+            accepted = listener.accept() => match accepted {
+                Ok(x) => x,
+                // Out of file descriptors and the like: wait, then go on.
+                Err(_) => {
+                    tokio::time::sleep(Duration::from_millis(100)).await;
+                    continue;
+                }
+            },
+            () = stop.wait() => break,
         };
         let _ = socket.set_nodelay(true);
         let config = Arc::clone(&config);
@@ -257,17 +300,7 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
                     drop(socket);
                     continue;
                 };
-                let why = match full {
-                    Full::Server => format!(
-                        "the class is full ({} sessions): try again later",
-                        limits.max_sessions()
-                    ),
-                    Full::Address => format!(
-                        "too many sessions from {} ({}): try again later",
-                        peer.ip(),
-                        limits.max_per_address()
-                    ),
-                };
+                let why = full_text(full, &shared.seats, peer.ip());
                 tokio::spawn(async move {
                     let _permit = permit;
                     turn_away(config, shared, socket, peer, why).await;
@@ -275,6 +308,71 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
             }
         }
     }
+    drop(listener);
+    goodbye(&shared, &limits).await;
+    Ok(())
+}
+
+/// Connections beyond `--max-sessions` (and `--max-per-address`) kept for
+/// the lecturer's key: the lecturer always gets in.
+pub const LECTURER_PLACES: usize = 2;
+
+/// How long the server waits for its sessions to say goodbye when it stops.
+pub const GOODBYE_TIME: Duration = Duration::from_secs(6);
+
+/// What a student over a limit is told.
+pub fn full_text(full: Full, seats: &Limits, ip: std::net::IpAddr) -> String {
+    match full {
+        Full::Server => format!(
+            "the class is full ({} students): try again later",
+            seats.max_sessions()
+        ),
+        Full::Address => format!(
+            "too many sessions from {ip} ({}): try again later",
+            seats.max_per_address()
+        ),
+    }
+}
+
+/// Ctrl-C (SIGINT) or SIGTERM.
+struct Stop {
+    int: tokio::signal::unix::Signal,
+    term: tokio::signal::unix::Signal,
+}
+
+impl Stop {
+    fn new() -> anyhow::Result<Stop> {
+        use tokio::signal::unix::{signal, SignalKind};
+        Ok(Stop {
+            int: signal(SignalKind::interrupt()).context("cannot catch SIGINT")?,
+            term: signal(SignalKind::terminate()).context("cannot catch SIGTERM")?,
+        })
+    }
+
+    async fn wait(&mut self) {
+        tokio::select! {
+            _ = self.int.recv() => {}
+            _ = self.term.recv() => {}
+        }
+    }
+}
+
+/// The end of the class: every session says goodbye to its client (out of
+/// the alternate screen, cursor shown, colours reset, "the class has
+/// ended") and closes; after at most [`GOODBYE_TIME`] the console's
+/// summary.
+async fn goodbye(shared: &Shared, limits: &Limits) {
+    shared.ending.send_replace(true);
+    let until = tokio::time::Instant::now() + GOODBYE_TIME;
+    while limits.open() > 0 && tokio::time::Instant::now() < until {
+        tokio::time::sleep(Duration::from_millis(50)).await;
+    }
+    let saved = shared.saved.lock().map(|s| s.clone()).unwrap_or_default();
+    let mut out = std::io::stdout().lock();
+    for line in banner::summary(shared.class.seen(), shared.class.polls(), &saved) {
+        let _ = writeln!(out, "{line}");
+    }
+    let _ = out.flush();
 }
 
 /// The console's summary, each minute while students are connected.

@@ -10,6 +10,7 @@ use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
 use crossterm::cursor::Show;
+use crossterm::style::{Attribute, ResetColor, SetAttribute};
 use crossterm::terminal::LeaveAlternateScreen;
 use russh::server::{Handle, Msg};
 use russh::{ChannelWriteHalf, Disconnect};
@@ -48,14 +49,47 @@ impl Write for FrameBuf {
 /// The slot's sending side, for the explorer.
 pub type Slot = mpsc::Sender<Vec<u8>>;
 
+/// Why the server ends a session, set before the slot is dropped: the
+/// client's terminal shows it as a line on its normal screen.
+#[derive(Clone, Debug, Default)]
+pub struct Bye(Arc<Mutex<Option<String>>>);
+
+impl Bye {
+    pub fn set(&self, why: impl Into<String>) {
+        *self.0.lock().unwrap_or_else(|p| p.into_inner()) = Some(why.into());
+    }
+
+    fn take(&self) -> Option<String> {
+        self.0.lock().unwrap_or_else(|p| p.into_inner()).take()
+    }
+}
+
+/// What ends a session on the client's terminal: out of the alternate
+/// screen, the cursor shown, colours and attributes reset, then `why` (if
+/// the server ended it) on a line of its own.
+pub fn goodbye(why: Option<&str>) -> Vec<u8> {
+    let mut bye = Vec::new();
+    let _ = crossterm::execute!(
+        bye,
+        LeaveAlternateScreen,
+        Show,
+        ResetColor,
+        SetAttribute(Attribute::Reset)
+    );
+    if let Some(why) = why {
+        bye.extend_from_slice(format!("\r\nroughtui: {why}\r\n").as_bytes());
+    }
+    bye
+}
+
 /// Starts the writer of `out`; it ends when the slot's sender is dropped
 /// (then it restores the client's terminal, sends exit status `0`, closes
 /// the channel and the connection, cut after a grace period if the
 /// client does not let go) or when the client stalls or is gone.
-pub fn spawn(out: ChannelWriteHalf<Msg>, conn: Handle, kill: Kill) -> Slot {
+pub fn spawn(out: ChannelWriteHalf<Msg>, conn: Handle, kill: Kill, bye: Bye) -> Slot {
     let (tx, rx) = mpsc::channel(1);
     tokio::spawn(async move {
-        if !write_frames(out, rx).await {
+        if !write_frames(out, rx, bye).await {
             // Stalled or gone: cut the connection now.
             kill.kill();
             return;
@@ -82,7 +116,11 @@ pub fn spawn(out: ChannelWriteHalf<Msg>, conn: Handle, kill: Kill) -> Slot {
 }
 
 /// Whether the session ended normally (not by a stalled or gone client).
-async fn write_frames(out: ChannelWriteHalf<Msg>, mut rx: mpsc::Receiver<Vec<u8>>) -> bool {
+async fn write_frames(
+    out: ChannelWriteHalf<Msg>,
+    mut rx: mpsc::Receiver<Vec<u8>>,
+    why: Bye,
+) -> bool {
     while let Some(frame) = rx.recv().await {
         match tokio::time::timeout(STALL, out.data_bytes(frame)).await {
             Ok(Ok(())) => {}
@@ -90,8 +128,7 @@ async fn write_frames(out: ChannelWriteHalf<Msg>, mut rx: mpsc::Receiver<Vec<u8>
             _ => return false,
         }
     }
-    let mut bye = Vec::new();
-    let _ = crossterm::execute!(bye, LeaveAlternateScreen, Show);
+    let bye = goodbye(why.take().as_deref());
     let _ = tokio::time::timeout(STALL, async {
         let _ = out.data_bytes(bye).await;
         let _ = out.exit_status(0).await;

@@ -1,10 +1,13 @@
 //! Predict, then reveal, as sessions play it. The lecturer's `v` opens a
 //! poll on the claim the view and scene make (or, with none, or with `V`,
 //! on a value the lecturer types); every student is put on the poll's scene
-//! with the marker theirs to move, Enter sends their answer, and the
-//! lecturer's `v` again reveals the model's answer to all, who then follow
-//! again. `S` saves the answers as CSV. The poll ends when the lecturer
-//! moves on from the revealed scene, opens another, or leaves.
+//! with the marker theirs to move, Enter sends their answer. The poll is a
+//! state of the class: it holds, whatever else the lecturer does (moves,
+//! views, snapshots, pictures, help, even leaving and coming back), until
+//! the lecturer reveals it (`v` again) or cancels it (`C`). At the reveal
+//! every student follows again, the model's answer and their miss staying
+//! on their screen until the next poll or their Enter. `S` saves the last
+//! poll's answers as CSV until a new poll opens.
 
 use std::sync::Arc;
 use std::time::SystemTime;
@@ -12,6 +15,7 @@ use std::time::SystemTime;
 use rough_model::Axis;
 
 use super::class::Poll;
+use super::follow::FOLLOWING;
 use super::session::Seat;
 use crate::snapshot;
 use crate::tui::app::Message;
@@ -20,18 +24,24 @@ use crate::tui::class::{Ask, Asked, Question, UNICODE};
 /// A student's status when a poll opens.
 pub const PREDICT: &str = "predict: ←→ move the marker (⇧ fine), Enter answers";
 
+/// A student's status when the lecturer cancels the poll.
+pub const CANCELLED: &str = "the lecturer cancelled the poll";
+
 /// What a student's session does when the poll changes; whether the
 /// screen changed.
 pub(super) fn on_poll(s: &mut Seat, poll: Option<Arc<Poll>>) -> bool {
     let app = &mut s.ex.app;
     let Some(p) = poll else {
-        // Closed: the result line goes; an unanswered student follows again.
-        let had = app.class.asked.take().is_some();
-        s.poll = None;
+        // Cancelled: an unanswered question goes, a reveal stays.
+        if s.poll.take().is_none() || app.class.asked.is_some_and(|a| a.revealed) {
+            return false;
+        }
+        app.class.asked = None;
         let lecturer = s.lecturer.borrow().is_some();
         let e = s.follow.on_poll_end(lecturer);
         s.effect(e);
-        return had;
+        s.ex.app.set_status(CANCELLED, false);
+        return true;
     };
     if !p.revealed {
         if s.poll == Some(p.id) {
@@ -58,8 +68,9 @@ pub(super) fn on_poll(s: &mut Seat, poll: Option<Arc<Poll>>) -> bool {
     if s.poll != Some(p.id) {
         return false;
     }
-    if let Some(a) = app.class.asked.as_mut() {
-        a.revealed = true;
+    match app.class.asked.as_mut() {
+        Some(a) if !a.revealed => a.revealed = true,
+        _ => return false,
     }
     let lecturer = s.lecturer.borrow().is_some();
     let e = s.follow.on_poll_end(lecturer);
@@ -67,7 +78,7 @@ pub(super) fn on_poll(s: &mut Seat, poll: Option<Arc<Poll>>) -> bool {
     true
 }
 
-/// The poll keys: the lecturer's `v` and `S`, a student's Enter.
+/// The poll keys: the lecturer's `v`, `C` and `S`, a student's Enter.
 pub(super) fn on_key(s: &mut Seat, msg: Message) {
     match msg {
         Message::Answer => answer(s),
@@ -77,14 +88,26 @@ pub(super) fn on_key(s: &mut Seat, msg: Message) {
             match class.poll() {
                 Some(p) if !p.revealed => {
                     class.reveal();
+                    // The lesson's step has had its poll: its answer shows.
+                    if let Some(step) = app.class.step.as_mut() {
+                        step.pending = None;
+                    }
                     let q = &p.question;
-                    app.set_status(
-                        format!(
-                            "revealed: {} · S saves the answers · v asks again",
-                            q.value(q.truth)
-                        ),
+                    let saved = match to_lesson_csv(s) {
+                        Some(Ok(path)) => format!("answers added to {}", path.display()),
+                        Some(Err(e)) => format!("{e:#}"),
+                        None => "S saves the answers".into(),
+                    };
+                    s.ex.app.set_status(
+                        format!("revealed: {} · {saved} · v asks again", q.value(q.truth)),
                         false,
                     );
+                }
+                // A lesson's step with a value to poll: that value.
+                _ if step_value(app).is_some() => {
+                    if let Some(q) = step_value(app) {
+                        open(s, q);
+                    }
                 }
                 _ => match Question::of_claims(app.view, &app.claims) {
                     Some(q) => open(s, q),
@@ -95,25 +118,60 @@ pub(super) fn on_key(s: &mut Seat, msg: Message) {
                 },
             }
         }
+        Message::CancelPoll if s.is_lecturer() => {
+            let text = if s.shared.class.cancel() {
+                "poll cancelled: its answers are dropped"
+            } else {
+                "no open poll to cancel"
+            };
+            s.ex.app.set_status(text, false);
+        }
         Message::SavePoll if s.is_lecturer() => save(s),
         _ => {}
     }
 }
 
-/// After the lecturer's keys: a typed value opens a poll; a move away from
-/// a revealed poll's scene ends it.
+/// The poll of a lesson's step on a value, if the lecturer is at one.
+fn step_value(app: &crate::tui::app::App) -> Option<Question> {
+    let q = app.class.lesson.as_ref()?.step().poll?;
+    (q.ask == Ask::Typed && q.axis == app.state.sweep.axis()).then_some(q)
+}
+
+/// In a lesson, the revealed poll's rows appended to the lesson's one CSV
+/// (made at the first reveal, in the lecturer's save folder); `None`
+/// outside a lesson.
+fn to_lesson_csv(s: &Seat) -> Option<anyhow::Result<std::path::PathBuf>> {
+    use std::io::Write;
+    let lesson = s.shared.lesson.as_ref()?;
+    let rows = s.shared.class.csv_rows()?;
+    let mut slot = s.shared.lesson_csv.lock().ok()?;
+    let path = match slot.as_ref() {
+        Some(p) => p.clone(),
+        None => match crate::lesson::csv_path(&s.ex.app.save_dir, lesson) {
+            Ok(p) => {
+                s.shared.saved(p.clone());
+                *slot = Some(p.clone());
+                p
+            }
+            Err(e) => return Some(Err(e)),
+        },
+    };
+    let written = std::fs::OpenOptions::new()
+        .append(true)
+        .open(&path)
+        .and_then(|mut f| f.write_all(rows.as_bytes()));
+    Some(
+        written
+            .map(|()| path.clone())
+            .map_err(|e| anyhow::anyhow!("cannot add the answers to {}: {e}", path.display())),
+    )
+}
+
+/// After the lecturer's keys: a value typed at `V` opens a poll.
 pub(super) fn after_lecturer_keys(s: &mut Seat) {
     if let Some((axis, truth)) = s.ex.app.class.typed.take() {
         let ask = Ask::Typed;
         open(s, Question { axis, ask, truth });
-        return;
-    }
-    let class = &s.shared.class;
-    if class
-        .poll()
-        .is_some_and(|p| p.revealed && p.scene.state != s.ex.app.state)
-    {
-        class.close();
     }
 }
 
@@ -124,7 +182,7 @@ fn open(s: &mut Seat, q: Question) {
     let n = class.students();
     s.ex.app.set_status(
         format!(
-            "asked {n} {}: {} · v reveals",
+            "asked {n} {}: {} · v reveals · C cancels",
             if n == 1 { "student" } else { "students" },
             q.text(&UNICODE)
         ),
@@ -132,12 +190,24 @@ fn open(s: &mut Seat, q: Question) {
     );
 }
 
-/// A student's Enter: their marker's value as their answer.
+/// A student's Enter: their marker's value as their answer; after the
+/// reveal, it dismisses the result (the student keeps following).
 fn answer(s: &mut Seat) {
+    let app = &mut s.ex.app;
+    if app.class.asked.is_some_and(|a| a.revealed) {
+        app.class.asked = None;
+        s.poll = None;
+        let text = if s.follow.following() {
+            FOLLOWING
+        } else {
+            "result dismissed"
+        };
+        s.ex.app.set_status(text, false);
+        return;
+    }
     let (Some(id), Some(poll)) = (s.seat, s.poll) else {
         return;
     };
-    let app = &mut s.ex.app;
     let Some(asked) = app.class.asked.filter(|a| !a.revealed) else {
         return;
     };
@@ -164,7 +234,10 @@ fn save(s: &mut Seat) {
     let name = format!("{}-poll", app.state.name);
     let stem = snapshot::default_stem(&name, SystemTime::now());
     match snapshot::save_file_new(&app.save_dir, &stem, "csv", "poll answers", csv.as_bytes()) {
-        Ok(path) => app.set_status(format!("saved {}", path.display()), false),
+        Ok(path) => {
+            app.set_status(format!("saved {}", path.display()), false);
+            s.shared.saved(path);
+        }
         Err(e) => app.set_status(format!("{e:#}"), true),
     }
 }

@@ -2,7 +2,10 @@
 //! terminal, fed by the channel's bytes (decoded by [`input`]) and window
 //! changes, and, for a student, by the lecturer's state and the poll; for
 //! the lecturer, by the class list. It ends on `q` / Ctrl-C, when the client
-//! goes, stalls, or idles past `--idle-timeout`.
+//! goes or stalls, when the server stops, or after `--idle-timeout` without
+//! a key — only for a session neither lecturing nor following (answering
+//! a poll counts as following). When the server ends it, the client's
+//! terminal says why on its normal screen.
 
 use std::net::IpAddr;
 use std::sync::Arc;
@@ -11,10 +14,6 @@ use std::time::Duration;
 use crossterm::cursor::Hide;
 use crossterm::event::{Event, KeyEvent};
 use crossterm::terminal::EnterAlternateScreen;
-use ratatui::layout::Rect;
-use ratatui::text::Line;
-use ratatui::widgets::{Block, Borders, Clear, Paragraph, Wrap};
-use ratatui::Frame;
 use russh::server::Msg;
 use russh::{Channel, ChannelMsg};
 use std::io::Write;
@@ -23,10 +22,11 @@ use tokio::time::{sleep_until, Instant};
 
 use super::auth::Role;
 use super::class::{self, clean_name, Note, SeatId};
-use super::follow::{Effect, Follow, Shown, FOLLOWING};
+use super::follow::{Effect, Follow, Shown, CALLED_BACK, FOLLOWING};
 use super::input::{self, Decoder};
 use super::limits::clamp_size;
 use super::output::{self, FrameBuf};
+use super::panel::{Key as PanelKey, Panel};
 use super::poll;
 use super::stream::Kill;
 use super::term::{self, ClientTerm};
@@ -54,14 +54,32 @@ pub fn spawn(start: Start) {
     tokio::spawn(run(start));
 }
 
+/// A session that only says why there is no explorer (the class is full)
+/// on the client's normal screen, then ends with status 1.
+pub fn refuse(channel: Channel<Msg>, why: String) {
+    tokio::spawn(async move {
+        let said = async {
+            let text = format!("roughtui: {why}\r\n");
+            let _ = channel.data(text.as_bytes()).await;
+            let _ = channel.exit_status(1).await;
+            let _ = channel.eof().await;
+            let _ = channel.close().await;
+        };
+        let _ = tokio::time::timeout(output::STALL, said).await;
+    });
+}
+
 /// What a student's picture key says instead of writing on the server.
 pub const NO_PICTURE: &str = "no pictures over SSH: s shows the snapshot to copy";
 
+/// What a student's terminal says when the lecturer removes them.
+pub const REMOVED: &str = "the lecturer removed you from the class";
+
+/// What every client's terminal says when the server stops.
+pub const ENDED: &str = "the class has ended";
+
 /// How often the lecturer's open class list updates its idle times.
 const LIST_TICK: Duration = Duration::from_secs(1);
-
-/// A student's snapshot text, shown instead of written to the server's disk.
-struct Panel(String);
 
 /// One explorer and its place in the class.
 pub(super) struct Seat {
@@ -126,7 +144,8 @@ async fn run(start: Start) {
         client,
     } = start;
     let (mut read, write) = channel.split();
-    let slot = output::spawn(write, conn, kill);
+    let bye = output::Bye::default();
+    let slot = output::spawn(write, conn, kill, bye.clone());
     let buf = FrameBuf::default();
     let mut prelude = Vec::new();
     let _ = crossterm::execute!(prelude, EnterAlternateScreen, Hide);
@@ -191,13 +210,28 @@ async fn run(start: Start) {
     }
     let mut decoder = Decoder::new();
     let mut panel: Option<Panel> = None;
+    // Bytes for the terminal besides frames (the snapshot panel's).
+    let mut raw: Vec<u8> = Vec::new();
     let idle = shared.idle_timeout;
     let mut deadline = Instant::now() + idle;
     let mut list_tick = Instant::now() + LIST_TICK;
     let mut dirty = true;
+    let mut ending = shared.ending.subscribe();
+    let mut all_follow = shared.all_follow.subscribe();
+    let mut removed = shared.class.watch_removed();
+    if *ending.borrow_and_update() {
+        bye.set(ENDED);
+        return;
+    }
 
     loop {
         let listing = is_lecturer && s.ex.app.mode == Mode::Class;
+        // Only a session neither lecturing nor following idles out; the
+        // others' idle time starts when they stop.
+        let idles = !is_lecturer && !s.follow.in_class();
+        if !idles {
+            deadline = Instant::now() + idle;
+        }
         tokio::select! {
             msg = read.wait() => {
                 let Some(msg) = msg else { break };
@@ -226,16 +260,26 @@ async fn run(start: Start) {
                             if hint.take().is_some() {
                                 dirty = true;
                             }
-                            if panel.is_some() {
-                                // Any key closes the snapshot panel.
-                                panel = None;
-                                dirty = true;
+                            if let Some(p) = &panel {
+                                match p.key(key) {
+                                    PanelKey::Stay(b) => raw.extend(b),
+                                    PanelKey::Close(b) => {
+                                        raw.extend(b);
+                                        panel = None;
+                                        // The explorer whole again.
+                                        if s.ex.update(Message::Redraw).is_err() {
+                                            s.ex.app.quit = true;
+                                            break;
+                                        }
+                                        dirty = true;
+                                    }
+                                }
                                 continue;
                             }
                             if s.ex.message_for(&Event::Key(key)) == Some(Message::Redraw) {
                                 decoder.expect_size();
                             }
-                            if on_key(&mut s, &mut panel, key) {
+                            if on_key(&mut s, &mut panel, &mut raw, key) {
                                 dirty = true;
                             }
                             if s.ex.app.quit {
@@ -248,6 +292,16 @@ async fn run(start: Start) {
                         if s.marker() != marker {
                             marker = s.marker();
                             s.note(Note::Marker(marker.name().into()));
+                        }
+                        if let Some(id) = s.ex.app.class.remove.take() {
+                            let text = match shared.class.remove(id) {
+                                Some(who) => {
+                                    shared.log.line(&format!("removed {who} (by the lecturer)"));
+                                    format!("removed {who}: told so on their terminal")
+                                }
+                                None => "that student has already left".to_string(),
+                            };
+                            s.ex.app.set_status(text, false);
                         }
                         if is_lecturer && dirty {
                             shared.publish(&s.ex.app);
@@ -288,6 +342,13 @@ async fn run(start: Start) {
                 if poll::on_poll(&mut s, p) {
                     deadline = Instant::now() + idle;
                     dirty = true;
+                    // A question or a reveal closes the snapshot's text.
+                    if let Some(p) = panel.take() {
+                        raw.extend(p.close());
+                        if s.ex.update(Message::Redraw).is_err() {
+                            break;
+                        }
+                    }
                 }
             }
             changed = roster.changed(), if is_lecturer => {
@@ -310,26 +371,60 @@ async fn run(start: Start) {
                 }
                 dirty = true;
             }
-            () = sleep_until(deadline) => break,
+            () = sleep_until(deadline), if idles => {
+                bye.set(format!(
+                    "no key for {}: the session ended (ssh again to come back)",
+                    class::duration(idle)
+                ));
+                break;
+            }
+            changed = all_follow.changed(), if !is_lecturer => {
+                if changed.is_err() {
+                    break;
+                }
+                all_follow.mark_unchanged();
+                if s.follow.on_all_follow() == Effect::Catch {
+                    s.effect(Effect::Catch);
+                    s.ex.app.set_status(CALLED_BACK, false);
+                    dirty = true;
+                }
+            }
+            changed = removed.changed(), if !is_lecturer => {
+                if changed.is_err() {
+                    break;
+                }
+                let gone = s.seat.is_some_and(|id| removed.borrow_and_update().contains(&id));
+                if gone {
+                    bye.set(REMOVED);
+                    break;
+                }
+            }
+            _ = ending.changed() => {
+                bye.set(ENDED);
+                break;
+            }
             () = sleep_until(hint_until), if hint.is_some() => {
                 hint = None;
                 dirty = true;
             }
-            permit = slot.reserve(), if dirty => {
+            permit = slot.reserve(), if dirty || !raw.is_empty() => {
                 let Ok(permit) = permit else { break };
-                let drawn = s.ex.draw_with(|app, f| {
-                    let glyphs = app.theme.glyphs;
-                    if let Some(h) = &hint {
-                        term::draw_hint(f, h, glyphs);
+                let mut bytes = std::mem::take(&mut raw);
+                // While the snapshot is shown, changes wait for its close
+                // (which draws the explorer whole).
+                if dirty && panel.is_none() {
+                    let drawn = s.ex.draw_with(|app, f| {
+                        // Not over a screen too small for the explorer.
+                        if let Some(h) = hint.as_ref().filter(|_| !app.too_small()) {
+                            term::draw_hint(f, h, app.theme.glyphs);
+                        }
+                    });
+                    if drawn.is_err() {
+                        break;
                     }
-                    if let Some(p) = &panel {
-                        draw_panel(f, &p.0, glyphs);
-                    }
-                });
-                if drawn.is_err() {
-                    break;
+                    bytes.extend(buf.take());
                 }
-                permit.send(buf.take());
+                permit.send(bytes);
                 dirty = false;
             }
             () = slot.closed() => break,
@@ -351,7 +446,7 @@ async fn run(start: Start) {
 }
 
 /// Applies one key; whether the screen may have changed.
-fn on_key(s: &mut Seat, panel: &mut Option<Panel>, key: KeyEvent) -> bool {
+fn on_key(s: &mut Seat, panel: &mut Option<Panel>, raw: &mut Vec<u8>, key: KeyEvent) -> bool {
     let Some(msg) = s.ex.message_for(&Event::Key(key)) else {
         return false;
     };
@@ -367,7 +462,12 @@ fn on_key(s: &mut Seat, panel: &mut Option<Panel>, key: KeyEvent) -> bool {
             s.effect(e);
             return true;
         }
-        Message::Poll | Message::SavePoll | Message::Answer => {
+        Message::AllFollow if s.is_lecturer() => {
+            s.shared.all_follow.send_modify(|n| *n += 1);
+            s.ex.app.set_status("everyone follows you now", false);
+            return true;
+        }
+        Message::Poll | Message::SavePoll | Message::Answer | Message::CancelPoll => {
             poll::on_key(s, msg);
             return true;
         }
@@ -378,7 +478,10 @@ fn on_key(s: &mut Seat, panel: &mut Option<Panel>, key: KeyEvent) -> bool {
     }
     if s.role == Role::Student {
         if msg == Message::StartSave {
-            *panel = Some(Panel(s.ex.app.state.to_ron()));
+            let ascii = s.ex.app.theme.glyphs.ascii_text();
+            let (p, bytes) = Panel::open(s.ex.app.state.to_ron(), ascii);
+            *panel = Some(p);
+            raw.extend(bytes);
             return true;
         }
         if msg == Message::SavePicture {
@@ -394,34 +497,4 @@ fn on_key(s: &mut Seat, panel: &mut Option<Panel>, key: KeyEvent) -> bool {
         }
     }
     s.ex.update(msg).is_ok()
-}
-
-fn draw_panel(f: &mut Frame, ron: &str, glyphs: Glyphs) {
-    let area = f.area();
-    let ron = glyphs.text(ron);
-    let lines: Vec<Line> = ron.lines().map(Line::raw).collect();
-    // As wide as the longest line where the screen allows, so that a copy
-    // gets each line whole.
-    let longest = ron.lines().map(|l| l.chars().count()).max().unwrap_or(0);
-    let h = (lines.len() as u16 + 2).min(area.height);
-    let w = (longest as u16)
-        .saturating_add(2)
-        .clamp(40, 160)
-        .min(area.width);
-    let r = Rect::new(
-        area.x + (area.width - w) / 2,
-        area.y + (area.height - h) / 2,
-        w,
-        h,
-    );
-    f.render_widget(Clear, r);
-    f.render_widget(
-        Paragraph::new(lines).wrap(Wrap { trim: false }).block(
-            Block::default()
-                .borders(Borders::ALL)
-                .border_set(glyphs.border())
-                .title(glyphs.text(" snapshot: copy it into a .ron file · any key closes ")),
-        ),
-        r,
-    );
 }

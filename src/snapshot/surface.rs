@@ -4,7 +4,7 @@
 use std::fmt;
 use std::path::{Path, PathBuf};
 
-use rough_surface::{Options, Problem, SurfaceError};
+use rough_surface::{Direction, Options, Problem, SurfaceError};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
 use crate::surface::{relative_to, SurfaceSource};
@@ -28,10 +28,55 @@ pub struct SurfaceFile {
         deserialize_with = "de_number"
     )]
     pub pixel_size: Option<f64>,
+    /// The measurement read from a download of several (`--series`);
+    /// written plain, `series: "steel"`.
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "ser_plain",
+        deserialize_with = "de_plain"
+    )]
+    pub series: Option<String>,
+    /// A map read as its profiles along `x` or `y` (`--direction`);
+    /// written plain, `direction: x`.
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "ser_plain",
+        deserialize_with = "de_plain"
+    )]
+    pub direction: Option<DirectionName>,
     /// The channel read of a file of several (its number or title), when
     /// one was chosen.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub channel: Option<String>,
+}
+
+/// `direction: x` or `direction: y` in a snapshot.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum DirectionName {
+    #[serde(rename = "x")]
+    X,
+    #[serde(rename = "y")]
+    Y,
+}
+
+impl From<DirectionName> for Direction {
+    fn from(d: DirectionName) -> Direction {
+        match d {
+            DirectionName::X => Direction::X,
+            DirectionName::Y => Direction::Y,
+        }
+    }
+}
+
+impl From<Direction> for DirectionName {
+    fn from(d: Direction) -> DirectionName {
+        match d {
+            Direction::X => DirectionName::X,
+            Direction::Y => DirectionName::Y,
+        }
+    }
 }
 
 fn is_false(b: &bool) -> bool {
@@ -44,6 +89,17 @@ fn ser_number<S: Serializer>(v: &Option<f64>, s: S) -> Result<S::Ok, S::Error> {
 
 fn de_number<'de, D: Deserializer<'de>>(d: D) -> Result<Option<f64>, D::Error> {
     f64::deserialize(d).map(Some)
+}
+
+fn ser_plain<S: Serializer, T: Serialize>(v: &Option<T>, s: S) -> Result<S::Ok, S::Error> {
+    match v {
+        Some(v) => v.serialize(s),
+        None => s.serialize_none(),
+    }
+}
+
+fn de_plain<'de, D: Deserializer<'de>, T: Deserialize<'de>>(d: D) -> Result<Option<T>, D::Error> {
+    T::deserialize(d).map(Some)
 }
 
 pub(super) fn ser<S: Serializer>(v: &Option<SurfaceFile>, s: S) -> Result<S::Ok, S::Error> {
@@ -105,6 +161,8 @@ pub(super) fn read(sf: &SurfaceFile, base: Option<&Path>) -> Result<SurfaceSourc
     let options = Options {
         periodic: sf.periodic,
         pixel_size: sf.pixel_size,
+        series: sf.series.clone(),
+        direction: sf.direction.map(Into::into),
         channel: sf.channel.clone(),
     };
     let mut src = SurfaceSource::read(&path, options).map_err(|e| {
@@ -136,6 +194,8 @@ pub(super) fn file_of(src: &SurfaceSource, base: Option<&Path>) -> SurfaceFile {
         sha256: src.measured.sha256.clone(),
         periodic: src.options.periodic,
         pixel_size: src.options.pixel_size,
+        series: src.options.series.clone(),
+        direction: src.options.direction.map(Into::into),
         channel: src.options.channel.clone(),
     }
 }

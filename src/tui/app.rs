@@ -81,8 +81,30 @@ pub enum Message {
     Answer,
     /// The lecturer's `V`: a poll on a value they type.
     PollTyped,
+    /// The lecturer's `C`: cancel the open poll.
+    CancelPoll,
+    /// The lecturer's `F`: every student follows again.
+    AllFollow,
+    /// The lecturer's scene list (`o`): open it, move in it, load the one
+    /// chosen, close it.
+    OpenScenes,
+    SceneMove {
+        down: bool,
+    },
+    ScenePick,
+    SceneClose,
+    /// A lesson's next (`n`) or previous (`N`) step.
+    LessonStep {
+        next: bool,
+    },
     /// The lecturer's class list, open or closed.
     ToggleClass,
+    /// In the class list: choose the next / previous student, remove the
+    /// one chosen (the serve session acts on it).
+    ClassChoose {
+        down: bool,
+    },
+    RemoveStudent,
     /// The next glyph set: braille, half blocks, blocks, ASCII (`M`).
     CycleGlyphs,
     /// Colour off (as under NO_COLOR) or on again (`c`).
@@ -568,8 +590,20 @@ pub fn update(app: &mut App, msg: Message) {
         },
         Message::PromptAccept => prompt::accept(app),
         Message::Resize(w, h) => app.size = (w, h),
-        Message::Follow | Message::Redraw | Message::Poll | Message::SavePoll | Message::Answer => {
-        }
+        Message::Follow
+        | Message::Redraw
+        | Message::Poll
+        | Message::SavePoll
+        | Message::Answer
+        | Message::CancelPoll
+        | Message::AllFollow => {}
+        Message::ClassChoose { down } => super::class::choose(app, down),
+        Message::RemoveStudent => super::class::remove(app),
+        Message::LessonStep { next } => crate::lesson::step(app, next),
+        Message::OpenScenes
+        | Message::SceneMove { .. }
+        | Message::ScenePick
+        | Message::SceneClose => super::scenes::update(app, msg),
         Message::PollTyped => {
             let axis = app.state.sweep.axis();
             app.mode = Mode::Truth(axis, LineEdit::new("", PROMPT_MAX_CHARS));

@@ -151,6 +151,12 @@ fn scene(app: &App, lines: &mut Vec<(bool, Line<'static>)>) {
     }
     let g = app.theme.glyphs;
     lines.push((true, Line::styled("this scene:", app.theme.title)));
+    if app.class.hidden_question().is_some() {
+        // A poll is open: what would answer it waits for the reveal.
+        let l = " the caption and the claims show after the poll's reveal";
+        lines.push((false, Line::raw(l)));
+        return;
+    }
     for l in wrap(&g.text(caption), TEXT_W, usize::MAX, g.cut()) {
         lines.push((false, Line::raw(format!(" {l}"))));
     }

@@ -30,18 +30,28 @@ pub enum Context {
     Surface,
     /// A student's explorer while a poll waits for their answer.
     Answering,
+    /// A student's explorer showing a poll's result (until Enter).
+    Revealed,
     /// The lecturer's explorer in a served class.
     Lecturer,
     /// The lecturer's class list is open.
     ClassList,
     /// The explorer showing the contact view.
     ContactView,
+    /// An explorer leading a lesson (`--lesson`: the lecturer, or alone to
+    /// rehearse).
+    Lesson,
+    /// The lecturer's scene list is open.
+    Scenes,
     /// Everywhere: the explorer, the help, a prompt, a terminal too small.
     Any,
 }
 
 impl Context {
     fn covers(self, app: &App) -> bool {
+        if app.class.scenes.is_some() && app.mode == Mode::Main {
+            return matches!(self, Context::Scenes | Context::Any);
+        }
         matches!(
             (self, &app.mode),
             (Context::Main | Context::MainAndHelp, Mode::Main)
@@ -59,6 +69,9 @@ impl Context {
             || (self == Context::Answering
                 && app.mode == Mode::Main
                 && app.class.asked.is_some_and(|a| !a.revealed))
+            || (self == Context::Revealed
+                && app.mode == Mode::Main
+                && app.class.asked.is_some_and(|a| a.revealed))
     }
 
     fn is_role(self) -> bool {
@@ -69,6 +82,7 @@ impl Context {
                 | Context::Follower
                 | Context::Surface
                 | Context::Lecturer
+                | Context::Lesson
         )
     }
 
@@ -78,12 +92,15 @@ impl Context {
             Context::Student => app.student,
             Context::NotStudent => !app.student,
             Context::Surface => app.home.is_some(),
-            Context::Follower | Context::Answering => app.student && app.lecturer_keys,
+            Context::Follower | Context::Answering | Context::Revealed => {
+                app.student && app.lecturer_keys
+            }
             Context::Lecturer => app.class.view.is_some(),
             // The contact view's keys, in its help only.
             Context::ContactView => app.view == crate::figure::View::Contact,
-            // The class list's title names its keys.
-            Context::ClassList => false,
+            Context::Lesson => app.class.lesson.is_some(),
+            // The class list's and the scene list's titles name their keys.
+            Context::ClassList | Context::Scenes => false,
             _ => true,
         }
     }
@@ -152,8 +169,8 @@ pub struct Binding {
 }
 
 use Context::{
-    Answering, Any, ClassList, ContactView, Follower, Help, Lecturer, Main, MainAndHelp,
-    NotStudent, Prompt, Student, Surface,
+    Answering, Any, ClassList, ContactView, Follower, Help, Lecturer, Lesson, Main, MainAndHelp,
+    NotStudent, Prompt, Revealed, Scenes, Student, Surface,
 };
 use KeyCode::{
     BackTab, Backspace, Delete, Down, End, Enter, Esc, Home, Left, PageDown, PageUp, Right, Tab, Up,
@@ -200,12 +217,22 @@ const FINE_UP: Message = M::Step {
 #[rustfmt::skip]
 pub const BINDINGS: &[Binding] = &[
     bind(Answering, &[(key(Enter), M::Answer)], "Enter", "in a poll: answer with the marker's value", Some("⏎ answer")),
+    bind(Revealed, &[(key(Enter), M::Answer)], "Enter", "after the reveal: dismiss the result", Some("⏎ dismiss")),
     bind(Follower, &[(ch('f'), M::Follow)], "f", "follow the lecturer again", Some("f follow")),
-    bind(Lecturer, &[(ch('v'), M::Poll)], "v", "poll: the class predicts; v again reveals", Some("v poll")),
+    bind(Lecturer, &[(ch('v'), M::Poll)], "v", "poll: the class predicts; v again reveals", Some("v V poll")),
     bind(Lecturer, &[(ch('V'), M::PollTyped)], "V", "poll on a value you type", None),
     bind(Lecturer, &[(ch('w'), M::ToggleClass)], "w", "the class list", Some("w class")),
-    bind(Lecturer, &[(ch('S'), M::SavePoll)], "S", "save the poll's answers here (.csv)", None),
+    bind(Lecturer, &[(ch('C'), M::CancelPoll)], "C", "cancel the open poll (its answers are dropped)", Some("C cancel")),
+    bind(Lecturer, &[(ch('o'), M::OpenScenes)], "o", "load a scene for everyone: a preset or a snapshot here", Some("o open")),
+    bind(Scenes, &[(key(Up), M::SceneMove { down: false }), (ch('k'), M::SceneMove { down: false }), (key(Down), M::SceneMove { down: true }), (ch('j'), M::SceneMove { down: true })], "↑ ↓  k j", "choose a scene", None),
+    bind(Scenes, &[(key(Enter), M::ScenePick)], "Enter", "load it", None),
+    bind(Scenes, &[(key(Esc), M::SceneClose), (ch('o'), M::SceneClose)], "Esc  o", "close the list", None),
+    bind(Lecturer, &[(ch('F'), M::AllFollow)], "F", "everyone follow: pull every student back to you", Some("F all")),
+    bind(Lesson, &[(ch('n'), M::LessonStep { next: true }), (ch('N'), M::LessonStep { next: false })], "n N", "the lesson's next / previous step", Some("n N step")),
+    bind(Lecturer, &[(ch('S'), M::SavePoll)], "S", "save the last poll's answers here (.csv)", Some("S csv")),
     bind(ClassList, &[(ch('w'), M::ToggleClass), (key(Esc), M::ToggleClass)], "w  Esc", "close the class list", None),
+    bind(ClassList, &[(key(Down), M::ClassChoose { down: true }), (ch('j'), M::ClassChoose { down: true }), (key(Up), M::ClassChoose { down: false }), (ch('k'), M::ClassChoose { down: false })], "↓ ↑  j k", "choose a student", None),
+    bind(ClassList, &[(ch('x'), M::RemoveStudent)], "x", "remove the student chosen (told why)", None),
     bind(ClassList, &[(key(Right), M::HelpPage { next: true }), (key(PageDown), M::HelpPage { next: true }), (ch(' '), M::HelpPage { next: true }), (key(Left), M::HelpPage { next: false }), (key(PageUp), M::HelpPage { next: false })], "→ ←  PgDn PgUp", "next / previous page of the class list", None),
     bind(ClassList, &[(ch('q'), M::Quit), (ctrl('c'), M::Quit)], "q  Ctrl-C", "quit", None),
     bind(Main, &[(key(Up), M::SelectPrev), (ch('k'), M::SelectPrev), (key(Down), M::SelectNext), (ch('j'), M::SelectNext)], "↑ ↓  k j", "select a slider", Some("↑↓ select")),
@@ -224,7 +251,7 @@ pub const BINDINGS: &[Binding] = &[
     bind(ContactView, &[(ch('r'), M::ContactSeed)], "r", "contact view: another surface (next seed)", None),
     bind(Main, &[(ch('y'), M::NextMapY)], "y", "the regime map's next y parameter", None),
     bind(NotStudent, &[(ch('s'), M::StartSave)], "s", "save a snapshot here (.ron)", Some("s save")),
-    bind(Student, &[(ch('s'), M::StartSave)], "s", "show the snapshot (.ron text) to copy", Some("s snapshot")),
+    bind(Student, &[(ch('s'), M::StartSave)], "s", "show the snapshot (.ron) to copy; y there: clipboard", Some("s snapshot")),
     bind(Main, &[(ch('g'), M::ToggleGhost)], "g", "pin a dim ghost (a surface: its fit first) / clear", None),
     bind(NotStudent, &[(ch('p'), M::SavePicture)], "p", "save the view as a picture here (.svg)", Some("p picture")),
     bind(Student, &[(ch('p'), M::SavePicture)], "p", "no pictures over SSH: s shows the snapshot", None),
@@ -276,12 +303,28 @@ pub fn message_for_key(app: &App, ev: &KeyEvent) -> Option<Message> {
         return None;
     }
     // While the terminal is too small nothing is shown: only quitting and
-    // redrawing act.
+    // redrawing act; on a student's compact screen also following,
+    // moving the marker and answering.
     if app.too_small() {
-        return BINDINGS
+        let compact = super::views::compact::applies(app);
+        let moves = |m: &Message| {
+            matches!(
+                m,
+                M::Step { .. } | M::SelectPrev | M::SelectNext | M::Answer | M::Follow
+            )
+        };
+        let compact_key = BINDINGS
             .iter()
+            .filter(|b| compact && b.context.covers(app))
             .flat_map(|b| b.keys)
-            .find(|(k, m)| matches!(m, M::Quit | M::Redraw) && k.matches(ev))
+            .find(|(k, m)| moves(m) && k.matches(ev));
+        return compact_key
+            .or_else(|| {
+                BINDINGS
+                    .iter()
+                    .flat_map(|b| b.keys)
+                    .find(|(k, m)| matches!(m, M::Quit | M::Redraw) && k.matches(ev))
+            })
             .map(|(_, m)| *m);
     }
     for b in BINDINGS.iter().filter(|b| b.context.covers(app)) {

@@ -20,6 +20,7 @@ pub mod measured;
 pub mod plots;
 pub mod prompt;
 pub mod readout;
+pub mod scenes;
 pub mod session;
 pub mod status;
 pub mod steps;
@@ -55,6 +56,7 @@ pub fn run(
     state: State,
     file: Option<&std::path::Path>,
     marker: Option<glyphs::Glyphs>,
+    lesson: Option<crate::lesson::Lesson>,
 ) -> anyhow::Result<()> {
     let mut frame_log = match std::env::var_os("ROUGHTUI_FRAME_LOG") {
         Some(p) => Some(
@@ -85,6 +87,14 @@ pub fn run(
     session.app.file = file
         .and_then(|f| f.file_name())
         .map(|f| f.to_string_lossy().into_owned());
+    if let Some(lesson) = lesson {
+        // Rehearsing a lesson alone: its first step, n / N to go on.
+        session.app.class.lesson = Some(crate::lesson::LessonAt {
+            lesson: std::sync::Arc::new(lesson),
+            at: 0,
+        });
+        crate::lesson::show(&mut session.app);
+    }
     if let Some(why) = why {
         let g = caps.glyphs;
         session.app.set_status(

@@ -53,6 +53,8 @@ pub fn line_state() -> State {
         sha256: "0".repeat(64),
         summary: "line scan of 128 points".to_string(),
         notes: Vec::new(),
+        measurement: None,
+        slopes: None,
     };
     State::measured(source("line.txt", m)).unwrap()
 }

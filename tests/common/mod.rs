@@ -5,6 +5,7 @@
 pub mod app;
 pub mod cli;
 pub mod client;
+pub mod lecture;
 pub mod measured;
 pub mod room;
 pub mod serve;

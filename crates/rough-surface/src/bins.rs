@@ -52,6 +52,16 @@ impl Bins {
         s[2] += weight * c;
     }
 
+    /// Adds the points of `other` (bins made with the same edges).
+    pub fn merge(&mut self, other: &Bins) {
+        debug_assert_eq!(self.edges, other.edges);
+        for (s, o) in self.sums.iter_mut().zip(&other.sums) {
+            for k in 0..3 {
+                s[k] += o[k];
+            }
+        }
+    }
+
     /// (mean q, mean C) of every non-empty bin, q increasing.
     pub fn finish(&self) -> Vec<(f64, f64)> {
         self.sums

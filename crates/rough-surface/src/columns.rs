@@ -155,6 +155,11 @@ pub(crate) fn read(
     let lines = &scan.row_lines;
     let x: Vec<f64> = scan.values.iter().step_by(2).copied().collect();
     let y: Vec<f64> = scan.values.iter().skip(1).step_by(2).copied().collect();
+    // x (or q) is never undefined; neither is a PSD's C (checked below).
+    let undefined = |v: &[f64]| v.iter().position(|v| v.is_nan()).map(|i| lines[i]);
+    if let Some(line) = undefined(&x) {
+        return Err((Some(line), Problem::UndefinedValue("x or q")));
+    }
     let kind = match hint(&scan.header, header) {
         Some(h) => h,
         None => {
@@ -171,6 +176,9 @@ pub(crate) fn read(
         }
     };
     if kind == Hint::Psd {
+        if let Some(line) = undefined(&y) {
+            return Err((Some(line), Problem::UndefinedValue("PSD value")));
+        }
         if opts.periodic || opts.pixel_size.is_some() {
             return Err((
                 None,

@@ -64,6 +64,15 @@ pub enum Problem {
     BadHeader(String),
     /// A command-line option that does not apply to this file.
     Option(String),
+    /// More undefined points (NaN, empty cells, masked) than are filled
+    /// ([`crate::MAX_UNDEFINED`]).
+    Undefined {
+        count: usize,
+        total: usize,
+    },
+    /// An undefined value (NaN, an empty cell) where only heights may be
+    /// undefined: a position, a wavevector, a PSD value.
+    UndefinedValue(&'static str),
     /// A binary file (x3p, .gwy) that is damaged or holds what is not
     /// read, or a file in a format not read (with what to do about it).
     Format(String),
@@ -139,6 +148,18 @@ impl fmt::Display for Problem {
             Problem::Several(s) => write!(f, "{s}"),
             Problem::BadHeader(s) => write!(f, "{s}"),
             Problem::Option(s) => write!(f, "{s}"),
+            Problem::UndefinedValue(what) => write!(
+                f,
+                "an undefined {what} (nan or an empty cell): only heights may be undefined"
+            ),
+            Problem::Undefined { count, total } => write!(
+                f,
+                "{count} of {total} points ({}) are undefined (NaN, empty or masked): \
+                 up to {} % are filled, more is refused; crop the data to the part \
+                 that was measured",
+                crate::fill::share(*count, *total),
+                crate::MAX_UNDEFINED * 100.0
+            ),
             Problem::Format(s) => write!(f, "{s}"),
         }
     }

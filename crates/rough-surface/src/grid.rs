@@ -81,18 +81,19 @@ pub(crate) fn compute(
     if !g.is_profile() && g.ny < 4 {
         return few("y", g.ny);
     }
-    let undefined = g.undefined();
-    if undefined > 0 {
-        // The harmonic fill of undefined points belongs to the map
-        // pipeline; until it is there they are refused, named.
-        return Err((
-            None,
-            Problem::Format(format!(
-                "{undefined} of {} points are undefined (masked or invalid in the file): \
-                 this build does not fill undefined points",
-                g.z.len()
-            )),
-        ));
+    // Undefined points (NaN) are filled by the map pipeline.
+    if let (Some(direction), false) = (opts.direction, g.is_profile()) {
+        let c =
+            crate::profiles::profiles(g.z, (g.nx, g.ny), (g.lx, g.ly), opts.periodic, direction)
+                .map_err(|p| (None, p))?;
+        let kind = Kind::Profiles {
+            direction,
+            nx: g.nx,
+            ny: g.ny,
+            lx: g.lx,
+            ly: g.ly,
+        };
+        return Ok((kind, c));
     }
     let c = if g.is_profile() {
         spectrum::line(g.z, g.lx, opts.periodic)

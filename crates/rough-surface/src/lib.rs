@@ -6,30 +6,37 @@
 //! contact.engineering), so that its numbers are the reference; docs/model.md,
 //! "Measured surfaces", states them.
 
+mod anisotropy;
 mod bins;
 mod ce;
 mod channels;
 mod columns;
+mod decimal;
 mod error;
+mod fill;
 mod fit;
 mod grid;
 mod gwy;
 mod header;
 mod matrix;
+mod prepare;
+mod profiles;
 mod psd;
 mod sniff;
 mod spectrum;
+mod stream;
 mod text;
 mod x3p;
 
-use std::io::Read;
 use std::path::Path;
 use std::sync::Arc;
 
 use rough_model::{Dim, MomentTable};
 use sha2::{Digest, Sha256};
 
+pub use anisotropy::{Slopes, RATIO as ANISOTROPY_RATIO};
 pub use error::{Problem, SurfaceError};
+pub use fill::MAX_UNDEFINED;
 pub use fit::PowerLawFit;
 pub use grid::Grid;
 
@@ -43,10 +50,32 @@ pub struct Options {
     pub periodic: bool,
     /// Sample spacing in metres, for data without a size header.
     pub pixel_size: Option<f64>,
+    /// The measurement to read from a file holding several (a
+    /// contact.engineering download): its name; the first when `None`.
+    pub series: Option<String>,
+    /// A map read as its profiles along one direction (line-scan
+    /// conventions, [`Kind::Profiles`]) instead of as an area.
+    pub direction: Option<Direction>,
     /// The channel to read of a file of several: its number (a .gwy's N of
     /// `/N/data`; a text file's channels from 0 in order) or its title;
     /// `None` takes the first whose values are heights (a unit of length).
     pub channel: Option<String>,
+}
+
+/// A direction on a map: x along its rows, y across them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Direction {
+    X,
+    Y,
+}
+
+impl Direction {
+    pub fn name(self) -> &'static str {
+        match self {
+            Direction::X => "x",
+            Direction::Y => "y",
+        }
+    }
 }
 
 /// What kind of data a file held.
@@ -63,6 +92,16 @@ pub enum Kind {
     Line { n: usize, l: f64 },
     /// A PSD table of `points` rows: areal (C^iso, m⁴) or profile (C1D, m³).
     Psd { dim: Dim, points: usize },
+    /// A map of nx × ny samples over lx × ly read as its profiles along
+    /// `direction` (`--direction`): the PSD averaged over them, profile
+    /// moments as for a line scan.
+    Profiles {
+        direction: Direction,
+        nx: usize,
+        ny: usize,
+        lx: f64,
+        ly: f64,
+    },
 }
 
 impl Kind {
@@ -70,7 +109,7 @@ impl Kind {
     pub fn dim(&self) -> Dim {
         match self {
             Kind::Map { .. } => Dim::Areal,
-            Kind::Line { .. } => Dim::Profile,
+            Kind::Line { .. } | Kind::Profiles { .. } => Dim::Profile,
             Kind::Psd { dim, .. } => *dim,
         }
     }
@@ -102,6 +141,13 @@ pub struct Measured {
     /// point of x3p/gwy) as `f64::NAN` in the heights it hands on; the
     /// pipeline fills or refuses them and adds the note.
     pub notes: Vec<String>,
+    /// The measurement read from a file of several (a contact.engineering
+    /// download's "Topography: NAME"), for the caption.
+    pub measurement: Option<String>,
+    /// A map's rms slopes along x and along y (its spectrum to the largest
+    /// ζ); a note says when they differ by more than
+    /// [`ANISOTROPY_RATIO`].
+    pub slopes: Option<Slopes>,
 }
 
 impl Measured {
@@ -127,18 +173,44 @@ pub fn read(path: &Path, opts: &Options) -> Result<Measured, SurfaceError> {
     if meta.len() > MAX_BYTES {
         return Err(fail(None, Problem::TooLarge(meta.len())));
     }
-    let mut bytes = Vec::new();
-    std::fs::File::open(path)
-        .and_then(|f| f.take(MAX_BYTES + 1).read_to_end(&mut bytes))
-        .map_err(|e| fail(None, Problem::Read(e.to_string())))?;
-    if bytes.len() as u64 > MAX_BYTES {
-        return Err(fail(None, Problem::TooLarge(bytes.len() as u64)));
-    }
     let ext = path
         .extension()
         .map(|e| e.to_string_lossy().to_ascii_lowercase())
         .unwrap_or_default();
-    parse_file(&bytes, opts, &ext).map_err(|(line, problem)| fail(line, problem))
+    let whole = |bytes: Vec<u8>| {
+        if bytes.len() as u64 > MAX_BYTES {
+            return Err(fail(None, Problem::TooLarge(bytes.len() as u64)));
+        }
+        parse_file(&bytes, opts, &ext).map_err(|(line, problem)| fail(line, problem))
+    };
+    let file = std::fs::File::open(path).map_err(|e| fail(None, Problem::Read(e.to_string())))?;
+    match stream::read(file, meta.len(), &ext).map_err(|(line, problem)| fail(line, problem))? {
+        stream::Streamed::Whole(bytes) => whole(bytes),
+        // Header lines after the data: several channels, read whole.
+        stream::Streamed::Matrix { rest, .. } if rest.has_headers() || opts.channel.is_some() => {
+            drop(rest);
+            let mut bytes = Vec::new();
+            std::fs::File::open(path)
+                .and_then(|f| {
+                    std::io::Read::read_to_end(
+                        &mut std::io::Read::take(f, MAX_BYTES + 1),
+                        &mut bytes,
+                    )
+                })
+                .map_err(|e| fail(None, Problem::Read(e.to_string())))?;
+            whole(bytes)
+        }
+        stream::Streamed::Matrix { head, rest, sha256 } => {
+            let read = || -> Result<Reading, (Option<usize>, Problem)> {
+                check_options(opts)?;
+                not_a_download(opts)?;
+                from_scan(None, rest.scan(&head)?, opts)
+            };
+            read()
+                .map(|r| measured(r, sha256, Vec::new()))
+                .map_err(|(line, problem)| fail(line, problem))
+        }
+    }
 }
 
 /// The SHA-256 of `bytes`, lower-case hex (what a snapshot records).
@@ -191,14 +263,7 @@ fn parse_file(
     opts: &Options,
     ext: &str,
 ) -> Result<Measured, (Option<usize>, Problem)> {
-    if let Some(p) = opts.pixel_size {
-        if !(p.is_finite() && p > 0.0) {
-            return Err((
-                None,
-                Problem::Option(format!("--pixel-size {p} m must be finite and > 0")),
-            ));
-        }
-    }
+    check_options(opts)?;
     let format = sniff::format(bytes, ext);
     let no_channels = || {
         Err((
@@ -217,26 +282,35 @@ fn parse_file(
     let text = match format {
         sniff::Format::Other(s) => return Err((None, Problem::Format(s))),
         sniff::Format::X3p | sniff::Format::Gwy => {
+            not_a_download(opts)?;
             let (sha256, read) = std::thread::scope(|s| {
                 let hash = s.spawn(|| sha256_hex(bytes));
                 let read = read_grid(bytes, opts).and_then(|g| grid::compute(g, opts, &mut notes));
                 (hash.join().expect("hash thread"), read)
             });
             let (kind, computed) = read?;
+            if let (Some(d), Kind::Line { .. }) = (opts.direction, kind) {
+                return Err((
+                    None,
+                    Problem::Option(format!(
+                        "--direction {} applies to a map, not to a line scan",
+                        d.name()
+                    )),
+                ));
+            }
             let what = if format == sniff::Format::X3p {
                 "x3p"
             } else {
                 "Gwyddion .gwy"
             };
             let summary = format!("{what} {}", describe(&kind, opts, ""));
-            return Ok(Measured {
+            let r = Reading {
                 kind,
-                table: Arc::new(computed.table),
-                spectrum: computed.spectrum,
-                sha256,
+                computed,
                 summary,
-                notes,
-            });
+                measurement: None,
+            };
+            return Ok(measured(r, sha256, notes));
         }
         sniff::Format::Text => {
             let (text, mut assumed) = sniff::text(bytes)?;
@@ -262,34 +336,87 @@ fn parse_file(
         let read = read_text(text, opts).map_err(|(l, p)| (l.map(|l| l + skipped), p));
         (hash.join().expect("hash thread"), read)
     });
-    let (kind, computed, summary) = read?;
-    Ok(Measured {
-        kind,
-        table: Arc::new(computed.table),
-        spectrum: computed.spectrum,
-        sha256,
-        summary,
-        notes,
-    })
+    Ok(measured(read?, sha256, notes))
 }
 
-fn read_text(
-    text: &str,
-    opts: &Options,
-) -> Result<(Kind, spectrum::Computed, String), (Option<usize>, Problem)> {
+fn check_options(opts: &Options) -> Result<(), (Option<usize>, Problem)> {
+    match opts.pixel_size {
+        Some(p) if !(p.is_finite() && p > 0.0) => Err((
+            None,
+            Problem::Option(format!("--pixel-size {p} m must be finite and > 0")),
+        )),
+        _ => Ok(()),
+    }
+}
+
+/// `--series` is refused on what is not a contact.engineering download.
+fn not_a_download(opts: &Options) -> Result<(), (Option<usize>, Problem)> {
+    match &opts.series {
+        Some(s) => Err((
+            None,
+            Problem::Option(format!(
+                "--series '{s}' applies to a contact.engineering download of several \
+                 measurements, not to this file"
+            )),
+        )),
+        None => Ok(()),
+    }
+}
+
+/// The surface read, the reader's `notes` before the pipeline's.
+fn measured(r: Reading, sha256: String, mut notes: Vec<String>) -> Measured {
+    notes.extend(r.computed.notes);
+    Measured {
+        kind: r.kind,
+        table: Arc::new(r.computed.table),
+        spectrum: r.computed.spectrum,
+        sha256,
+        summary: r.summary,
+        notes,
+        measurement: r.measurement,
+        slopes: r.computed.slopes,
+    }
+}
+
+/// What [`read_text`] found.
+struct Reading {
+    kind: Kind,
+    computed: spectrum::Computed,
+    summary: String,
+    measurement: Option<String>,
+}
+
+fn read_text(text: &str, opts: &Options) -> Result<Reading, (Option<usize>, Problem)> {
     let head = text::head(text)?;
     if ce::is_ce(&head.header) {
-        let (kind, c) = ce::read(text, opts)?;
-        let summary = describe(&kind, opts, "contact.engineering PSD");
-        return Ok((kind, c, summary));
+        let r = ce::read(text, opts)?;
+        let summary = describe(&r.kind, opts, &r.label);
+        return Ok(Reading {
+            kind: r.kind,
+            computed: r.computed,
+            summary,
+            measurement: r.measurement,
+        });
     }
+    not_a_download(opts)?;
     let scan = text::scan(text, head)?;
+    from_scan(Some(text), scan, opts)
+}
+
+/// A scanned text file as a map, a line or a two-column table (`text`
+/// for the last: `None` when it was streamed, as only matrices are).
+fn from_scan(
+    text: Option<&str>,
+    scan: text::Scan<'_>,
+    opts: &Options,
+) -> Result<Reading, (Option<usize>, Problem)> {
     let header = header::Header::read(&scan.header)?;
-    if let Some(&(line, t)) = scan
+    if let Some((line, t)) = scan
         .later
         .iter()
         .find(|(l, t)| !header::Header::read(&[(*l, t)]).map_or(true, |h| h.is_empty()))
     {
+        let line = *line;
         return Err((
             Some(line),
             Problem::Several(format!(
@@ -312,13 +439,36 @@ fn read_text(
             )),
         ));
     }
-    let (kind, c) = if header.has_size() || scan.cols != 2 {
-        matrix::read(scan, &header, opts)?
-    } else {
-        columns::read(text, scan, &header, opts)?
+    let (kind, computed) = match text {
+        Some(text) if !is_matrix(&header, scan.cols) => columns::read(text, scan, &header, opts)?,
+        _ => matrix::read(scan, &header, opts)?,
     };
+    if let (Some(d), false) = (opts.direction, matches!(kind, Kind::Profiles { .. })) {
+        return Err((
+            None,
+            Problem::Option(format!(
+                "--direction {} applies to a map, not to {}",
+                d.name(),
+                match kind {
+                    Kind::Line { .. } => "a line scan",
+                    _ => "a PSD table",
+                }
+            )),
+        ));
+    }
     let summary = describe(&kind, opts, "PSD table");
-    Ok((kind, c, summary))
+    Ok(Reading {
+        kind,
+        computed,
+        summary,
+        measurement: None,
+    })
+}
+
+/// Whether rows of `cols` numbers under `header` are a height matrix
+/// (else a two-column table).
+fn is_matrix(header: &header::Header, cols: usize) -> bool {
+    header.has_size() || cols != 2
 }
 
 /// A length for people: "12 µm".
@@ -355,6 +505,26 @@ fn describe(kind: &Kind, opts: &Options, psd: &str) -> String {
             treat("plane")
         ),
         Kind::Line { n, l } => format!("line scan of {n} points, {}, {}", length(l), treat("line")),
+        Kind::Profiles {
+            direction,
+            nx,
+            ny,
+            lx,
+            ly,
+        } => {
+            let d = direction.name();
+            let count = if direction == Direction::X { ny } else { nx };
+            format!(
+                "map {nx} × {ny}, {} × {}, its {count} profiles along {d}, {}",
+                length(lx),
+                length(ly),
+                if opts.periodic {
+                    "periodic, mean removed".to_string()
+                } else {
+                    format!("plane removed, Hann window along {d}")
+                }
+            )
+        }
         Kind::Psd { dim, points } => format!(
             "{psd}, {points} points, {}",
             match dim {

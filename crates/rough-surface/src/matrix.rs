@@ -6,7 +6,7 @@ use crate::error::{Failure, Problem};
 use crate::header::Header;
 use crate::spectrum::{self, Computed};
 use crate::text::Scan;
-use crate::{Kind, Options};
+use crate::{profiles, Kind, Options};
 
 pub(crate) fn read(
     scan: Scan<'_>,
@@ -85,6 +85,18 @@ pub(crate) fn read(
             ));
         }
     };
+    if let Some(direction) = opts.direction {
+        let c = profiles::profiles(h, (cols, rows), (lx, ly), opts.periodic, direction)
+            .map_err(|p| (None, p))?;
+        let kind = Kind::Profiles {
+            direction,
+            nx: cols,
+            ny: rows,
+            lx,
+            ly,
+        };
+        return Ok((kind, c));
+    }
     let c = spectrum::map(h, cols, rows, lx, ly, opts.periodic).map_err(|p| (None, p))?;
     Ok((
         Kind::Map {

@@ -27,16 +27,23 @@ use rustfft::{Fft, FftPlanner};
 
 use crate::bins::Bins;
 use crate::error::Problem;
+use crate::fill;
+use crate::prepare;
+use crate::Slopes;
 
 /// What a surface's heights give the model and the screen.
 pub(crate) struct Computed {
     pub table: MomentTable,
     pub spectrum: Vec<(f64, f64)>,
+    /// What was repaired or noticed on the way ([`crate::Measured::notes`]).
+    pub notes: Vec<String>,
+    /// A map's rms slopes along x and y ([`crate::Measured::slopes`]).
+    pub slopes: Option<Slopes>,
 }
 
 /// The residual rms below which detrended heights count as nothing left
 /// (relative to the heights' rms about their mean): rounding leaves ~1e-16.
-const FLAT: f64 = 1e-10;
+pub(crate) const FLAT: f64 = 1e-10;
 
 fn threads() -> usize {
     std::thread::available_parallelism().map_or(1, |n| n.get().min(4))
@@ -82,7 +89,7 @@ fn remove_plane(h: &mut [f64], nx: usize, ny: usize, mean: f64) {
 }
 
 /// Mean or plane removed; refuses what is flat after it.
-fn detrend(h: &mut [f64], nx: usize, ny: usize, periodic: bool) -> Result<(), Problem> {
+pub(crate) fn detrend(h: &mut [f64], nx: usize, ny: usize, periodic: bool) -> Result<(), Problem> {
     let (mean, var) = moments(h)?;
     if periodic {
         h.iter_mut().for_each(|v| *v -= mean);
@@ -96,36 +103,9 @@ fn detrend(h: &mut [f64], nx: usize, ny: usize, periodic: bool) -> Result<(), Pr
     Ok(())
 }
 
-/// Multiplies by SurfaceTopography's radial Hann window and returns the
-/// normalisation s² = N / Σ w² (the window scaled by s has mean square 1).
-fn window_2d(h: &mut [f64], nx: usize, ny: usize, lx: f64, ly: f64) -> f64 {
-    // get_window_2D: r from grid point (nx//2, ny//2) in physical units,
-    // w = 0.5 + 0.5 cos(π r / r_max) for r ≤ r_max = min(Lx, Ly)/2, else 0.
-    let maxr = lx.min(ly) / 2.0;
-    let (cx, cy) = ((nx / 2) as f64, (ny / 2) as f64);
-    let ax: Vec<f64> = (0..nx)
-        .map(|i| (lx * (i as f64 - cx) / nx as f64).powi(2))
-        .collect();
-    let mut sum = 0.0;
-    for (j, row) in h.chunks_exact_mut(nx).enumerate() {
-        let ay = (ly * (j as f64 - cy) / ny as f64).powi(2);
-        for (v, &a) in row.iter_mut().zip(&ax) {
-            let r = (a + ay).sqrt();
-            let w = if r > maxr {
-                0.0
-            } else {
-                0.5 + 0.5 * (PI * r / maxr).cos()
-            };
-            *v *= w;
-            sum += w * w;
-        }
-    }
-    (nx * ny) as f64 / sum
-}
-
 /// scipy.signal.get_window('hann', n): the periodic Hann window; returns
 /// s² = n / Σ w².
-fn window_1d(h: &mut [f64]) -> f64 {
+pub(crate) fn window_1d(h: &mut [f64]) -> f64 {
     let n = h.len();
     let mut sum = 0.0;
     for (k, v) in h.iter_mut().enumerate() {
@@ -138,7 +118,7 @@ fn window_1d(h: &mut [f64]) -> f64 {
 
 /// |q| of index k on an axis of n samples spanning l, as
 /// 2π · np.fft.fftfreq(n, l/n) gives it.
-fn freq(k: usize, n: usize, l: f64) -> f64 {
+pub(crate) fn freq(k: usize, n: usize, l: f64) -> f64 {
     let val = 1.0 / (n as f64 * (l / n as f64));
     let k = k.min(n - k);
     2.0 * PI * (k as f64 * val)
@@ -184,25 +164,8 @@ fn rows_half(h: &[f64], nx: usize, ny: usize, fft: &Arc<dyn Fft<f64>>) -> Vec<Co
     out
 }
 
-/// Column FFTs of a column-major half spectrum (nh columns of ny).
-fn columns(t: &mut [Complex<f64>], ny: usize, fft: &Arc<dyn Fft<f64>>) {
-    let cols = t.len() / ny;
-    let per = cols.div_ceil(threads()).max(1);
-    std::thread::scope(|s| {
-        for block in t.chunks_mut(per * ny) {
-            let fft = Arc::clone(fft);
-            s.spawn(move || {
-                let mut scratch = vec![Complex::new(0.0, 0.0); fft.get_inplace_scratch_len()];
-                for col in block.chunks_mut(ny) {
-                    fft.process_with_scratch(col, &mut scratch);
-                }
-            });
-        }
-    });
-}
-
 /// A map of nx × ny heights (rows of nx along x, one row per y) spanning
-/// lx × ly metres.
+/// lx × ly metres; undefined points (NaN) are filled first.
 pub(crate) fn map(
     mut h: Vec<f64>,
     nx: usize,
@@ -211,20 +174,13 @@ pub(crate) fn map(
     ly: f64,
     periodic: bool,
 ) -> Result<Computed, Problem> {
-    detrend(&mut h, nx, ny, periodic)?;
-    let s2 = if periodic {
-        1.0
-    } else {
-        window_2d(&mut h, nx, ny, lx, ly)
-    };
+    let notes: Vec<String> = fill::fill(&mut h, nx, ny, periodic)?.into_iter().collect();
+    let s2 = prepare::prepare(&mut h, (nx, ny), (lx, ly), periodic)?;
     let mut planner = FftPlanner::<f64>::new();
     let nh = nx / 2 + 1;
     let half = rows_half(&h, nx, ny, &planner.plan_fft_forward(nx));
     drop(h);
-    let mut t = vec![Complex::new(0.0, 0.0); half.len()];
-    transpose::transpose(&half, &mut t, nh, ny);
-    drop(half);
-    columns(&mut t, ny, &planner.plan_fft_forward(ny));
+    let fft_y = planner.plan_fft_forward(ny);
 
     let n2 = ((nx * ny) as f64).powi(2);
     let scale = s2 / n2;
@@ -236,44 +192,131 @@ pub(crate) fn map(
         2.0 * PI * ny as f64 / ly / ny as f64,
     );
     let qmax = PI * (nx as f64 / lx).min(ny as f64 / ly);
-    let mut bins = Bins::new(gx.min(gy), qmax);
-    // ky and ny − ky lie at the same |q|: one term for both.
+    // ky and ny − ky lie at the same |q|: one term for both. Blocks of kx
+    // on several threads, each with its own bins and slope sums.
     let qy: Vec<f64> = (0..=ny / 2).map(|j| freq(j, ny, ly)).collect();
     let ry: Vec<f64> = (0..=ny / 2).map(|j| gy * j as f64).collect();
-    let mut terms = Vec::with_capacity(nh * (ny / 2 + 1));
-    for (kx, col) in t.chunks_exact(ny).enumerate() {
-        let mult = if kx == 0 || 2 * kx == nx { 1.0 } else { 2.0 };
-        let qx = freq(kx, nx, lx);
-        let rx = gx * kx as f64;
-        for ky in 0..=ny / 2 {
-            if kx == 0 && ky == 0 {
-                continue;
-            }
-            let (w, count) = if ky == 0 || 2 * ky == ny {
-                (col[ky].norm_sqr() * scale, 1.0)
-            } else {
-                ((col[ky].norm_sqr() + col[ny - ky].norm_sqr()) * scale, 2.0)
-            };
-            terms.push(((qx * qx + qy[ky] * qy[ky]).sqrt(), mult * w));
-            bins.add(
-                (rx * rx + ry[ky] * ry[ky]).sqrt(),
-                w * area / count,
-                mult * count,
-            );
-        }
+    let my = ny / 2 + 1;
+    // Every (kx, ky) of the half grid; (0, 0), the mean, is dropped below.
+    let mut terms = vec![(0.0, 0.0); nh * my];
+    let per = nh.div_ceil(threads()).max(1);
+    // The column FFTs a few columns at a time, gathered from the row-major
+    // half spectrum (no transposed copy), each column's terms made at once.
+    const COLS: usize = 8;
+    let parts: Vec<(Bins, f64, f64)> = std::thread::scope(|s| {
+        let handles: Vec<_> = terms
+            .chunks_mut(per * my)
+            .enumerate()
+            .map(|(b, out)| {
+                let (qy, ry, half) = (&qy, &ry, &half);
+                let fft = Arc::clone(&fft_y);
+                s.spawn(move || {
+                    let mut bins = Bins::new(gx.min(gy), qmax);
+                    let (mut m2x, mut m2y) = (0.0, 0.0);
+                    let mut buf = vec![Complex::new(0.0, 0.0); COLS * ny];
+                    let mut scratch = vec![Complex::new(0.0, 0.0); fft.get_inplace_scratch_len()];
+                    let k0 = b * per;
+                    for (c, out) in out.chunks_mut(my).enumerate() {
+                        let kx = k0 + c;
+                        let slot = c % COLS;
+                        if slot == 0 {
+                            let n = COLS.min(nh - kx);
+                            for (j, row) in half.chunks_exact(nh).enumerate() {
+                                for (m, z) in row[kx..kx + n].iter().enumerate() {
+                                    buf[m * ny + j] = *z;
+                                }
+                            }
+                            fft.process_with_scratch(&mut buf[..n * ny], &mut scratch);
+                        }
+                        let col = &buf[slot * ny..(slot + 1) * ny];
+                        let mult = if kx == 0 || 2 * kx == nx { 1.0 } else { 2.0 };
+                        let qx = freq(kx, nx, lx);
+                        let rx = gx * kx as f64;
+                        for (ky, term) in out.iter_mut().enumerate() {
+                            if kx == 0 && ky == 0 {
+                                continue;
+                            }
+                            let (w, count) = if ky == 0 || 2 * ky == ny {
+                                (col[ky].norm_sqr() * scale, 1.0)
+                            } else {
+                                ((col[ky].norm_sqr() + col[ny - ky].norm_sqr()) * scale, 2.0)
+                            };
+                            *term = ((qx * qx + qy[ky] * qy[ky]).sqrt(), mult * w);
+                            m2x += mult * w * qx * qx;
+                            m2y += mult * w * qy[ky] * qy[ky];
+                            bins.add(
+                                (rx * rx + ry[ky] * ry[ky]).sqrt(),
+                                w * area / count,
+                                mult * count,
+                            );
+                        }
+                    }
+                    // Sorted here, on this thread: the table's own sort
+                    // then finds the merged terms in order.
+                    out.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+                    (bins, m2x, m2y)
+                })
+            })
+            .collect();
+        handles
+            .into_iter()
+            .map(|h| h.join().expect("terms"))
+            .collect()
+    });
+    drop(half);
+    let merged = merge_sorted(&terms, per * my);
+    drop(terms);
+    let (mut bins, mut m2x, mut m2y) = (Bins::new(gx.min(gy), qmax), 0.0, 0.0);
+    for (b, x, y) in &parts {
+        bins.merge(b);
+        m2x += x;
+        m2y += y;
     }
-    drop(t);
     let q0 = 2.0 * PI / lx.max(ly);
-    let table = MomentTable::from_discrete(Dim::Areal, q0, terms).map_err(Problem::Table)?;
+    let table = MomentTable::from_discrete(Dim::Areal, q0, merged).map_err(Problem::Table)?;
+    let slopes = Slopes {
+        x: m2x.sqrt(),
+        y: m2y.sqrt(),
+    };
+    let mut notes = notes;
+    notes.extend(slopes.note());
     Ok(Computed {
         table,
         spectrum: bins.finish(),
+        notes,
+        slopes: Some(slopes),
     })
 }
 
-/// A line of n heights spanning l metres.
+/// The terms of `all`, sorted by q in blocks of `block`, merged in order;
+/// the mean's place (q = 0) left out.
+fn merge_sorted(all: &[(f64, f64)], block: usize) -> Vec<(f64, f64)> {
+    let mut heads: Vec<&[(f64, f64)]> = all.chunks(block).collect();
+    let mut out = Vec::with_capacity(all.len());
+    loop {
+        let mut best: Option<usize> = None;
+        for (k, h) in heads.iter().enumerate() {
+            if let Some(&(q, _)) = h.first() {
+                if best.is_none_or(|b| q < heads[b][0].0) {
+                    best = Some(k);
+                }
+            }
+        }
+        let Some(b) = best else { break };
+        let (first, rest) = heads[b].split_first().expect("a head");
+        if first.0 > 0.0 {
+            out.push(*first);
+        }
+        heads[b] = rest;
+    }
+    out
+}
+
+/// A line of n heights spanning l metres; undefined points (NaN) are
+/// filled first.
 pub(crate) fn line(mut h: Vec<f64>, l: f64, periodic: bool) -> Result<Computed, Problem> {
     let n = h.len();
+    let notes: Vec<String> = fill::fill(&mut h, n, 1, periodic)?.into_iter().collect();
     detrend(&mut h, n, 1, periodic)?;
     let s2 = if periodic { 1.0 } else { window_1d(&mut h) };
     let mut buf: Vec<Complex<f64>> = h.iter().map(|&v| Complex::new(v, 0.0)).collect();
@@ -299,6 +342,8 @@ pub(crate) fn line(mut h: Vec<f64>, l: f64, periodic: bool) -> Result<Computed, 
     Ok(Computed {
         table,
         spectrum: bins.finish(),
+        notes,
+        slopes: None,
     })
 }
 

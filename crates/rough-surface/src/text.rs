@@ -17,7 +17,7 @@ pub(crate) struct Scan<'a> {
     /// comment's text after `#`, trimmed; or a whole non-numeric line).
     pub header: Vec<(usize, &'a str)>,
     /// Comments after the first data row.
-    pub later: Vec<(usize, &'a str)>,
+    pub later: Vec<(usize, String)>,
     /// Numbers per row (the first row's).
     pub cols: usize,
     /// Every row's numbers, row after row.
@@ -42,13 +42,31 @@ fn fields(data: &str) -> impl Iterator<Item = &str> {
         .filter(|f| !f.is_empty())
 }
 
-/// One field as a finite number.
+/// One field as a number: finite, or NaN for an undefined point (`nan`,
+/// `NaN`, `-nan` as C and numpy print it); infinities are refused.
 pub(crate) fn number(field: &str) -> Result<f64, Problem> {
+    if let Some(v) = crate::decimal::fast(field) {
+        return Ok(v);
+    }
     match field.parse::<f64>() {
         Ok(v) if v.is_finite() => Ok(v),
+        Ok(v) if v.is_nan() => Ok(f64::NAN),
         Ok(_) => Err(Problem::NotFinite(field.to_string())),
         Err(_) => Err(Problem::NotNumber(field.to_string())),
     }
+}
+
+/// A number that must be defined (`what`: a wavevector, a PSD value).
+pub(crate) fn defined(field: &str, what: &'static str) -> Result<f64, Problem> {
+    match number(field)? {
+        v if v.is_nan() => Err(Problem::UndefinedValue(what)),
+        v => Ok(v),
+    }
+}
+
+/// A delimiter that ends a cell even when the cell is empty.
+fn is_hard(b: u8) -> bool {
+    matches!(b, b',' | b';')
 }
 
 /// A line split at its comment: (data, comment text after `#`).
@@ -59,38 +77,55 @@ fn split_comment(line: &str) -> (&str, Option<&str>) {
     }
 }
 
-/// Numbers of the data part `data`, appended to `out`; how many.
-fn row(data: &str, out: &mut Vec<f64>) -> Result<usize, Problem> {
+/// Numbers of the data part `data`, appended to `out`; how many, and
+/// whether the line ended with a comma or semicolon.
+///
+/// Between commas or semicolons an empty cell is an undefined point (NaN):
+/// `1,,3` and `,2,3` hold three cells. One comma or semicolon at the end of
+/// the line closes the last cell (`1,2,3,` holds three); a row one cell
+/// short that ends with one has its last cell empty ([`parse_chunk`]).
+fn row(data: &str, out: &mut Vec<f64>) -> Result<(usize, bool), Problem> {
     let b = data.as_bytes();
     let (mut i, mut n) = (0, 0);
+    // Commas or semicolons since the last cell (or the line's start).
+    let mut hard = 0usize;
     while i < b.len() {
-        while i < b.len() && is_sep(b[i]) {
+        if is_sep(b[i]) {
+            hard += usize::from(is_hard(b[i]));
             i += 1;
-        }
-        if i == b.len() {
-            break;
+            continue;
         }
         let s = i;
         while i < b.len() && !is_sep(b[i]) {
             i += 1;
         }
+        let empty = if n == 0 { hard } else { hard.saturating_sub(1) };
+        out.extend(std::iter::repeat_n(f64::NAN, empty));
+        n += empty;
         // Separators are ASCII, so s..i lies on character boundaries.
         out.push(number(&data[s..i])?);
         n += 1;
+        hard = 0;
     }
-    Ok(n)
+    if n > 0 && hard > 1 {
+        out.extend(std::iter::repeat_n(f64::NAN, hard - 1));
+        n += hard - 1;
+    }
+    Ok((n, n > 0 && hard > 0))
 }
 
-/// A part of the body, parsed with line numbers relative to its start.
+/// A part of the body, parsed with line numbers relative to its start
+/// (0-based).
 #[derive(Default)]
-struct Chunk<'a> {
-    values: Vec<f64>,
-    row_lines: Vec<usize>,
-    comments: Vec<(usize, &'a str)>,
-    lines: usize,
+pub(crate) struct Chunk {
+    pub values: Vec<f64>,
+    pub row_lines: Vec<usize>,
+    pub comments: Vec<(usize, String)>,
+    /// Lines in the part (a last line without its end counts).
+    pub lines: usize,
 }
 
-fn parse_chunk(body: &str, cols: usize, per_value: usize) -> Result<Chunk<'_>, Failure> {
+pub(crate) fn parse_chunk(body: &str, cols: usize, per_value: usize) -> Result<Chunk, Failure> {
     let mut c = Chunk {
         values: Vec::with_capacity(body.len() / per_value + cols),
         ..Chunk::default()
@@ -99,10 +134,14 @@ fn parse_chunk(body: &str, cols: usize, per_value: usize) -> Result<Chunk<'_>, F
         c.lines = i + 1;
         let (data, comment) = split_comment(line);
         let before = c.values.len();
-        let got = row(data, &mut c.values).map_err(|p| (Some(i), p))?;
+        let (mut got, open) = row(data, &mut c.values).map_err(|p| (Some(i), p))?;
+        if open && got + 1 == cols {
+            c.values.push(f64::NAN);
+            got += 1;
+        }
         if got == 0 {
             if let Some(t) = comment {
-                c.comments.push((i, t));
+                c.comments.push((i, t.to_string()));
             }
             continue;
         }
@@ -142,7 +181,31 @@ pub(crate) struct Head<'a> {
     /// Header lines (see [`Scan::header`]).
     pub header: Vec<(usize, &'a str)>,
     /// The first data row's 1-based line, byte offset and field count.
-    first: Option<(usize, usize, usize)>,
+    pub first: Option<(usize, usize, usize)>,
+}
+
+/// Rows looked at to tell a closing comma from an empty last cell.
+const PROBE_ROWS: usize = 64;
+
+/// The cells per row, from the first data row (cells, ends with a comma)
+/// and the text after it: where every row of the first few ends with a
+/// comma or semicolon, it closes the row (`1,2,3,`); otherwise a row ending
+/// with one has an empty last cell (`1,2,` of three columns).
+fn columns(first: (usize, bool), rest: &str) -> usize {
+    let mut probe = Vec::new();
+    let rows = std::iter::once(Ok(first)).chain(
+        rest.split('\n')
+            .map(|l| row(split_comment(l).0, &mut probe))
+            .filter(|r| !matches!(r, Ok((0, _))))
+            .take(PROBE_ROWS),
+    );
+    let (mut all_open, mut one_more) = (true, false);
+    for r in rows {
+        let Ok((n, open)) = r else { break };
+        all_open &= open;
+        one_more |= n + usize::from(open) == first.0 + 1;
+    }
+    first.0 + usize::from(first.1 && one_more && !all_open)
 }
 
 /// Reads the header, up to the first data row.
@@ -165,7 +228,8 @@ pub(crate) fn head(text: &str) -> Result<Head<'_>, Failure> {
                     return Err((Some(i + 1), Problem::DecimalComma(w)));
                 }
                 let mut probe = Vec::new();
-                let cols = row(data, &mut probe).map_err(|p| (Some(i + 1), p))?;
+                let first = row(data, &mut probe).map_err(|p| (Some(i + 1), p))?;
+                let cols = columns(first, &text[offset.min(text.len())..]);
                 return Ok(Head {
                     header,
                     first: Some((i + 1, start, cols)),
@@ -212,7 +276,7 @@ pub(crate) fn scan<'a>(text: &'a str, head: Head<'a>) -> Result<Scan<'a>, Failur
         parts.push(a);
         rest = b;
     }
-    let chunks: Vec<Result<Chunk<'_>, Failure>> = if parts.len() == 1 {
+    let chunks: Vec<Result<Chunk, Failure>> = if parts.len() == 1 {
         vec![parse_chunk(parts[0], cols, per_value)]
     } else {
         std::thread::scope(|sc| {
@@ -237,7 +301,7 @@ pub(crate) fn scan<'a>(text: &'a str, head: Head<'a>) -> Result<Scan<'a>, Failur
         s.values.extend_from_slice(&c.values);
         s.row_lines.extend(c.row_lines.iter().map(|l| l + line0));
         s.later
-            .extend(c.comments.iter().map(|&(l, t)| (l + line0, t)));
+            .extend(c.comments.into_iter().map(|(l, t)| (l + line0, t)));
         line0 += c.lines;
     }
     Ok(s)
@@ -252,7 +316,7 @@ mod tests {
         let t = "# a\nWidth: 3\n\n1 2 3\n4,5;6 # c\n\n# d\n7\t8 9\n";
         let s = scan(t, head(t).unwrap()).unwrap();
         assert_eq!(s.header, vec![(1, "a"), (2, "Width: 3")]);
-        assert_eq!(s.later, vec![(7, "d")]);
+        assert_eq!(s.later, vec![(7, "d".to_string())]);
         assert_eq!(s.cols, 3);
         assert_eq!(s.values, vec![1., 2., 3., 4., 5., 6., 7., 8., 9.]);
         assert_eq!(s.row_lines, vec![4, 5, 8]);
@@ -278,6 +342,51 @@ mod tests {
         assert_eq!(
             scan(&bad, head(&bad).unwrap()).unwrap_err(),
             (Some(150_002), Problem::NotNumber("x".into()))
+        );
+    }
+
+    #[test]
+    fn empty_cells_and_nan_are_undefined() {
+        let nan = |t: &str| {
+            let s = scan(t, head(t).unwrap()).unwrap();
+            let v: Vec<Option<f64>> = s
+                .values
+                .iter()
+                .map(|v| (!v.is_nan()).then_some(*v))
+                .collect();
+            (s.cols, v)
+        };
+        let (c, v) = nan("1,,3\n,5,6\n7,8,\n");
+        assert_eq!(c, 3);
+        assert_eq!(
+            v,
+            vec![
+                Some(1.),
+                None,
+                Some(3.),
+                None,
+                Some(5.),
+                Some(6.),
+                Some(7.),
+                Some(8.),
+                None
+            ]
+        );
+        // The first row's last cell empty.
+        assert_eq!(
+            nan("1;2;\n4;5;6\n").1,
+            vec![Some(1.), Some(2.), None, Some(4.), Some(5.), Some(6.)]
+        );
+        // A comma closing every row is no cell.
+        assert_eq!(
+            nan("1,2,\n3,4,\n"),
+            (2, vec![Some(1.), Some(2.), Some(3.), Some(4.)])
+        );
+        assert_eq!(nan("1,2,,\n3,4,,\n").0, 3);
+        assert_eq!(nan("nan 2 NaN -nan\n").1, vec![None, Some(2.), None, None]);
+        assert_eq!(
+            head("1 inf\n").err().unwrap(),
+            (Some(1), Problem::NotFinite("inf".into()))
         );
     }
 

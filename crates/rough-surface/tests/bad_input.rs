@@ -68,8 +68,13 @@ fn non_numbers_nan_and_infinity() {
         "bad surface FILE, line 6: 'x' is not a number"
     );
     assert_eq!(
-        refuse(&map(SIZE, &["1 2 3 4", "1 NaN 3 4", "1 2 3 4", "1 2 3 4"])),
-        "bad surface FILE, line 5: NaN is not a finite number"
+        refuse(&map(
+            SIZE,
+            &["1 2 3 4", "1 NaN 3 4", "1 2 nan 4", "1 2 3 4"]
+        )),
+        "bad surface FILE: 2 of 16 points (12.5 %) are undefined (NaN, empty or \
+         masked): up to 10 % are filled, more is refused; crop the data to the \
+         part that was measured"
     );
     assert_eq!(
         refuse(&map(SIZE, &["1 2 3 4", "1 2 3 4", "1 2 3 4", "1 2 3 -inf"])),

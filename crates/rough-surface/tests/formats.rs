@@ -204,9 +204,8 @@ fn moments_as_the_same_heights_in_text() {
 }
 
 #[test]
-#[ignore = "needs the harmonic fill of undefined points (branch b25b-missing) on main"]
 fn moments_of_masked_files() {
-    // Once undefined points are filled, a masked file reads, saying so.
+    // Undefined points are filled: a masked file reads, saying so.
     for (file, count) in [
         ("sur_nan_d.x3p", 3),
         ("sur_valid_i.x3p", 3),
@@ -218,7 +217,7 @@ fn moments_of_masked_files() {
     ] {
         let m = read(&dir().join(file), &Options::default()).unwrap_or_else(|e| panic!("{e}"));
         assert!(matches!(m.kind, Kind::Map { .. }), "{file}");
-        let filled = format!("{count} undefined points");
+        let filled = format!("{count} undefined point");
         assert!(
             m.notes.iter().any(|n| n.contains(&filled)),
             "{file}: {:?}",
@@ -228,12 +227,16 @@ fn moments_of_masked_files() {
 }
 
 #[test]
-fn masked_points_are_undefined_until_filled() {
-    // Until the fill lands the pipeline refuses them by count.
-    let e = read(&dir().join("mask.gwy"), &Options::default())
-        .unwrap_err()
-        .to_string();
-    assert!(e.contains("3 of 560 points are undefined"), "{e}");
+fn masked_points_are_undefined_and_filled() {
+    // The reader names them, the pipeline fills them.
+    let m = read(&dir().join("mask.gwy"), &Options::default()).unwrap();
+    assert_eq!(
+        m.notes,
+        vec![
+            "3 points under the mask '/0/mask' read as undefined".to_string(),
+            "3 undefined points (0.54 %) filled".to_string()
+        ]
+    );
     let g = read_grid(&bytes("mask.gwy"), &Options::default()).unwrap();
     assert_eq!(
         g.notes,

@@ -20,8 +20,12 @@ fn refusals_name_the_line() {
     let err = |t: &str| parse(t.as_bytes(), &Options::default()).unwrap_err();
     assert_eq!(err("1 2\n3 x\n"), (Some(2), Problem::NotNumber("x".into())));
     assert_eq!(
-        err("1 2\n3 NaN\n"),
-        (Some(2), Problem::NotFinite("NaN".into()))
+        err("# q C\n1 2\n3 NaN\n4 1\n5 1\n"),
+        (Some(3), Problem::UndefinedValue("PSD value"))
+    );
+    assert_eq!(
+        err("1 2\n3 inf\n"),
+        (Some(2), Problem::NotFinite("inf".into()))
     );
     assert_eq!(
         err("1 2\n3 4 5\n"),

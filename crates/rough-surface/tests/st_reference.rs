@@ -103,7 +103,7 @@ fn moments_indices_and_spectra_match_surfacetopography() {
                 assert_eq!(n as f64, get("n"), "{}", c.file);
                 assert!(rel(l, get("l")) < 1e-15, "{}: {l}", c.file);
             }
-            Kind::Psd { .. } => panic!("{} read as a PSD", c.file),
+            Kind::Psd { .. } | Kind::Profiles { .. } => panic!("{} read as {:?}", c.file, m.kind),
         }
         assert!(rel(m.table.q0(), c.q0) < 1e-15, "{}", c.file);
         assert!(rel(m.table.zeta_max(), c.zeta_max) < 1e-14, "{}", c.file);

@@ -62,6 +62,23 @@ pub fn poll_line(app: &App, width: usize) -> Option<Line<'static>> {
     Some(Line::styled(line, style))
 }
 
+/// The lecturer's line in place of the claims while a poll is open
+/// ("poll open: 23/31 answered"): the screen is on the projector.
+pub fn open_poll_line(app: &App) -> Option<Line<'static>> {
+    let t = app.class.view.as_ref()?.poll.as_ref()?;
+    if t.revealed {
+        return None;
+    }
+    let line = format!(
+        "poll open: {}/{} answered{}v reveals{}C cancels",
+        t.answers.len(),
+        t.asked,
+        UNICODE.sep,
+        UNICODE.sep
+    );
+    Some(Line::styled(text(app, &line), app.theme.title))
+}
+
 fn bar_style(app: &App) -> Style {
     if app.theme.color {
         Style::new().fg(Color::Cyan)
@@ -91,6 +108,10 @@ pub fn render_poll(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     let Some(t) = app.class.view.as_ref().and_then(|v| v.poll.as_ref()) else {
         return;
     };
+    // A revealed poll's answers show on its own sweep only.
+    if t.revealed && t.sweep != app.state.sweep {
+        return;
+    }
     let gl = glyphs(app.theme.glyphs);
     let dots = app.theme.glyphs.dots();
     let axis = t.question.axis;
@@ -212,18 +233,21 @@ pub fn render_list(app: &App, area: Rect, buf: &mut Buffer) {
     let h = (rows.len() as u16 + 3).clamp(4, area.height);
     let per_page = usize::from(h - 3).max(1);
     let pages = rows.len().div_ceil(per_page).max(1);
-    let page = app.help_page % pages;
+    // The page of the chosen student, → ← paging on from there.
+    let chosen = app.class.chosen.min(rows.len().saturating_sub(1));
+    let page = (app.help_page + chosen / per_page) % pages;
     let r = Rect::new(
         area.x + (area.width - w) / 2,
         area.y + (area.height - h) / 2,
         w,
         h,
     );
-    let mut title = format!(" {}", v.line(g));
+    // The keys and the page first: the class line may be cut.
+    let mut title = format!(" w closes{}↑↓ x removes", g.sep);
     if pages > 1 {
         title.push_str(&format!("{}page {}/{pages}", g.sep, page + 1));
     }
-    title.push_str(&format!("{}w closes ", g.sep));
+    title.push_str(&format!("{}{} ", g.sep, v.line(g)));
     let title = text(app, &title);
     let mut lines = vec![Line::styled(header, t.title)];
     if rows.is_empty() {
@@ -231,9 +255,16 @@ pub fn render_list(app: &App, area: Rect, buf: &mut Buffer) {
     }
     lines.extend(
         rows.into_iter()
+            .enumerate()
             .skip(page * per_page)
             .take(per_page)
-            .map(Line::raw),
+            .map(|(i, row)| {
+                if i == chosen {
+                    Line::styled(row, t.selected)
+                } else {
+                    Line::raw(row)
+                }
+            }),
     );
     Clear.render(r, buf);
     Paragraph::new(lines)

@@ -4,6 +4,7 @@
 
 mod chart;
 pub mod class;
+pub mod compact;
 pub mod contact;
 mod indices;
 mod load;
@@ -31,7 +32,11 @@ use crate::figure::{Claim, View};
 impl Widget for &App {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let Some(r) = Regions::of(area) else {
-            render_too_small(self, area, buf);
+            if compact::applies(self) {
+                compact::render(self, area, buf);
+            } else {
+                render_too_small(self, area, buf);
+            }
             return;
         };
         render_header(self, r.header, buf);
@@ -56,6 +61,7 @@ impl Widget for &App {
         if self.mode == Mode::Class {
             class::render_list(self, area, buf);
         }
+        super::scenes::render(self, area, buf);
     }
 }
 
@@ -156,8 +162,19 @@ fn render_caption(app: &App, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
     let g = t.glyphs;
     let mut lines: Vec<Line> = class::class_line(app).into_iter().collect();
+    if let Some(step) = &app.class.step {
+        lines.push(Line::styled(g.text(&step.text()).into_owned(), t.title));
+    }
     let rows = usize::from(area.height.saturating_sub(1)).saturating_sub(lines.len());
-    let text = g.text(app.state.caption.as_deref().unwrap_or(""));
+    // While a poll is open the caption (which may name the answer) waits.
+    // (A lesson's captions are its author's, written for the poll.)
+    let open = app.class.open_question().is_some() && app.class.step.is_none();
+    let caption = if open {
+        "(the caption shows after the reveal)"
+    } else {
+        app.state.caption.as_deref().unwrap_or("")
+    };
+    let text = g.text(caption);
     lines.extend(
         wrap(&text, usize::from(area.width), rows, g.cut())
             .into_iter()
@@ -166,6 +183,26 @@ fn render_caption(app: &App, area: Rect, buf: &mut Buffer) {
     lines.resize(usize::from(area.height.saturating_sub(1)), Line::raw(""));
     if let Some(poll) = class::poll_line(app, usize::from(area.width)) {
         lines.push(poll);
+        Paragraph::new(lines).render(area, buf);
+        return;
+    }
+    if let Some(line) = class::open_poll_line(app) {
+        lines.push(line);
+        Paragraph::new(lines).render(area, buf);
+        return;
+    }
+    if let Some(q) = app.class.hidden_question() {
+        // A lesson's step about to poll: its question, not its answer.
+        let how = if app.class.view.is_some() || app.class.lesson.is_some() {
+            " · v opens the poll"
+        } else {
+            ""
+        };
+        let text = format!(
+            "this step asks: {}{how}",
+            q.text(&crate::tui::class::UNICODE)
+        );
+        lines.push(Line::styled(g.text(&text).into_owned(), t.title));
         Paragraph::new(lines).render(area, buf);
         return;
     }

@@ -10,6 +10,7 @@ use rough_model::Axis;
 
 use crate::figure::short_number;
 use crate::tui::app::App;
+use crate::tui::class::Ask;
 use crate::tui::fmt::{fmt_len, fmt_num, fmt_param, fmt_rel, fmt_share, fmt_short};
 use crate::tui::glyphs::SliderBar;
 use crate::tui::theme::CurveStyle;
@@ -106,7 +107,13 @@ fn render_measured(app: &App, axis: Axis, area: Rect, buf: &mut Buffer) {
 }
 
 /// "├───●────┤", the knob at the value's place in the range.
-fn slider_bar(g: SliderBar, axis: Axis, v: f64, (lo, hi): (f64, f64), width: usize) -> String {
+pub(super) fn slider_bar(
+    g: SliderBar,
+    axis: Axis,
+    v: f64,
+    (lo, hi): (f64, f64),
+    width: usize,
+) -> String {
     if width < 3 {
         return String::new();
     }
@@ -132,6 +139,9 @@ fn slider_bar(g: SliderBar, axis: Axis, v: f64, (lo, hi): (f64, f64), width: usi
     s
 }
 
+/// What stands for a value while an open poll asks for it.
+const HIDDEN: &str = "?";
+
 /// Two labelled values on a line, in columns `w` wide (label, value,
 /// label).
 fn pair(w: [usize; 3], l1: &str, v1: String, l2: &str, v2: String) -> String {
@@ -150,6 +160,16 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
     // padded into columns (wider columns for the ASCII names).
     let tx = |text: &str| g.text(text).into_owned();
     let num = |v: f64| tx(&fmt_num(v));
+    // While a poll is open the values that answer it are hidden: the
+    // plastic share and the slopes for the share, the indices for Ψ = 1,
+    // the slopes for the total slope's minimum.
+    let (hide_psi, hide_slopes) = match app.class.hidden_question().map(|q| q.ask) {
+        Some(Ask::Share { .. } | Ask::Minimum) => (false, true),
+        Some(Ask::Index { .. }) => (true, false),
+        _ => (false, false),
+    };
+    let psi = |v: f64| if hide_psi { HIDDEN.into() } else { num(v) };
+    let slope = |v: f64| if hide_slopes { HIDDEN.into() } else { num(v) };
     let len = |m: f64| tx(&fmt_len(m));
     let w = if g.ascii_text() {
         [8, 10, 8]
@@ -158,6 +178,7 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
     };
     let pair = |l1: &str, v1: String, l2: &str, v2: String| pair(w, &tx(l1), v1, &tx(l2), v2);
     let asym = match (ix.psi_star_asymptotic, ix.asymptotic_deviation()) {
+        _ if hide_psi => HIDDEN.into(),
         (Some(a), Some(d)) => format!("{} ({:+.1}% vs Ψ*)", fmt_num(a), d * 100.0),
         (Some(a), None) => fmt_num(a),
         (None, _) if s.is_measured() => "n/a on measured data".into(),
@@ -169,7 +190,7 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
     let curve = |c: &CurveStyle, label: &str, v: f64| {
         vec![
             Span::styled(format!("{label:<6}"), c.style),
-            Span::raw(format!("{:<10}", num(v))),
+            Span::raw(format!("{:<10}", slope(v))),
         ]
     };
     let mut slopes1 = curve(&t.elastic, "S_el", sl.elastic);
@@ -178,10 +199,10 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
     slopes2.extend(curve(&t.persson, "S_P", r.persson));
     let lines = vec![
         Line::styled("Readout", t.title),
-        Line::raw(pair("Ψ_GW", num(ix.psi_gw), "Ψ_P", num(ix.psi_p))),
+        Line::raw(pair("Ψ_GW", psi(ix.psi_gw), "Ψ_P", psi(ix.psi_p))),
         Line::raw(pair(
             "Ψ*",
-            num(ix.psi_star),
+            psi(ix.psi_star),
             "H_y/H0",
             num(ix.hardness_ratio),
         )),
@@ -200,17 +221,21 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
                 "marker: {} {}{} ({})",
                 if s.size_effect { "Ψ*" } else { "Ψ_P" },
                 if g.ascii_text() { "" } else { "= " },
-                fmt_num(r.psi),
+                psi(r.psi),
                 s.model.label()
             )),
             t.title,
         ),
         Line::from(slopes1),
         Line::from(slopes2),
-        Line::from(vec![
-            Span::raw(format!("plastic {}  ", fmt_share(sl.plastic_share()))),
-            Span::styled(regime.label(), t.regime()),
-        ]),
+        if hide_slopes {
+            Line::raw(format!("plastic {HIDDEN}  (until the reveal)"))
+        } else {
+            Line::from(vec![
+                Span::raw(format!("plastic {}  ", fmt_share(sl.plastic_share()))),
+                Span::styled(regime.label(), t.regime()),
+            ])
+        },
         Line::raw(format!("{} at the marker:", s.model.other().label())),
         Line::raw(tx(&format!(
             " el {}  pl {}  tot {}",

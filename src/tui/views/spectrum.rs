@@ -26,6 +26,9 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     if let Some(f) = app.readout.fit {
         title.push_str(&format!(" · fit H {:.2}", f.fit.hurst));
     }
+    if let Some(a) = anisotropy(app) {
+        title.push_str(&a);
+    }
     let mut title = glyphs.text(&title).into_owned();
     // The cutoff whole, or left out, never cut inside its number.
     let q1 = format!(
@@ -70,6 +73,26 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         chart::dataset(&fit, &p.fit),
     ];
     chart::plot(sets, (p.x_bounds, p.y_bounds), g, buf);
+}
+
+/// " · anisotropic: h′x/h′y = 3.4, Ψ_P across 11.3, along 0.73" for a
+/// map whose rms slopes along x and y differ by more than 1.5 (Ψ_P of the
+/// profiles across and along the lay over the whole band, at the scene's
+/// H0/E); nothing otherwise.
+pub fn anisotropy(app: &App) -> Option<String> {
+    let s = app.state.surface.as_ref()?.measured.slopes?;
+    if !s.anisotropic() {
+        return None;
+    }
+    let h0e = app.state.params.h0_over_e();
+    let psi = |m: f64| m / std::f64::consts::SQRT_2 / h0e;
+    let (across, along) = (psi(s.x.max(s.y)), psi(s.x.min(s.y)));
+    Some(format!(
+        " · anisotropic: h′x/h′y = {:.2}, Ψ_P across {}, along {}",
+        s.ratio(),
+        fmt_num(across),
+        fmt_num(along)
+    ))
 }
 
 /// Decade ticks every k decades (k = 1, 2, 5, 10, …), so that labels lie

@@ -1,0 +1,129 @@
+//! A map's heights made ready for its FFT in two passes over the grid, on
+//! several threads: the mean (periodic) or the least-squares plane removed
+//! and SurfaceTopography's radial Hann window applied, as
+//! [`crate::spectrum`]'s `detrend` and `window_2d` do one step at a time
+//! (same formulas; sums in another order, so equal to the rounding).
+
+use std::f64::consts::PI;
+
+use crate::error::Problem;
+use crate::spectrum::FLAT;
+
+fn threads() -> usize {
+    std::thread::available_parallelism().map_or(1, |n| n.get().min(4))
+}
+
+/// Rows per thread's block.
+fn per(ny: usize) -> usize {
+    ny.div_ceil(threads()).max(1)
+}
+
+/// Pass one, per block of rows from `j0`: Σh, Σ(i − cx)h, Σ(j − cy)h and
+/// whether every height equals `first`.
+fn sums(block: &[f64], nx: usize, j0: usize, (cx, cy): (f64, f64), first: f64) -> [f64; 4] {
+    let (mut s, mut sx, mut sy, mut same) = (0.0, 0.0, 0.0, true);
+    for (k, row) in block.chunks_exact(nx).enumerate() {
+        let mut r = 0.0;
+        for (i, &v) in row.iter().enumerate() {
+            sx += (i as f64 - cx) * v;
+            r += v;
+            same &= v == first;
+        }
+        s += r;
+        sy += ((j0 + k) as f64 - cy) * r;
+    }
+    [s, sx, sy, f64::from(u8::from(same))]
+}
+
+/// The mean removed (`periodic`), or the plane removed and the window
+/// applied; returns the window's normalisation s² = N / Σ w² (1 when
+/// periodic). Refuses flat heights as `detrend` does.
+pub(crate) fn prepare(
+    h: &mut [f64],
+    (nx, ny): (usize, usize),
+    (lx, ly): (f64, f64),
+    periodic: bool,
+) -> Result<f64, Problem> {
+    let n = (nx * ny) as f64;
+    let c = ((nx as f64 - 1.0) / 2.0, (ny as f64 - 1.0) / 2.0);
+    let per = per(ny);
+    let first = h[0];
+    let parts: Vec<[f64; 4]> = std::thread::scope(|s| {
+        let handles: Vec<_> = h
+            .chunks(per * nx)
+            .enumerate()
+            .map(|(b, block)| s.spawn(move || sums(block, nx, b * per, c, first)))
+            .collect();
+        handles
+            .into_iter()
+            .map(|t| t.join().expect("sums"))
+            .collect()
+    });
+    if parts.iter().all(|p| p[3] == 1.0) {
+        return Err(Problem::Flat { plane: false });
+    }
+    let total = |k: usize| parts.iter().map(|p| p[k]).sum::<f64>();
+    let mean = total(0) / n;
+    if periodic {
+        h.iter_mut().for_each(|v| *v -= mean);
+        return Ok(1.0);
+    }
+    let sxx: f64 = (0..nx).map(|i| (i as f64 - c.0).powi(2)).sum::<f64>() * ny as f64;
+    let syy: f64 = (0..ny).map(|j| (j as f64 - c.1).powi(2)).sum::<f64>() * nx as f64;
+    let b = if sxx > 0.0 { total(1) / sxx } else { 0.0 };
+    let cy = if syy > 0.0 { total(2) / syy } else { 0.0 };
+    // get_window_2D: r from grid point (nx//2, ny//2) in physical units,
+    // w = 0.5 + 0.5 cos(π r / r_max) for r ≤ r_max = min(Lx, Ly)/2, else 0.
+    let maxr = lx.min(ly) / 2.0;
+    let wy = (ny / 2) as f64;
+    // |i − nx/2| takes each value d at most twice: one cosine for both.
+    let far = (nx / 2).max(nx - 1 - nx / 2);
+    let ax: Vec<f64> = (0..=far)
+        .map(|d| (lx * d as f64 / nx as f64).powi(2))
+        .collect();
+    let parts: Vec<[f64; 3]> = std::thread::scope(|s| {
+        let handles: Vec<_> = h
+            .chunks_mut(per * nx)
+            .enumerate()
+            .map(|(blk, block)| {
+                let ax = &ax;
+                s.spawn(move || {
+                    let (mut var, mut rest, mut sw) = (0.0, 0.0, 0.0);
+                    let mut w = vec![0.0; far + 1];
+                    for (k, row) in block.chunks_exact_mut(nx).enumerate() {
+                        let j = blk * per + k;
+                        let ay = (ly * (j as f64 - wy) / ny as f64).powi(2);
+                        for (d, wd) in w.iter_mut().enumerate() {
+                            let r = (ax[d] + ay).sqrt();
+                            *wd = if r > maxr {
+                                0.0
+                            } else {
+                                0.5 + 0.5 * (PI * r / maxr).cos()
+                            };
+                        }
+                        let base = mean + cy * (j as f64 - c.1);
+                        for (i, v) in row.iter_mut().enumerate() {
+                            var += (*v - mean) * (*v - mean);
+                            *v -= base + b * (i as f64 - c.0);
+                            rest += *v * *v;
+                            let wi = w[i.abs_diff(nx / 2)];
+                            *v *= wi;
+                            sw += wi * wi;
+                        }
+                    }
+                    [var, rest, sw]
+                })
+            })
+            .collect();
+        handles
+            .into_iter()
+            .map(|t| t.join().expect("plane"))
+            .collect()
+    });
+    let total = |k: usize| parts.iter().map(|p| p[k]).sum::<f64>();
+    let (var, rest, sw) = (total(0) / n, total(1) / n, total(2));
+    if rest <= FLAT * FLAT * var {
+        return Err(Problem::Flat { plane: true });
+    }
+    Ok(n / sw)
+}

@@ -1,0 +1,236 @@
+//! Lessons with real OpenSSH clients in tmux: `serve --lesson` steps the
+//! class through lessons/paper.ron (n / N, "step 3/7 · title" on every
+//! screen, a step's poll asked without its answer, one CSV of all its
+//! polls), `F` pulls every student back, `o` loads a scene for everyone;
+//! `roughtui --lesson` rehearses alone and a bad lesson is refused.
+//!
+//! Skipped (with a note) when ssh or tmux is missing, unless
+//! ROUGHTUI_REQUIRE_SSH / ROUGHTUI_REQUIRE_TMUX are set, as in `.ci/run`.
+
+mod common;
+
+use std::path::Path;
+use std::process::Command;
+
+use common::lecture::{csvs, lecturer_key, lecturer_line};
+use common::room::Room;
+use common::serve::{have_ssh, Server};
+use common::tmux::have_tmux;
+
+#[test]
+fn a_lesson_steps_polls_into_one_csv_and_everyone_follows() {
+    if !(have_ssh() && have_tmux()) {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let key = lecturer_key(dir.path());
+    let keys = key.with_extension("pub");
+    let paper = Path::new(env!("CARGO_MANIFEST_DIR")).join("lessons/paper.ron");
+    let srv = Server::start(
+        dir.path(),
+        &[
+            "--lecturer-keys",
+            keys.to_str().unwrap(),
+            "--lesson",
+            paper.to_str().unwrap(),
+        ],
+    );
+    let room = Room::new("lesson", (100, 30));
+    room.open("lect", &lecturer_line(&srv, &key));
+    room.open("ann", &srv.ssh_line("ann", &["-t"]));
+    room.open("bob", &srv.ssh_line("bob", &["-t"]));
+    let all = ["lect", "ann", "bob"];
+    room.wait_all(&all, "step 1", 30, |s| {
+        s.contains("step 1/7 · The claim: realistic hardness is elastic")
+    });
+    // The lecturer's footer and help name the lecturer's keys.
+    let lect = room.capture("lect");
+    assert!(
+        lect.contains("v V poll") && lect.contains("n N step"),
+        "{lect}"
+    );
+    room.keys("lect", &["?"]);
+    let help = room.wait("lect", "the help", 20, |s| s.contains("help 1/"));
+    for k in [" v ", " V ", " C ", " F ", " S ", " n N "] {
+        assert!(help.contains(k), "{k}:\n{help}");
+    }
+    room.keys("lect", &["Escape"]);
+    let claim = |fig: &str, i: usize| {
+        roughtui::figure::claims(&roughtui::presets::load(fig).unwrap())[i].at
+    };
+    // Three polls: fig1's share, fig2's share, fig3's minimum.
+    let polls = [
+        (
+            2,
+            "where does the plastic share fall below ½?",
+            claim("fig1", 0),
+        ),
+        (3, "where does the plastic share pass ½?", claim("fig2", 0)),
+        (5, "where is the total slope smallest?", claim("fig3", 0)),
+    ];
+    let mut at = 1;
+    for (step, question, truth) in polls {
+        while at < step {
+            room.keys("lect", &["n"]);
+            at += 1;
+        }
+        let screens = room.wait_all(&all, "the step", 30, |s| {
+            s.contains(&format!("step {step}/7 · "))
+        });
+        // Before the poll opens no screen gives its answer away.
+        let shown = roughtui::figure::short_number(truth);
+        for (i, s) in screens.iter().enumerate() {
+            assert!(!s.contains(&shown), "{shown}:\n{s}");
+            // (Bob has not dismissed the last reveal: it stays.)
+            if i < 2 {
+                assert!(s.contains(&format!("this step asks: {question}")), "{s}");
+            }
+        }
+        room.keys("lect", &["v"]);
+        room.wait_all(&["ann", "bob"], "the question", 30, |s| {
+            s.contains(&format!("Predict: {question}"))
+        });
+        room.keys("ann", &["Enter"]);
+        room.wait("lect", "ann's answer", 30, |s| s.contains("1/2 answered"));
+        room.keys("lect", &["v"]);
+        let lect = room.wait("lect", "the reveal", 30, |s| s.contains("answers added to"));
+        assert!(lect.contains("paper-polls-"), "{lect}");
+        room.wait("bob", "the reveal", 30, |s| {
+            s.contains("you did not answer")
+        });
+        room.wait("ann", "the model's answer", 30, |s| {
+            s.contains("the model: ") && s.contains(&format!(" = {shown} · you: "))
+        });
+        room.keys("ann", &["Enter"]);
+    }
+    let files = csvs(dir.path());
+    assert_eq!(files.len(), 1, "one CSV for the lesson: {files:?}");
+    let text = std::fs::read_to_string(&files[0]).unwrap();
+    let rows: Vec<Vec<&str>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').collect())
+        .collect();
+    assert_eq!(
+        text.lines().next(),
+        Some("question,quantity,unit,truth,name,answer,offset")
+    );
+    assert_eq!(rows.len(), 6, "{text}");
+    for (i, (_, question, truth)) in polls.iter().enumerate() {
+        let q = question.replace('½', "1/2");
+        for r in &rows[2 * i..2 * i + 2] {
+            assert_eq!(r[0], q, "{text}");
+            assert_eq!(r[3].parse::<f64>().unwrap(), *truth, "{text}");
+        }
+        assert_eq!(rows[2 * i][4], "ann");
+        assert_eq!(rows[2 * i + 1][4..6], ["bob", "no answer"]);
+    }
+    // N goes back; F pulls a student exploring alone back.
+    room.keys("lect", &["N"]);
+    room.wait_all(&all, "step 4", 30, |s| {
+        s.contains("step 4/7 · The index behind it")
+    });
+    room.keys("bob", &["m"]);
+    room.wait("bob", "on his own", 20, |s| {
+        s.contains("exploring on your own")
+    });
+    room.keys("lect", &["F"]);
+    room.wait("bob", "called back", 20, |s| {
+        s.contains("the lecturer asked everyone to follow: following again")
+    });
+    room.wait("lect", "all following", 20, |s| {
+        s.contains("2 following · 0 on their own")
+    });
+}
+
+#[test]
+fn a_lesson_is_rehearsed_alone_and_a_bad_one_is_refused() {
+    if !have_tmux() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let paper = Path::new(env!("CARGO_MANIFEST_DIR")).join("lessons/paper.ron");
+    let p = common::tmux::Pane::start(
+        "rehearse",
+        dir.path(),
+        (100, 30),
+        &[],
+        &["--lesson", paper.to_str().unwrap()],
+    );
+    p.wait_text("step 1/7 · The claim: realistic hardness is elastic");
+    p.keys(&["n"]);
+    let s = p.wait_text("step 2/7 · Poll: where does fig. 1 turn plastic?");
+    assert!(
+        s.contains("v opens this step's poll · n next step · N back"),
+        "{s}"
+    );
+    // Nothing of the answer before the poll: fig1's share passes ½ at
+    // E/H0 = 120.2.
+    assert!(
+        s.contains("this step asks: where does the plastic share fall below ½?"),
+        "{s}"
+    );
+    assert!(!s.contains("120.2"), "{s}");
+    for _ in 0..10 {
+        p.keys(&["n"]);
+    }
+    p.wait_text("the lesson's last step: N goes back");
+    p.keys(&["N"]);
+    p.wait_text("step 6/7 · Rougher and softer");
+    p.keys(&["q"]);
+    assert_eq!(p.exit_status(), 0);
+    // A bad lesson: exit 2 and where the problem is.
+    let bad = dir.path().join("bad.ron");
+    std::fs::write(
+        &bad,
+        "(title: \"t\", steps: [(title: \"a\", scene: Preset(\"fig9\"))])",
+    )
+    .unwrap();
+    let o = Command::new(common::tmux::BIN)
+        .args(["--lesson", bad.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.starts_with(&format!("roughtui: the lesson {}, step 1: ", bad.display())),
+        "{err}"
+    );
+}
+
+#[test]
+fn o_loads_a_preset_or_a_snapshot_for_everyone() {
+    if !(have_ssh() && have_tmux()) {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let key = lecturer_key(dir.path());
+    let keys = key.with_extension("pub");
+    // A snapshot in the lecturer's folder: fig3 with the exact model.
+    let mut mine = roughtui::presets::load("fig3").unwrap();
+    mine.name = "mine".into();
+    mine.model = rough_model::Model::Exact;
+    std::fs::write(dir.path().join("mine.ron"), mine.to_ron()).unwrap();
+    let srv = Server::start(dir.path(), &["--lecturer-keys", keys.to_str().unwrap()]);
+    let room = Room::new("open", (100, 30));
+    room.open("lect", &lecturer_line(&srv, &key));
+    room.wait("lect", "the lecturer", 30, |s| s.contains("Readout"));
+    room.open("ann", &srv.ssh_line("ann", &["-t"]));
+    room.wait("ann", "following", 30, |s| {
+        s.contains("following the lecturer")
+    });
+    room.keys("lect", &["o"]);
+    let list = room.wait("lect", "the list", 20, |s| s.contains("load a scene"));
+    for e in ["preset fig1", "preset fig4", "mine.ron"] {
+        assert!(list.contains(e), "{e}:\n{list}");
+    }
+    room.keys("lect", &["Down", "Down", "Down", "Enter"]);
+    room.wait("ann", "fig4", 30, |s| s.contains("roughtui [fig4]"));
+    room.keys("lect", &["o", "Up", "Enter"]);
+    room.wait("ann", "the snapshot", 30, |s| {
+        s.contains("roughtui [mine.ron]") && s.contains("· exact ·")
+    });
+    // Esc closes the list without loading.
+    room.keys("lect", &["o", "Escape", "Right"]);
+    room.wait("ann", "still mine", 30, |s| s.contains("[mine.ron*]"));
+}
