@@ -198,7 +198,11 @@ pub struct Engine {
     next_id: AtomicUsize,
     /// Solves started (for tests of the cache and the sharing).
     pub solves: AtomicUsize,
+    /// Told a line on each job's end (`serve` logs it).
+    report: Mutex<Option<Reporter>>,
 }
+
+type Reporter = Arc<dyn Fn(&str) + Send + Sync>;
 
 impl Engine {
     /// An engine solving at most `cores` jobs at once.
@@ -210,7 +214,16 @@ impl Engine {
             freed: Condvar::new(),
             next_id: AtomicUsize::new(0),
             solves: AtomicUsize::new(0),
+            report: Mutex::new(None),
         })
+    }
+
+    /// Calls `f` with a line when a job that solved anything ends: what it
+    /// solved, on which grid and seed, in how long, for how many explorers.
+    pub fn on_end(&self, f: impl Fn(&str) + Send + Sync + 'static) {
+        if let Ok(mut r) = self.report.lock() {
+            *r = Some(Arc::new(f));
+        }
     }
 
     /// The process's engine: every explorer of a `serve` shares it.
@@ -316,8 +329,14 @@ impl Engine {
         if self.acquire(job) {
             job.set(|p| p.queued = false);
             job.wake();
+            let (start, before) = (Instant::now(), self.solves.load(Ordering::Relaxed));
             self.solve_all(job);
             self.release();
+            let solved = self.solves.load(Ordering::Relaxed) - before;
+            let reporter = self.report.lock().ok().and_then(|r| r.clone());
+            if let (Some(report), true) = (reporter, solved > 0) {
+                report(&job_line(job, solved, start.elapsed()));
+            }
         }
         job.set(|p| p.finished = true);
         job.wake();
@@ -419,5 +438,33 @@ impl Engine {
             Err(ContactError::Cancelled) => Err("cancelled".into()),
             Err(e) => Err(format!("at p̄/H = {}: {e}", task.p_over_h())),
         }
+    }
+}
+
+/// The line a job's end reports.
+fn job_line(job: &Job, solved: usize, took: Duration) -> String {
+    let mut grids: Vec<usize> = job.tasks.iter().map(|t| t.scene.n).collect();
+    grids.sort_unstable();
+    grids.dedup();
+    let grid = match (grids.first(), grids.last()) {
+        (Some(a), Some(b)) if a != b => format!("{a}²…{b}²"),
+        (Some(a), _) => format!("{a}²"),
+        _ => "no grid".into(),
+    };
+    let seed = job.tasks.first().map_or(0, |t| t.scene.seed);
+    let holders = job.state.lock().map_or(0, |s| s.holders);
+    let s = |n: usize| if n == 1 { "" } else { "s" };
+    if job.cancel.load(Ordering::Relaxed) {
+        format!(
+            "contact: cancelled after {solved} of {} solutions on {grid} (seed {seed})",
+            job.tasks.len()
+        )
+    } else {
+        format!(
+            "contact: {solved} solution{} on {grid} (seed {seed}) in {:.1} s for {holders} explorer{}",
+            s(solved),
+            took.as_secs_f64(),
+            s(holders)
+        )
     }
 }

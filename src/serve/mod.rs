@@ -86,6 +86,8 @@ pub const TURN_AWAY_TIME: Duration = Duration::from_secs(10);
 
 /// What every connection shares.
 pub struct Shared {
+    /// The contact solver every explorer of the class shares.
+    pub contact: Arc<crate::contact::engine::Engine>,
     /// The scene every explorer starts from.
     pub state: State,
     pub lecturer_keys: LecturerKeys,
@@ -240,7 +242,17 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         nodelay: true,
         ..Default::default()
     });
+    // One contact engine for the class: a scene is solved once for all
+    // who show it, each job's end on the console.
+    let contact = crate::contact::engine::Engine::new(
+        std::thread::available_parallelism().map_or(1, |n| n.get()),
+    );
+    {
+        let log = log.clone();
+        contact.on_end(move |line| log.line(line));
+    }
     let shared = Arc::new(Shared {
+        contact,
         state: opts.state,
         lecturer_keys,
         idle_timeout: opts.idle_timeout,

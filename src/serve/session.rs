@@ -161,6 +161,7 @@ async fn run(start: Start) {
     let solver = Arc::new(tokio::sync::Notify::new());
     let wake = Arc::clone(&solver);
     ex.app.contact.waker = Arc::new(move || wake.notify_one());
+    ex.app.contact.engine = Arc::clone(&shared.contact);
     // The first screen's line on switching the drawing, until the first
     // key or HINT_FOR.
     let mut hint = Some(term::hint(caps.glyphs, why.as_deref()));
