@@ -7,6 +7,7 @@
 //! hard-coded: every row is a measurement of this run. Timings of whole
 //! computations follow the table, one line each ([`timings`]).
 
+pub mod contact;
 pub mod measured;
 mod table;
 mod targets;
@@ -195,6 +196,7 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         return Ok(());
     }
     print!("{}", report(args.passes, true)?);
+    print!("{}", contact::run(3)?);
     let t = measured::time_synthetic(1024, SURFACE_STEPS)?;
     print!(
         "{}",
