@@ -292,6 +292,9 @@ pub enum ViewArg {
     Contact,
     /// The simulation's plastic share against ζ beside the theory's.
     ContactSweep,
+    /// The simulated contact map at p̄ = 0.01 H (SVG; CSV: a row of 0 out
+    /// of contact, 1 elastic, 2 at the hardness per grid row).
+    ContactMap,
 }
 
 impl ViewArg {
@@ -304,7 +307,7 @@ impl ViewArg {
             ViewArg::Map => View::Map,
             ViewArg::Load => View::Load,
             ViewArg::Spectrum => View::Spectrum,
-            ViewArg::Contact | ViewArg::ContactSweep => return None,
+            ViewArg::Contact | ViewArg::ContactSweep | ViewArg::ContactMap => return None,
         })
     }
 }

@@ -114,3 +114,48 @@ fn contact_refusals() {
         assert!(out.stdout.is_empty());
     }
 }
+
+/// The map at p̄ = 0.01 H: CSV digits whose counts are the CSV view's
+/// areas at that load, and the same map as SVG rectangles.
+#[test]
+fn contact_map_csv_and_svg() {
+    let args = ["--preset", "fig2", "--set", "zeta=16"];
+    let map = stdout(&[&["export", "--view", "contact-map"][..], &args].concat());
+    let lines: Vec<&str> = map.lines().filter(|l| !l.starts_with('#')).collect();
+    assert_eq!(lines.len(), 128);
+    let nodes: Vec<u8> = lines
+        .iter()
+        .flat_map(|l| l.split(',').map(|v| v.parse::<u8>().unwrap()))
+        .collect();
+    assert_eq!(nodes.len(), 128 * 128);
+    let count = |k: u8| nodes.iter().filter(|v| **v == k).count() as f64 / (128.0 * 128.0);
+    // The contact view's row at p̄/H = 0.01 (the fifth of thirteen).
+    let csv = stdout(&[&["export", "--view", "contact"][..], &args].concat());
+    let (_, _, rows) = parse(&csv);
+    let row = &rows[4];
+    assert_eq!(row[0], 0.01);
+    assert_eq!(count(1) + count(2), row[1]);
+    assert_eq!(count(1), row[2]);
+    assert_eq!(count(2), row[3]);
+    assert!(
+        map.contains("# fig2: contact map at p̄ = 0.01 H, 128×128, seed 1"),
+        "{map}"
+    );
+    let svg = stdout(
+        &[
+            &["export", "--view", "contact-map", "--format", "svg"][..],
+            &args,
+        ]
+        .concat(),
+    );
+    assert!(svg.starts_with("<svg"));
+    assert!(svg.matches("fill=\"#8c8c8c\"").count() > 10, "{svg}");
+    let out = run(&[
+        &["export", "--view", "contact-map", "--points", "5"][..],
+        &args,
+    ]
+    .concat());
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr)
+        .contains("--points does not apply to --view contact-map"));
+}

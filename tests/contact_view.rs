@@ -229,3 +229,34 @@ fn snapshots() {
     let ascii = Theme::colored().with_glyphs(Glyphs::Ascii);
     snapshot("contact_fig2_z8_80x24_ascii", 8.0, (80, 24), ascii);
 }
+
+#[test]
+fn p_saves_the_contact_map_at_the_chosen_load() {
+    let engine = Engine::new(1);
+    let dir = tempfile::tempdir().unwrap();
+    let mut a = app_at(4.0, (80, 24), Theme::colored(), &engine);
+    a.save_dir = dir.path().to_path_buf();
+    to_contact(&mut a);
+    settle(&mut a);
+    ch(&mut a, ']');
+    ch(&mut a, 'p');
+    let st = a.status.clone().unwrap();
+    assert!(!st.error && st.text.starts_with("saved "), "{}", st.text);
+    let files = common::files_in(dir.path());
+    assert_eq!(files.len(), 1);
+    assert!(files[0].starts_with("fig2-contact"), "{files:?}");
+    let svg = std::fs::read_to_string(dir.path().join(&files[0])).unwrap();
+    assert!(
+        svg.contains("fig2: contact map at p̄ = 0.01778 H, 32×32, seed 1"),
+        "{svg}"
+    );
+    // b's plot has no picture here: the status says where to get one.
+    ch(&mut a, 'b');
+    ch(&mut a, 'p');
+    let st = a.status.clone().unwrap();
+    assert!(
+        st.error && st.text.contains("--view contact-sweep"),
+        "{}",
+        st.text
+    );
+}

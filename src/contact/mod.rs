@@ -10,6 +10,7 @@
 //! so the cap is H_use/E*.
 
 pub mod engine;
+pub mod map_svg;
 pub mod scene;
 mod svg;
 
@@ -322,6 +323,9 @@ pub const MAX_LOADS: usize = 64;
 
 /// `roughtui export --view contact|contact-sweep`.
 pub fn export(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
+    if args.view == crate::cli::ViewArg::ContactMap {
+        return map_svg::export(args, out);
+    }
     let sweep = args.view == crate::cli::ViewArg::ContactSweep;
     let name = if sweep { "contact-sweep" } else { "contact" };
     for (given, opt) in [

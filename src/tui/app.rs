@@ -409,7 +409,12 @@ impl App {
         };
         let name = format!("{}-{}", self.state.name, self.view.name());
         let stem = snapshot::default_stem(&name, SystemTime::now());
-        let saved = render_svg(self.view, &self.state, &opts).and_then(|svg| {
+        let svg = if self.view == View::Contact {
+            super::contact::picture(self)
+        } else {
+            render_svg(self.view, &self.state, &opts)
+        };
+        let saved = svg.and_then(|svg| {
             snapshot::save_file_new(&self.save_dir, &stem, "svg", "picture", svg.as_bytes())
         });
         match saved {

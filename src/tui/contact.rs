@@ -275,3 +275,38 @@ pub fn on_key(app: &mut super::app::App, msg: super::app::Message) {
         _ => {}
     }
 }
+
+/// The contact view's picture (`p`): the contact map at the chosen load.
+pub fn picture(app: &super::app::App) -> anyhow::Result<String> {
+    let pane = &app.contact;
+    if pane.sweep {
+        anyhow::bail!(
+            "no picture of b's plot here: roughtui export --view contact-sweep --format svg \
+             draws it"
+        );
+    }
+    if let Some(why) = &pane.why_not {
+        anyhow::bail!("no contact map: {why}");
+    }
+    let solved = match pane.chosen() {
+        Some(Ok(s)) => s,
+        Some(Err(e)) => anyhow::bail!("no contact map: {e}"),
+        None => anyhow::bail!("the contact map is not solved yet: p again when it is"),
+    };
+    let n = pane.tasks.first().map_or(0, |t| t.scene.n);
+    let r = &solved.result;
+    let (title, note) = crate::contact::map_svg::caption(
+        &app.state.name,
+        n,
+        pane.seed,
+        load_value(pane.load),
+        r.area,
+        r.plastic_area,
+    );
+    Ok(crate::contact::map_svg::map_svg(
+        &solved.map,
+        n,
+        &title,
+        &note,
+    ))
+}

@@ -61,7 +61,7 @@ pub fn share_pct(plastic: f64, total: f64) -> String {
 }
 
 /// The load p̄/H as the readout writes it.
-fn load_text(v: f64) -> String {
+pub fn load_text(v: f64) -> String {
     // Four significant digits, trailing zeros dropped (0.01778, 0.01, 1).
     let decimals = (3 - v.log10().floor() as i32).max(0) as usize;
     let s = format!("{v:.decimals$}");
