@@ -161,6 +161,13 @@ fn results_are_cached_and_shared_between_explorers() {
     ch(&mut a, 'r');
     assert_eq!(a.contact.seed, 2);
     assert!(a.contact.busy());
+    // The seed is the scene's: the snapshot keeps it, and loads it back.
+    assert!(a.modified);
+    let ron = a.state.to_ron();
+    assert!(ron.contains("seed: 2"), "{ron}");
+    let back = roughtui::snapshot::State::from_ron(&ron).unwrap();
+    assert_eq!(back.seed, Some(2));
+    assert!(!presets::load("fig2").unwrap().to_ron().contains("seed"));
 }
 
 #[test]

@@ -138,7 +138,7 @@ pub fn export(args: &ExportArgs, out: &mut impl std::io::Write) -> anyhow::Resul
         }
     }
     let state = crate::export::state_of(args)?;
-    let seed = args.seed.unwrap_or(DEFAULT_SEED);
+    let seed = args.seed.or(state.seed).unwrap_or(DEFAULT_SEED);
     let key = SceneKey::of(&state, seed)?;
     let mut c = key.build()?;
     let h = key.hardness();

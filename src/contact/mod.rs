@@ -351,7 +351,7 @@ pub fn export(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
         bail!("--points {points} is too many for --view contact: at most {MAX_LOADS} loads (each is a solution)");
     }
     let state = crate::export::state_of(args)?;
-    let seed = args.seed.unwrap_or(DEFAULT_SEED);
+    let seed = args.seed.or(state.seed).unwrap_or(DEFAULT_SEED);
     match (args.format, sweep) {
         (FormatArg::Csv, false) => write_contact(out, &state, points, seed),
         (FormatArg::Csv, true) => write_contact_sweep(out, &state, seed),

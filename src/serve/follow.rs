@@ -19,8 +19,8 @@ pub struct Shown {
     pub map_y: Option<Axis>,
     pub modified: bool,
     pub file: Option<String>,
-    /// The contact view's load, plot (`b`) and seed.
-    pub contact: (usize, bool, u64),
+    /// The contact view's load and plot (`b`).
+    pub contact: (usize, bool),
     /// The lesson's step, when the lecturer leads one.
     pub step: Option<crate::lesson::StepLine>,
 }
@@ -34,7 +34,7 @@ impl Shown {
             map_y: app.map_y,
             modified: app.modified,
             file: app.file.clone(),
-            contact: (app.contact.load, app.contact.sweep, app.contact.seed),
+            contact: (app.contact.load, app.contact.sweep),
             step: app.class.step.clone(),
         }
     }
@@ -42,8 +42,8 @@ impl Shown {
     /// Makes `app` show this.
     pub fn apply(&self, app: &mut App) {
         let c = &mut app.contact;
-        let moved = (c.load, c.sweep, c.seed) != self.contact;
-        (c.load, c.sweep, c.seed) = self.contact;
+        let moved = (c.load, c.sweep) != self.contact;
+        (c.load, c.sweep) = self.contact;
         app.show(&self.state, self.selected, self.view, self.map_y);
         if moved {
             crate::tui::app::update(app, Message::Tick);

@@ -113,6 +113,15 @@ pub struct SnapshotFile {
         deserialize_with = "surface::de"
     )]
     pub surface: Option<SurfaceFile>,
+    /// The seed of the contact simulation's surface (1 when absent),
+    /// written and read as a plain number (`seed: 2`).
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "ser_seed",
+        deserialize_with = "de_seed"
+    )]
+    pub seed: Option<u64>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -141,6 +150,14 @@ fn ser_caption<S: Serializer>(c: &Option<String>, s: S) -> Result<S::Ok, S::Erro
     c.as_deref().unwrap_or_default().serialize(s)
 }
 
+fn de_seed<'de, D: Deserializer<'de>>(d: D) -> Result<Option<u64>, D::Error> {
+    u64::deserialize(d).map(Some)
+}
+
+fn ser_seed<S: Serializer>(v: &Option<u64>, s: S) -> Result<S::Ok, S::Error> {
+    v.unwrap_or(1).serialize(s)
+}
+
 fn is_truncated(m: &Moments) -> bool {
     *m == Moments::Truncated
 }
@@ -159,6 +176,9 @@ pub struct State {
     /// The measured surface the scene is computed on; `None` for the
     /// paper's power law.
     pub surface: Option<SurfaceSource>,
+    /// The seed of the contact simulation's random phases; `None`: the
+    /// default (1).
+    pub seed: Option<u64>,
 }
 
 /// `text` as the value of a text field: at most `max` characters, none of
@@ -245,6 +265,7 @@ impl State {
             model: f.model,
             moments: f.moments,
             surface,
+            seed: f.seed,
         };
         state.check()?;
         Ok(state)
@@ -319,6 +340,7 @@ impl State {
             model: self.model,
             moments: self.moments,
             surface: self.surface.as_ref().map(|s| surface::file_of(s, base)),
+            seed: self.seed,
         }
     }
 

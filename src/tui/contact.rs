@@ -70,6 +70,7 @@ pub struct ContactPane {
     pub load: usize,
     /// `b`: the plastic share against ζ instead of the areas against load.
     pub sweep: bool,
+    /// The scene's seed (the snapshot's, 1 by default).
     pub seed: u64,
     /// Why the scene cannot be simulated (then nothing is requested).
     pub why_not: Option<String>,
@@ -120,6 +121,7 @@ impl ContactPane {
     /// the old one (by dropping its ticket) and, if `shown`, requests the
     /// new one; the results are read from the cache.
     pub fn refresh(&mut self, state: &State, shown: bool) {
+        self.seed = state.seed.unwrap_or(DEFAULT_SEED);
         let request = self.request_for(state);
         if request.as_ref().map(|r| &r.tasks) != self.request.as_ref().map(|r| &r.tasks) {
             self.ticket = None;
@@ -268,9 +270,10 @@ pub fn on_key(app: &mut super::app::App, msg: super::app::Message) {
         }
         Message::ContactSweep => pane.sweep = !pane.sweep,
         Message::ContactSeed => {
-            pane.seed = pane.seed.wrapping_add(1);
-            let text = format!("another surface: seed {}", pane.seed);
-            app.set_status(text, false);
+            let seed = pane.seed.wrapping_add(1);
+            app.state.seed = Some(seed);
+            app.modified = true;
+            app.set_status(format!("another surface: seed {seed}"), false);
         }
         _ => {}
     }
