@@ -30,6 +30,7 @@ mod colour;
 mod map;
 mod minimum;
 mod number;
+pub mod scene_text;
 mod series;
 mod spectrum;
 mod svg;

@@ -13,7 +13,7 @@ use plotters::prelude::*;
 use rough_model::{Axis, Curves, Scene};
 
 use super::{axis_unit, FigureOptions, IndexSeries, LoadCurve, View};
-use crate::figure::short_number;
+use crate::figure::{scene_text, short_number};
 use crate::snapshot::State;
 
 /// Picture size in pixels (SVG user units).
@@ -38,13 +38,15 @@ const GREY: RGBColor = RGBColor(150, 150, 150);
 const PSI_GW: RGBColor = RGBColor(128, 0, 128);
 const PSI_ASY: RGBColor = RGBColor(230, 120, 0);
 
-/// `view` of `state` as an SVG document (UTF-8 text).
+/// `view` of `state` as an SVG document (UTF-8 text). Under the chart: the
+/// scene's parameters, the view's caption and, where the view shows the
+/// sweep, the claims; the full parameter set also goes into `<desc>`.
 pub fn render_svg(view: View, state: &State, opts: &FigureOptions) -> anyhow::Result<String> {
     let mut buf = String::new();
     {
         let root = SVGBackend::with_string(&mut buf, SIZE).into_drawing_area();
         root.fill(&WHITE).map_err(plot_err)?;
-        let lines = caption_lines(state);
+        let lines = caption_lines(view, state, opts);
         let caption_h = CAPTION_H.max(2 * 8 + LINE_H * lines.len() as u32);
         let (chart_area, caption_area) = root.split_vertically(SIZE.1 - caption_h);
         match view {
@@ -57,18 +59,32 @@ pub fn render_svg(view: View, state: &State, opts: &FigureOptions) -> anyhow::Re
         caption(&caption_area, &lines)?;
         root.present().map_err(plot_err)?;
     }
-    Ok(crisp_rects(buf))
+    let head = format!(
+        "\n<title>{}</title>\n<desc>{}</desc>\n<style>rect{{shape-rendering:crispEdges}}</style>",
+        xml_text(&format!("{} — {} view", state.name, view.name())),
+        xml_text(&scene_text::full_lines(state, view, opts).join("\n"))
+    );
+    Ok(after_svg_tag(buf, &head))
 }
 
-/// Adjacent filled rectangles (the map's cells) would show hairline seams
-/// where viewers anti-alias their shared edges; rectangles are drawn with
-/// crisp edges, curves and text stay smooth.
-fn crisp_rects(mut svg: String) -> String {
+/// `text` with XML's special characters escaped, for element content.
+fn xml_text(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
+/// `svg` with `head` inserted right after the opening `<svg …>` tag. It
+/// holds the title, the description and a style: adjacent filled
+/// rectangles (the map's cells) would show hairline seams where viewers
+/// anti-alias their shared edges, so rectangles are drawn with crisp
+/// edges, curves and text stay smooth.
+fn after_svg_tag(mut svg: String, head: &str) -> String {
     if let Some(end) = svg
         .find("<svg")
         .and_then(|at| svg[at..].find('>').map(|e| at + e + 1))
     {
-        svg.insert_str(end, "\n<style>rect{shape-rendering:crispEdges}</style>");
+        svg.insert_str(end, head);
     }
     svg
 }
@@ -152,6 +168,8 @@ fn chart<'a, 'b>(
     x: &Scale,
     y: &Scale,
 ) -> anyhow::Result<Chart<'a, 'b>> {
+    let max = ((f64::from(area.dim_in_pixel().0) - 30.0) / TITLE_CHAR_W) as usize;
+    let title = fit_title(title, max);
     let mut c = ChartBuilder::on(area)
         .caption(title, ("sans-serif", 20))
         .margin(15)
@@ -253,20 +271,35 @@ fn legend_at<'a, 'b: 'a>(c: &mut Chart<'a, 'b>, at: SeriesLabelPosition) -> anyh
         .map_err(plot_err)
 }
 
-/// "fig2 · closed form, asymptotic moments, size effect off"; a measured
-/// surface's moments are "measured".
+/// "fig2 — initial slopes": the scene's name and what the view shows (the
+/// settings are on the scene line under the chart).
 fn title(state: &State, what: &str) -> String {
-    let moments = if state.is_measured() {
-        "measured"
-    } else {
-        state.moments.label()
+    format!("{} — {what}", state.name)
+}
+
+/// Pixels per character of the title: plotters writes its 20-point font as
+/// 16.13 px, and digits, the widest common glyphs of a sans-serif, are
+/// 0.64 em (10.3 px): a bound for names, not an average.
+pub(crate) const TITLE_CHAR_W: f64 = 10.5;
+
+/// `title` cut to `max` characters so that it is never clipped: the
+/// scene's name (before " — ") gives way first, ending in "…", then what
+/// the view shows.
+pub(crate) fn fit_title(title: &str, max: usize) -> String {
+    let n = title.chars().count();
+    if n <= max {
+        return title.to_string();
+    }
+    let cut = |s: &str, keep: usize| -> String {
+        s.chars().take(keep).chain(std::iter::once('…')).collect()
     };
-    format!(
-        "{} — {what} ({}, {moments} moments, size effect {})",
-        state.name,
-        state.model.label(),
-        if state.size_effect { "on" } else { "off" }
-    )
+    match title.split_once(" — ") {
+        Some((name, what)) if what.chars().count() + 5 <= max => {
+            let keep = max - what.chars().count() - 4;
+            format!("{} — {what}", cut(name, keep))
+        }
+        _ => cut(title, max.saturating_sub(1)),
+    }
 }
 
 /// Finite positive values' (min, max); (1, 10) when there are none.
@@ -440,16 +473,26 @@ fn load(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::Result<()> 
     legend(&mut c)
 }
 
-/// The state's caption (or its name) wrapped for under the chart, then
-/// the claims (as on the explorer's caption row, in full), each line with
-/// its colour.
-fn caption_lines(state: &State) -> Vec<(String, RGBColor)> {
-    let text = state.caption.as_deref().unwrap_or(state.name.as_str());
-    let claims = crate::figure::claims(state).into_iter().map(|c| c.text());
-    let mut lines: Vec<_> = wrap(text, CAPTION_W)
-        .into_iter()
-        .map(|l| (l, BLACK))
+/// The scene's colour under the chart: dark grey, so that the caption and
+/// the claims stand out.
+const SCENE: RGBColor = RGBColor(70, 70, 70);
+
+/// What goes under the chart, each line with its colour: the scene's
+/// parameters, the view's caption and, on the views along the sweep
+/// (slopes, indices, map), the claims (as on the explorer's caption row,
+/// in full).
+fn caption_lines(view: View, state: &State, opts: &FigureOptions) -> Vec<(String, RGBColor)> {
+    let mut lines: Vec<_> = scene_text::short_lines(state, view, opts)
+        .iter()
+        .flat_map(|l| wrap(l, CAPTION_W))
+        .map(|l| (l, SCENE))
         .collect();
+    let text = view_caption(view, state);
+    lines.extend(wrap(&text, CAPTION_W).into_iter().map(|l| (l, BLACK)));
+    if !matches!(view, View::Slopes | View::Indices | View::Map) {
+        return lines;
+    }
+    let claims = crate::figure::claims(state).into_iter().map(|c| c.text());
     // Claims are packed whole, never broken inside one.
     let mut row = String::new();
     for c in claims {
@@ -466,6 +509,41 @@ fn caption_lines(state: &State) -> Vec<(String, RGBColor)> {
         lines.push((row, CLAIMS));
     }
     lines
+}
+
+/// The view's own caption: a scene's caption describes its slopes (the
+/// paper's figures are slope plots), so the slopes view carries it; every
+/// other view says what it shows.
+pub(crate) fn view_caption(view: View, state: &State) -> String {
+    let swept = state.sweep.axis().symbol();
+    let psi = if state.size_effect {
+        "Ψ* (with the size-dependent hardness H_y)"
+    } else {
+        "Ψ_P (with the bulk hardness H0)"
+    };
+    match view {
+        View::Slopes => state.caption.clone().unwrap_or_else(|| {
+            format!(
+                "Initial slopes of the elastic, plastic and total contact area against {swept}, \
+                 with Persson's elastic line; the grey line is the marker."
+            )
+        }),
+        View::Indices => format!(
+            "Plasticity indices against {swept}: Greenwood–Williamson's, Persson's with the \
+             bulk hardness and Ψ* with the size-dependent hardness. The contact turns plastic \
+             where the index in use, {psi}, passes 1."
+        ),
+        View::Map => format!(
+            "Regime map: the plastic share S_pl/S_tot of the initial slope, computed with \
+             {psi}; the white line is where that index is 1."
+        ),
+        View::Load => "Contact areas against the load at the parameters above, with the \
+                       initial slope drawn from the origin."
+            .to_string(),
+        View::Spectrum => "The surface's power spectrum, the power law fitted over the band \
+                           q0…q1 and the cutoff q1 = ζ q0."
+            .to_string(),
+    }
 }
 
 /// `lines` under the chart.
