@@ -48,8 +48,11 @@ pub use svg::render_svg;
 
 use rough_model::Axis;
 
-/// One of the explorer's charts, each exportable as CSV or SVG.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+/// One of the explorer's charts, each exportable as CSV or SVG (a
+/// snapshot records it as `view: Map`).
+#[derive(
+    Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize,
+)]
 pub enum View {
     /// Initial slopes of the contact areas against the swept parameter.
     #[default]

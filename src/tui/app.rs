@@ -248,6 +248,7 @@ impl App {
             .position(|a| *a == app.state.sweep.axis())
             .unwrap_or(0);
         measured::fix_selection(&mut app);
+        super::ghost::restore(&mut app);
         if app.state.is_measured() {
             app.home = Some(app.state.clone());
         }
@@ -426,6 +427,8 @@ impl App {
         self.captioned = KeptCaption::of(&self.state);
         self.selected = Axis::ALL.iter().position(|a| *a == axis).unwrap_or(0);
         measured::fix_selection(self);
+        // A preset or the session's surface: the view stays as it is.
+        self.state.shown = Default::default();
     }
 }
 

@@ -49,11 +49,14 @@ pub fn accept(app: &mut App) {
                 }
             };
             app.mode = Mode::Main;
-            // The snapshot is named as typed (the stem, without ".ron").
+            // The snapshot is named as typed (the stem, without ".ron"
+            // and without the offered time stamp), and records the view.
             let mut named = app.state.clone();
-            named.name = clean;
+            named.name = snapshot::scene_name(&clean).to_string();
+            named.shown = super::ghost::shown(app);
             match snapshot::save_new(&app.save_dir, &stem, &named) {
                 Ok(path) => {
+                    named.shown = Default::default();
                     app.state = named;
                     app.modified = false;
                     app.file = path.file_name().map(|f| f.to_string_lossy().into_owned());
