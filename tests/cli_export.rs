@@ -436,7 +436,10 @@ fn options_that_do_not_apply_are_refused() {
     );
     usage_error(&["export", "--sweep", "zeta:1:x"], &["'x' is not a number"]);
     usage_error(&["export", "--sweep", "zeta:100:10"], &["--sweep", "empty"]);
-    usage_error(&["export", "--sweep", "hurst:0.5:2"], &["--sweep", "hurst"]);
+    usage_error(
+        &["export", "--sweep", "hurst:0.5:2"],
+        &["--sweep", "H = 2", "0.05 … 1"],
+    );
 }
 
 #[test]

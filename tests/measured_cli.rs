@@ -313,7 +313,7 @@ fn every_refusal_exits_2_with_one_message() {
         );
         refused(
             &with(&["--preset", "fig2", "--set", "hurst=1"]),
-            &["--set hurst=1", "H = 1 needs the truncated moments"],
+            &["--set hurst=1", "H = 1 needs truncated moments"],
         );
         refused(&with(&["--set", "zeta=3nm"]), &["--set", "ζ takes no unit"]);
         refused(&with(&["--set", "eta=3"]), &["unknown parameter 'eta'"]);

@@ -433,9 +433,10 @@ impl App {
 }
 
 /// Why H = 1 and the asymptotic moments do not go together, in the
-/// explorer's words (the model's error names the snapshot field).
+/// explorer's words with the key that helps, within 80 columns (the
+/// model's error names the snapshot field).
 pub const HURST_ONE_ASYMPTOTIC: &str =
-    "H = 1 needs the truncated moments (the asymptotic m2 is infinite there)";
+    "H = 1 needs truncated moments (asymptotic m2 is infinite there): press a first";
 
 /// The one place that changes an [`App`].
 pub fn update(app: &mut App, msg: Message) {
