@@ -176,14 +176,8 @@ pub fn parse_q0_number(text: &str) -> Result<f64, String> {
 /// L = 2π/q0 typed as a length (`62.8um`); the q0 it gives.
 pub fn parse_l(text: &str) -> Result<f64, String> {
     let l = parse_value(Axis::HRms, text)?;
-    if !(l > 0.0) {
-        return Err(format!(
-            "L = {} is out of range: L takes 10 nm … 10 m",
-            text.trim()
-        ));
-    }
     let q0 = std::f64::consts::TAU / l;
-    if Q0.accepts(q0) {
+    if l > 0.0 && Q0.accepts(q0) {
         Ok(q0)
     } else {
         Err(format!(
