@@ -54,7 +54,7 @@ pub(super) fn draw(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::
     let ye = edges(ya, yb, spec.rows);
     let x = scale(xlog, xe[0], xe[spec.cols], axis_desc(spec.x.axis()));
     let y = scale(ylog, ye[0], ye[spec.rows], axis_desc(spec.y.axis()));
-    let mut c = chart(&plot, &title(state, "regime map"), &x, &y)?;
+    let mut c = chart(&plot, &title(state, "regime map"), (&x, &y), None)?;
 
     // Cells, as runs of equal colour along each row.
     let mut rects = Vec::new();
@@ -92,16 +92,18 @@ pub(super) fn draw(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::
 
     // The current point, where it lies on the map.
     let (fx, fy) = spec.position();
-    if (0.0..=1.0).contains(&fx) && (0.0..=1.0).contains(&fy) {
+    let on_map = (0.0..=1.0).contains(&fx) && (0.0..=1.0).contains(&fy);
+    if on_map {
         let p = (xa + (xb - xa) * fx, ya + (yb - ya) * fy);
         c.draw_series(std::iter::once(Circle::new(p, 7, POINT.stroke_width(3))))
             .map_err(plot_err)?;
     }
-    side_legend(&side, &m)
+    side_legend(&side, &m, on_map)
 }
 
-/// The colour bar with the thresholds, the contour and the marker.
-fn side_legend(area: &Area, m: &RegimeMap) -> anyhow::Result<()> {
+/// The colour bar with the thresholds, the contour and, where it is on the
+/// map, the current point.
+fn side_legend(area: &Area, m: &RegimeMap, point: bool) -> anyhow::Result<()> {
     let font = ("sans-serif", 14).into_font();
     let text = |s: String, x: i32, y: i32| Text::new(s, (x, y), font.clone());
     let (x0, top, bar_h) = (15, 60, 260);
@@ -153,10 +155,12 @@ fn side_legend(area: &Area, m: &RegimeMap) -> anyhow::Result<()> {
     .map_err(plot_err)?;
     area.draw(&text(format!("{psi} = 1 contour"), x0 + 40, y - 7))
         .map_err(plot_err)?;
-    y += 26;
-    area.draw(&Circle::new((x0 + 14, y), 7, POINT.stroke_width(3)))
-        .map_err(plot_err)?;
-    area.draw(&text("current point".into(), x0 + 40, y - 7))
-        .map_err(plot_err)?;
+    if point {
+        y += 26;
+        area.draw(&Circle::new((x0 + 14, y), 7, POINT.stroke_width(3)))
+            .map_err(plot_err)?;
+        area.draw(&text("current point".into(), x0 + 40, y - 7))
+            .map_err(plot_err)?;
+    }
     Ok(())
 }

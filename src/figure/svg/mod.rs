@@ -3,6 +3,8 @@
 //! colours (elastic black, plastic blue, total red, Persson green) and the
 //! caption under the chart, with the claims located live under it.
 
+mod curves;
+mod legend;
 mod map;
 mod spectrum;
 
@@ -10,11 +12,12 @@ use anyhow::anyhow;
 use plotters::coord::types::RangedCoordf64;
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;
-use rough_model::{Axis, Curves, Scene};
+use rough_model::Axis;
 
-use super::{axis_unit, FigureOptions, IndexSeries, LoadCurve, View};
+use super::{axis_unit, FigureOptions, View};
 use crate::figure::{scene_text, short_number};
 use crate::snapshot::State;
+use legend::{Legend, Placed, Sample};
 
 /// Picture size in pixels (SVG user units).
 pub const SIZE: (u32, u32) = (900, 600);
@@ -42,29 +45,49 @@ const PSI_ASY: RGBColor = RGBColor(230, 120, 0);
 /// scene's parameters, the view's caption and, where the view shows the
 /// sweep, the claims; the full parameter set also goes into `<desc>`.
 pub fn render_svg(view: View, state: &State, opts: &FigureOptions) -> anyhow::Result<String> {
-    let mut buf = String::new();
-    {
-        let root = SVGBackend::with_string(&mut buf, SIZE).into_drawing_area();
-        root.fill(&WHITE).map_err(plot_err)?;
-        let lines = caption_lines(view, state, opts);
-        let caption_h = CAPTION_H.max(2 * 8 + LINE_H * lines.len() as u32);
-        let (chart_area, caption_area) = root.split_vertically(SIZE.1 - caption_h);
-        match view {
-            View::Slopes => slopes(&chart_area, state, opts)?,
-            View::Indices => indices(&chart_area, state, opts)?,
-            View::Map => map::draw(&chart_area, state, opts)?,
-            View::Load => load(&chart_area, state, opts)?,
-            View::Spectrum => spectrum::draw(&chart_area, state)?,
-        }
-        caption(&caption_area, &lines)?;
-        root.present().map_err(plot_err)?;
-    }
+    let lines = caption_lines(view, state, opts);
+    // The legend goes inside the plot where no line passes, else the
+    // picture is drawn again with the plot narrower and the legend right
+    // of it.
+    let buf = match render_once(view, state, opts, &lines, None)? {
+        (buf, Placed::Inside) => buf,
+        (_, Placed::NoRoom(room)) => render_once(view, state, opts, &lines, Some(room))?.0,
+    };
     let head = format!(
         "\n<title>{}</title>\n<desc>{}</desc>\n<style>rect{{shape-rendering:crispEdges}}</style>",
         xml_text(&format!("{} — {} view", state.name, view.name())),
         xml_text(&scene_text::full_lines(state, view, opts).join("\n"))
     );
     Ok(after_svg_tag(buf, &head))
+}
+
+/// One drawing of the picture, `room` pixels kept right of the plot for
+/// the legend (inside the plot when `None`), and where the legend went.
+fn render_once(
+    view: View,
+    state: &State,
+    opts: &FigureOptions,
+    lines: &[(String, RGBColor)],
+    room: Option<u32>,
+) -> anyhow::Result<(String, Placed)> {
+    let mut buf = String::new();
+    let placed = {
+        let root = SVGBackend::with_string(&mut buf, SIZE).into_drawing_area();
+        root.fill(&WHITE).map_err(plot_err)?;
+        let caption_h = CAPTION_H.max(2 * 8 + LINE_H * lines.len() as u32);
+        let (chart_area, caption_area) = root.split_vertically(SIZE.1 - caption_h);
+        let placed = match view {
+            View::Slopes => curves::slopes(&chart_area, state, opts, room)?,
+            View::Indices => curves::indices(&chart_area, state, opts, room)?,
+            View::Map => map::draw(&chart_area, state, opts).map(|()| Placed::Inside)?,
+            View::Load => curves::load(&chart_area, state, opts, room)?,
+            View::Spectrum => spectrum::draw(&chart_area, state, room)?,
+        };
+        caption(&caption_area, lines)?;
+        root.present().map_err(plot_err)?;
+        placed
+    };
+    Ok((buf, placed))
 }
 
 /// `text` with XML's special characters escaped, for element content.
@@ -161,18 +184,20 @@ pub(crate) fn axis_desc(axis: Axis) -> String {
     }
 }
 
-/// A chart on `area` with the given scales, mesh drawn, and a title.
+/// A chart on `area` with the given scales, mesh drawn, and a title;
+/// `room` pixels kept right of the plot for a legend outside it.
 fn chart<'a, 'b>(
     area: &'a Area<'b>,
     title: &str,
-    x: &Scale,
-    y: &Scale,
+    (x, y): (&Scale, &Scale),
+    room: Option<u32>,
 ) -> anyhow::Result<Chart<'a, 'b>> {
     let max = ((f64::from(area.dim_in_pixel().0) - 30.0) / TITLE_CHAR_W) as usize;
     let title = fit_title(title, max);
     let mut c = ChartBuilder::on(area)
         .caption(title, ("sans-serif", 20))
         .margin(15)
+        .margin_right(15 + room.unwrap_or(0))
         .x_label_area_size(50)
         .y_label_area_size(70)
         .build_cartesian_2d(x.range(), y.range())
@@ -211,10 +236,11 @@ enum Stroke {
     Dashed,
 }
 
-/// Draws `ys` against `xs` as a labelled line, broken where a point is
-/// undefined or off the chart.
+/// Draws `ys` against `xs` as a line listed in the legend as `label`,
+/// broken where a point is undefined or off the chart.
 fn line(
     c: &mut Chart,
+    lg: &mut Legend,
     (x, y): (&Scale, &Scale),
     (xs, ys): (&[f64], &[f64]),
     colour: RGBColor,
@@ -231,44 +257,47 @@ fn line(
             segs.push(vec![]);
         }
     }
-    let segs = segs.into_iter().filter(|s| s.len() > 1);
+    let segs: Vec<_> = segs.into_iter().filter(|s| s.len() > 1).collect();
+    if segs.is_empty() {
+        // Nothing of it is on the chart: not listed either.
+        return Ok(());
+    }
     let style = colour.stroke_width(2);
-    let anno = if stroke == Stroke::Dashed {
-        c.draw_series(segs.map(move |s| DashedPathElement::new(s, 9, 6, style)))
+    lg.paths.extend(segs.iter().cloned());
+    if stroke == Stroke::Dashed {
+        c.draw_series(
+            segs.into_iter()
+                .map(move |s| DashedPathElement::new(s, 9, 6, style)),
+        )
     } else {
-        c.draw_series(segs.map(move |s| PathElement::new(s, style)))
+        c.draw_series(segs.into_iter().map(move |s| PathElement::new(s, style)))
     }
     .map_err(plot_err)?;
-    anno.label(label).legend(move |(px, py)| {
-        DashedPathElement::new(
-            vec![(px, py), (px + 20, py)],
-            if stroke == Stroke::Dashed { 5 } else { 20 },
-            if stroke == Stroke::Dashed { 3 } else { 0 },
-            style,
-        )
-    });
+    let sample = match stroke {
+        Stroke::Dashed => Sample::Dashed,
+        Stroke::Solid => Sample::Solid(2),
+    };
+    lg.add(label, colour, sample);
     Ok(())
 }
 
-/// A thin unlabelled guide line between two data points.
-fn guide(c: &mut Chart, a: (f64, f64), b: (f64, f64), colour: RGBColor) -> anyhow::Result<()> {
+/// A thin guide line between two data points, listed in the legend as
+/// `label` when it has one.
+fn guide(
+    c: &mut Chart,
+    lg: &mut Legend,
+    a: (f64, f64),
+    b: (f64, f64),
+    colour: RGBColor,
+    label: Option<&str>,
+) -> anyhow::Result<()> {
     c.draw_series(std::iter::once(PathElement::new(vec![a, b], colour)))
         .map_err(plot_err)?;
+    lg.paths.push(vec![a, b]);
+    if let Some(l) = label {
+        lg.add(l, colour, Sample::Solid(1));
+    }
     Ok(())
-}
-
-fn legend<'a, 'b: 'a>(c: &mut Chart<'a, 'b>) -> anyhow::Result<()> {
-    legend_at(c, SeriesLabelPosition::UpperLeft)
-}
-
-fn legend_at<'a, 'b: 'a>(c: &mut Chart<'a, 'b>, at: SeriesLabelPosition) -> anyhow::Result<()> {
-    c.configure_series_labels()
-        .position(at)
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 14))
-        .draw()
-        .map_err(plot_err)
 }
 
 /// "fig2 — initial slopes": the scene's name and what the view shows (the
@@ -333,144 +362,6 @@ fn x_scale(state: &State) -> Scale {
         hi: s.to(),
         desc: axis_desc(s.axis()),
     }
-}
-
-/// A vertical guide at the current value of the swept parameter.
-fn marker(c: &mut Chart, state: &State, x: &Scale, y: &Scale) -> anyhow::Result<()> {
-    let v = state.params.get(state.sweep.axis());
-    if x.contains(v) {
-        let r = y.range();
-        guide(c, (x.to(v), r.start), (x.to(v), r.end), GREY)?;
-    }
-    Ok(())
-}
-
-fn slopes(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::Result<()> {
-    let s = Scene::compute(&state.scene_spec(Curves::ALL, opts.points))?;
-    let x = x_scale(state);
-    let (_, hi) = positive_span(s.elastic.iter().chain(&s.total).chain(&s.persson_elastic));
-    let (lo, _) = positive_span(
-        s.plastic
-            .iter()
-            .chain(&s.elastic)
-            .filter(|v| **v >= hi * 1e-4),
-    );
-    let y = Scale::around(true, lo, hi, "initial slope H·dA/(A0·dp̄)".into());
-    let mut c = chart(area, &title(state, "initial slopes"), &x, &y)?;
-    marker(&mut c, state, &x, &y)?;
-    let xy = (&x, &y);
-    let solid = Stroke::Solid;
-    // Every listed curve can be found: say where one lies under another
-    // or below the chart.
-    let el = if coincide(&s.elastic, &s.total) {
-        "elastic (= total here)"
-    } else {
-        "elastic"
-    };
-    let pl = if s.plastic.iter().any(|&v| y.contains(v)) {
-        "plastic"
-    } else {
-        "plastic (below the chart here)"
-    };
-    line(&mut c, xy, (&s.x, &s.elastic), ELASTIC, solid, el)?;
-    line(&mut c, xy, (&s.x, &s.plastic), PLASTIC, solid, pl)?;
-    line(&mut c, xy, (&s.x, &s.total), TOTAL, solid, "total")?;
-    let persson = (&s.x[..], &s.persson_elastic[..]);
-    let dashed = Stroke::Dashed;
-    line(
-        &mut c,
-        xy,
-        persson,
-        PERSSON,
-        dashed,
-        "Persson elastic √(2/π)/ψ",
-    )?;
-    legend(&mut c)
-}
-
-fn indices(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::Result<()> {
-    let s = IndexSeries::compute(state, opts.points)?;
-    let asy: Vec<f64> = s
-        .psi_star_asymptotic
-        .iter()
-        .map(|v| v.unwrap_or(f64::NAN))
-        .collect();
-    let x = x_scale(state);
-    let (lo, hi) = positive_span(s.psi_gw.iter().chain(&s.psi_p).chain(&s.psi_star));
-    let y = Scale::around(true, lo.min(0.5).max(hi * 1e-8), hi.max(2.0), "Ψ".into());
-    let mut c = chart(area, &title(state, "plasticity indices"), &x, &y)?;
-    marker(&mut c, state, &x, &y)?;
-    let r = x.range();
-    guide(&mut c, (r.start, 0.0), (r.end, 0.0), GREY)?;
-    let xy = (&x, &y);
-    let solid = Stroke::Solid;
-    line(
-        &mut c,
-        xy,
-        (&s.x, &s.psi_gw),
-        PSI_GW,
-        solid,
-        "Ψ_GW (Greenwood–Williamson)",
-    )?;
-    line(
-        &mut c,
-        xy,
-        (&s.x, &s.psi_p),
-        PLASTIC,
-        solid,
-        "Ψ_P (Persson, H0)",
-    )?;
-    line(
-        &mut c,
-        xy,
-        (&s.x, &s.psi_star),
-        TOTAL,
-        solid,
-        "Ψ* (size-dependent H_y)",
-    )?;
-    // Eq. 13 is a power law's: no line on a measured surface.
-    if !state.is_measured() {
-        let dashed = Stroke::Dashed;
-        line(&mut c, xy, (&s.x, &asy), PSI_ASY, dashed, "Ψ*asy (eq. 13)")?;
-    }
-    legend(&mut c)
-}
-
-fn load(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::Result<()> {
-    let l = LoadCurve::compute(state, opts.points)?;
-    let h = if state.size_effect { "H_y" } else { "H0" };
-    let x = Scale {
-        log: false,
-        lo: 0.0,
-        hi: 1.0,
-        desc: format!("load p̄/H (H = {h})"),
-    };
-    let y = Scale {
-        log: false,
-        lo: 0.0,
-        hi: 1.0,
-        desc: "contact area A/A0".into(),
-    };
-    let what = format!("areas against load at ψ = {}", short_number(l.psi));
-    let mut c = chart(area, &title(state, &what), &x, &y)?;
-    let (tx, ty) = l.tangent_end();
-    let tangent = TOTAL.mix(0.5).stroke_width(1);
-    c.draw_series(std::iter::once(PathElement::new(
-        vec![(0.0, 0.0), (tx, ty)],
-        tangent,
-    )))
-    .map_err(plot_err)?
-    .label(format!(
-        "initial slope S_tot = {} (from the origin)",
-        short_number(l.slopes.total)
-    ))
-    .legend(move |(px, py)| PathElement::new(vec![(px, py), (px + 20, py)], tangent));
-    let xy = (&x, &y);
-    let solid = Stroke::Solid;
-    line(&mut c, xy, (&l.load, &l.elastic), ELASTIC, solid, "elastic")?;
-    line(&mut c, xy, (&l.load, &l.plastic), PLASTIC, solid, "plastic")?;
-    line(&mut c, xy, (&l.load, &l.total), TOTAL, solid, "total")?;
-    legend(&mut c)
 }
 
 /// The scene's colour under the chart: dark grey, so that the caption and
@@ -590,7 +481,8 @@ mod tests {
         };
         let fig3 = svg("fig3");
         assert!(fig3.contains("elastic (= total here)"));
-        assert!(fig3.contains("plastic (below the chart here)"));
+        // Below the chart, so not drawn: not listed either.
+        assert!(!fig3.contains(">\nplastic"));
         let fig2 = svg("fig2");
         assert!(!fig2.contains("= total here") && !fig2.contains("below the chart"));
     }

@@ -3,6 +3,7 @@
 
 use plotters::prelude::*;
 
+use super::legend::{Legend, Placed};
 use super::{chart, guide, line, plot_err, title, Area, Scale, Stroke};
 use crate::figure::{short_number, SpectrumSeries};
 use crate::snapshot::State;
@@ -11,19 +12,28 @@ const DATA: RGBColor = RGBColor(0, 0, 0);
 const FIT: RGBColor = RGBColor(230, 120, 0);
 const CUTOFF: RGBColor = RGBColor(0, 0, 255);
 
-pub(super) fn draw(area: &Area, state: &State) -> anyhow::Result<()> {
+pub(super) fn draw(area: &Area, state: &State, room: Option<u32>) -> anyhow::Result<Placed> {
     let s = SpectrumSeries::of(state)?;
     let (qlo, qhi) = super::positive_span(s.q.iter());
     let (plo, phi) = super::positive_span(s.psd.iter());
     let x = Scale::around(true, qlo, qhi, "wavevector q (1/m)".into());
     let y = Scale::around(true, plo, phi, s.psd_label().into());
-    let mut c = chart(area, &title(state, "spectrum"), &x, &y)?;
+    let mut c = chart(area, &title(state, "spectrum"), (&x, &y), room)?;
+    let mut lg = Legend::default();
     let xy = (&x, &y);
     let data_label = match s.dim {
         rough_model::Dim::Areal => "data C^iso(q)",
         rough_model::Dim::Profile => "data C1D(q)",
     };
-    line(&mut c, xy, (&s.q, &s.psd), DATA, Stroke::Solid, data_label)?;
+    line(
+        &mut c,
+        &mut lg,
+        xy,
+        (&s.q, &s.psd),
+        DATA,
+        Stroke::Solid,
+        data_label,
+    )?;
     c.draw_series(
         s.q.iter()
             .zip(&s.psd)
@@ -51,22 +61,24 @@ pub(super) fn draw(area: &Area, state: &State) -> anyhow::Result<()> {
             short_number(f.hurst),
             f.points
         );
-        line(&mut c, xy, (&qs, &ys), FIT, Stroke::Dashed, &label)?;
+        line(&mut c, &mut lg, xy, (&qs, &ys), FIT, Stroke::Dashed, &label)?;
     }
     let r = y.range();
     if x.contains(s.q1) {
         let q1 = x.to(s.q1);
-        guide(&mut c, (q1, r.start), (q1, r.end), CUTOFF)?;
-        // A labelled sample for the legend: the guide itself has none.
-        c.draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
-            .map_err(plot_err)?
-            .label(format!(
-                "cutoff q1 = ζ q0 = {} /m (ζ = {})",
-                short_number(s.q1),
-                short_number(s.q1 / s.q0)
-            ))
-            .legend(|(px, py)| PathElement::new(vec![(px, py), (px + 20, py)], CUTOFF));
+        let label = format!(
+            "cutoff q1 = ζ q0 = {} /m (ζ = {})",
+            short_number(s.q1),
+            short_number(s.q1 / s.q0)
+        );
+        guide(
+            &mut c,
+            &mut lg,
+            (q1, r.start),
+            (q1, r.end),
+            CUTOFF,
+            Some(&label),
+        )?;
     }
-    // The data fall from the upper left: the legend goes right.
-    super::legend_at(&mut c, SeriesLabelPosition::UpperRight)
+    lg.draw(area, &c, room.is_some())
 }
