@@ -89,7 +89,7 @@ fn the_legend_never_covers_a_curve() {
         ("fig3", "zeta", 1.0, 1e4),
         ("fig4", "zeta", 1.0, 1e6),
     ] {
-        let middle = (from * to).sqrt();
+        let middle = f64::sqrt(from * to);
         let markers = [None, Some(from), Some(middle), Some(to)];
         for view in ["slopes", "indices", "load"] {
             for m in markers {
