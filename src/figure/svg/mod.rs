@@ -144,7 +144,9 @@ impl Scale {
     }
 
     /// A label for drawn coordinate `u`: decades on log axes (other ticks
-    /// unlabelled), short numbers on linear ones.
+    /// unlabelled), short numbers on linear ones. One style per axis: plain
+    /// (0.01 … 1000) when every decade on it is, else powers of ten
+    /// (10⁻⁴ … 10⁴) for all of them.
     fn label(&self, u: f64) -> String {
         if !self.log {
             return short_number(u);
@@ -152,7 +154,13 @@ impl Scale {
         if (u - u.round()).abs() > 1e-9 {
             return String::new();
         }
-        short_number(format!("1e{}", u.round()).parse().unwrap_or(f64::NAN))
+        let k = u.round() as i32;
+        let (a, b) = (self.lo.log10().floor(), self.hi.log10().ceil());
+        if a >= -2.0 && b <= 3.0 {
+            short_number(10f64.powi(k))
+        } else {
+            power_of_ten(k)
+        }
     }
 
     /// The whole decades around `[lo, hi]` (log) or the range itself.
@@ -174,6 +182,18 @@ impl Scale {
             u >= r.start - 1e-9 && u <= r.end + 1e-9
         }
     }
+}
+
+/// "10⁻⁴", "10⁰", "10¹²": a power of ten with a superscript exponent.
+pub(crate) fn power_of_ten(k: i32) -> String {
+    const SUP: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+    let digits: String = k
+        .unsigned_abs()
+        .to_string()
+        .bytes()
+        .map(|d| SUP[usize::from(d - b'0')])
+        .collect();
+    format!("10{}{digits}", if k < 0 { "⁻" } else { "" })
 }
 
 /// The description of a parameter axis: "ζ", "h_rms (m)".
@@ -485,6 +505,27 @@ mod tests {
         assert!(!fig3.contains(">\nplastic"));
         let fig2 = svg("fig2");
         assert!(!fig2.contains("= total here") && !fig2.contains("below the chart"));
+    }
+
+    #[test]
+    fn one_tick_style_per_axis() {
+        use super::{power_of_ten, Scale};
+        assert_eq!(power_of_ten(-4), "10⁻⁴");
+        assert_eq!(power_of_ten(0), "10⁰");
+        assert_eq!(power_of_ten(12), "10¹²");
+        let s = |lo: f64, hi: f64| Scale {
+            log: true,
+            lo,
+            hi,
+            desc: String::new(),
+        };
+        let plain = s(0.01, 1000.0);
+        let labels: Vec<String> = (-2..=3).map(|k| plain.label(f64::from(k))).collect();
+        assert_eq!(labels, ["0.01", "0.1", "1", "10", "100", "1000"]);
+        let wide = s(1e-4, 10.0);
+        let labels: Vec<String> = (-4..=1).map(|k| wide.label(f64::from(k))).collect();
+        assert_eq!(labels, ["10⁻⁴", "10⁻³", "10⁻²", "10⁻¹", "10⁰", "10¹"]);
+        assert_eq!(wide.label(0.5), "");
     }
 
     #[test]
