@@ -482,7 +482,7 @@ fn svg_of_every_view_parses_with_labels_legend_and_colours() {
         // slopes) only under the slopes, each other view its own; and the
         // decade labels of the log axes.
         assert!(
-            text.contains("H0/E* = 0.01 · h_rms = 19.82 nm"),
+            text.contains("H0/E = 0.01 · h_rms = 19.82 nm"),
             "{view}: scene"
         );
         assert_eq!(text.contains("Fig. 2"), view == "slopes", "{view}: caption");
@@ -562,7 +562,7 @@ fn every_csv_and_picture_names_its_scene() {
         assert_eq!(title.text(), Some(&*format!("fig2 — {view} view")));
         // The caption line under the plot, in short.
         assert!(
-            svg.contains("H0/E* = 0.01 · h_rms = 25 nm · ζ = 128 · Hurst H = 0.8 · R* = 1 mm"),
+            svg.contains("H0/E = 0.01 · h_rms = 25 nm · ζ = 128 · Hurst H = 0.8 · R* = 1 mm"),
             "{view}"
         );
     }

@@ -221,7 +221,7 @@ fn set_takes_units_on_presets_and_surfaces() {
     // The same scene line for line, but for its name (the first line).
     assert_eq!(
         got.lines().nth(1),
-        Some("# h0_over_e = 0.001  (H0/E*: macroscopic hardness over the composite modulus E*)")
+        Some("# h0_over_e = 0.001  (H0/E: macroscopic hardness over E, the composite modulus E*)")
     );
     assert!(
         got.lines().skip(1).eq(want.lines().skip(1)),

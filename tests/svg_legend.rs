@@ -139,3 +139,81 @@ fn the_legend_lists_only_what_is_drawn() {
     // The load axis names the hardness by its own symbol.
     assert!(svg(&["--view", "load"]).contains("load p̄/H0"));
 }
+
+#[test]
+fn the_spectrum_ends_at_the_data_with_a_wavelength_axis() {
+    let example = concat!(env!("CARGO_MANIFEST_DIR"), "/surfaces/example.txt");
+    let svg = stdout(&[
+        "export",
+        "--format",
+        "svg",
+        "--surface",
+        example,
+        "--view",
+        "spectrum",
+    ]);
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let texts: Vec<String> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("text"))
+        .filter_map(|n| n.text())
+        .map(|t| t.trim().to_string())
+        .collect();
+    assert!(
+        texts.iter().any(|t| t == "wavelength λ = 2π/q"),
+        "{texts:?}"
+    );
+    assert!(
+        texts.iter().any(|t| t == "1 µm" || t == "10 µm"),
+        "{texts:?}"
+    );
+    // The data span q ≈ 1.3e5 … 1.7e7 1/m: no decade label below or above.
+    assert!(!texts.iter().any(|t| t == "10⁵" || t == "10⁸"), "{texts:?}");
+    assert!(
+        svg.contains("cutoff q1 = ζ q0"),
+        "the cutoff at the data's end is drawn"
+    );
+}
+
+#[test]
+fn a_long_title_is_cut_at_the_name_never_clipped() {
+    let dir = tempfile::tempdir().unwrap();
+    let name = "a-rather-long-scene-name-20261125-094445-for-the-projector-slide";
+    assert_eq!(name.chars().count(), 64);
+    let p = dir.path().join("long.ron");
+    std::fs::write(
+        &p,
+        common::GOOD.replace("name: \"fig2\"", &format!("name: \"{name}\"")),
+    )
+    .unwrap();
+    for view in ["slopes", "map"] {
+        let args = [
+            "export",
+            "--format",
+            "svg",
+            "--load",
+            p.to_str().unwrap(),
+            "--view",
+            view,
+        ];
+        let svg = stdout(&args);
+        let doc = roxmltree::Document::parse(&svg).unwrap();
+        let title = doc
+            .descendants()
+            .filter(|n| n.has_tag_name("text"))
+            .filter_map(|n| n.text())
+            .map(str::trim)
+            .find(|t| t.contains(" — "))
+            .unwrap();
+        // 10.5 px per character bounds plotters' 16.1 px title font.
+        let width = title.chars().count() as f64 * 10.5;
+        let plot_w = if view == "map" { 670.0 } else { 900.0 };
+        assert!(width <= plot_w - 30.0, "{view}: {title:?} is {width} px");
+        assert!(title.ends_with(if view == "map" {
+            "regime map"
+        } else {
+            "initial slopes"
+        }));
+        assert!(title.starts_with("a-rather-long"), "{title}");
+    }
+}

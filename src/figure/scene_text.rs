@@ -49,7 +49,6 @@ pub fn short_value(axis: Axis, v: f64) -> String {
 /// Hurst exponent spelled out so that it is not read as a hardness.
 fn caption_symbol(axis: Axis) -> &'static str {
     match axis {
-        Axis::H0OverE => "H0/E*",
         Axis::Hurst => "Hurst H",
         a => a.symbol(),
     }
@@ -58,7 +57,7 @@ fn caption_symbol(axis: Axis) -> &'static str {
 /// What the parameter is, for the `#` lines.
 fn meaning(axis: Axis) -> &'static str {
     match axis {
-        Axis::H0OverE => "H0/E*: macroscopic hardness over the composite modulus E*",
+        Axis::H0OverE => "H0/E: macroscopic hardness over E, the composite modulus E*",
         Axis::HRms => "rms height of the spectrum from q0 up",
         Axis::Zeta => "magnification q1/q0",
         Axis::Hurst => "Hurst exponent",
@@ -252,7 +251,7 @@ mod tests {
         let full = full_lines(&s, View::Slopes, &opts).join("\n");
         for want in [
             "scene \"fig2\", view slopes",
-            "h0_over_e = 0.01  (H0/E*",
+            "h0_over_e = 0.01  (H0/E: macroscopic hardness over E, the composite",
             "hurst = 0.8",
             "r_star = 0.001 m",
             "zeta = 128  (magnification q1/q0; the marker)",
@@ -268,7 +267,7 @@ mod tests {
         assert!(full.contains(&format!("h_rms = {} m", super::full(h))));
         let short = short_lines(&s, View::Slopes, &opts).join("\n");
         for want in [
-            "H0/E* = 0.01",
+            "H0/E = 0.01",
             "h_rms = 19.82 nm",
             "Hurst H = 0.8",
             "R* = 1 mm",

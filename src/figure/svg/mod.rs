@@ -209,14 +209,42 @@ pub(crate) fn axis_desc(axis: Axis) -> String {
 fn chart<'a, 'b>(
     area: &'a Area<'b>,
     title: &str,
+    xy: (&Scale, &Scale),
+    room: Option<u32>,
+) -> anyhow::Result<Chart<'a, 'b>> {
+    chart_with_top(area, title, xy, room, 0)
+}
+
+/// [`chart`] with `top` pixels between the title and the plot (for a
+/// second axis above it).
+fn chart_with_top<'a, 'b>(
+    area: &'a Area<'b>,
+    title: &str,
     (x, y): (&Scale, &Scale),
     room: Option<u32>,
+    top: u32,
 ) -> anyhow::Result<Chart<'a, 'b>> {
     let max = ((f64::from(area.dim_in_pixel().0) - 30.0) / TITLE_CHAR_W) as usize;
     let title = fit_title(title, max);
-    let mut c = ChartBuilder::on(area)
-        .caption(title, ("sans-serif", 20))
+    let mut builder = ChartBuilder::on(area);
+    if top == 0 {
+        builder.caption(&title, ("sans-serif", 20));
+    } else {
+        // Room above the plot for a second axis: the title drawn here,
+        // above that room (plotters would label the q axis there too).
+        let w = area.dim_in_pixel().0 as i32;
+        let style = ("sans-serif", 20).into_font().into_text_style(area).pos(
+            plotters::style::text_anchor::Pos::new(
+                plotters::style::text_anchor::HPos::Center,
+                plotters::style::text_anchor::VPos::Top,
+            ),
+        );
+        area.draw(&Text::new(title.clone(), (w / 2, 15), style))
+            .map_err(plot_err)?;
+    }
+    let mut c = builder
         .margin(15)
+        .margin_top(if top == 0 { 15 } else { 15 + 30 + top })
         .margin_right(15 + room.unwrap_or(0))
         .x_label_area_size(50)
         .y_label_area_size(70)
