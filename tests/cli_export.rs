@@ -327,8 +327,12 @@ fn export_defaults_to_fig2_and_overrides_apply() {
 fn a_picture_of_a_changed_scene_drops_the_saved_caption() {
     let svg = |args: &[&str]| stdout(&[&["export", "--format", "svg"][..], args].concat());
     assert!(svg(&[]).contains("Fig. 2: slopes against magnification"));
-    assert!(svg(&["--model", "exact"]).contains("Fig. 2: slopes against magnification"));
-    for changed in [&["--size-effect", "on"][..], &["--sweep", "zeta:1:1e6"]] {
+    for changed in [
+        &["--size-effect", "on"][..],
+        &["--sweep", "zeta:1:1e6"],
+        &["--model", "exact"],
+        &["--moments", "truncated"],
+    ] {
         let t = svg(changed);
         assert!(!t.contains("Fig. 2:"), "{changed:?}");
         assert!(t.contains("fig2 — initial slopes"), "{changed:?}");
@@ -372,7 +376,9 @@ fn a_picture_carries_the_claims_under_its_caption() {
     assert!(fig1.iter().all(|(_, y)| *y < 600.0), "{fig1:?}");
     let fig3 = texts(&stdout(&["export", "--preset", "fig3", "--format", "svg"]));
     at(&fig3, "total slope's minimum 3.91 at ζ = 3.191");
-    // Claims hold for the scene drawn: truncated moments move fig3's.
+    // Claims hold for the scene drawn: truncated moments move fig3's
+    // minimum to ζ = 7.763, within the first decade where the truncation
+    // of the moments, not the model, makes it: not claimed.
     let truncated = stdout(&[
         "export",
         "--preset",
@@ -382,10 +388,8 @@ fn a_picture_carries_the_claims_under_its_caption() {
         "--moments",
         "truncated",
     ]);
-    at(
-        &texts(&truncated),
-        "total slope's minimum 5.59 at ζ = 7.763",
-    );
+    let t = texts(&truncated);
+    assert!(!t.iter().any(|(s, _)| s.contains("minimum")), "{t:?}");
 }
 
 #[test]

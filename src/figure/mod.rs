@@ -35,7 +35,7 @@ mod series;
 mod spectrum;
 mod svg;
 
-pub use claims::{claims, Claim, ClaimKind};
+pub use claims::{claims, shown_claims, Claim, ClaimKind, TRUNCATION_ZETA};
 pub use colour::{
     share_ansi16, share_ansi256, share_char, share_colour, ANSI16_SCALE, ANSI256_SCALE, RAMP,
 };

@@ -23,7 +23,7 @@ pub use super::status::Hint;
 pub use super::steps::{default_range, step_value, HURST_STEPS, LOG_STEPS};
 use super::theme::Theme;
 use super::views::overlap::Cover;
-use crate::figure::{claims, render_svg, Claim, FigureOptions, MapCache, MapSpec, View};
+use crate::figure::{render_svg, shown_claims, Claim, FigureOptions, MapCache, MapSpec, View};
 use crate::presets;
 use crate::snapshot::{self, State};
 
@@ -324,7 +324,7 @@ impl App {
         let key = self.curve_key(points);
         let claims_key = self.curve_key(2);
         if self.claims_key.as_ref() != Some(&claims_key) {
-            self.claims = claims(&self.state);
+            self.claims = shown_claims(&self.state);
             self.claims_key = Some(claims_key);
         }
         match self.view {
@@ -440,6 +440,7 @@ pub const HURST_ONE_ASYMPTOTIC: &str =
 
 /// The one place that changes an [`App`].
 pub fn update(app: &mut App, msg: Message) {
+    super::status::clear_stale(app, msg);
     match msg {
         Message::SelectPrev => app.selected = measured::next_selectable(app, app.selected, false),
         Message::SelectNext => app.selected = measured::next_selectable(app, app.selected, true),
@@ -553,7 +554,11 @@ pub fn update(app: &mut App, msg: Message) {
                 app.mode = Mode::Main;
                 app.set_status("save cancelled", false);
             }
-            Mode::Value(..) | Mode::Truth(..) => app.mode = Mode::Main,
+            Mode::Value(..) | Mode::Truth(..) => {
+                // The refusal was about the text just dropped.
+                app.mode = Mode::Main;
+                app.status = None;
+            }
             Mode::Main | Mode::Help | Mode::Class => {}
         },
         Message::PromptAccept => prompt::accept(app),

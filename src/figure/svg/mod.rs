@@ -431,7 +431,9 @@ fn caption_lines(view: View, state: &State, opts: &FigureOptions) -> Vec<(String
     if !matches!(view, View::Slopes | View::Indices | View::Map) {
         return lines;
     }
-    let claims = crate::figure::claims(state).into_iter().map(|c| c.text());
+    let claims = crate::figure::shown_claims(state)
+        .into_iter()
+        .map(|c| c.text());
     // Claims are packed whole, never broken inside one.
     let mut row = String::new();
     for c in claims {
