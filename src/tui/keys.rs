@@ -208,7 +208,7 @@ pub const BINDINGS: &[Binding] = &[
     bind(Main, &[(key(Tab), M::NextView), (shift(BackTab), M::PrevView), (key(BackTab), M::PrevView)], "Tab ⇧Tab", "next / previous view (a surface adds its spectrum)", Some("Tab view")),
     bind(Main, &[(ch('1'), M::LoadPreset(0)), (ch('2'), M::LoadPreset(1)), (ch('3'), M::LoadPreset(2)), (ch('4'), M::LoadPreset(3))], "1 2 3 4", "load the paper's fig1 … fig4", Some("1-4 figs")),
     bind(Surface, &[(ch('5'), M::LoadSurface)], "5", "back to the measured surface", Some("5 surface")),
-    bind(Main, &[(key(Enter), M::StartValue)], "Enter", "type its value (25nm, 2 mm, 1e-3)", None),
+    bind(Main, &[(key(Enter), M::StartValue)], "Enter", "type its value (25nm, 1e-3; also q0=… l=… e=… h0=…)", None),
     bind(Main, &[(ch('x'), M::CycleSweep)], "x", "sweep the next parameter", Some("x sweep")),
     bind(Main, &[(ch('m'), M::ToggleModel)], "m", "exact / closed-form model", Some("m model")),
     bind(Main, &[(ch('e'), M::ToggleSizeEffect)], "e", "size effect on / off", Some("e size")),

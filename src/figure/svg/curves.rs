@@ -56,7 +56,9 @@ pub(super) fn slopes(
             .chain(&s.elastic)
             .filter(|v| **v >= hi * 1e-4),
     );
-    let y = Scale::around(true, lo, hi, "initial slope H·dA/(A0·dp̄)".into());
+    // The hardness by its own name (H alone is the Hurst exponent).
+    let norm = if state.size_effect { "H_y" } else { "H0" };
+    let y = Scale::around(true, lo, hi, format!("initial slope {norm}·dA/(A0·dp̄)"));
     let mut c = chart(area, &title(state, "initial slopes"), (&x, &y), room)?;
     let mut lg = Legend::default();
     marker(&mut c, &mut lg, state, (&x, &y))?;
