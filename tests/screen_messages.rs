@@ -85,3 +85,32 @@ fn the_footer_fits_80_columns_with_save_picture_help_and_quit() {
     );
     assert!(!wide.contains("f follow"));
 }
+
+#[test]
+fn an_h_sweep_labels_every_tick_it_draws() {
+    for size in [(80, 24), (100, 30), (160, 48)] {
+        let mut a = fig("fig2");
+        update(&mut a, Message::Resize(size.0, size.1));
+        while a.state.sweep.axis() != rough_model::Axis::Hurst {
+            ch(&mut a, 'x');
+        }
+        let s = screen(&a);
+        let lines: Vec<&str> = s.lines().collect();
+        let axis = lines.iter().position(|l| l.contains('└')).unwrap();
+        let row: Vec<char> = lines[axis].chars().collect();
+        let labels: Vec<char> = lines[axis + 1].chars().collect();
+        let ticks: Vec<usize> = (0..row.len()).filter(|&i| row[i] == '┬').collect();
+        assert!(ticks.len() >= 3, "{size:?}:\n{s}");
+        for t in ticks {
+            // A digit under or beside every tick.
+            let near = (t.saturating_sub(2)..=(t + 2).min(labels.len() - 1))
+                .any(|i| labels[i].is_ascii_digit());
+            assert!(
+                near,
+                "{size:?}: tick at {t} unlabelled\n{}\n{}",
+                lines[axis],
+                lines[axis + 1]
+            );
+        }
+    }
+}
