@@ -217,3 +217,29 @@ fn a_long_title_is_cut_at_the_name_never_clipped() {
         assert!(title.starts_with("a-rather-long"), "{title}");
     }
 }
+
+#[test]
+fn dashed_curves_are_dashed_by_the_viewer_not_cut_in_pixels() {
+    let svg = stdout(&["export", "--format", "svg", "--preset", "fig2"]);
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let green: Vec<_> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("polyline") && n.attribute("stroke") == Some("#00A000"))
+        .collect();
+    // Persson's line and its legend sample, each one dashed path.
+    assert_eq!(green.len(), 2, "{green:?}");
+    for n in green {
+        assert_eq!(n.attribute("stroke-dasharray"), Some("9 6"));
+    }
+    assert!(
+        points(
+            doc.descendants()
+                .find(|n| n.attribute("stroke-dasharray").is_some())
+                .unwrap()
+                .attribute("points")
+                .unwrap()
+        )
+        .len()
+            > 100
+    );
+}

@@ -116,15 +116,13 @@ impl Legend {
                         e.colour.stroke_width(width),
                     ))
                     .map_err(plot_err)?,
-                Sample::Dashed => {
-                    for d in (0..SAMPLE_W).step_by(8) {
-                        root.draw(&PathElement::new(
-                            vec![(sx + d, y), ((sx + d + 5).min(ex), y)],
-                            e.colour.stroke_width(2),
-                        ))
-                        .map_err(plot_err)?;
-                    }
-                }
+                // Dashed by the viewer, as the curve is.
+                Sample::Dashed => root
+                    .draw(&PathElement::new(
+                        vec![(sx, y), (ex, y)],
+                        e.colour.stroke_width(2),
+                    ))
+                    .map_err(plot_err)?,
             }
             let font = ("sans-serif", 14).into_font();
             root.draw(&Text::new(e.label.clone(), (ex + PAD, y - 7), font))

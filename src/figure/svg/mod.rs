@@ -10,7 +10,6 @@ mod spectrum;
 
 use anyhow::anyhow;
 use plotters::coord::types::RangedCoordf64;
-use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use rough_model::Axis;
 
@@ -41,6 +40,19 @@ const GREY: RGBColor = RGBColor(150, 150, 150);
 const PSI_GW: RGBColor = RGBColor(128, 0, 128);
 const PSI_ASY: RGBColor = RGBColor(230, 120, 0);
 
+/// The colours only dashed curves have (Persson's line, eq. 13, the
+/// spectrum's fit): their 2-px strokes are dashed by the viewer.
+const DASHED: [RGBColor; 2] = [PERSSON, PSI_ASY];
+
+/// `svg` with every 2-px stroke of a [`DASHED`] colour dashed 9 on, 6 off.
+fn dash(mut svg: String) -> String {
+    for RGBColor(r, g, b) in DASHED {
+        let stroke = format!("stroke=\"#{r:02X}{g:02X}{b:02X}\" stroke-width=\"2\"");
+        svg = svg.replace(&stroke, &format!("{stroke} stroke-dasharray=\"9 6\""));
+    }
+    svg
+}
+
 /// `view` of `state` as an SVG document (UTF-8 text). Under the chart: the
 /// scene's parameters, the view's caption and, where the view shows the
 /// sweep, the claims; the full parameter set also goes into `<desc>`.
@@ -58,7 +70,7 @@ pub fn render_svg(view: View, state: &State, opts: &FigureOptions) -> anyhow::Re
         xml_text(&format!("{} — {} view", state.name, view.name())),
         xml_text(&scene_text::full_lines(state, view, opts).join("\n"))
     );
-    Ok(after_svg_tag(buf, &head))
+    Ok(after_svg_tag(dash(buf), &head))
 }
 
 /// One drawing of the picture, `room` pixels kept right of the plot for
@@ -312,15 +324,12 @@ fn line(
     }
     let style = colour.stroke_width(2);
     lg.paths.extend(segs.iter().cloned());
-    if stroke == Stroke::Dashed {
-        c.draw_series(
-            segs.into_iter()
-                .map(move |s| DashedPathElement::new(s, 9, 6, style)),
-        )
-    } else {
-        c.draw_series(segs.into_iter().map(move |s| PathElement::new(s, style)))
-    }
-    .map_err(plot_err)?;
+    // A dashed curve is one path the viewer dashes (`stroke-dasharray`,
+    // added by colour in `render_svg`): smooth dashes, not pixel-rounded
+    // pieces.
+    debug_assert!(stroke == Stroke::Solid || DASHED.contains(&colour));
+    c.draw_series(segs.into_iter().map(move |s| PathElement::new(s, style)))
+        .map_err(plot_err)?;
     let sample = match stroke {
         Stroke::Dashed => Sample::Dashed,
         Stroke::Solid => Sample::Solid(2),

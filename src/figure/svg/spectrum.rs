@@ -10,7 +10,8 @@ use crate::figure::{short_number, SpectrumSeries};
 use crate::snapshot::State;
 
 const DATA: RGBColor = RGBColor(0, 0, 0);
-const FIT: RGBColor = RGBColor(230, 120, 0);
+/// The fit is dashed: the colour of the dashed curves (`super::DASHED`).
+const FIT: RGBColor = super::PSI_ASY;
 const CUTOFF: RGBColor = RGBColor(0, 0, 255);
 
 /// Ticks and labels of λ = 2π/q above the plot, at whole decades of λ
