@@ -8,7 +8,7 @@ use ratatui::style::{Modifier, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Clear, Widget};
 
-use super::app::{App, Message, Mode};
+use super::app::{App, Message, Mode, Status};
 use super::fmt::{fmt_param, fmt_short};
 use super::glyphs::Glyphs;
 use super::line_edit::LineEdit;
@@ -235,7 +235,16 @@ pub(super) fn clear_stale(app: &mut App, msg: Message) {
             | Message::PrevView
             | Message::NextMapY
     );
-    if moves && app.status.as_ref().is_some_and(|s| s.hint.is_none()) {
+    // What the drawing is ("drawing in ASCII …", "colour off …") holds
+    // until the drawing changes, whatever the scene does.
+    let about_drawing =
+        |s: &Status| s.text.starts_with("drawing in ") || s.text.starts_with("colour ");
+    if moves
+        && app
+            .status
+            .as_ref()
+            .is_some_and(|s| s.hint.is_none() && !about_drawing(s))
+    {
         app.status = None;
     }
 }
