@@ -114,3 +114,14 @@ fn an_h_sweep_labels_every_tick_it_draws() {
         }
     }
 }
+
+#[test]
+fn what_the_drawing_is_stays_while_the_scene_changes() {
+    let mut a = fig("fig2");
+    ch(&mut a, 'M');
+    let said = a.status.clone().unwrap().text;
+    assert!(said.starts_with("drawing in "), "{said}");
+    ch(&mut a, 'l');
+    update(&mut a, Message::NextView);
+    assert_eq!(a.status.map(|s| s.text), Some(said));
+}
