@@ -91,6 +91,11 @@ pub struct Setup {
     /// as the value prompt takes them: m cm mm µm um nm pm).
     #[arg(long, value_name = "LENGTH", requires = "surface", allow_hyphen_values = true, value_parser = parse_pixel_size)]
     pub pixel_size: Option<f64>,
+    /// The channel of a file of several (Gwyddion's .gwy, its ASCII
+    /// exports concatenated): its number or its title (the first channel of
+    /// heights when not given).
+    #[arg(long, value_name = "N|TITLE", requires = "surface")]
+    pub channel: Option<String>,
     /// Set a parameter, e.g. --set h0-over-e=0.001 --set r-star=0.5mm
     /// (repeatable; units as the value prompt takes them). AXIS is one of
     /// h0-over-e, h-rms, zeta, hurst, r-star; or q0 (1/m) or l (the
@@ -240,6 +245,10 @@ pub struct ExportArgs {
     /// units).
     #[arg(long, value_name = "AXIS:FROM:TO", value_parser = parse_sweep)]
     pub sweep: Option<(Axis, f64, f64)>,
+    /// Seed of the simulated surface's random phases (contact views only;
+    /// default 1).
+    #[arg(long, value_name = "N")]
+    pub seed: Option<u64>,
 }
 
 /// Most points an export computes along a curve.
@@ -295,18 +304,24 @@ pub enum ViewArg {
     Map,
     Load,
     Spectrum,
+    /// The boundary-element simulation beside the theory, against the load.
+    Contact,
+    /// The simulation's plastic share against ζ beside the theory's.
+    ContactSweep,
 }
 
-impl From<ViewArg> for crate::figure::View {
-    fn from(v: ViewArg) -> Self {
+impl ViewArg {
+    /// The figure view, or `None` for the contact views (src/contact.rs).
+    pub fn figure(self) -> Option<crate::figure::View> {
         use crate::figure::View;
-        match v {
+        Some(match self {
             ViewArg::Slopes => View::Slopes,
             ViewArg::Indices => View::Indices,
             ViewArg::Map => View::Map,
             ViewArg::Load => View::Load,
             ViewArg::Spectrum => View::Spectrum,
-        }
+            ViewArg::Contact | ViewArg::ContactSweep => return None,
+        })
     }
 }
 
@@ -421,6 +436,9 @@ pub struct BenchArgs {
     /// The surface's sample spacing (as for the explorer).
     #[arg(long, value_name = "LENGTH", requires = "surface", allow_hyphen_values = true, value_parser = parse_pixel_size)]
     pub pixel_size: Option<f64>,
+    /// The channel of a file of several (as for the explorer).
+    #[arg(long, value_name = "N|TITLE", requires = "surface")]
+    pub channel: Option<String>,
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]

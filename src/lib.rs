@@ -4,6 +4,7 @@
 
 pub mod bench;
 pub mod cli;
+pub mod contact;
 pub mod csv_number;
 pub mod export;
 pub mod figure;
@@ -35,6 +36,7 @@ pub fn load_base(src: &Source, setup: &Setup) -> anyhow::Result<State> {
         let options = rough_surface::Options {
             periodic: setup.periodic,
             pixel_size: setup.pixel_size,
+            channel: setup.channel.clone(),
         };
         State::measured(surface::SurfaceSource::read(path, options)?)?
     } else {

@@ -76,7 +76,9 @@ pub fn state_of(args: &ExportArgs) -> anyhow::Result<State> {
 
 /// The view's options from `args`, refusing those that do not apply.
 pub fn options_of(args: &ExportArgs) -> anyhow::Result<(View, FigureOptions)> {
-    let view = View::from(args.view);
+    let Some(view) = args.view.figure() else {
+        bail!("the contact views are written by crate::contact, not as figures");
+    };
     let name = view.name();
     if view == View::Load && args.sweep.is_some() {
         bail!(
@@ -123,6 +125,9 @@ pub fn options_of(args: &ExportArgs) -> anyhow::Result<(View, FigureOptions)> {
 /// Runs `roughtui export`: writes the view to `out`. Every refusal happens
 /// before anything is written.
 pub fn run(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
+    if args.view.figure().is_none() {
+        return crate::contact::export(args, out);
+    }
     let (view, opts) = options_of(args)?;
     let state = state_of(args)?;
     if args.format == FormatArg::Svg {

@@ -28,6 +28,10 @@ pub struct SurfaceFile {
         deserialize_with = "de_number"
     )]
     pub pixel_size: Option<f64>,
+    /// The channel read of a file of several (its number or title), when
+    /// one was chosen.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub channel: Option<String>,
 }
 
 fn is_false(b: &bool) -> bool {
@@ -101,6 +105,7 @@ pub(super) fn read(sf: &SurfaceFile, base: Option<&Path>) -> Result<SurfaceSourc
     let options = Options {
         periodic: sf.periodic,
         pixel_size: sf.pixel_size,
+        channel: sf.channel.clone(),
     };
     let mut src = SurfaceSource::read(&path, options).map_err(|e| {
         let missing = matches!(&e.problem, Problem::Read(_)) && !path.exists();
@@ -131,5 +136,6 @@ pub(super) fn file_of(src: &SurfaceSource, base: Option<&Path>) -> SurfaceFile {
         sha256: src.measured.sha256.clone(),
         periodic: src.options.periodic,
         pixel_size: src.options.pixel_size,
+        channel: src.options.channel.clone(),
     }
 }
