@@ -261,6 +261,7 @@ impl State {
             model: Model::Exact,
             moments: Moments::Truncated,
             surface: Some(src),
+            shown: Default::default(),
         };
         state.check()?;
         Ok(state)

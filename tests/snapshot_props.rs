@@ -116,6 +116,7 @@ fn state() -> impl Strategy<Value = State> {
                     model,
                     moments,
                     surface: None,
+                    shown: Default::default(),
                 }
             },
         )
