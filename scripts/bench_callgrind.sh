@@ -3,12 +3,12 @@
 # move with the machine's load: examples/cost.rs under callgrind, once per
 # WHAT, less the run that does nothing (all threads summed).
 #
-#   cargo build --release --example cost
+#   cargo build --profile profiling --example cost
 #   scripts/bench_callgrind.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bin=target/release/examples/cost
-[ -x "$bin" ] || { echo "no $bin: cargo build --release --example cost first" >&2; exit 2; }
+bin=target/profiling/examples/cost
+[ -x "$bin" ] || { echo "no $bin: cargo build --profile profiling --example cost first" >&2; exit 2; }
 command -v valgrind >/dev/null || { echo "valgrind not found" >&2; exit 2; }
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT

@@ -20,7 +20,11 @@ It rewrites, deterministically, in crates/rough-study/data/:
 
 Each file names its cases in comment lines `# case N: ARGS`: N is the `case`
 column, ARGS the arguments of `roughtui export` that produce the same
-rows (the test runs them). The spectrum, indices, slopes and areas are those
+rows (the test runs them). The export names its grid columns after the
+parameters (`zeta`, `h0_over_e`, ...) and starts with `#` lines naming the
+scene; since one file here holds cases over different parameters, its grid
+columns are `x` (across) and `y` (up), and tests/views_reference.rs pairs
+them with the export's first columns. The spectrum, indices, slopes and areas are those
 of scripts/gen_reference.py (truncated moments) and scripts/gen_asymptotic.py
 (the paper's eq. 10), imported from them, with their adaptive precision
 driver and number format; grids are rebuilt here from the contract of the

@@ -111,9 +111,13 @@ pub struct Setup {
     pub channel: Option<String>,
     /// Set a parameter, e.g. --set h0-over-e=0.001 --set r-star=0.5mm
     /// (repeatable; units as the value prompt takes them). AXIS is one of
-    /// h0-over-e, h-rms, zeta, hurst, r-star.
+    /// h0-over-e, h-rms, zeta, hurst, r-star; or q0 (1/m) or l (the
+    /// longest wavelength 2π/q0, a length); or material values e (the
+    /// composite modulus E*, or Young's modulus with nu) and h0 (the
+    /// hardness) in Pa, kPa, MPa or GPa, which set H0/E: --set e=210GPa
+    /// --set h0=2GPa [--set nu=0.3].
     #[arg(long = "set", value_name = "AXIS=VALUE", value_parser = parse_set)]
-    pub set: Vec<(Axis, String)>,
+    pub set: Vec<(SetKey, String)>,
 }
 
 /// `--direction`: along x (the map's rows) or y.
@@ -168,24 +172,91 @@ fn parse_pixel_size(s: &str) -> Result<f64, String> {
     }
 }
 
-/// `--set AXIS=VALUE`: the axis known and the value a number (with a unit
-/// for lengths); whether it is in range is checked on the scene.
-fn parse_set(s: &str) -> Result<(Axis, String), String> {
-    let (axis, value) = s
+/// What `--set` (and a `KEY=VALUE` typed at the value prompt) sets.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SetKey {
+    /// A swept parameter.
+    Param(Axis),
+    /// The lower cutoff q0, 1/m.
+    Q0,
+    /// The longest wavelength L = 2π/q0.
+    L,
+    /// The elastic modulus: the composite E* alone, Young's E with `Nu`.
+    E,
+    /// The macroscopic hardness H0.
+    H0,
+    /// Poisson's ratio, which forms E* = E/(1 − ν²) from E.
+    Nu,
+}
+
+impl SetKey {
+    /// The name as `--set` takes it.
+    pub fn name(self) -> &'static str {
+        match self {
+            SetKey::Param(a) => crate::figure::axis_arg(a),
+            SetKey::Q0 => "q0",
+            SetKey::L => "l",
+            SetKey::E => "e",
+            SetKey::H0 => "h0",
+            SetKey::Nu => "nu",
+        }
+    }
+
+    /// The key called `name` (any case).
+    pub fn parse(name: &str) -> Result<SetKey, String> {
+        let n = name.trim().to_lowercase();
+        if let Some(a) = Axis::ALL
+            .into_iter()
+            .find(|a| crate::figure::axis_arg(*a) == n)
+        {
+            return Ok(SetKey::Param(a));
+        }
+        Ok(match n.as_str() {
+            "q0" => SetKey::Q0,
+            "l" => SetKey::L,
+            "e" => SetKey::E,
+            "h0" => SetKey::H0,
+            "nu" => SetKey::Nu,
+            _ => {
+                return Err(format!(
+                    "unknown parameter '{}': one of h0-over-e, h-rms, zeta, hurst, r-star, \
+                     q0, l, e, h0, nu",
+                    name.trim()
+                ))
+            }
+        })
+    }
+}
+
+/// `--set KEY=VALUE`: the key known and the value a number (with a unit
+/// for lengths and pressures); whether it is in range is checked on the
+/// scene.
+pub fn parse_set(s: &str) -> Result<(SetKey, String), String> {
+    let (key, value) = s
         .split_once('=')
         .ok_or("must be AXIS=VALUE, e.g. h0-over-e=0.001 or r-star=0.5mm")?;
-    let names = || {
-        AxisArg::value_variants()
-            .iter()
-            .filter_map(|v| v.to_possible_value().map(|p| p.get_name().to_string()))
-            .collect::<Vec<_>>()
-            .join(", ")
-    };
-    let axis: Axis = AxisArg::from_str(axis.trim(), true)
-        .map_err(|_| format!("unknown parameter '{}': one of {}", axis.trim(), names()))?
-        .into();
-    crate::tui::value_input::parse_value(axis, value)?;
-    Ok((axis, value.trim().to_string()))
+    let key = SetKey::parse(key)?;
+    match key {
+        SetKey::Param(axis) => {
+            crate::tui::value_input::parse_value(axis, value)?;
+        }
+        SetKey::Q0 => {
+            crate::physical::parse_q0_number(value)?;
+        }
+        SetKey::L => {
+            crate::tui::value_input::parse_value(Axis::HRms, value)?;
+        }
+        SetKey::E | SetKey::H0 => {
+            crate::physical::parse_pressure(value)?;
+        }
+        SetKey::Nu => {
+            value
+                .trim()
+                .parse::<f64>()
+                .map_err(|_| format!("\"{}\" is not a number", value.trim()))?;
+        }
+    }
+    Ok((key, value.trim().to_string()))
 }
 
 #[derive(Debug, Args)]

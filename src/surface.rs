@@ -262,6 +262,7 @@ impl State {
             moments: Moments::Truncated,
             surface: Some(src),
             seed: None,
+            shown: Default::default(),
         };
         state.check()?;
         Ok(state)

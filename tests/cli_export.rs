@@ -8,7 +8,20 @@ use common::cli::{run, stdout, BIN};
 use std::io::Read;
 use std::process::{Command, Output, Stdio};
 
-const HEADER: &str = "x,psi,hardness_ratio,elastic,plastic,total,persson_elastic";
+const HEADER: &str = "zeta,psi,hardness_ratio,elastic,plastic,total,persson_elastic";
+
+/// A CSV export without its `#` lines (the scene), header first.
+fn body(text: &str) -> String {
+    text.lines()
+        .filter(|l| !l.starts_with('#'))
+        .map(|l| format!("{l}\n"))
+        .collect()
+}
+
+/// The header: the first line that is not a `#` line.
+fn header(text: &str) -> Option<&str> {
+    text.lines().find(|l| !l.starts_with('#'))
+}
 
 /// A snapshot file `name.ron` in `dir` with fig2's surface and these
 /// fields changed: (hurst, r_star, size_effect).
@@ -40,7 +53,7 @@ fn usage_error(args: &[&str], words: &[&str]) {
 fn default_is_200_points_with_both_ends() {
     let out = run(&["export", "--preset", "fig2"]);
     assert_eq!(out.status.code(), Some(0));
-    let text = String::from_utf8(out.stdout).unwrap();
+    let text = body(&String::from_utf8(out.stdout).unwrap());
     let lines: Vec<&str> = text.lines().collect();
     assert_eq!(lines[0], HEADER);
     assert_eq!(lines.len(), 201);
@@ -71,8 +84,8 @@ fn model_override_changes_the_slopes() {
     let exact = run(&[&base[..], &["--model", "exact"]].concat());
     assert_eq!(exact.status.code(), Some(0));
     let (e, c) = (
-        String::from_utf8(exact.stdout).unwrap(),
-        String::from_utf8(closed.stdout).unwrap(),
+        body(&String::from_utf8(exact.stdout).unwrap()),
+        body(&String::from_utf8(closed.stdout).unwrap()),
     );
     assert_eq!(e.lines().count(), 4);
     // Same moments, so the same ψ; another model, other slopes.
@@ -97,7 +110,7 @@ fn moments_override_changes_psi() {
     let base = ["export", "--preset", "fig2", "--points", "3"];
     let field = |out: Output, row: usize| -> f64 {
         assert_eq!(out.status.code(), Some(0));
-        let text = String::from_utf8(out.stdout).unwrap();
+        let text = body(&String::from_utf8(out.stdout).unwrap());
         text.lines()
             .nth(row)
             .unwrap()
@@ -164,7 +177,7 @@ fn a_closed_stdout_is_not_a_crash() {
         .unwrap()
         .read_exact(&mut first)
         .unwrap();
-    assert_eq!(&first, b"x,psi,hard");
+    assert_eq!(&first, b"# roughtui");
     drop(child.stdout.take());
     let out = child.wait_with_output().unwrap();
     let err = String::from_utf8(out.stderr).unwrap();
@@ -198,6 +211,7 @@ fn asymptotic_moments_at_hurst_one_are_refused() {
 
 fn rows(text: &str) -> Vec<Vec<&str>> {
     text.lines()
+        .filter(|l| !l.starts_with('#'))
         .skip(1)
         .map(|l| l.split(',').collect())
         .collect()
@@ -207,8 +221,8 @@ fn rows(text: &str) -> Vec<Vec<&str>> {
 fn indices_header_rows_and_empty_undefined_fields() {
     let t = stdout(&["export", "--view", "indices", "--points", "5"]);
     assert_eq!(
-        t.lines().next(),
-        Some("x,psi_gw,psi_p,psi_star,psi_star_asymptotic,hardness_ratio")
+        header(&t),
+        Some("zeta,psi_gw,psi_p,psi_star,psi_star_asymptotic,hardness_ratio")
     );
     let r = rows(&t);
     assert_eq!(r.len(), 5);
@@ -236,8 +250,8 @@ fn indices_header_rows_and_empty_undefined_fields() {
 fn map_header_grid_order_and_ends() {
     let t = stdout(&["export", "--view", "map", "--grid", "4x3"]);
     assert_eq!(
-        t.lines().next(),
-        Some("x,y,psi,elastic,plastic,total,plastic_share")
+        header(&t),
+        Some("zeta,h0_over_e,psi,elastic,plastic,total,plastic_share")
     );
     let r = rows(&t);
     assert_eq!(r.len(), 12);
@@ -268,7 +282,7 @@ fn map_header_grid_order_and_ends() {
 #[test]
 fn load_header_rows_and_ends() {
     let t = stdout(&["export", "--view", "load", "--points", "11"]);
-    assert_eq!(t.lines().next(), Some("load,elastic,plastic,total"));
+    assert_eq!(header(&t), Some("load,elastic,plastic,total"));
     let r = rows(&t);
     assert_eq!(r.len(), 11);
     assert_eq!(r[0], ["0", "0", "0", "0"]);
@@ -313,8 +327,12 @@ fn export_defaults_to_fig2_and_overrides_apply() {
 fn a_picture_of_a_changed_scene_drops_the_saved_caption() {
     let svg = |args: &[&str]| stdout(&[&["export", "--format", "svg"][..], args].concat());
     assert!(svg(&[]).contains("Fig. 2: slopes against magnification"));
-    assert!(svg(&["--model", "exact"]).contains("Fig. 2: slopes against magnification"));
-    for changed in [&["--size-effect", "on"][..], &["--sweep", "zeta:1:1e6"]] {
+    for changed in [
+        &["--size-effect", "on"][..],
+        &["--sweep", "zeta:1:1e6"],
+        &["--model", "exact"],
+        &["--moments", "truncated"],
+    ] {
         let t = svg(changed);
         assert!(!t.contains("Fig. 2:"), "{changed:?}");
         assert!(t.contains("fig2 — initial slopes"), "{changed:?}");
@@ -358,7 +376,9 @@ fn a_picture_carries_the_claims_under_its_caption() {
     assert!(fig1.iter().all(|(_, y)| *y < 600.0), "{fig1:?}");
     let fig3 = texts(&stdout(&["export", "--preset", "fig3", "--format", "svg"]));
     at(&fig3, "total slope's minimum 3.91 at ζ = 3.191");
-    // Claims hold for the scene drawn: truncated moments move fig3's.
+    // Claims hold for the scene drawn: truncated moments move fig3's
+    // minimum to ζ = 7.763, within the first decade where the truncation
+    // of the moments, not the model, makes it: not claimed.
     let truncated = stdout(&[
         "export",
         "--preset",
@@ -368,10 +388,8 @@ fn a_picture_carries_the_claims_under_its_caption() {
         "--moments",
         "truncated",
     ]);
-    at(
-        &texts(&truncated),
-        "total slope's minimum 5.59 at ζ = 7.763",
-    );
+    let t = texts(&truncated);
+    assert!(!t.iter().any(|(s, _)| s.contains("minimum")), "{t:?}");
 }
 
 #[test]
@@ -422,7 +440,10 @@ fn options_that_do_not_apply_are_refused() {
     );
     usage_error(&["export", "--sweep", "zeta:1:x"], &["'x' is not a number"]);
     usage_error(&["export", "--sweep", "zeta:100:10"], &["--sweep", "empty"]);
-    usage_error(&["export", "--sweep", "hurst:0.5:2"], &["--sweep", "hurst"]);
+    usage_error(
+        &["export", "--sweep", "hurst:0.5:2"],
+        &["--sweep", "H = 2", "0.05 … 1"],
+    );
 }
 
 #[test]
@@ -461,10 +482,17 @@ fn svg_of_every_view_parses_with_labels_legend_and_colours() {
         for w in words {
             assert!(text.contains(w), "{view}: no {w:?} in the text");
         }
-        // The caption and the decade labels of the log axes.
-        assert!(text.contains("Fig. 2"), "{view}: caption");
+        // The scene under every picture; the preset's caption (about its
+        // slopes) only under the slopes, each other view its own; and the
+        // decade labels of the log axes.
+        assert!(
+            text.contains("H0/E = 0.01 · h_rms = 19.82 nm"),
+            "{view}: scene"
+        );
+        assert_eq!(text.contains("Fig. 2"), view == "slopes", "{view}: caption");
         if view != "load" {
-            for d in ["1", "10", "100", "1000", "1e4"] {
+            // ζ 1 … 1e4: one style for the whole axis, powers of ten.
+            for d in ["10⁰", "10¹", "10²", "10³", "10⁴"] {
                 assert!(text.lines().any(|l| l.trim() == d), "{view}: decade {d}");
             }
         }
@@ -484,4 +512,114 @@ fn svg_of_every_view_parses_with_labels_legend_and_colours() {
             _ => {}
         }
     }
+}
+
+#[test]
+fn every_csv_and_picture_names_its_scene() {
+    let set = ["--set", "h-rms=25nm"];
+    for (view, first) in [
+        ("slopes", "zeta"),
+        ("indices", "zeta"),
+        ("map", "zeta,h0_over_e"),
+        ("load", "load"),
+    ] {
+        let args = [&["export", "--view", view][..], &set].concat();
+        let csv = stdout(&args);
+        let comments: Vec<&str> = csv.lines().take_while(|l| l.starts_with("# ")).collect();
+        for want in [
+            format!(
+                "# roughtui {}: scene \"fig2\", view {view}",
+                env!("CARGO_PKG_VERSION")
+            ),
+            "# h_rms = 2.5e-8 m".into(),
+            "# h0_over_e = 0.01".into(),
+            "# zeta = 128".into(),
+            "# hurst = 0.8".into(),
+            "# r_star = 0.001 m".into(),
+            "# q0 = 100000 1/m".into(),
+            "# model = closed form".into(),
+            "# moments = asymptotic".into(),
+            "# size_effect = off".into(),
+        ] {
+            assert!(
+                comments.iter().any(|l| l.starts_with(&want)),
+                "{view}: no {want:?} in {comments:#?}"
+            );
+        }
+        let h = header(&csv).unwrap();
+        assert!(h.starts_with(&format!("{first},")), "{view}: {h}");
+        let svg = stdout(&[&args[..], &["--format", "svg"]].concat());
+        let doc = roxmltree::Document::parse(&svg).unwrap();
+        let desc = doc
+            .descendants()
+            .find(|n| n.has_tag_name("desc"))
+            .and_then(|n| n.text())
+            .unwrap();
+        // The description holds the CSV's `#` lines, word for word.
+        for c in &comments {
+            assert!(
+                desc.lines().any(|l| l == &c[2..]),
+                "{view}: {c:?} not in <desc>"
+            );
+        }
+        let title = doc.descendants().find(|n| n.has_tag_name("title")).unwrap();
+        assert_eq!(title.text(), Some(&*format!("fig2 — {view} view")));
+        // The caption line under the plot, in short.
+        assert!(
+            svg.contains("H0/E = 0.01 · h_rms = 25 nm · ζ = 128 · Hurst H = 0.8 · R* = 1 mm"),
+            "{view}"
+        );
+    }
+    // The sweep's other axes name the column.
+    for (sweep, first) in [
+        ("h0-over-e:1e-4:0.1", "h0_over_e"),
+        ("h-rms:1e-9:1e-6", "h_rms"),
+        ("hurst:0.2:0.9", "hurst"),
+        ("r-star:1e-6:1e-2", "r_star"),
+    ] {
+        let csv = stdout(&["export", "--points", "3", "--sweep", sweep]);
+        assert!(
+            header(&csv).unwrap().starts_with(&format!("{first},psi,")),
+            "{sweep}"
+        );
+    }
+}
+
+/// pandas reads an export as it is (`comment='#'`), column names and all,
+/// when python3 with pandas is installed (else the test says so and passes).
+#[test]
+fn pandas_reads_an_export_as_it_is() {
+    let ok = Command::new("python3")
+        .args(["-c", "import pandas"])
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !ok {
+        eprintln!("python3 with pandas not found: not checked");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("fig2.csv");
+    std::fs::write(
+        &f,
+        stdout(&["export", "--view", "indices", "--points", "5"]),
+    )
+    .unwrap();
+    let out = Command::new("python3")
+        .args([
+            "-c",
+            "import sys, pandas as pd; d = pd.read_csv(sys.argv[1], comment='#'); \
+             print(list(d.columns)[0], len(d), repr(float(d['zeta'].iloc[-1])))",
+            f.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(
+        String::from_utf8(out.stdout).unwrap().trim(),
+        "zeta 5 10000.0"
+    );
 }

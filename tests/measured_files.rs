@@ -66,10 +66,10 @@ fn deviation(args: &[&str], rows: &[[f64; 4]], tol: f64) -> f64 {
     let mut a = vec!["export", "--view", "indices", "--points", &n];
     a.extend_from_slice(args);
     let csv = stdout(&a);
-    let mut lines = csv.lines();
+    let mut lines = csv.lines().filter(|l| !l.starts_with('#'));
     assert_eq!(
         lines.next(),
-        Some("x,psi_gw,psi_p,psi_star,psi_star_asymptotic,hardness_ratio")
+        Some("zeta,psi_gw,psi_p,psi_star,psi_star_asymptotic,hardness_ratio")
     );
     let mut worst = 0f64;
     let mut count = 0;
@@ -140,18 +140,33 @@ fn every_view_of_a_map_and_a_download_exports() {
         for (view, header) in [
             (
                 "slopes",
-                "x,psi,hardness_ratio,elastic,plastic,total,persson_elastic",
+                "zeta,psi,hardness_ratio,elastic,plastic,total,persson_elastic",
             ),
             (
                 "indices",
-                "x,psi_gw,psi_p,psi_star,psi_star_asymptotic,hardness_ratio",
+                "zeta,psi_gw,psi_p,psi_star,psi_star_asymptotic,hardness_ratio",
             ),
-            ("map", "x,y,psi,elastic,plastic,total,plastic_share"),
+            (
+                "map",
+                "zeta,h0_over_e,psi,elastic,plastic,total,plastic_share",
+            ),
             ("load", "load,elastic,plastic,total"),
             ("spectrum", "q,psd,fit"),
         ] {
             let csv = stdout(&["export", "--surface", f, "--view", view]);
-            assert_eq!(csv.lines().next(), Some(header), "{f} {view}");
+            // The scene first: the file and its SHA-256 among the `#` lines.
+            let name = file.file_name().unwrap().to_str().unwrap();
+            let comments: Vec<&str> = csv.lines().take_while(|l| l.starts_with('#')).collect();
+            assert!(
+                comments.contains(&format!("# surface = {name}").as_str()),
+                "{f} {view}"
+            );
+            assert!(
+                comments.iter().any(|l| l.starts_with("# sha256 = ")),
+                "{f} {view}"
+            );
+            let header_line = csv.lines().find(|l| !l.starts_with('#'));
+            assert_eq!(header_line, Some(header), "{f} {view}");
             assert!(csv.lines().count() > 10, "{f} {view}: {csv}");
             let svg = stdout(&["export", "--surface", f, "--view", view, "--format", "svg"]);
             assert!(

@@ -54,7 +54,7 @@ fn the_explorer_opens_a_surface_steps_zeta_and_shows_its_spectrum() {
     assert!(braille(&s) > 20, "{s}");
     // `a` says why it does nothing here; the session goes on.
     p.keys(&["a"]);
-    p.wait_text("no moments convention on a measured surface");
+    p.wait_text("moments are summed from its data");
     p.keys(&["q"]);
     assert_eq!(p.exit_status(), 0);
     assert_eq!(p.display("#{alternate_on}"), "0");

@@ -67,12 +67,8 @@ fn h_rms_and_h_are_shown_not_set() {
     assert_eq!(a.selected_axis(), Axis::RStar);
     // Reached anyway (a follower's selection), they refuse to change.
     for (i, axis, words) in [
-        (
-            1,
-            Axis::HRms,
-            "h_rms is not a parameter of a measured surface",
-        ),
-        (3, Axis::Hurst, "H is not a parameter of a measured surface"),
+        (1, Axis::HRms, "h_rms is the data's on a measured surface"),
+        (3, Axis::Hurst, "H is the data's on a measured surface"),
     ] {
         a.selected = i;
         let before = a.state.clone();
@@ -80,6 +76,7 @@ fn h_rms_and_h_are_shown_not_set() {
         assert_eq!(a.state, before, "{axis:?}");
         let st = a.status.clone().unwrap();
         assert!(st.error && st.text.starts_with(words), "{}", st.text);
+        assert!(st.text.chars().count() <= 80, "{}", st.text);
         press(&mut a, KeyCode::Enter, KeyModifiers::NONE);
         assert_eq!(a.mode, Mode::Main);
     }
@@ -87,7 +84,8 @@ fn h_rms_and_h_are_shown_not_set() {
     let st = a.status.clone().unwrap();
     assert!(st
         .text
-        .starts_with("a: no moments convention on a measured surface"));
+        .starts_with("a: a measured surface's moments are summed from its data"));
+    assert!(st.text.chars().count() <= 80, "{}", st.text);
     assert_eq!(a.state.moments, rough_model::Moments::Truncated);
 }
 
@@ -331,7 +329,7 @@ fn a_surface_in_the_ascii_set_draws_only_ascii() {
             assert!(bad(&s).is_empty(), "{:?} {s}", bad(&s));
             ch(&mut a, 'a');
             let s = drawn(&a);
-            assert!(s.contains("no moments convention on a measured"), "{s}");
+            assert!(s.contains("moments are summed from its data"), "{s}");
             assert!(bad(&s).is_empty(), "{:?} {s}", bad(&s));
             ch(&mut a, '?');
             let mut help = String::new();

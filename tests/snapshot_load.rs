@@ -141,7 +141,7 @@ fn unknown_field() {
     assert_eq!(
         message(&with("model: Exact,", "model: Exact, colour: 3,")),
         "bad snapshot DIR/case.ron: line 7, column 19: unknown field `colour` in the snapshot: \
-         expected one of version, name, caption, params, size_effect, sweep, model, moments, surface"
+         expected one of version, name, caption, params, size_effect, sweep, model, moments, surface, seed, view, map_y, ghost"
     );
     assert_eq!(
         message(&with("q0: 100000.0", "q0: 100000.0, e: 1.0")),
@@ -321,7 +321,7 @@ fn deep_nesting_is_refused_without_overflowing_the_stack() {
         (
             "[".repeat(1_000_000).into_bytes(),
             "line 1, column 1: a snapshot is a group `(…)` with the fields \
-             version, name, caption, params, size_effect, sweep, model, moments, surface",
+             version, name, caption, params, size_effect, sweep, model, moments, surface, seed, view, map_y, ghost",
         ),
         (
             with("Exact", &"Exact(".repeat(100_000)),

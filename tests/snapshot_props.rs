@@ -117,6 +117,7 @@ fn state() -> impl Strategy<Value = State> {
                     moments,
                     surface: None,
                     seed: None,
+                    shown: Default::default(),
                 }
             },
         )

@@ -25,6 +25,19 @@ fn cases(text: &str) -> Vec<Vec<String>> {
         .collect()
 }
 
+/// The reference's name of an export column: the export names its grid
+/// columns after the parameters (`zeta`, `h0_over_e`, …), the reference,
+/// whose cases sweep different parameters in one file, `x` (across) and
+/// `y` (up).
+fn reference_name(k: usize, name: &str, inputs: &[&str]) -> String {
+    match inputs.get(k) {
+        Some(&grid) if grid != name && rough_model::Axis::ALL.iter().any(|a| a.field() == name) => {
+            grid.to_string()
+        }
+        _ => name.to_string(),
+    }
+}
+
 /// Exports every case of `file` and compares it column by column: the
 /// grid columns `inputs` to [`GRID_TOL`], the outputs to the contract.
 fn check(file: &str, inputs: &[&str]) {
@@ -45,15 +58,23 @@ fn check(file: &str, inputs: &[&str]) {
             .filter(|r| r[case_col] == Some(k as f64))
             .collect();
         assert_eq!(got.rows.len(), want.len(), "{file} case {k}: rows");
+        // The export's first columns are named after the swept parameters.
+        let names: Vec<String> = got
+            .columns
+            .iter()
+            .enumerate()
+            .map(|(c, n)| reference_name(c, n, inputs))
+            .collect();
+        assert_eq!(names, reference.columns[1..], "{file} case {k}: columns");
         for (i, (g, w)) in got.rows.iter().zip(&want).enumerate() {
-            for name in &got.columns {
+            for (got_name, name) in got.columns.iter().zip(&names) {
                 let at = format!("case {k} ({}) row {i}", args.join(" "));
                 let (report, limit) = if inputs.contains(&name.as_str()) {
                     (&mut grid, GRID_TOL)
                 } else {
                     (&mut outputs, tol::CONTRACT)
                 };
-                match (got.get(g, name), reference.get(w, name)) {
+                match (got.get(g, got_name), reference.get(w, name)) {
                     (Some(a), Some(b)) => report.check(name, &at, a, b, limit),
                     (None, None) => {}
                     // An empty field on one side only is a failure.

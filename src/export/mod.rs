@@ -31,10 +31,12 @@ pub const DEFAULT_POINTS: usize = 200;
 /// fewer; more would only make the file large).
 pub const MAX_SVG_POINTS: usize = 20_000;
 
-/// The state `args` describe: the source with every override applied,
-/// checked.
+/// The state `args` describe: the source with every override applied
+/// (model, moments, size effect and sweep first, so that `--set hurst=1
+/// --moments truncated` works), checked.
 pub fn state_of(args: &ExportArgs) -> anyhow::Result<State> {
-    let mut state = crate::load_source(&args.source, &args.setup)?;
+    let mut state = crate::load_base(&args.source, &args.setup)?;
+    let scene = (state.model, state.moments, state.size_effect, state.sweep);
     if let Some(w) = state.surface_warning() {
         // The export goes on with the file as it is now; the user is told.
         let _ = writeln!(std::io::stderr(), "roughtui: warning: {w}");
@@ -51,18 +53,23 @@ pub fn state_of(args: &ExportArgs) -> anyhow::Result<State> {
         }
         state.moments = m.into();
     }
-    let scene = (state.size_effect, state.sweep);
     if let Some(s) = args.size_effect {
         state.size_effect = s == OnOff::On;
     }
     if let Some((axis, from, to)) = args.sweep {
+        for v in [from, to] {
+            crate::physical::check(axis, v, &crate::figure::short_number(v))
+                .map_err(|e| anyhow::anyhow!("--sweep: {e}"))?;
+        }
         state.sweep = Sweep::new(axis, from, to).map_err(|e| anyhow::anyhow!("--sweep: {e}"))?;
     }
-    if scene != (state.size_effect, state.sweep) {
-        // The caption describes the scene as saved; a picture of another
-        // one is titled by its name alone (the title names the settings).
+    if scene != (state.model, state.moments, state.size_effect, state.sweep) {
+        // The caption describes the scene as saved, its numbers those of
+        // its model and moments; a picture of another scene goes without
+        // it (the scene line under the chart names the settings).
         state.caption = None;
     }
+    crate::apply_setup(&mut state, &args.setup)?;
     state.check()?;
     Ok(state)
 }

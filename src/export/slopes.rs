@@ -7,17 +7,21 @@ use std::sync::mpsc;
 use rough_model::{Curves, Scene, SceneSpec};
 
 use crate::csv_number;
+use crate::figure::scene_text::csv_comments;
+use crate::figure::{FigureOptions, View};
 use crate::snapshot::State;
 
-/// The CSV header, fixed by the command's contract.
-pub const HEADER: &str = "x,psi,hardness_ratio,elastic,plastic,total,persson_elastic";
+/// The CSV header after the first column, which is named after the swept
+/// parameter (`zeta`, `h0_over_e`, `h_rms`, `hurst`, `r_star`).
+pub const HEADER: &str = "psi,hardness_ratio,elastic,plastic,total,persson_elastic";
 
 /// Rows per block: blocks are computed and formatted on worker threads and
 /// written in order, so memory stays bounded however many points are asked
 /// for (a block's text is ~1 MB).
 const BLOCK: usize = 1 << 13;
 
-/// Writes the CSV of `state` at `points` points (both ends included).
+/// Writes the CSV of `state` at `points` points (both ends included): the
+/// scene in `#` lines, then the header and the rows.
 ///
 /// Formatting the numbers costs more than computing them, so both run on
 /// every core: worker k takes blocks k, k + T, k + 2T, … and hands each to
@@ -28,7 +32,12 @@ pub fn write_csv(out: &mut impl Write, state: &State, points: usize) -> anyhow::
     let spec = state.scene_spec(Curves::ALL, points);
     // Fail before the header if the request itself is bad.
     Scene::compute_range(&spec, 0..0)?;
-    writeln!(out, "{HEADER}")?;
+    let opts = FigureOptions {
+        points,
+        ..FigureOptions::default()
+    };
+    out.write_all(csv_comments(state, View::Slopes, &opts).as_bytes())?;
+    writeln!(out, "{},{HEADER}", state.sweep.axis().field())?;
     let blocks = points.div_ceil(BLOCK);
     let block = |b: usize| b * BLOCK..((b + 1) * BLOCK).min(points);
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get().min(8));

@@ -1,16 +1,23 @@
-//! CSV of the index, map and load views. Undefined values (eq. 13 at
-//! R* = 0) are empty fields; numbers are in [`crate::csv_number`]'s form.
+//! CSV of the index, map and load views. Each starts with the scene in `#`
+//! lines (pandas' `comment='#'` skips them), then the header. Undefined
+//! values (eq. 13 at R* = 0) are empty fields; numbers are in
+//! [`crate::csv_number`]'s form.
 
 use std::io::Write;
 
 use crate::csv_number;
-use crate::figure::{FigureOptions, IndexSeries, LoadCurve, MapSpec, RegimeMap, SpectrumSeries};
+use crate::figure::scene_text::csv_comments;
+use crate::figure::{
+    FigureOptions, IndexSeries, LoadCurve, MapSpec, RegimeMap, SpectrumSeries, View,
+};
 use crate::snapshot::State;
 
-/// The index view's CSV header, fixed by the command's contract.
-pub const INDICES_HEADER: &str = "x,psi_gw,psi_p,psi_star,psi_star_asymptotic,hardness_ratio";
-/// The map's CSV header (one row per cell, x fastest).
-pub const MAP_HEADER: &str = "x,y,psi,elastic,plastic,total,plastic_share";
+/// The index view's CSV header after the first column, which is named
+/// after the swept parameter (`zeta`, `h0_over_e`, …).
+pub const INDICES_HEADER: &str = "psi_gw,psi_p,psi_star,psi_star_asymptotic,hardness_ratio";
+/// The map's CSV header after the first two columns, named after the
+/// parameters across and up (one row per cell, across fastest).
+pub const MAP_HEADER: &str = "psi,elastic,plastic,total,plastic_share";
 /// The load view's CSV header.
 pub const LOAD_HEADER: &str = "load,elastic,plastic,total";
 /// The spectrum view's CSV header: q (1/m), the data's PSD (C^iso in m⁴ or
@@ -34,16 +41,17 @@ fn push_row(buf: &mut String, fields: &[Option<f64>]) {
     buf.push('\n');
 }
 
-/// Writes `header`, then the rows `block(range, buf)` formats, block by block.
+/// Writes `head` (the `#` lines and the header), then the rows
+/// `block(range, buf)` formats, block by block.
 fn write_blocks(
     out: &mut impl Write,
-    header: &str,
+    head: &str,
     points: usize,
     mut block: impl FnMut(std::ops::Range<usize>, &mut String) -> anyhow::Result<()>,
 ) -> anyhow::Result<()> {
     // Fail before the header if the request itself is bad.
     block(0..0, &mut String::new())?;
-    writeln!(out, "{header}")?;
+    out.write_all(head.as_bytes())?;
     let mut buf = String::new();
     let mut start = 0;
     while start < points {
@@ -57,9 +65,24 @@ fn write_blocks(
     Ok(())
 }
 
+/// The `#` lines of `view` and the header: the swept parameter's column,
+/// then `rest`.
+fn head(state: &State, view: View, points: usize, rest: &str) -> String {
+    let opts = FigureOptions {
+        points,
+        ..FigureOptions::default()
+    };
+    format!(
+        "{}{},{rest}\n",
+        csv_comments(state, view, &opts),
+        state.sweep.axis().field()
+    )
+}
+
 /// The indices of `state` at `points` points of its sweep.
 pub fn write_indices(out: &mut impl Write, state: &State, points: usize) -> anyhow::Result<()> {
-    write_blocks(out, INDICES_HEADER, points, |range, buf| {
+    let head = head(state, View::Indices, points, INDICES_HEADER);
+    write_blocks(out, &head, points, |range, buf| {
         let s = IndexSeries::compute_range(state, points, range)?;
         for i in 0..s.len() {
             push_row(
@@ -80,7 +103,12 @@ pub fn write_indices(out: &mut impl Write, state: &State, points: usize) -> anyh
 
 /// The areas of `state` at `points` loads from 0 to 1.
 pub fn write_load(out: &mut impl Write, state: &State, points: usize) -> anyhow::Result<()> {
-    write_blocks(out, LOAD_HEADER, points, |range, buf| {
+    let opts = FigureOptions {
+        points,
+        ..FigureOptions::default()
+    };
+    let head = format!("{}{LOAD_HEADER}\n", csv_comments(state, View::Load, &opts));
+    write_blocks(out, &head, points, |range, buf| {
         let c = LoadCurve::compute_range(state, points, range)?;
         for i in 0..c.load.len() {
             let row = [c.load[i], c.elastic[i], c.plastic[i], c.total[i]];
@@ -95,7 +123,13 @@ pub fn write_load(out: &mut impl Write, state: &State, points: usize) -> anyhow:
 pub fn write_map(out: &mut impl Write, state: &State, opts: &FigureOptions) -> anyhow::Result<()> {
     let spec = MapSpec::of(state, opts.grid, opts.map_y)?;
     let m = RegimeMap::compute(&spec);
-    writeln!(out, "{MAP_HEADER}")?;
+    out.write_all(csv_comments(state, View::Map, opts).as_bytes())?;
+    writeln!(
+        out,
+        "{},{},{MAP_HEADER}",
+        spec.x.axis().field(),
+        spec.y.axis().field()
+    )?;
     let mut buf = String::new();
     for row in 0..spec.rows {
         buf.clear();
@@ -122,6 +156,8 @@ pub fn write_map(out: &mut impl Write, state: &State, opts: &FigureOptions) -> a
 /// A measured surface's spectrum and the power law fitted over [q0, q1].
 pub fn write_spectrum(out: &mut impl Write, state: &State) -> anyhow::Result<()> {
     let s = SpectrumSeries::of(state)?;
+    let opts = FigureOptions::default();
+    out.write_all(csv_comments(state, View::Spectrum, &opts).as_bytes())?;
     writeln!(out, "{SPECTRUM_HEADER}")?;
     let mut buf = String::new();
     for i in 0..s.q.len() {

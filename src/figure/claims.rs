@@ -128,6 +128,24 @@ const MAX_PER_KIND: usize = 4;
 /// minima closer together than the sampling step (1/256 of the sweep) may
 /// be missed; a minimum on a plateau that rounding cannot resolve (the
 /// exact total slope at 1 + 1e-20) is left out.
+/// Below this magnification the truncated moments are an artefact of the
+/// cut at q0 (at ζ = 1 they vanish: no roughness, Ψ = 0), not a property
+/// of the model: a claim there is not shown.
+pub const TRUNCATION_ZETA: f64 = 10.0;
+
+/// The claims worth showing: [`claims`] without those that the truncation
+/// of the moments makes (with truncated moments on the paper's power law,
+/// a crossing or minimum at ζ below [`TRUNCATION_ZETA`]).
+pub fn shown_claims(state: &State) -> Vec<Claim> {
+    let artefact = |c: &Claim| {
+        !state.is_measured()
+            && state.moments == rough_model::Moments::Truncated
+            && c.axis == Axis::Zeta
+            && c.at < TRUNCATION_ZETA
+    };
+    claims(state).into_iter().filter(|c| !artefact(c)).collect()
+}
+
 pub fn claims(state: &State) -> Vec<Claim> {
     let roughness = state.roughness();
     let index = |x: f64| {

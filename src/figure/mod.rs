@@ -30,11 +30,12 @@ mod colour;
 mod map;
 mod minimum;
 mod number;
+pub mod scene_text;
 mod series;
 mod spectrum;
 mod svg;
 
-pub use claims::{claims, Claim, ClaimKind};
+pub use claims::{claims, shown_claims, Claim, ClaimKind, TRUNCATION_ZETA};
 pub use colour::{
     share_ansi16, share_ansi256, share_char, share_colour, ANSI16_SCALE, ANSI256_SCALE, RAMP,
 };
@@ -47,8 +48,11 @@ pub use svg::render_svg;
 
 use rough_model::Axis;
 
-/// One of the explorer's charts, each exportable as CSV or SVG.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+/// One of the explorer's charts, each exportable as CSV or SVG (a
+/// snapshot records it as `view: Map`).
+#[derive(
+    Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize,
+)]
 pub enum View {
     /// Initial slopes of the contact areas against the swept parameter.
     #[default]

@@ -112,6 +112,8 @@ pub enum Invalid {
     /// A sweep or value a measured surface does not have (h_rms or H, ζ
     /// beyond the data).
     Surface(RoughnessError),
+    /// A view, map axis or ghost the scene cannot show (`shown.rs`).
+    Shown(String),
     /// `name` or `caption` is too long or not printable.
     Text {
         field: &'static str,
@@ -224,7 +226,13 @@ fn shape_at(path: &str) -> Option<Expected> {
         "surface" => Expected::Group(fields::<SurfaceFile>()),
         "sweep.axis" => Expected::OneOf(variants::<Axis>()),
         "model" => Expected::OneOf(variants::<Model>()),
-        "moments" => Expected::OneOf(variants::<Moments>()),
+        "moments" | "ghost.moments" => Expected::OneOf(variants::<Moments>()),
+        "view" => Expected::OneOf(variants::<crate::figure::View>()),
+        "map_y" => Expected::OneOf(variants::<Axis>()),
+        "ghost" => Expected::Group(fields::<super::GhostFile>()),
+        "ghost.params" => Expected::Group(fields::<ParamValues>()),
+        "ghost.kind" => Expected::OneOf(variants::<super::GhostOf>()),
+        "ghost.model" => Expected::OneOf(variants::<Model>()),
         _ => return None,
     })
 }
@@ -374,6 +382,7 @@ impl fmt::Display for Invalid {
             Invalid::Moments(e) => write!(f, "{e}"),
             Invalid::Sweep(e) => write!(f, "{e}"),
             Invalid::Surface(e) => write!(f, "{e}"),
+            Invalid::Shown(e) => write!(f, "{e}"),
             Invalid::Text {
                 field,
                 problem: TextProblem::TooLong { chars, max },

@@ -12,6 +12,9 @@
 //!     moments: Asymptotic,              // optional, Truncated when absent
 //!     surface: (path: "../data/steel.txt", sha256: "9f86…", periodic: true, pixel_size: 5e-8),
 //!                                       // optional: a measured surface
+//!     view: Map,                        // optional: the view (Slopes when absent),
+//!     map_y: HRms,                      //   the map's y axis and the ghost
+//!     ghost: (kind: Curves, params: (…), size_effect: false, model: Exact),
 //! )
 //! ```
 //!
@@ -55,6 +58,7 @@
 
 mod error;
 mod save;
+mod shown;
 mod surface;
 
 use std::fs::File;
@@ -68,7 +72,8 @@ use serde::{Deserialize, Deserializer, Serialize, Serializer};
 pub use error::{
     Expected, Invalid, LoadError, LoadProblem, ParseProblem, SnapshotError, TextProblem,
 };
-pub use save::{check_stem, default_stem, save_file_new, save_new, MAX_STEM_BYTES};
+pub use save::{check_stem, default_stem, save_file_new, save_new, scene_name, MAX_STEM_BYTES};
+pub use shown::{GhostFile, GhostOf, GhostScene, Shown};
 pub use surface::{SurfaceFile, SurfaceProblem};
 
 use crate::surface::SurfaceSource;
@@ -122,6 +127,23 @@ pub struct SnapshotFile {
         deserialize_with = "de_seed"
     )]
     pub seed: Option<u64>,
+    /// The view the snapshot was saved on (`shown.rs`).
+    #[serde(default, skip_serializing_if = "shown::is_slopes")]
+    pub view: crate::figure::View,
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "shown::ser_axis",
+        deserialize_with = "shown::de_axis"
+    )]
+    pub map_y: Option<Axis>,
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "shown::ser_ghost",
+        deserialize_with = "shown::de_ghost"
+    )]
+    pub ghost: Option<GhostFile>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -179,6 +201,9 @@ pub struct State {
     /// The seed of the contact simulation's random phases; `None`: the
     /// default (1).
     pub seed: Option<u64>,
+    /// What the view showed when the snapshot was saved (the explorer
+    /// takes it on loading and keeps its own view state meanwhile).
+    pub shown: Shown,
 }
 
 /// `text` as the value of a text field: at most `max` characters, none of
@@ -256,6 +281,13 @@ impl State {
                 .map_err(Invalid::Params)?,
             None => params,
         };
+        let measured = surface.is_some();
+        let ghost = f
+            .ghost
+            .as_ref()
+            .map(|g| GhostScene::of(g, measured))
+            .transpose()
+            .map_err(Invalid::Shown)?;
         let state = State {
             name: f.name,
             caption: f.caption,
@@ -266,6 +298,11 @@ impl State {
             moments: f.moments,
             surface,
             seed: f.seed,
+            shown: Shown {
+                view: f.view,
+                map_y: f.map_y,
+                ghost,
+            },
         };
         state.check()?;
         Ok(state)
@@ -281,6 +318,9 @@ impl State {
         if let Some(c) = &self.caption {
             check_caption(c)?;
         }
+        self.shown
+            .check(self.is_measured())
+            .map_err(Invalid::Shown)?;
         let r = self.roughness();
         r.check_sweep(&self.sweep).map_err(Invalid::Surface)?;
         r.check(&self.params).map_err(Invalid::Surface)?;
@@ -341,6 +381,9 @@ impl State {
             moments: self.moments,
             surface: self.surface.as_ref().map(|s| surface::file_of(s, base)),
             seed: self.seed,
+            view: self.shown.view,
+            map_y: self.shown.map_y,
+            ghost: self.shown.ghost.map(GhostScene::to_file),
         }
     }
 

@@ -57,6 +57,25 @@ pub fn default_stem(name: &str, time: SystemTime) -> String {
     )
 }
 
+/// The scene's name for a snapshot saved under `stem`: the stem without
+/// the `-YYYYMMDD-HHMMSS` that [`default_stem`] appends, so that saving
+/// with the offered name keeps the scene called "fig2" (and a picture
+/// saved next is `fig2-map-…svg`, with one time stamp). A stem that is
+/// nothing but a time stamp stays whole.
+pub fn scene_name(stem: &str) -> &str {
+    let is_stamp = |t: &str| {
+        let b = t.as_bytes();
+        b.len() == 16
+            && b[0] == b'-'
+            && b[9] == b'-'
+            && b[1..9].iter().chain(&b[10..]).all(u8::is_ascii_digit)
+    };
+    match stem.len().checked_sub(16) {
+        Some(at) if at > 0 && stem.is_char_boundary(at) && is_stamp(&stem[at..]) => &stem[..at],
+        _ => stem,
+    }
+}
+
 /// The stem a user typed, checked: surrounding blanks and a trailing `.ron`
 /// are dropped; empty names, paths, control characters, a leading `.` and
 /// over-long names are refused.
@@ -200,6 +219,21 @@ fn write_exclusive(
         return Err(e);
     }
     Ok(true)
+}
+
+#[cfg(test)]
+mod name_tests {
+    use super::scene_name;
+
+    #[test]
+    fn the_time_stamp_is_not_the_name() {
+        assert_eq!(scene_name("fig2-20261125-094445"), "fig2");
+        assert_eq!(scene_name("my run-20261125-094445"), "my run");
+        assert_eq!(scene_name("steel"), "steel");
+        assert_eq!(scene_name("-20261125-094445"), "-20261125-094445");
+        assert_eq!(scene_name("fig2-2026112-094445"), "fig2-2026112-094445");
+        assert_eq!(scene_name("ζ-20261125-094445"), "ζ");
+    }
 }
 
 #[cfg(test)]

@@ -23,7 +23,7 @@ pub use super::status::Hint;
 pub use super::steps::{default_range, step_value, HURST_STEPS, LOG_STEPS};
 use super::theme::Theme;
 use super::views::overlap::Cover;
-use crate::figure::{claims, render_svg, Claim, FigureOptions, MapCache, MapSpec, View};
+use crate::figure::{render_svg, shown_claims, Claim, FigureOptions, MapCache, MapSpec, View};
 use crate::presets;
 use crate::snapshot::{self, State};
 
@@ -282,6 +282,7 @@ impl App {
             .position(|a| *a == app.state.sweep.axis())
             .unwrap_or(0);
         measured::fix_selection(&mut app);
+        super::ghost::restore(&mut app);
         if app.state.is_measured() {
             app.home = Some(app.state.clone());
         }
@@ -359,7 +360,7 @@ impl App {
         let key = self.curve_key(points);
         let claims_key = self.curve_key(2);
         if self.claims_key.as_ref() != Some(&claims_key) {
-            self.claims = claims(&self.state);
+            self.claims = shown_claims(&self.state);
             self.claims_key = Some(claims_key);
         }
         match self.view {
@@ -467,16 +468,20 @@ impl App {
         self.captioned = KeptCaption::of(&self.state);
         self.selected = Axis::ALL.iter().position(|a| *a == axis).unwrap_or(0);
         measured::fix_selection(self);
+        // A preset or the session's surface: the view stays as it is.
+        self.state.shown = Default::default();
     }
 }
 
 /// Why H = 1 and the asymptotic moments do not go together, in the
-/// explorer's words (the model's error names the snapshot field).
+/// explorer's words with the key that helps, within 80 columns (the
+/// model's error names the snapshot field).
 pub const HURST_ONE_ASYMPTOTIC: &str =
-    "H = 1 needs the truncated moments (the asymptotic m2 is infinite there)";
+    "H = 1 needs truncated moments (asymptotic m2 is infinite there): press a first";
 
 /// The one place that changes an [`App`].
 pub fn update(app: &mut App, msg: Message) {
+    super::status::clear_stale(app, msg);
     match msg {
         Message::SelectPrev => app.selected = measured::next_selectable(app, app.selected, false),
         Message::SelectNext => app.selected = measured::next_selectable(app, app.selected, true),
@@ -590,7 +595,11 @@ pub fn update(app: &mut App, msg: Message) {
                 app.mode = Mode::Main;
                 app.set_status("save cancelled", false);
             }
-            Mode::Value(..) | Mode::Truth(..) => app.mode = Mode::Main,
+            Mode::Value(..) | Mode::Truth(..) => {
+                // The refusal was about the text just dropped.
+                app.mode = Mode::Main;
+                app.status = None;
+            }
             Mode::Main | Mode::Help | Mode::Class => {}
         },
         Message::PromptAccept => prompt::accept(app),

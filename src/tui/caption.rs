@@ -1,16 +1,25 @@
 //! The loaded scene's caption, kept while the scene is the one it
-//! describes: a changed surface, size effect or sweep is shown (and saved,
-//! and pictured) without it, and it comes back with that scene.
+//! describes: a changed surface, size effect, sweep, model or moments is
+//! shown (and saved, and pictured) without it, and it comes back with that
+//! scene.
 
-use rough_model::{Params, Sweep};
+use rough_model::{Model, Moments, Params, Sweep};
 
 use crate::snapshot::State;
 
-/// What a caption describes: the parameters, the size effect and the sweep.
-type Scene = (Params, bool, Sweep);
+/// What a caption describes: the parameters, the size effect, the sweep,
+/// the model and the moments (its numbers are theirs: after `a` the
+/// caption's "≈ 320" would not be the claims' 407).
+type Scene = (Params, bool, Sweep, Model, Moments);
 
 fn scene_of(s: &State) -> Scene {
-    (swept_out(s, s.params), s.size_effect, s.sweep)
+    (
+        swept_out(s, s.params),
+        s.size_effect,
+        s.sweep,
+        s.model,
+        s.moments,
+    )
 }
 
 /// `params` with the swept value, which only moves the marker, at the

@@ -4,11 +4,12 @@
 //! pins the power law fitted over the band (the idealised surface the data
 //! is compared with), then the curves. The legend names what differs.
 
-use rough_model::Axis;
+use rough_model::{Axis, Curves};
 
+use super::app::App;
 use super::fmt::{fmt_len, fmt_param};
-use super::plots::Plot;
-use crate::snapshot::State;
+use super::plots::{compute_plot, Plot};
+use crate::snapshot::{GhostOf, GhostScene, Shown, State};
 
 /// What a ghost shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -29,6 +30,46 @@ pub struct Ghost {
 }
 
 impl Ghost {
+    /// The ghost a snapshot recorded, beside the scene `now`, computed
+    /// anew at `points` points: a fit's is the self-affine power law
+    /// (no surface), curves are the scene's own with the pinned settings.
+    pub fn of_scene(now: &State, g: &GhostScene, points: usize) -> Ghost {
+        let mut state = now.clone();
+        state.caption = None;
+        state.shown = Shown::default();
+        state.params = g.params;
+        state.size_effect = g.size_effect;
+        state.model = g.model;
+        state.moments = g.moments;
+        let kind = match g.kind {
+            GhostOf::Curves => GhostKind::Curves,
+            GhostOf::Fit => {
+                state.surface = None;
+                GhostKind::Fit
+            }
+        };
+        let spec = state.scene_spec(Curves::ALL, points.max(2));
+        Ghost {
+            plot: compute_plot(&spec),
+            state,
+            kind,
+        }
+    }
+
+    /// The ghost as a snapshot records it.
+    pub fn scene(&self) -> GhostScene {
+        GhostScene {
+            kind: match self.kind {
+                GhostKind::Curves => GhostOf::Curves,
+                GhostKind::Fit => GhostOf::Fit,
+            },
+            params: self.state.params,
+            size_effect: self.state.size_effect,
+            model: self.state.model,
+            moments: self.state.moments,
+        }
+    }
+
     /// Whether the ghost still means something beside `now`: the same
     /// sweep, so the same x axis (and, for a fit, still a measured surface).
     pub fn fits(&self, now: &State) -> bool {
@@ -69,6 +110,28 @@ impl Ghost {
             format!("ghost: {}", parts.join(", "))
         }
     }
+}
+
+/// What the explorer shows besides the scene, as a snapshot records it.
+pub fn shown(app: &App) -> Shown {
+    Shown {
+        view: app.view,
+        map_y: app.map_y.filter(|a| *a != app.state.sweep.axis()),
+        ghost: app.ghost.as_ref().map(Ghost::scene),
+    }
+}
+
+/// Takes what a loaded snapshot showed (view, map axis, ghost) into the
+/// explorer; the state keeps none of it (the explorer's own fields hold it).
+pub fn restore(app: &mut App) {
+    let shown = std::mem::take(&mut app.state.shown);
+    app.view = shown.view;
+    app.map_y = shown.map_y;
+    app.ghost = shown.ghost.map(|g| {
+        let points = super::layout::Regions::of_size(app.size)
+            .map_or(200, |r| usize::from(r.graph.width) * 2);
+        Ghost::of_scene(&app.state, &g, points)
+    });
 }
 
 #[cfg(test)]

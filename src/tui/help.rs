@@ -27,18 +27,51 @@ pub const SYMBOLS: &[(&str, &str)] = &[
     ("R_s", "mean radius of the asperity summits"),
     ("λ1", "shortest wavelength of the roughness, 2π/q1"),
     ("h′", "rms slope of the surface, √(2 m2)"),
+    (
+        "ε",
+        "d_rep/R = 2h′: the strain scale of the asperities (eq. 17)",
+    ),
+    (
+        "d_rep",
+        "repulsive diameter 4h′/h″, h″ the rms curvature (eq. 16)",
+    ),
+    (
+        "V",
+        "variance of the full-contact pressure, E² m2/2 (Persson)",
+    ),
+    ("H0/E", "bulk hardness over E, the composite modulus E*"),
+    (
+        "q0  L",
+        "longest wavelength L = 2π/q0 (Enter: q0=1e5 or l=62.8um)",
+    ),
     ("h_rms", "rms height of the roughness"),
     ("ζ", "magnification q1/q0: how fine the roughness goes"),
-    ("H", "the Hurst exponent of the roughness (not a hardness)"),
-    ("H0  H_y", "bulk hardness; size-dependent hardness at R_s"),
+    (
+        "H",
+        "the Hurst exponent of the roughness (never a hardness)",
+    ),
+    ("H0  H_y", "the hardness: bulk; size-dependent at R_s"),
     ("R*", "length of the hardness size effect (0 = none)"),
     ("p̄", "mean (nominal) contact pressure"),
     (
         "S_el S_pl",
-        "initial slopes H·dA/dp̄/A0, elastic and plastic",
+        "initial slopes H0·dA/dp̄/A0 (H_y with the size effect)",
     ),
     ("S_tot", "their sum, the total contact area's slope"),
     ("S_P", "Persson's purely elastic slope, for comparison"),
+    ("marker", "the swept value: the readout is computed there"),
+    (
+        "exact at",
+        "the marker: how far the other model's slopes lie from these",
+    ),
+    (
+        "claims",
+        "crossings and minima along the sweep; with truncated moments",
+    ),
+    (
+        "",
+        "none below ζ = 10, where the cut at q0, not the model, makes them",
+    ),
     (
         "regime",
         "plastic share < 10 % elastic, ≤ 90 % elasto-plastic, else",

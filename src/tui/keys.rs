@@ -8,6 +8,7 @@ use crossterm::event::{Event, KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
 use super::app::{App, Message, Mode};
 use super::glyphs::Glyphs;
 use super::line_edit::Edit;
+use crate::figure::View;
 
 /// Where a binding applies.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -241,7 +242,7 @@ pub const BINDINGS: &[Binding] = &[
     bind(Main, &[(key(Tab), M::NextView), (shift(BackTab), M::PrevView), (key(BackTab), M::PrevView)], "Tab ⇧Tab", "next / previous view (a surface adds its spectrum)", Some("Tab view")),
     bind(Main, &[(ch('1'), M::LoadPreset(0)), (ch('2'), M::LoadPreset(1)), (ch('3'), M::LoadPreset(2)), (ch('4'), M::LoadPreset(3))], "1 2 3 4", "load the paper's fig1 … fig4", Some("1-4 figs")),
     bind(Surface, &[(ch('5'), M::LoadSurface)], "5", "back to the measured surface", Some("5 surface")),
-    bind(Main, &[(key(Enter), M::StartValue)], "Enter", "type its value (25nm, 2 mm, 1e-3)", None),
+    bind(Main, &[(key(Enter), M::StartValue)], "Enter", "type its value (25nm, 1e-3; also q0=… l=… e=… h0=…)", None),
     bind(Main, &[(ch('x'), M::CycleSweep)], "x", "sweep the next parameter", Some("x sweep")),
     bind(Main, &[(ch('m'), M::ToggleModel)], "m", "exact / closed-form model", Some("m model")),
     bind(Main, &[(ch('e'), M::ToggleSizeEffect)], "e", "size effect on / off", Some("e size")),
@@ -249,10 +250,10 @@ pub const BINDINGS: &[Binding] = &[
     bind(ContactView, &[(ch('['), M::ContactLoad { up: false }), (ch(']'), M::ContactLoad { up: true })], "[ ]", "contact view: lower / higher load p̄/H (¼ decade)", Some("[] load")),
     bind(ContactView, &[(ch('b'), M::ContactSweep)], "b", "contact view: plastic share vs ζ / areas vs load", Some("b vs ζ")),
     bind(ContactView, &[(ch('r'), M::ContactSeed)], "r", "contact view: another surface (next seed)", None),
-    bind(Main, &[(ch('y'), M::NextMapY)], "y", "the regime map's next y parameter", None),
+    bind(Main, &[(ch('y'), M::NextMapY)], "y", "the regime map's next y parameter", Some("y map axis")),
     bind(NotStudent, &[(ch('s'), M::StartSave)], "s", "save a snapshot here (.ron)", Some("s save")),
     bind(Student, &[(ch('s'), M::StartSave)], "s", "show the snapshot (.ron) to copy; y there: clipboard", Some("s snapshot")),
-    bind(Main, &[(ch('g'), M::ToggleGhost)], "g", "pin a dim ghost (a surface: its fit first) / clear", None),
+    bind(Main, &[(ch('g'), M::ToggleGhost)], "g", "pin a dim ghost (a surface: its fit first) / clear", Some("g ghost")),
     bind(NotStudent, &[(ch('p'), M::SavePicture)], "p", "save the view as a picture here (.svg)", Some("p picture")),
     bind(Student, &[(ch('p'), M::SavePicture)], "p", "no pictures over SSH: s shows the snapshot", None),
     bind(MainAndHelp, &[(ch('?'), M::ToggleHelp)], "?", "show / hide this help", Some("? help")),
@@ -355,15 +356,34 @@ pub fn message_for_event(app: &App, ev: &Event) -> Option<Message> {
 }
 
 /// The footer for the app's mode in `width` columns: the entries in table
-/// order, those that do not fit left out, but the help key's always kept.
+/// order, those that do not fit left out, but help, save, picture, quit and
+/// (on a surface) `5` always kept (so 80 columns show them); `g` only on
+/// the slopes view and
+/// `y` only on the map, where they act.
 pub fn footer(app: &App, width: usize) -> String {
     let glyphs = app.theme.glyphs;
     let entries: Vec<(Cow<str>, bool)> = BINDINGS
         .iter()
         .filter(|b| b.context.covers(app))
+        .filter(|b| {
+            b.keys.iter().all(|(_, m)| match m {
+                Message::ToggleGhost => app.view == View::Slopes,
+                Message::NextMapY => app.view == View::Map,
+                _ => true,
+            })
+        })
         .filter_map(|b| {
-            let help = b.keys.iter().any(|(_, m)| *m == Message::ToggleHelp);
-            b.footer.map(|f| (key_text(glyphs, f), help))
+            let keep = b.keys.iter().any(|(_, m)| {
+                matches!(
+                    m,
+                    Message::ToggleHelp
+                        | Message::StartSave
+                        | Message::SavePicture
+                        | Message::Quit
+                        | Message::LoadSurface
+                )
+            });
+            b.footer.map(|f| (key_text(glyphs, f), keep))
         })
         .collect();
     let len = |e: &str| e.chars().count() + 2;

@@ -3,7 +3,7 @@
 //! does not apply, `5` returns to the surface after a preset, and `g` pins
 //! the power law fitted over the band as well as the curves.
 
-use rough_model::{Axis, Moments, RoughnessError, Sweep};
+use rough_model::{Axis, Moments, Sweep};
 
 use super::app::{default_range, App};
 use super::ghost::{Ghost, GhostKind};
@@ -13,8 +13,8 @@ use crate::figure::View;
 use crate::surface::fitted_params;
 
 /// What `a` says on a measured surface.
-pub const MOMENTS_DO_NOT_APPLY: &str = "a: no moments convention on a measured surface: \
-     its moments are summed from the data (truncated at q1 = ζ q0)";
+pub const MOMENTS_DO_NOT_APPLY: &str =
+    "a: a measured surface's moments are summed from its data, up to q1 = ζ q0";
 
 /// The slider after (or before) `from` that is a parameter of the scene.
 pub fn next_selectable(app: &App, from: usize, forward: bool) -> usize {
@@ -48,8 +48,22 @@ pub fn refuse_fixed(app: &mut App, axis: Axis) -> bool {
     if app.state.roughness().is_parameter(axis) {
         return false;
     }
-    app.set_status(RoughnessError::NotAParameter(axis).to_string(), true);
+    app.set_status(fixed_text(axis), true);
     true
+}
+
+/// Why the data fixes `axis`, within an 80-column status line (the model's
+/// [`RoughnessError::NotAParameter`] says it at more length).
+pub fn fixed_text(axis: Axis) -> String {
+    match axis {
+        Axis::Hurst => {
+            "H is the data's on a measured surface: H fit shows a power law over q0…q1".into()
+        }
+        a => format!(
+            "{} is the data's on a measured surface: its √m0 up to the cutoff ζ",
+            a.symbol()
+        ),
+    }
 }
 
 /// The default range of `axis` in the current scene: ζ up to the data's

@@ -149,8 +149,23 @@ pub fn compute_plot(spec: &SceneSpec) -> Plot {
     plot.total = curve(&scene.total);
     plot.persson = curve(&scene.persson_elastic);
     plot.regime_marks = regime_marks(log_x, &scene);
-    let curves = [&plot.elastic, &plot.plastic, &plot.total, &plot.persson];
-    plot.y_bounds = decade_bounds(&curves, Y_DECADES);
+    // Fitted to the data as the picture is: from the largest of the
+    // elastic, total and Persson curves down to the smallest value within
+    // four decades of it (a plastic slope of 1e-33 is no reason for 1e-3).
+    let top = [&plot.elastic, &plot.total, &plot.persson]
+        .iter()
+        .copied()
+        .flatten()
+        .map(|p| p.1)
+        .fold(f64::NEG_INFINITY, f64::max);
+    let near: Vec<(f64, f64)> = [&plot.elastic, &plot.plastic, &plot.total, &plot.persson]
+        .iter()
+        .copied()
+        .flatten()
+        .copied()
+        .filter(|p| p.1 >= top - 4.0)
+        .collect();
+    plot.y_bounds = decade_bounds(&[&near], Y_DECADES);
     plot
 }
 

@@ -7,10 +7,43 @@ use super::fmt::{fmt_param, fmt_short};
 use super::value_input;
 use crate::snapshot;
 
+/// `KEY=VALUE …` typed at the value prompt: any of `--set`'s keys (q0,
+/// l, e and h0 with nu, the parameters), applied together as `--set`
+/// applies them. A refusal keeps the prompt open.
+fn set_pairs(app: &mut App, text: &str) {
+    let pairs: Result<Vec<_>, String> = text
+        .split_whitespace()
+        .map(|p| crate::cli::parse_set(p).map_err(|e| format!("{p}: {e}")))
+        .collect();
+    let mut next = app.state.clone();
+    let applied = pairs.and_then(|p| {
+        crate::apply_sets(&mut next, &p).map_err(|(at, e)| match at {
+            Some(k) => format!("{}: {e}", text.split_whitespace().nth(k).unwrap_or("")),
+            None => e,
+        })
+    });
+    match applied {
+        Ok(()) => {
+            app.mode = Mode::Main;
+            app.status = None;
+            if next != app.state {
+                app.state = next;
+                app.modified = true;
+            }
+        }
+        // In the explorer's words: the key that helps is `a`.
+        Err(e) if e.ends_with(crate::HURST_ONE_SET) => {
+            app.set_status(super::app::HURST_ONE_ASYMPTOTIC, true)
+        }
+        Err(e) => app.set_status(e, true),
+    }
+}
+
 /// Enter in a prompt: save under the typed name, or set the typed value.
 /// A bad name or value keeps the prompt open, with the reason.
 pub fn accept(app: &mut App) {
     match &app.mode {
+        Mode::Value(_, line) if line.text().contains('=') => set_pairs(app, &line.text()),
         Mode::Value(axis, line) => {
             let (axis, text) = (*axis, line.text());
             if text.trim().is_empty() {
@@ -22,7 +55,13 @@ pub fn accept(app: &mut App) {
                     let mut next = app.state.clone();
                     next.params = p;
                     if let Err(e) = next.check() {
-                        app.set_status(e.to_string(), true);
+                        let text = match e {
+                            snapshot::Invalid::Moments(_) => {
+                                super::app::HURST_ONE_ASYMPTOTIC.into()
+                            }
+                            e => e.to_string(),
+                        };
+                        app.set_status(text, true);
                         return;
                     }
                     app.mode = Mode::Main;
@@ -49,11 +88,14 @@ pub fn accept(app: &mut App) {
                 }
             };
             app.mode = Mode::Main;
-            // The snapshot is named as typed (the stem, without ".ron").
+            // The snapshot is named as typed (the stem, without ".ron"
+            // and without the offered time stamp), and records the view.
             let mut named = app.state.clone();
-            named.name = clean;
+            named.name = snapshot::scene_name(&clean).to_string();
+            named.shown = super::ghost::shown(app);
             match snapshot::save_new(&app.save_dir, &stem, &named) {
                 Ok(path) => {
+                    named.shown = Default::default();
                     app.state = named;
                     app.modified = false;
                     app.file = path.file_name().map(|f| f.to_string_lossy().into_owned());

@@ -8,7 +8,7 @@ use ratatui::style::{Modifier, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Clear, Widget};
 
-use super::app::{App, Mode};
+use super::app::{App, Message, Mode, Status};
 use super::fmt::{fmt_param, fmt_short};
 use super::glyphs::Glyphs;
 use super::line_edit::LineEdit;
@@ -214,6 +214,38 @@ pub fn render_status(app: &App, status: Rect, below: Rect, buf: &mut Buffer) {
             t.error,
         )
         .render(below, buf);
+    }
+}
+
+/// A message goes with the state it describes: "loaded fig1", "saved …"
+/// or a refusal no longer hold once the scene, the slider or the view
+/// changes (the action then sets its own message, if any). Hints clear
+/// themselves when their condition goes.
+pub(super) fn clear_stale(app: &mut App, msg: Message) {
+    let moves = matches!(
+        msg,
+        Message::Step { .. }
+            | Message::SelectPrev
+            | Message::SelectNext
+            | Message::CycleSweep
+            | Message::ToggleModel
+            | Message::ToggleSizeEffect
+            | Message::ToggleMoments
+            | Message::NextView
+            | Message::PrevView
+            | Message::NextMapY
+    );
+    // What the drawing is ("drawing in ASCII …", "colour off …") holds
+    // until the drawing changes, whatever the scene does.
+    let about_drawing =
+        |s: &Status| s.text.starts_with("drawing in ") || s.text.starts_with("colour ");
+    if moves
+        && app
+            .status
+            .as_ref()
+            .is_some_and(|s| s.hint.is_none() && !about_drawing(s))
+    {
+        app.status = None;
     }
 }
 

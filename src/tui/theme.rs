@@ -72,6 +72,8 @@ pub struct Theme {
     pub dim: Style,
     pub error: Style,
     pub ok: Style,
+    /// The claims line: its own colour, not a curve's.
+    pub claims: Style,
 }
 
 /// A curve's own character where curves are told apart by character: in
@@ -145,12 +147,29 @@ impl Theme {
         } else {
             ("Ψ_GW", "Ψ_P", "Ψ*", "Ψ*asy eq.13")
         };
+        // Blue readable on black and on white: #5f5fff (xterm's index 63)
+        // has a WCAG contrast of 4.6:1 on both (ANSI blue #0000ee: 2.3:1
+        // on black); bright blue (#5c5cff in xterm's 16) 4.4:1 and 4.8:1.
+        let blue = match palette {
+            Palette::Ansi16 => Color::LightBlue,
+            Palette::Ansi256 => Color::Indexed(63),
+            Palette::TrueColor => Color::Rgb(95, 95, 255),
+        };
+        // The claims' teal, apart from Persson's green: #008282 4.5:1 on
+        // black and 4.7:1 on white; xterm's index 30 (#008787) 4.8:1 and
+        // 4.4:1; cyan where 16 colours are all.
+        let teal = match palette {
+            Palette::Ansi16 => Color::Cyan,
+            Palette::Ansi256 => Color::Indexed(30),
+            Palette::TrueColor => Color::Rgb(0, 130, 130),
+        };
         Theme {
             color,
             palette,
             glyphs,
+            claims: fg(teal),
             elastic: curve("elastic", Color::Reset, Some(('•', "••")), '*'),
-            plastic: curve("plastic", Color::Blue, Some(('+', "++")), '+'),
+            plastic: curve("plastic", blue, Some(('+', "++")), '+'),
             total: curve("total", Color::Red, None, '#'),
             persson: curve("Persson elastic", Color::Green, Some(('o', "oo")), 'o'),
             marker_line: CurveStyle {
@@ -160,7 +179,7 @@ impl Theme {
                 sample: if glyphs.ascii_only() { "|" } else { "│" },
             },
             psi_gw: curve(psi_gw, Color::Magenta, Some(('x', "xx")), 'x'),
-            psi_p: curve(psi_p, Color::Blue, Some(('+', "++")), '+'),
+            psi_p: curve(psi_p, blue, Some(('+', "++")), '+'),
             psi_star: curve(psi_star, Color::Red, None, '#'),
             psi_asy: curve(psi_asy, Color::Yellow, Some(('o', "oo")), 'o'),
             psi_one: CurveStyle {
@@ -235,5 +254,62 @@ fn ascii_pair(c: char) -> &'static str {
         '.' => "..",
         '•' => "••",
         _ => "??",
+    }
+}
+
+#[cfg(test)]
+mod contrast_tests {
+    use super::{Palette, Theme};
+    use ratatui::style::Color;
+
+    /// xterm's colour `n` of its 6×6×6 cube (16 … 231).
+    fn xterm(n: u8) -> (u8, u8, u8) {
+        const LEVELS: [u8; 6] = [0, 95, 135, 175, 215, 255];
+        let k = n - 16;
+        (
+            LEVELS[usize::from(k / 36)],
+            LEVELS[usize::from(k / 6 % 6)],
+            LEVELS[usize::from(k % 6)],
+        )
+    }
+
+    /// WCAG 2 relative luminance and contrast ratio.
+    fn luminance((r, g, b): (u8, u8, u8)) -> f64 {
+        let lin = |c: u8| {
+            let c = f64::from(c) / 255.0;
+            if c <= 0.03928 {
+                c / 12.92
+            } else {
+                ((c + 0.055) / 1.055).powf(2.4)
+            }
+        };
+        0.2126 * lin(r) + 0.7152 * lin(g) + 0.0722 * lin(b)
+    }
+
+    fn contrast(a: (u8, u8, u8), b: (u8, u8, u8)) -> f64 {
+        let (la, lb) = (luminance(a), luminance(b));
+        (la.max(lb) + 0.05) / (la.min(lb) + 0.05)
+    }
+
+    #[test]
+    fn plastic_and_claims_read_on_dark_and_light() {
+        let (black, white) = ((0, 0, 0), (255, 255, 255));
+        for (palette, least) in [(Palette::TrueColor, 4.5), (Palette::Ansi256, 4.3)] {
+            let t = Theme::new(super::Glyphs::Braille, palette, true);
+            for (style, name) in [(t.plastic.style, "plastic"), (t.claims, "claims")] {
+                let rgb = match style.fg {
+                    Some(Color::Indexed(n)) => xterm(n),
+                    Some(Color::Rgb(r, g, b)) => (r, g, b),
+                    c => panic!("{name}: {c:?}"),
+                };
+                for bg in [black, white] {
+                    let c = contrast(rgb, bg);
+                    assert!(c >= least, "{name} {rgb:?} on {bg:?}: {c:.2}");
+                }
+            }
+            assert_ne!(t.claims, t.persson.style);
+        }
+        // The old ANSI blue #0000ee on black: 2.3.
+        assert!(contrast((0, 0, 238), (0, 0, 0)) < 2.5);
     }
 }

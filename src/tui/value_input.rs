@@ -73,10 +73,16 @@ pub fn parse_value(axis: Axis, text: &str) -> Result<f64, String> {
     }
 }
 
-/// `params` with `axis` set to the typed value, or why not (the model's
-/// range message).
+/// `params` with `axis` set to the typed value, or why not: the value's
+/// physical range ([`crate::physical::range`]), then the model's domain.
 pub fn apply_value(params: &Params, axis: Axis, text: &str) -> Result<Params, String> {
     let v = parse_value(axis, text)?;
+    apply_number(params, axis, v, text)
+}
+
+/// [`apply_value`] with the value parsed; `text` is how it was typed.
+pub fn apply_number(params: &Params, axis: Axis, v: f64, text: &str) -> Result<Params, String> {
+    crate::physical::check(axis, v, text)?;
     params.with(axis, v).map_err(|e| match e {
         // In the prompt's words: its symbol and the value as typed.
         ParamError::OutOfDomain { valid, .. } => format!(
@@ -135,11 +141,10 @@ mod tests {
         let q = apply_value(&p, Axis::HRms, "25nm").unwrap();
         assert_eq!(q.get(Axis::HRms), 25e-9);
         let e = apply_value(&p, Axis::Hurst, "1.5").unwrap_err();
-        assert_eq!(e, "H = 1.5 is out of range: it must be in (0, 1]");
+        assert_eq!(e, "H = 1.5 is out of range: H takes 0.05 … 1");
         let e = apply_value(&p, Axis::HRms, " -2 nm").unwrap_err();
-        assert_eq!(
-            e,
-            "h_rms = -2 nm is out of range: it must be finite and > 0"
-        );
+        assert_eq!(e, "h_rms = -2 nm is out of range: h_rms takes 1 pm … 1 mm");
+        let e = apply_value(&p, Axis::H0OverE, "5").unwrap_err();
+        assert_eq!(e, "H0/E = 5 is out of range: H0/E takes 1e-6 … 0.5");
     }
 }

@@ -54,7 +54,7 @@ pub(super) fn draw(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::
     let ye = edges(ya, yb, spec.rows);
     let x = scale(xlog, xe[0], xe[spec.cols], axis_desc(spec.x.axis()));
     let y = scale(ylog, ye[0], ye[spec.rows], axis_desc(spec.y.axis()));
-    let mut c = chart(&plot, &title(state, "regime map"), &x, &y)?;
+    let mut c = chart(&plot, &title(state, "regime map"), (&x, &y), None)?;
 
     // Cells, as runs of equal colour along each row.
     let mut rects = Vec::new();
@@ -73,35 +73,95 @@ pub(super) fn draw(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::
     }
     c.draw_series(rects).map_err(plot_err)?;
 
-    // The Ψ = 1 contour along the cell edges where ψ crosses 1.
-    let mut segs = Vec::new();
-    for row in 0..spec.rows {
-        for col in 0..spec.cols {
-            let (right, up) = m.contour_edges(col, row);
-            if right {
-                segs.push(vec![(xe[col + 1], ye[row]), (xe[col + 1], ye[row + 1])]);
-            }
-            if up {
-                segs.push(vec![(xe[col], ye[row + 1]), (xe[col + 1], ye[row + 1])]);
-            }
-        }
-    }
-    let contour = CONTOUR.stroke_width(2);
-    c.draw_series(segs.into_iter().map(|s| PathElement::new(s, contour)))
-        .map_err(plot_err)?;
+    // The Ψ = 1 contour, interpolated between the cell centres.
+    let centres = |a: f64, b: f64, n: usize| -> Vec<f64> {
+        (0..n)
+            .map(|k| a + (b - a) * k as f64 / (n - 1).max(1) as f64)
+            .collect()
+    };
+    let segs = contour(&m, &centres(xa, xb, spec.cols), &centres(ya, yb, spec.rows));
+    let contour_style = CONTOUR.stroke_width(2);
+    c.draw_series(
+        segs.into_iter()
+            .map(|[a, b]| PathElement::new(vec![a, b], contour_style)),
+    )
+    .map_err(plot_err)?;
 
     // The current point, where it lies on the map.
     let (fx, fy) = spec.position();
-    if (0.0..=1.0).contains(&fx) && (0.0..=1.0).contains(&fy) {
+    let on_map = (0.0..=1.0).contains(&fx) && (0.0..=1.0).contains(&fy);
+    if on_map {
         let p = (xa + (xb - xa) * fx, ya + (yb - ya) * fy);
         c.draw_series(std::iter::once(Circle::new(p, 7, POINT.stroke_width(3))))
             .map_err(plot_err)?;
     }
-    side_legend(&side, &m)
+    side_legend(&side, &m, on_map)
 }
 
-/// The colour bar with the thresholds, the contour and the marker.
-fn side_legend(area: &Area, m: &RegimeMap) -> anyhow::Result<()> {
+/// The Ψ = 1 line by marching squares over the cell centres `xc` × `yc`
+/// (drawn coordinates): ln ψ of the index in use at each centre, its zero
+/// interpolated linearly along each edge of each square of four centres; a
+/// saddle (opposite corners alike) is split as the mean of the four says.
+/// A smooth line, not the cells' stair steps.
+pub(crate) fn contour(m: &RegimeMap, xc: &[f64], yc: &[f64]) -> Vec<[(f64, f64); 2]> {
+    // ψ = 0 (no roughness left) is far below 1, not -∞.
+    let f = |col: usize, row: usize| m.psi_at(col, row).ln().max(-50.0);
+    let mut segs = Vec::new();
+    for row in 0..yc.len().saturating_sub(1) {
+        for col in 0..xc.len().saturating_sub(1) {
+            // Corners counter-clockwise from the lower left.
+            let p = [
+                (xc[col], yc[row]),
+                (xc[col + 1], yc[row]),
+                (xc[col + 1], yc[row + 1]),
+                (xc[col], yc[row + 1]),
+            ];
+            let v = [
+                f(col, row),
+                f(col + 1, row),
+                f(col + 1, row + 1),
+                f(col, row + 1),
+            ];
+            if v.iter().any(|x| x.is_nan()) {
+                continue;
+            }
+            // Where edge k (corner k to k + 1) crosses zero, if it does.
+            let cut = |k: usize| -> Option<(f64, f64)> {
+                let (a, b) = (v[k], v[(k + 1) % 4]);
+                if (a >= 0.0) == (b >= 0.0) {
+                    return None;
+                }
+                let t = a / (a - b);
+                let (pa, pb) = (p[k], p[(k + 1) % 4]);
+                Some((pa.0 + (pb.0 - pa.0) * t, pa.1 + (pb.1 - pa.1) * t))
+            };
+            let cuts: Vec<(usize, (f64, f64))> =
+                (0..4).filter_map(|k| cut(k).map(|q| (k, q))).collect();
+            match cuts.len() {
+                2 => segs.push([cuts[0].1, cuts[1].1]),
+                4 => {
+                    // A saddle: the mean decides which corners connect.
+                    let above = v.iter().sum::<f64>() / 4.0 >= 0.0;
+                    let corner0_above = v[0] >= 0.0;
+                    let q: Vec<(f64, f64)> = cuts.iter().map(|c| c.1).collect();
+                    if above == corner0_above {
+                        segs.push([q[0], q[1]]);
+                        segs.push([q[2], q[3]]);
+                    } else {
+                        segs.push([q[3], q[0]]);
+                        segs.push([q[1], q[2]]);
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+    segs
+}
+
+/// The colour bar with the thresholds, the contour and, where it is on the
+/// map, the current point.
+fn side_legend(area: &Area, m: &RegimeMap, point: bool) -> anyhow::Result<()> {
     let font = ("sans-serif", 14).into_font();
     let text = |s: String, x: i32, y: i32| Text::new(s, (x, y), font.clone());
     let (x0, top, bar_h) = (15, 60, 260);
@@ -153,10 +213,58 @@ fn side_legend(area: &Area, m: &RegimeMap) -> anyhow::Result<()> {
     .map_err(plot_err)?;
     area.draw(&text(format!("{psi} = 1 contour"), x0 + 40, y - 7))
         .map_err(plot_err)?;
-    y += 26;
-    area.draw(&Circle::new((x0 + 14, y), 7, POINT.stroke_width(3)))
-        .map_err(plot_err)?;
-    area.draw(&text("current point".into(), x0 + 40, y - 7))
-        .map_err(plot_err)?;
+    if point {
+        y += 26;
+        area.draw(&Circle::new((x0 + 14, y), 7, POINT.stroke_width(3)))
+            .map_err(plot_err)?;
+        area.draw(&text("current point".into(), x0 + 40, y - 7))
+            .map_err(plot_err)?;
+    }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::contour;
+    use crate::figure::{MapSpec, RegimeMap};
+    use rough_model::{psi_in_use, Axis};
+
+    /// fig2's map: ψ ∝ E/H0 at fixed ζ, so ln ψ is linear in log10(H0/E)
+    /// and a crossing on a vertical edge of the squares is exact: ψ = 1
+    /// there to rounding. Crossings on horizontal edges lie between two
+    /// centres where ψ straddles 1.
+    #[test]
+    fn the_contour_is_interpolated_where_psi_is_one() {
+        let state = crate::presets::load("fig2").unwrap();
+        let spec = MapSpec::of(&state, (40, 24), None).unwrap();
+        assert_eq!(spec.y.axis(), Axis::H0OverE);
+        let m = RegimeMap::compute(&spec);
+        let t = |s: &rough_model::Sweep, n: usize| -> Vec<f64> {
+            let (a, b) = (s.from().log10(), s.to().log10());
+            (0..n)
+                .map(|k| a + (b - a) * k as f64 / (n - 1) as f64)
+                .collect()
+        };
+        let (xc, yc) = (t(&spec.x, spec.cols), t(&spec.y, spec.rows));
+        let segs = contour(&m, &xc, &yc);
+        assert!(segs.len() >= spec.cols / 2, "{} segments", segs.len());
+        let mut exact = 0;
+        for p in segs.iter().flatten() {
+            if xc.iter().any(|x| (x - p.0).abs() < 1e-12) {
+                let params = state
+                    .params
+                    .with(Axis::Zeta, 10f64.powf(p.0))
+                    .and_then(|q| q.with(Axis::H0OverE, 10f64.powf(p.1)))
+                    .unwrap();
+                let psi = psi_in_use(&params, state.size_effect, state.moments)
+                    .0
+                    .to_f64();
+                assert!((psi - 1.0).abs() < 1e-9, "ψ = {psi} at {p:?}");
+                exact += 1;
+            }
+            // Inside the map, not on a cell's edge grid only.
+            assert!(p.0 >= xc[0] && p.0 <= xc[xc.len() - 1]);
+        }
+        assert!(exact > 0);
+    }
 }

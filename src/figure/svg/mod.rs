@@ -3,18 +3,20 @@
 //! colours (elastic black, plastic blue, total red, Persson green) and the
 //! caption under the chart, with the claims located live under it.
 
+mod curves;
+mod legend;
 mod map;
 mod spectrum;
 
 use anyhow::anyhow;
 use plotters::coord::types::RangedCoordf64;
-use plotters::element::DashedPathElement;
 use plotters::prelude::*;
-use rough_model::{Axis, Curves, Scene};
+use rough_model::Axis;
 
-use super::{axis_unit, FigureOptions, IndexSeries, LoadCurve, View};
-use crate::figure::short_number;
+use super::{axis_unit, FigureOptions, View};
+use crate::figure::{scene_text, short_number};
 use crate::snapshot::State;
+use legend::{Legend, Placed, Sample};
 
 /// Picture size in pixels (SVG user units).
 pub const SIZE: (u32, u32) = (900, 600);
@@ -38,41 +40,90 @@ const GREY: RGBColor = RGBColor(150, 150, 150);
 const PSI_GW: RGBColor = RGBColor(128, 0, 128);
 const PSI_ASY: RGBColor = RGBColor(230, 120, 0);
 
-/// `view` of `state` as an SVG document (UTF-8 text).
-pub fn render_svg(view: View, state: &State, opts: &FigureOptions) -> anyhow::Result<String> {
-    let mut buf = String::new();
-    {
-        let root = SVGBackend::with_string(&mut buf, SIZE).into_drawing_area();
-        root.fill(&WHITE).map_err(plot_err)?;
-        let lines = caption_lines(state);
-        let caption_h = CAPTION_H.max(2 * 8 + LINE_H * lines.len() as u32);
-        let (chart_area, caption_area) = root.split_vertically(SIZE.1 - caption_h);
-        match view {
-            View::Slopes => slopes(&chart_area, state, opts)?,
-            View::Indices => indices(&chart_area, state, opts)?,
-            View::Map => map::draw(&chart_area, state, opts)?,
-            View::Load => load(&chart_area, state, opts)?,
-            View::Spectrum => spectrum::draw(&chart_area, state)?,
-            View::Contact => anyhow::bail!(
-                "the contact view's picture is drawn by crate::contact (export --view contact \
-                 --format svg)"
-            ),
-        }
-        caption(&caption_area, &lines)?;
-        root.present().map_err(plot_err)?;
+/// The colours only dashed curves have (Persson's line, eq. 13, the
+/// spectrum's fit): their 2-px strokes are dashed by the viewer.
+const DASHED: [RGBColor; 2] = [PERSSON, PSI_ASY];
+
+/// `svg` with every 2-px stroke of a [`DASHED`] colour dashed 9 on, 6 off.
+fn dash(mut svg: String) -> String {
+    for RGBColor(r, g, b) in DASHED {
+        let stroke = format!("stroke=\"#{r:02X}{g:02X}{b:02X}\" stroke-width=\"2\"");
+        svg = svg.replace(&stroke, &format!("{stroke} stroke-dasharray=\"9 6\""));
     }
-    Ok(crisp_rects(buf))
+    svg
 }
 
-/// Adjacent filled rectangles (the map's cells) would show hairline seams
-/// where viewers anti-alias their shared edges; rectangles are drawn with
-/// crisp edges, curves and text stay smooth.
-fn crisp_rects(mut svg: String) -> String {
+/// `view` of `state` as an SVG document (UTF-8 text). Under the chart: the
+/// scene's parameters, the view's caption and, where the view shows the
+/// sweep, the claims; the full parameter set also goes into `<desc>`.
+pub fn render_svg(view: View, state: &State, opts: &FigureOptions) -> anyhow::Result<String> {
+    let lines = caption_lines(view, state, opts);
+    // The legend goes inside the plot where no line passes, else the
+    // picture is drawn again with the plot narrower and the legend right
+    // of it.
+    let buf = match render_once(view, state, opts, &lines, None)? {
+        (buf, Placed::Inside) => buf,
+        (_, Placed::NoRoom(room)) => render_once(view, state, opts, &lines, Some(room))?.0,
+    };
+    let head = format!(
+        "\n<title>{}</title>\n<desc>{}</desc>\n<style>rect{{shape-rendering:crispEdges}}</style>",
+        xml_text(&format!("{} — {} view", state.name, view.name())),
+        xml_text(&scene_text::full_lines(state, view, opts).join("\n"))
+    );
+    Ok(after_svg_tag(dash(buf), &head))
+}
+
+/// One drawing of the picture, `room` pixels kept right of the plot for
+/// the legend (inside the plot when `None`), and where the legend went.
+fn render_once(
+    view: View,
+    state: &State,
+    opts: &FigureOptions,
+    lines: &[(String, RGBColor)],
+    room: Option<u32>,
+) -> anyhow::Result<(String, Placed)> {
+    let mut buf = String::new();
+    let placed = {
+        let root = SVGBackend::with_string(&mut buf, SIZE).into_drawing_area();
+        root.fill(&WHITE).map_err(plot_err)?;
+        let caption_h = CAPTION_H.max(2 * 8 + LINE_H * lines.len() as u32);
+        let (chart_area, caption_area) = root.split_vertically(SIZE.1 - caption_h);
+        let placed = match view {
+            View::Slopes => curves::slopes(&chart_area, state, opts, room)?,
+            View::Indices => curves::indices(&chart_area, state, opts, room)?,
+            View::Map => map::draw(&chart_area, state, opts).map(|()| Placed::Inside)?,
+            View::Load => curves::load(&chart_area, state, opts, room)?,
+            View::Spectrum => spectrum::draw(&chart_area, state, room)?,
+            View::Contact => anyhow::bail!(
+                "the contact view's picture is drawn by crate::contact (export --view \
+                 contact --format svg, contact-map)"
+            ),
+        };
+        caption(&caption_area, lines)?;
+        root.present().map_err(plot_err)?;
+        placed
+    };
+    Ok((buf, placed))
+}
+
+/// `text` with XML's special characters escaped, for element content.
+fn xml_text(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
+/// `svg` with `head` inserted right after the opening `<svg …>` tag. It
+/// holds the title, the description and a style: adjacent filled
+/// rectangles (the map's cells) would show hairline seams where viewers
+/// anti-alias their shared edges, so rectangles are drawn with crisp
+/// edges, curves and text stay smooth.
+fn after_svg_tag(mut svg: String, head: &str) -> String {
     if let Some(end) = svg
         .find("<svg")
         .and_then(|at| svg[at..].find('>').map(|e| at + e + 1))
     {
-        svg.insert_str(end, "\n<style>rect{shape-rendering:crispEdges}</style>");
+        svg.insert_str(end, head);
     }
     svg
 }
@@ -109,7 +160,9 @@ impl Scale {
     }
 
     /// A label for drawn coordinate `u`: decades on log axes (other ticks
-    /// unlabelled), short numbers on linear ones.
+    /// unlabelled), short numbers on linear ones. One style per axis: plain
+    /// (0.01 … 1000) when every decade on it is, else powers of ten
+    /// (10⁻⁴ … 10⁴) for all of them.
     fn label(&self, u: f64) -> String {
         if !self.log {
             return short_number(u);
@@ -117,7 +170,13 @@ impl Scale {
         if (u - u.round()).abs() > 1e-9 {
             return String::new();
         }
-        short_number(format!("1e{}", u.round()).parse().unwrap_or(f64::NAN))
+        let k = u.round() as i32;
+        let (a, b) = (self.lo.log10().floor(), self.hi.log10().ceil());
+        if a >= -2.0 && b <= 3.0 {
+            short_number(10f64.powi(k))
+        } else {
+            power_of_ten(k)
+        }
     }
 
     /// The whole decades around `[lo, hi]` (log) or the range itself.
@@ -141,6 +200,18 @@ impl Scale {
     }
 }
 
+/// "10⁻⁴", "10⁰", "10¹²": a power of ten with a superscript exponent.
+pub(crate) fn power_of_ten(k: i32) -> String {
+    const SUP: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+    let digits: String = k
+        .unsigned_abs()
+        .to_string()
+        .bytes()
+        .map(|d| SUP[usize::from(d - b'0')])
+        .collect();
+    format!("10{}{digits}", if k < 0 { "⁻" } else { "" })
+}
+
 /// The description of a parameter axis: "ζ", "h_rms (m)".
 pub(crate) fn axis_desc(axis: Axis) -> String {
     match axis_unit(axis) {
@@ -149,16 +220,48 @@ pub(crate) fn axis_desc(axis: Axis) -> String {
     }
 }
 
-/// A chart on `area` with the given scales, mesh drawn, and a title.
+/// A chart on `area` with the given scales, mesh drawn, and a title;
+/// `room` pixels kept right of the plot for a legend outside it.
 fn chart<'a, 'b>(
     area: &'a Area<'b>,
     title: &str,
-    x: &Scale,
-    y: &Scale,
+    xy: (&Scale, &Scale),
+    room: Option<u32>,
 ) -> anyhow::Result<Chart<'a, 'b>> {
-    let mut c = ChartBuilder::on(area)
-        .caption(title, ("sans-serif", 20))
+    chart_with_top(area, title, xy, room, 0)
+}
+
+/// [`chart`] with `top` pixels between the title and the plot (for a
+/// second axis above it).
+fn chart_with_top<'a, 'b>(
+    area: &'a Area<'b>,
+    title: &str,
+    (x, y): (&Scale, &Scale),
+    room: Option<u32>,
+    top: u32,
+) -> anyhow::Result<Chart<'a, 'b>> {
+    let max = ((f64::from(area.dim_in_pixel().0) - 30.0) / TITLE_CHAR_W) as usize;
+    let title = fit_title(title, max);
+    let mut builder = ChartBuilder::on(area);
+    if top == 0 {
+        builder.caption(&title, ("sans-serif", 20));
+    } else {
+        // Room above the plot for a second axis: the title drawn here,
+        // above that room (plotters would label the q axis there too).
+        let w = area.dim_in_pixel().0 as i32;
+        let style = ("sans-serif", 20).into_font().into_text_style(area).pos(
+            plotters::style::text_anchor::Pos::new(
+                plotters::style::text_anchor::HPos::Center,
+                plotters::style::text_anchor::VPos::Top,
+            ),
+        );
+        area.draw(&Text::new(title.clone(), (w / 2, 15), style))
+            .map_err(plot_err)?;
+    }
+    let mut c = builder
         .margin(15)
+        .margin_top(if top == 0 { 15 } else { 15 + 30 + top })
+        .margin_right(15 + room.unwrap_or(0))
         .x_label_area_size(50)
         .y_label_area_size(70)
         .build_cartesian_2d(x.range(), y.range())
@@ -197,10 +300,11 @@ enum Stroke {
     Dashed,
 }
 
-/// Draws `ys` against `xs` as a labelled line, broken where a point is
-/// undefined or off the chart.
+/// Draws `ys` against `xs` as a line listed in the legend as `label`,
+/// broken where a point is undefined or off the chart.
 fn line(
     c: &mut Chart,
+    lg: &mut Legend,
     (x, y): (&Scale, &Scale),
     (xs, ys): (&[f64], &[f64]),
     colour: RGBColor,
@@ -217,60 +321,75 @@ fn line(
             segs.push(vec![]);
         }
     }
-    let segs = segs.into_iter().filter(|s| s.len() > 1);
-    let style = colour.stroke_width(2);
-    let anno = if stroke == Stroke::Dashed {
-        c.draw_series(segs.map(move |s| DashedPathElement::new(s, 9, 6, style)))
-    } else {
-        c.draw_series(segs.map(move |s| PathElement::new(s, style)))
+    let segs: Vec<_> = segs.into_iter().filter(|s| s.len() > 1).collect();
+    if segs.is_empty() {
+        // Nothing of it is on the chart: not listed either.
+        return Ok(());
     }
-    .map_err(plot_err)?;
-    anno.label(label).legend(move |(px, py)| {
-        DashedPathElement::new(
-            vec![(px, py), (px + 20, py)],
-            if stroke == Stroke::Dashed { 5 } else { 20 },
-            if stroke == Stroke::Dashed { 3 } else { 0 },
-            style,
-        )
-    });
+    let style = colour.stroke_width(2);
+    lg.paths.extend(segs.iter().cloned());
+    // A dashed curve is one path the viewer dashes (`stroke-dasharray`,
+    // added by colour in `render_svg`): smooth dashes, not pixel-rounded
+    // pieces.
+    debug_assert!(stroke == Stroke::Solid || DASHED.contains(&colour));
+    c.draw_series(segs.into_iter().map(move |s| PathElement::new(s, style)))
+        .map_err(plot_err)?;
+    let sample = match stroke {
+        Stroke::Dashed => Sample::Dashed,
+        Stroke::Solid => Sample::Solid(2),
+    };
+    lg.add(label, colour, sample);
     Ok(())
 }
 
-/// A thin unlabelled guide line between two data points.
-fn guide(c: &mut Chart, a: (f64, f64), b: (f64, f64), colour: RGBColor) -> anyhow::Result<()> {
+/// A thin guide line between two data points, listed in the legend as
+/// `label` when it has one.
+fn guide(
+    c: &mut Chart,
+    lg: &mut Legend,
+    a: (f64, f64),
+    b: (f64, f64),
+    colour: RGBColor,
+    label: Option<&str>,
+) -> anyhow::Result<()> {
     c.draw_series(std::iter::once(PathElement::new(vec![a, b], colour)))
         .map_err(plot_err)?;
+    lg.paths.push(vec![a, b]);
+    if let Some(l) = label {
+        lg.add(l, colour, Sample::Solid(1));
+    }
     Ok(())
 }
 
-fn legend<'a, 'b: 'a>(c: &mut Chart<'a, 'b>) -> anyhow::Result<()> {
-    legend_at(c, SeriesLabelPosition::UpperLeft)
-}
-
-fn legend_at<'a, 'b: 'a>(c: &mut Chart<'a, 'b>, at: SeriesLabelPosition) -> anyhow::Result<()> {
-    c.configure_series_labels()
-        .position(at)
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 14))
-        .draw()
-        .map_err(plot_err)
-}
-
-/// "fig2 · closed form, asymptotic moments, size effect off"; a measured
-/// surface's moments are "measured".
+/// "fig2 — initial slopes": the scene's name and what the view shows (the
+/// settings are on the scene line under the chart).
 fn title(state: &State, what: &str) -> String {
-    let moments = if state.is_measured() {
-        "measured"
-    } else {
-        state.moments.label()
+    format!("{} — {what}", state.name)
+}
+
+/// Pixels per character of the title: plotters writes its 20-point font as
+/// 16.13 px, and digits, the widest common glyphs of a sans-serif, are
+/// 0.64 em (10.3 px): a bound for names, not an average.
+pub(crate) const TITLE_CHAR_W: f64 = 10.5;
+
+/// `title` cut to `max` characters so that it is never clipped: the
+/// scene's name (before " — ") gives way first, ending in "…", then what
+/// the view shows.
+pub(crate) fn fit_title(title: &str, max: usize) -> String {
+    let n = title.chars().count();
+    if n <= max {
+        return title.to_string();
+    }
+    let cut = |s: &str, keep: usize| -> String {
+        s.chars().take(keep).chain(std::iter::once('…')).collect()
     };
-    format!(
-        "{} — {what} ({}, {moments} moments, size effect {})",
-        state.name,
-        state.model.label(),
-        if state.size_effect { "on" } else { "off" }
-    )
+    match title.split_once(" — ") {
+        Some((name, what)) if what.chars().count() + 5 <= max => {
+            let keep = max - what.chars().count() - 4;
+            format!("{} — {what}", cut(name, keep))
+        }
+        _ => cut(title, max.saturating_sub(1)),
+    }
 }
 
 /// Finite positive values' (min, max); (1, 10) when there are none.
@@ -306,154 +425,28 @@ fn x_scale(state: &State) -> Scale {
     }
 }
 
-/// A vertical guide at the current value of the swept parameter.
-fn marker(c: &mut Chart, state: &State, x: &Scale, y: &Scale) -> anyhow::Result<()> {
-    let v = state.params.get(state.sweep.axis());
-    if x.contains(v) {
-        let r = y.range();
-        guide(c, (x.to(v), r.start), (x.to(v), r.end), GREY)?;
-    }
-    Ok(())
-}
+/// The scene's colour under the chart: dark grey, so that the caption and
+/// the claims stand out.
+const SCENE: RGBColor = RGBColor(70, 70, 70);
 
-fn slopes(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::Result<()> {
-    let s = Scene::compute(&state.scene_spec(Curves::ALL, opts.points))?;
-    let x = x_scale(state);
-    let (_, hi) = positive_span(s.elastic.iter().chain(&s.total).chain(&s.persson_elastic));
-    let (lo, _) = positive_span(
-        s.plastic
-            .iter()
-            .chain(&s.elastic)
-            .filter(|v| **v >= hi * 1e-4),
-    );
-    let y = Scale::around(true, lo, hi, "initial slope H·dA/(A0·dp̄)".into());
-    let mut c = chart(area, &title(state, "initial slopes"), &x, &y)?;
-    marker(&mut c, state, &x, &y)?;
-    let xy = (&x, &y);
-    let solid = Stroke::Solid;
-    // Every listed curve can be found: say where one lies under another
-    // or below the chart.
-    let el = if coincide(&s.elastic, &s.total) {
-        "elastic (= total here)"
-    } else {
-        "elastic"
-    };
-    let pl = if s.plastic.iter().any(|&v| y.contains(v)) {
-        "plastic"
-    } else {
-        "plastic (below the chart here)"
-    };
-    line(&mut c, xy, (&s.x, &s.elastic), ELASTIC, solid, el)?;
-    line(&mut c, xy, (&s.x, &s.plastic), PLASTIC, solid, pl)?;
-    line(&mut c, xy, (&s.x, &s.total), TOTAL, solid, "total")?;
-    let persson = (&s.x[..], &s.persson_elastic[..]);
-    let dashed = Stroke::Dashed;
-    line(
-        &mut c,
-        xy,
-        persson,
-        PERSSON,
-        dashed,
-        "Persson elastic √(2/π)/ψ",
-    )?;
-    legend(&mut c)
-}
-
-fn indices(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::Result<()> {
-    let s = IndexSeries::compute(state, opts.points)?;
-    let asy: Vec<f64> = s
-        .psi_star_asymptotic
+/// What goes under the chart, each line with its colour: the scene's
+/// parameters, the view's caption and, on the views along the sweep
+/// (slopes, indices, map), the claims (as on the explorer's caption row,
+/// in full).
+fn caption_lines(view: View, state: &State, opts: &FigureOptions) -> Vec<(String, RGBColor)> {
+    let mut lines: Vec<_> = scene_text::short_lines(state, view, opts)
         .iter()
-        .map(|v| v.unwrap_or(f64::NAN))
+        .flat_map(|l| wrap(l, CAPTION_W))
+        .map(|l| (l, SCENE))
         .collect();
-    let x = x_scale(state);
-    let (lo, hi) = positive_span(s.psi_gw.iter().chain(&s.psi_p).chain(&s.psi_star));
-    let y = Scale::around(true, lo.min(0.5).max(hi * 1e-8), hi.max(2.0), "Ψ".into());
-    let mut c = chart(area, &title(state, "plasticity indices"), &x, &y)?;
-    marker(&mut c, state, &x, &y)?;
-    let r = x.range();
-    guide(&mut c, (r.start, 0.0), (r.end, 0.0), GREY)?;
-    let xy = (&x, &y);
-    let solid = Stroke::Solid;
-    line(
-        &mut c,
-        xy,
-        (&s.x, &s.psi_gw),
-        PSI_GW,
-        solid,
-        "Ψ_GW (Greenwood–Williamson)",
-    )?;
-    line(
-        &mut c,
-        xy,
-        (&s.x, &s.psi_p),
-        PLASTIC,
-        solid,
-        "Ψ_P (Persson, H0)",
-    )?;
-    line(
-        &mut c,
-        xy,
-        (&s.x, &s.psi_star),
-        TOTAL,
-        solid,
-        "Ψ* (size-dependent H_y)",
-    )?;
-    // Eq. 13 is a power law's: no line on a measured surface.
-    if !state.is_measured() {
-        let dashed = Stroke::Dashed;
-        line(&mut c, xy, (&s.x, &asy), PSI_ASY, dashed, "Ψ*asy (eq. 13)")?;
+    let text = view_caption(view, state);
+    lines.extend(wrap(&text, CAPTION_W).into_iter().map(|l| (l, BLACK)));
+    if !matches!(view, View::Slopes | View::Indices | View::Map) {
+        return lines;
     }
-    legend(&mut c)
-}
-
-fn load(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::Result<()> {
-    let l = LoadCurve::compute(state, opts.points)?;
-    let h = if state.size_effect { "H_y" } else { "H0" };
-    let x = Scale {
-        log: false,
-        lo: 0.0,
-        hi: 1.0,
-        desc: format!("load p̄/H (H = {h})"),
-    };
-    let y = Scale {
-        log: false,
-        lo: 0.0,
-        hi: 1.0,
-        desc: "contact area A/A0".into(),
-    };
-    let what = format!("areas against load at ψ = {}", short_number(l.psi));
-    let mut c = chart(area, &title(state, &what), &x, &y)?;
-    let (tx, ty) = l.tangent_end();
-    let tangent = TOTAL.mix(0.5).stroke_width(1);
-    c.draw_series(std::iter::once(PathElement::new(
-        vec![(0.0, 0.0), (tx, ty)],
-        tangent,
-    )))
-    .map_err(plot_err)?
-    .label(format!(
-        "initial slope S_tot = {} (from the origin)",
-        short_number(l.slopes.total)
-    ))
-    .legend(move |(px, py)| PathElement::new(vec![(px, py), (px + 20, py)], tangent));
-    let xy = (&x, &y);
-    let solid = Stroke::Solid;
-    line(&mut c, xy, (&l.load, &l.elastic), ELASTIC, solid, "elastic")?;
-    line(&mut c, xy, (&l.load, &l.plastic), PLASTIC, solid, "plastic")?;
-    line(&mut c, xy, (&l.load, &l.total), TOTAL, solid, "total")?;
-    legend(&mut c)
-}
-
-/// The state's caption (or its name) wrapped for under the chart, then
-/// the claims (as on the explorer's caption row, in full), each line with
-/// its colour.
-fn caption_lines(state: &State) -> Vec<(String, RGBColor)> {
-    let text = state.caption.as_deref().unwrap_or(state.name.as_str());
-    let claims = crate::figure::claims(state).into_iter().map(|c| c.text());
-    let mut lines: Vec<_> = wrap(text, CAPTION_W)
+    let claims = crate::figure::shown_claims(state)
         .into_iter()
-        .map(|l| (l, BLACK))
-        .collect();
+        .map(|c| c.text());
     // Claims are packed whole, never broken inside one.
     let mut row = String::new();
     for c in claims {
@@ -470,6 +463,44 @@ fn caption_lines(state: &State) -> Vec<(String, RGBColor)> {
         lines.push((row, CLAIMS));
     }
     lines
+}
+
+/// The view's own caption: a scene's caption describes its slopes (the
+/// paper's figures are slope plots), so the slopes view carries it; every
+/// other view says what it shows.
+pub(crate) fn view_caption(view: View, state: &State) -> String {
+    let swept = state.sweep.axis().symbol();
+    let psi = if state.size_effect {
+        "Ψ* (with the size-dependent hardness H_y)"
+    } else {
+        "Ψ_P (with the bulk hardness H0)"
+    };
+    match view {
+        View::Slopes => state.caption.clone().unwrap_or_else(|| {
+            format!(
+                "Initial slopes of the elastic, plastic and total contact area against {swept}, \
+                 with Persson's elastic line; the grey line is the marker."
+            )
+        }),
+        View::Indices => format!(
+            "Plasticity indices against {swept}: Greenwood–Williamson's, Persson's with the \
+             bulk hardness and Ψ* with the size-dependent hardness. The contact turns plastic \
+             where the index in use, {psi}, passes 1."
+        ),
+        View::Map => format!(
+            "Regime map: the plastic share S_pl/S_tot of the initial slope, computed with \
+             {psi}; the white line is where that index is 1."
+        ),
+        View::Load => "Contact areas against the load at the parameters above, with the \
+                       initial slope drawn from the origin."
+            .to_string(),
+        View::Spectrum => "The surface's power spectrum, the power law fitted over the band \
+                           q0…q1 and the cutoff q1 = ζ q0."
+            .to_string(),
+        View::Contact => "The boundary-element simulation of the scene's surface beside the \
+                          theory's areas."
+            .to_string(),
+    }
 }
 
 /// `lines` under the chart.
@@ -516,9 +547,31 @@ mod tests {
         };
         let fig3 = svg("fig3");
         assert!(fig3.contains("elastic (= total here)"));
-        assert!(fig3.contains("plastic (below the chart here)"));
+        // Below the chart, so not drawn: not listed either.
+        assert!(!fig3.contains(">\nplastic"));
         let fig2 = svg("fig2");
         assert!(!fig2.contains("= total here") && !fig2.contains("below the chart"));
+    }
+
+    #[test]
+    fn one_tick_style_per_axis() {
+        use super::{power_of_ten, Scale};
+        assert_eq!(power_of_ten(-4), "10⁻⁴");
+        assert_eq!(power_of_ten(0), "10⁰");
+        assert_eq!(power_of_ten(12), "10¹²");
+        let s = |lo: f64, hi: f64| Scale {
+            log: true,
+            lo,
+            hi,
+            desc: String::new(),
+        };
+        let plain = s(0.01, 1000.0);
+        let labels: Vec<String> = (-2..=3).map(|k| plain.label(f64::from(k))).collect();
+        assert_eq!(labels, ["0.01", "0.1", "1", "10", "100", "1000"]);
+        let wide = s(1e-4, 10.0);
+        let labels: Vec<String> = (-4..=1).map(|k| wide.label(f64::from(k))).collect();
+        assert_eq!(labels, ["10⁻⁴", "10⁻³", "10⁻²", "10⁻¹", "10⁰", "10¹"]);
+        assert_eq!(wide.label(0.5), "");
     }
 
     #[test]

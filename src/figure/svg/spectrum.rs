@@ -3,27 +3,86 @@
 
 use plotters::prelude::*;
 
-use super::{chart, guide, line, plot_err, title, Area, Scale, Stroke};
+use super::legend::{Legend, Placed};
+use super::{chart_with_top, guide, line, plot_err, title, Area, Chart, Scale, Stroke};
+use crate::figure::scene_text::short_length;
 use crate::figure::{short_number, SpectrumSeries};
 use crate::snapshot::State;
 
 const DATA: RGBColor = RGBColor(0, 0, 0);
-const FIT: RGBColor = RGBColor(230, 120, 0);
+/// The fit is dashed: the colour of the dashed curves (`super::DASHED`).
+const FIT: RGBColor = super::PSI_ASY;
 const CUTOFF: RGBColor = RGBColor(0, 0, 255);
 
-pub(super) fn draw(area: &Area, state: &State) -> anyhow::Result<()> {
+/// Ticks and labels of λ = 2π/q above the plot, at whole decades of λ
+/// (and its halves, 2 and 5, where fewer than three decades show).
+fn wavelength_axis(area: &Area, c: &Chart, x: &Scale) -> anyhow::Result<()> {
+    let (lmin, lmax) = (std::f64::consts::TAU / x.hi, std::f64::consts::TAU / x.lo);
+    let (a, b) = (lmin.log10().floor() as i32, lmax.log10().ceil() as i32);
+    let steps: &[f64] = if b - a < 3 { &[1.0, 2.0, 5.0] } else { &[1.0] };
+    let (xr, yr) = c.plotting_area().get_pixel_range();
+    let (ox, oy) = area.get_base_pixel();
+    let top = yr.start - oy;
+    let font = ("sans-serif", 13).into_font();
+    for k in a..=b {
+        for m in steps {
+            let l = m * 10f64.powi(k);
+            if l < lmin || l > lmax {
+                continue;
+            }
+            let q = std::f64::consts::TAU / l;
+            let (px, _) = c.backend_coord(&(x.to(q), 0.0));
+            if px < xr.start || px > xr.end {
+                continue;
+            }
+            let px = px - ox;
+            area.draw(&PathElement::new(vec![(px, top), (px, top - 5)], BLACK))
+                .map_err(plot_err)?;
+            let label = short_length(l);
+            let w = (label.chars().count() as f64 * 6.5) as i32;
+            area.draw(&Text::new(label, (px - w / 2, top - 20), font.clone()))
+                .map_err(plot_err)?;
+        }
+    }
+    area.draw(&Text::new(
+        "wavelength λ = 2π/q",
+        (xr.end - ox - 130, top - 36),
+        ("sans-serif", 13).into_font(),
+    ))
+    .map_err(plot_err)?;
+    Ok(())
+}
+
+pub(super) fn draw(area: &Area, state: &State, room: Option<u32>) -> anyhow::Result<Placed> {
     let s = SpectrumSeries::of(state)?;
     let (qlo, qhi) = super::positive_span(s.q.iter());
     let (plo, phi) = super::positive_span(s.psd.iter());
-    let x = Scale::around(true, qlo, qhi, "wavevector q (1/m)".into());
+    // The q axis ends where the data do; the wavelength λ = 2π/q above it.
+    let x = Scale {
+        log: true,
+        lo: qlo,
+        // q1 at the data's end (the largest ζ) is still on the axis.
+        hi: qhi.max(qlo * 1.01).max(s.q1.min(qhi * 1.01)),
+        desc: "wavevector q (1/m)".into(),
+    };
     let y = Scale::around(true, plo, phi, s.psd_label().into());
-    let mut c = chart(area, &title(state, "spectrum"), &x, &y)?;
+    let mut c = chart_with_top(area, &title(state, "spectrum"), (&x, &y), room, 30)?;
+    wavelength_axis(area, &c, &x)?;
+    let mut lg = Legend::default();
     let xy = (&x, &y);
     let data_label = match s.dim {
         rough_model::Dim::Areal => "data C^iso(q)",
         rough_model::Dim::Profile => "data C1D(q)",
     };
-    line(&mut c, xy, (&s.q, &s.psd), DATA, Stroke::Solid, data_label)?;
+    line(
+        &mut c,
+        &mut lg,
+        xy,
+        (&s.q, &s.psd),
+        DATA,
+        Stroke::Solid,
+        data_label,
+    )?;
     c.draw_series(
         s.q.iter()
             .zip(&s.psd)
@@ -51,22 +110,24 @@ pub(super) fn draw(area: &Area, state: &State) -> anyhow::Result<()> {
             short_number(f.hurst),
             f.points
         );
-        line(&mut c, xy, (&qs, &ys), FIT, Stroke::Dashed, &label)?;
+        line(&mut c, &mut lg, xy, (&qs, &ys), FIT, Stroke::Dashed, &label)?;
     }
     let r = y.range();
     if x.contains(s.q1) {
         let q1 = x.to(s.q1);
-        guide(&mut c, (q1, r.start), (q1, r.end), CUTOFF)?;
-        // A labelled sample for the legend: the guide itself has none.
-        c.draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
-            .map_err(plot_err)?
-            .label(format!(
-                "cutoff q1 = ζ q0 = {} /m (ζ = {})",
-                short_number(s.q1),
-                short_number(s.q1 / s.q0)
-            ))
-            .legend(|(px, py)| PathElement::new(vec![(px, py), (px + 20, py)], CUTOFF));
+        let label = format!(
+            "cutoff q1 = ζ q0 = {} /m (ζ = {})",
+            short_number(s.q1),
+            short_number(s.q1 / s.q0)
+        );
+        guide(
+            &mut c,
+            &mut lg,
+            (q1, r.start),
+            (q1, r.end),
+            CUTOFF,
+            Some(&label),
+        )?;
     }
-    // The data fall from the upper left: the legend goes right.
-    super::legend_at(&mut c, SeriesLabelPosition::UpperRight)
+    lg.draw(area, &c, room.is_some())
 }

@@ -186,17 +186,37 @@ pub fn axes(
             buf.set_stringn(area.x, row, label, Y_LABEL_W as usize, Style::new());
         }
     }
+    // Every tick drawn is labelled: the first stride (every tick, every
+    // second, …) at which all labels fit side by side.
+    let placed: Vec<(u16, u16, Cow<str>)> = x
+        .ticks
+        .iter()
+        .filter_map(|(v, label)| {
+            let col = col_of(g, dots, x.bounds, *v)?;
+            let label = glyphs.text(label);
+            let w = label.chars().count() as u16;
+            Some((col, col.saturating_sub(w / 2).max(area.x), label))
+        })
+        .collect();
+    let fits = |stride: usize| {
+        let mut free_from = area.x;
+        placed.iter().step_by(stride).all(|(_, start, label)| {
+            let w = label.chars().count() as u16;
+            let ok = *start >= free_from && start + w <= area.right();
+            free_from = start + w + 1;
+            ok
+        })
+    };
+    let stride = [1, 2, 3, 4, 5, 10]
+        .into_iter()
+        .find(|&s| fits(s))
+        .unwrap_or(placed.len().max(1));
     let mut free_from = area.x;
-    for (v, label) in &x.ticks {
-        let Some(col) = col_of(g, dots, x.bounds, *v) else {
-            continue;
-        };
-        let label = glyphs.text(label);
-        buf[(col, ay)].set_symbol(f.x_tick);
+    for (col, start, label) in placed.iter().step_by(stride) {
         let w = label.chars().count() as u16;
-        let start = col.saturating_sub(w / 2).max(area.x);
-        if start >= free_from && start + w <= area.right() {
-            buf.set_stringn(start, ay + 1, &label, w as usize, Style::new());
+        if *start >= free_from && start + w <= area.right() {
+            buf[(*col, ay)].set_symbol(f.x_tick);
+            buf.set_stringn(*start, ay + 1, label, w as usize, Style::new());
             free_from = start + w + 1;
         }
     }

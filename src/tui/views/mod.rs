@@ -207,7 +207,7 @@ fn render_caption(app: &App, area: Rect, buf: &mut Buffer) {
         return;
     }
     let claims = claims_line(&app.claims, usize::from(area.width), g);
-    lines.push(Line::styled(claims, t.ok));
+    lines.push(Line::styled(claims, t.claims));
     Paragraph::new(lines).render(area, buf);
 }
 

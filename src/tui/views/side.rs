@@ -197,7 +197,7 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
     slopes1.extend(curve(&t.plastic, "S_pl", sl.plastic));
     let mut slopes2 = curve(&t.total, "S_tot", sl.total);
     slopes2.extend(curve(&t.persson, "S_P", r.persson));
-    let lines = vec![
+    let mut lines = vec![
         Line::styled("Readout", t.title),
         Line::raw(pair("Ψ_GW", psi(ix.psi_gw), "Ψ_P", psi(ix.psi_p))),
         Line::raw(pair(
@@ -244,5 +244,20 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
             fmt_rel(o.total, sl.total)
         ))),
     ];
+    // Where there is room: the longest wavelength (the power law's q0,
+    // set with q0=… or l=… at the value prompt; a surface's own).
+    if usize::from(area.height) > lines.len() {
+        let q0 = s.params.q0();
+        let l = std::f64::consts::TAU / q0;
+        lines.insert(
+            7,
+            Line::raw(pair(
+                "q0",
+                tx(&format!("{}/m", short_number(q0))),
+                "L",
+                len(l),
+            )),
+        );
+    }
     Paragraph::new(lines).render(area, buf);
 }

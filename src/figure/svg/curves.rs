@@ -1,0 +1,238 @@
+//! The slopes, indices and load pictures: curves on log or linear axes
+//! with the marker, the guides and the legend.
+
+use plotters::prelude::*;
+use rough_model::{Curves, Scene};
+
+use super::legend::{Legend, Placed, Sample};
+use super::{
+    chart, coincide, guide, line, plot_err, positive_span, title, x_scale, Area, Chart, Scale,
+    Stroke, ELASTIC, GREY, PERSSON, PLASTIC, PSI_ASY, PSI_GW, TOTAL,
+};
+use crate::figure::{short_number, FigureOptions, IndexSeries, LoadCurve};
+use crate::snapshot::State;
+
+/// A vertical guide at the current value of the swept parameter, named
+/// in the legend ("ζ = 128, the marker") when it is on the chart.
+fn marker(
+    c: &mut Chart,
+    lg: &mut Legend,
+    state: &State,
+    (x, y): (&Scale, &Scale),
+) -> anyhow::Result<()> {
+    let axis = state.sweep.axis();
+    let v = state.params.get(axis);
+    if x.contains(v) {
+        let r = y.range();
+        let label = format!(
+            "{} = {}, the marker",
+            axis.symbol(),
+            crate::figure::scene_text::short_value(axis, v)
+        );
+        guide(
+            c,
+            lg,
+            (x.to(v), r.start),
+            (x.to(v), r.end),
+            GREY,
+            Some(&label),
+        )?;
+    }
+    Ok(())
+}
+
+pub(super) fn slopes(
+    area: &Area,
+    state: &State,
+    opts: &FigureOptions,
+    room: Option<u32>,
+) -> anyhow::Result<Placed> {
+    let s = Scene::compute(&state.scene_spec(Curves::ALL, opts.points))?;
+    let x = x_scale(state);
+    let (_, hi) = positive_span(s.elastic.iter().chain(&s.total).chain(&s.persson_elastic));
+    let (lo, _) = positive_span(
+        s.plastic
+            .iter()
+            .chain(&s.elastic)
+            .filter(|v| **v >= hi * 1e-4),
+    );
+    // The hardness by its own name (H alone is the Hurst exponent).
+    let norm = if state.size_effect { "H_y" } else { "H0" };
+    let y = Scale::around(true, lo, hi, format!("initial slope {norm}·dA/(A0·dp̄)"));
+    let mut c = chart(area, &title(state, "initial slopes"), (&x, &y), room)?;
+    let mut lg = Legend::default();
+    marker(&mut c, &mut lg, state, (&x, &y))?;
+    let xy = (&x, &y);
+    let solid = Stroke::Solid;
+    // Every listed curve can be found: say where one lies under another
+    // or below the chart.
+    let el = if coincide(&s.elastic, &s.total) {
+        "elastic (= total here)"
+    } else {
+        "elastic"
+    };
+    let pl = if s.plastic.iter().any(|&v| y.contains(v)) {
+        "plastic"
+    } else {
+        "plastic (below the chart here)"
+    };
+    line(&mut c, &mut lg, xy, (&s.x, &s.elastic), ELASTIC, solid, el)?;
+    line(&mut c, &mut lg, xy, (&s.x, &s.plastic), PLASTIC, solid, pl)?;
+    line(&mut c, &mut lg, xy, (&s.x, &s.total), TOTAL, solid, "total")?;
+    let persson = (&s.x[..], &s.persson_elastic[..]);
+    let dashed = Stroke::Dashed;
+    line(
+        &mut c,
+        &mut lg,
+        xy,
+        persson,
+        PERSSON,
+        dashed,
+        "Persson elastic √(2/π)/ψ",
+    )?;
+    lg.draw(area, &c, room.is_some())
+}
+
+pub(super) fn indices(
+    area: &Area,
+    state: &State,
+    opts: &FigureOptions,
+    room: Option<u32>,
+) -> anyhow::Result<Placed> {
+    let s = IndexSeries::compute(state, opts.points)?;
+    let asy: Vec<f64> = s
+        .psi_star_asymptotic
+        .iter()
+        .map(|v| v.unwrap_or(f64::NAN))
+        .collect();
+    let x = x_scale(state);
+    let (lo, hi) = positive_span(s.psi_gw.iter().chain(&s.psi_p).chain(&s.psi_star));
+    let y = Scale::around(true, lo.min(0.5).max(hi * 1e-8), hi.max(2.0), "Ψ".into());
+    let mut c = chart(area, &title(state, "plasticity indices"), (&x, &y), room)?;
+    let mut lg = Legend::default();
+    marker(&mut c, &mut lg, state, (&x, &y))?;
+    let r = x.range();
+    guide(
+        &mut c,
+        &mut lg,
+        (r.start, 0.0),
+        (r.end, 0.0),
+        GREY,
+        Some("Ψ = 1: plastic above"),
+    )?;
+    let xy = (&x, &y);
+    let solid = Stroke::Solid;
+    line(
+        &mut c,
+        &mut lg,
+        xy,
+        (&s.x, &s.psi_gw),
+        PSI_GW,
+        solid,
+        "Ψ_GW (Greenwood–Williamson)",
+    )?;
+    line(
+        &mut c,
+        &mut lg,
+        xy,
+        (&s.x, &s.psi_p),
+        PLASTIC,
+        solid,
+        "Ψ_P (Persson, H0)",
+    )?;
+    line(
+        &mut c,
+        &mut lg,
+        xy,
+        (&s.x, &s.psi_star),
+        TOTAL,
+        solid,
+        "Ψ* (size-dependent H_y)",
+    )?;
+    // Eq. 13 is a power law's: no line on a measured surface.
+    if !state.is_measured() {
+        let dashed = Stroke::Dashed;
+        line(
+            &mut c,
+            &mut lg,
+            xy,
+            (&s.x, &asy),
+            PSI_ASY,
+            dashed,
+            "Ψ*asy (eq. 13)",
+        )?;
+    }
+    lg.draw(area, &c, room.is_some())
+}
+
+pub(super) fn load(
+    area: &Area,
+    state: &State,
+    opts: &FigureOptions,
+    room: Option<u32>,
+) -> anyhow::Result<Placed> {
+    let l = LoadCurve::compute(state, opts.points)?;
+    // The hardness by its own name (H alone is the Hurst exponent).
+    let h = if state.size_effect { "H_y" } else { "H0" };
+    let x = Scale {
+        log: false,
+        lo: 0.0,
+        hi: 1.0,
+        desc: format!("load p̄/{h}"),
+    };
+    let y = Scale {
+        log: false,
+        lo: 0.0,
+        hi: 1.0,
+        desc: "contact area A/A0".into(),
+    };
+    let what = format!("areas against load at ψ = {}", short_number(l.psi));
+    let mut c = chart(area, &title(state, &what), (&x, &y), room)?;
+    let mut lg = Legend::default();
+    let (tx, ty) = l.tangent_end();
+    let tangent = TOTAL.mix(0.5).stroke_width(1);
+    c.draw_series(std::iter::once(PathElement::new(
+        vec![(0.0, 0.0), (tx, ty)],
+        tangent,
+    )))
+    .map_err(plot_err)?;
+    lg.paths.push(vec![(0.0, 0.0), (tx, ty)]);
+    lg.add(
+        format!(
+            "initial slope S_tot = {} (from the origin)",
+            short_number(l.slopes.total)
+        ),
+        RGBColor(255, 128, 128),
+        Sample::Solid(1),
+    );
+    let xy = (&x, &y);
+    let solid = Stroke::Solid;
+    line(
+        &mut c,
+        &mut lg,
+        xy,
+        (&l.load, &l.elastic),
+        ELASTIC,
+        solid,
+        "elastic",
+    )?;
+    line(
+        &mut c,
+        &mut lg,
+        xy,
+        (&l.load, &l.plastic),
+        PLASTIC,
+        solid,
+        "plastic",
+    )?;
+    line(
+        &mut c,
+        &mut lg,
+        xy,
+        (&l.load, &l.total),
+        TOTAL,
+        solid,
+        "total",
+    )?;
+    lg.draw(area, &c, room.is_some())
+}
