@@ -91,6 +91,16 @@ pub struct Setup {
     /// as the value prompt takes them: m cm mm µm um nm pm).
     #[arg(long, value_name = "LENGTH", requires = "surface", allow_hyphen_values = true, value_parser = parse_pixel_size)]
     pub pixel_size: Option<f64>,
+    /// The unit of the surface's heights, whatever the file says: m, mm,
+    /// µm (um), nm, Å (A) or pm. Without it heights take the file's value
+    /// unit, else its lateral unit (said in a note).
+    #[arg(long, value_name = "UNIT", requires = "surface", value_parser = parse_height_unit)]
+    pub height_unit: Option<rough_surface::HeightUnit>,
+    /// The Hurst fit band of a measured surface: wavevectors in 1/m
+    /// (1e6:1e8) or wavelengths with a unit (60nm:6um) [default: the
+    /// spectrum's self-affine stretch, found from the data].
+    #[arg(long, value_name = "FROM:TO", value_parser = parse_fit_band)]
+    pub fit_band: Option<(f64, f64)>,
     /// Set a parameter, e.g. --set h0-over-e=0.001 --set r-star=0.5mm
     /// (repeatable; units as the value prompt takes them). AXIS is one of
     /// h0-over-e, h-rms, zeta, hurst, r-star.
@@ -106,6 +116,52 @@ fn parse_pixel_size(s: &str) -> Result<f64, String> {
     } else {
         Err(format!("\"{}\" is not a length > 0", s.trim()))
     }
+}
+
+/// `--height-unit`: a length unit.
+fn parse_height_unit(s: &str) -> Result<rough_surface::HeightUnit, String> {
+    rough_surface::HeightUnit::parse(s).ok_or_else(|| {
+        format!(
+            "\"{}\" is not a length unit: m, mm, µm (um), nm, Å (A) or pm",
+            s.trim()
+        )
+    })
+}
+
+/// `--fit-band FROM:TO`: two wavevectors in 1/m, or two wavelengths with
+/// a unit (q = 2π/λ), as (q_lo, q_hi).
+pub fn parse_fit_band(s: &str) -> Result<(f64, f64), String> {
+    let bad = || {
+        format!(
+            "\"{}\" is not a band: FROM:TO in 1/m (1e6:1e8) or as wavelengths (60nm:6um)",
+            s.trim()
+        )
+    };
+    let (a, b) = s.split_once(':').ok_or_else(bad)?;
+    let q = |v: &str| -> Result<(f64, bool), String> {
+        let v = v.trim();
+        if v.ends_with(|c: char| c.is_alphabetic()) {
+            let l = crate::tui::value_input::parse_value(Axis::HRms, v)?;
+            Ok((std::f64::consts::TAU / l, true))
+        } else {
+            v.parse::<f64>().map(|q| (q, false)).map_err(|_| bad())
+        }
+    };
+    let ((a, la), (b, lb)) = (q(a)?, q(b)?);
+    if la != lb {
+        return Err(format!(
+            "\"{}\": both ends in 1/m or both as wavelengths with a unit",
+            s.trim()
+        ));
+    }
+    let (lo, hi) = (a.min(b), a.max(b));
+    if !(lo > 0.0 && hi.is_finite() && hi > lo) {
+        return Err(format!(
+            "\"{}\": a band needs two different lengths > 0",
+            s.trim()
+        ));
+    }
+    Ok((lo, hi))
 }
 
 /// `--set AXIS=VALUE`: the axis known and the value a number (with a unit

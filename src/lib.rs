@@ -26,11 +26,17 @@ pub fn load_source(src: &Source, setup: &Setup) -> anyhow::Result<State> {
         let options = rough_surface::Options {
             periodic: setup.periodic,
             pixel_size: setup.pixel_size,
+            height_unit: setup.height_unit,
         };
         State::measured(surface::SurfaceSource::read(path, options)?)?
     } else {
         presets::load(src.preset.as_deref().unwrap_or("fig2"))?
     };
+    if let Some(band) = setup.fit_band {
+        state
+            .set_fit_band(Some(band))
+            .map_err(|e| anyhow::anyhow!("--fit-band: {e}"))?;
+    }
     for (axis, text) in &setup.set {
         set(&mut state, *axis, text)
             .map_err(|e| anyhow::anyhow!("--set {}={text}: {e}", figure::axis_arg(*axis)))?;

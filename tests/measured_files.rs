@@ -9,7 +9,7 @@
 
 mod common;
 
-use common::cli::{stdout, BIN};
+use common::cli::{noted, BIN};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
@@ -65,7 +65,7 @@ fn deviation(args: &[&str], rows: &[[f64; 4]], tol: f64) -> f64 {
     let n = rows.len().to_string();
     let mut a = vec!["export", "--view", "indices", "--points", &n];
     a.extend_from_slice(args);
-    let csv = stdout(&a);
+    let (csv, _) = noted(&a);
     let mut lines = csv.lines();
     assert_eq!(
         lines.next(),
@@ -150,10 +150,10 @@ fn every_view_of_a_map_and_a_download_exports() {
             ("load", "load,elastic,plastic,total"),
             ("spectrum", "q,psd,fit"),
         ] {
-            let csv = stdout(&["export", "--surface", f, "--view", view]);
+            let (csv, _) = noted(&["export", "--surface", f, "--view", view]);
             assert_eq!(csv.lines().next(), Some(header), "{f} {view}");
             assert!(csv.lines().count() > 10, "{f} {view}: {csv}");
-            let svg = stdout(&["export", "--surface", f, "--view", view, "--format", "svg"]);
+            let (svg, _) = noted(&["export", "--surface", f, "--view", view, "--format", "svg"]);
             assert!(
                 svg.contains("<svg") && svg.trim_end().ends_with("</svg>"),
                 "{f} {view}"

@@ -73,6 +73,7 @@ fn how_it_was_read_is_recorded() {
     let opts = rough_surface::Options {
         periodic: true,
         pixel_size: Some(5e-8),
+        ..Default::default()
     };
     let s = surface_state(&t, opts);
     let p = save_new(d.path(), "read", &s).unwrap();

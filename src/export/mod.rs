@@ -39,6 +39,15 @@ pub fn state_of(args: &ExportArgs) -> anyhow::Result<State> {
         // The export goes on with the file as it is now; the user is told.
         let _ = writeln!(std::io::stderr(), "roughtui: warning: {w}");
     }
+    for n in state.surface.iter().flat_map(|s| s.notes()) {
+        // "warning: …" notes say so themselves.
+        let kind = if n.starts_with("warning:") {
+            ""
+        } else {
+            "note: "
+        };
+        let _ = writeln!(std::io::stderr(), "roughtui: {kind}{n}");
+    }
     if let Some(m) = args.model {
         state.model = m.into();
     }
@@ -130,6 +139,10 @@ pub fn run(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
         out.write_all(svg.as_bytes())?;
         out.flush()?;
         return Ok(());
+    }
+    // What the reader assumed or repaired, before the header.
+    for n in state.surface.iter().flat_map(|s| s.notes()) {
+        writeln!(out, "# {n}")?;
     }
     match view {
         View::Slopes => write_csv(out, &state, opts.points),

@@ -6,16 +6,20 @@
 //! contact.engineering), so that its numbers are the reference; MODEL.md,
 //! "Measured surfaces", states them.
 
+mod band;
 mod bins;
 mod ce;
 mod columns;
+mod colunits;
 mod error;
 mod fit;
 mod header;
 mod matrix;
 mod psd;
+mod realspace;
 mod spectrum;
 mod text;
+mod units;
 
 use std::io::Read;
 use std::path::Path;
@@ -25,7 +29,9 @@ use rough_model::{Dim, MomentTable};
 use sha2::{Digest, Sha256};
 
 pub use error::{Problem, SurfaceError};
-pub use fit::PowerLawFit;
+pub use fit::{PowerLawFit, Verdict, MIN_POINTS as MIN_FIT_POINTS};
+pub use realspace::RealSpace;
+pub use units::HeightUnit;
 
 /// Files larger than this are refused before they are read (512 MiB).
 pub const MAX_BYTES: u64 = 512 << 20;
@@ -37,6 +43,8 @@ pub struct Options {
     pub periodic: bool,
     /// Sample spacing in metres, for data without a size header.
     pub pixel_size: Option<f64>,
+    /// The heights' unit, whatever the file says (`--height-unit`).
+    pub height_unit: Option<HeightUnit>,
 }
 
 /// What kind of data a file held.
@@ -92,13 +100,42 @@ pub struct Measured {
     /// point of x3p/gwy) as `f64::NAN` in the heights it hands on; the
     /// pipeline fills or refuses them and adds the note.
     pub notes: Vec<String>,
+    /// Sq and Sdq of a map, Rq and RΔq of a line scan (real space, after
+    /// the detrend, no window); `None` for PSD tables.
+    pub real: Option<RealSpace>,
+    /// The Fourier modes averaged in each point of `spectrum` (the fit's
+    /// weights); empty for PSD tables, whose points weigh the same.
+    pub modes: Vec<f64>,
+    /// The default Hurst fit band, 1/m: the spectrum's self-affine
+    /// stretch (`band`'s rules); `None` with too few points.
+    pub band: Option<(f64, f64)>,
 }
 
 impl Measured {
     /// Least-squares power law through the spectrum's points with q in
     /// [q_lo, q_hi]; `None` with fewer than two points there.
     pub fn fit(&self, q_lo: f64, q_hi: f64) -> Option<PowerLawFit> {
-        fit::fit(self.kind.dim(), &self.spectrum, q_lo, q_hi, self.table.q0())
+        fit::fit(
+            self.kind.dim(),
+            &self.spectrum,
+            &self.modes,
+            q_lo,
+            q_hi,
+            self.table.q0(),
+        )
+    }
+
+    /// The fit over the default band ([`Measured::band`]).
+    pub fn default_fit(&self) -> Option<PowerLawFit> {
+        let (lo, hi) = self.band?;
+        // The band's ends are data points: a rounding below one still takes it.
+        self.fit(lo * (1.0 - 1e-12), hi * (1.0 + 1e-12))
+    }
+
+    /// The default fit band of a spectrum, for a [`Measured`] built by hand
+    /// (a benchmark's synthetic surface).
+    pub fn find_band(dim: Dim, spectrum: &[(f64, f64)], modes: &[f64]) -> Option<(f64, f64)> {
+        band::self_affine(dim, spectrum, modes)
     }
 }
 
@@ -169,13 +206,28 @@ pub fn parse(bytes: &[u8], opts: &Options) -> Result<Measured, (Option<usize>, P
         (hash.join().expect("hash thread"), read)
     });
     let (kind, computed, summary) = read?;
+    if let (Kind::Psd { .. }, Some(u)) = (&kind, opts.height_unit) {
+        return Err((
+            None,
+            Problem::Option(format!(
+                "--height-unit {u} does not apply to a PSD table: it holds no heights"
+            )),
+        ));
+    }
+    let mut notes = computed.notes;
+    let heights = !matches!(kind, Kind::Psd { .. });
+    notes.extend(units::plausibility(&computed.table, heights));
+    let band = band::self_affine(kind.dim(), &computed.spectrum, &computed.modes);
     Ok(Measured {
         kind,
         table: Arc::new(computed.table),
         spectrum: computed.spectrum,
         sha256,
         summary,
-        notes: Vec::new(),
+        notes,
+        real: computed.real,
+        band,
+        modes: computed.modes,
     })
 }
 

@@ -31,5 +31,14 @@ pub(crate) fn table(
         points: q.len(),
     };
     let spectrum = q.into_iter().zip(c).collect();
-    Ok((kind, Computed { table, spectrum }))
+    Ok((
+        kind,
+        Computed {
+            table,
+            spectrum,
+            notes: Vec::new(),
+            real: None,
+            modes: Vec::new(),
+        },
+    ))
 }

@@ -27,11 +27,18 @@ use rustfft::{Fft, FftPlanner};
 
 use crate::bins::Bins;
 use crate::error::Problem;
+use crate::realspace::{self, RealSpace};
 
 /// What a surface's heights give the model and the screen.
 pub(crate) struct Computed {
     pub table: MomentTable,
     pub spectrum: Vec<(f64, f64)>,
+    /// What the reader assumed or repaired ([`crate::Measured::notes`]).
+    pub notes: Vec<String>,
+    /// Sq and Sdq (maps), Rq and RΔq (lines); `None` for PSD tables.
+    pub real: Option<RealSpace>,
+    /// The Fourier modes in each point of `spectrum` (empty for tables).
+    pub modes: Vec<f64>,
 }
 
 /// The residual rms below which detrended heights count as nothing left
@@ -212,6 +219,7 @@ pub(crate) fn map(
     periodic: bool,
 ) -> Result<Computed, Problem> {
     detrend(&mut h, nx, ny, periodic)?;
+    let real = realspace::areal(&h, nx, ny, lx, ly, periodic);
     let s2 = if periodic {
         1.0
     } else {
@@ -268,6 +276,9 @@ pub(crate) fn map(
     Ok(Computed {
         table,
         spectrum: bins.finish(),
+        notes: Vec::new(),
+        real: Some(real),
+        modes: bins.counts(),
     })
 }
 
@@ -275,6 +286,7 @@ pub(crate) fn map(
 pub(crate) fn line(mut h: Vec<f64>, l: f64, periodic: bool) -> Result<Computed, Problem> {
     let n = h.len();
     detrend(&mut h, n, 1, periodic)?;
+    let real = realspace::profile(&h, l, periodic);
     let s2 = if periodic { 1.0 } else { window_1d(&mut h) };
     let mut buf: Vec<Complex<f64>> = h.iter().map(|&v| Complex::new(v, 0.0)).collect();
     drop(h);
@@ -299,6 +311,9 @@ pub(crate) fn line(mut h: Vec<f64>, l: f64, periodic: bool) -> Result<Computed, 
     Ok(Computed {
         table,
         spectrum: bins.finish(),
+        notes: Vec::new(),
+        real: Some(real),
+        modes: bins.counts(),
     })
 }
 

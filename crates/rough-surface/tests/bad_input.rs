@@ -94,6 +94,7 @@ fn a_size_is_needed() {
     let opts = Options {
         periodic: false,
         pixel_size: Some(1e-6),
+        ..Options::default()
     };
     assert!(read(&f.path, &opts).is_ok());
     // … and is refused where the file gives its size.
@@ -301,6 +302,6 @@ proptest! {
         pixel in prop::option::of(prop_oneof![Just(1e-6), Just(0.0), Just(f64::NAN)]),
     ) {
         let text: String = lines.iter().map(|l| l.join(" ") + "\n").collect();
-        let _ = parse(text.as_bytes(), &Options { periodic, pixel_size: pixel });
+        let _ = parse(text.as_bytes(), &Options { periodic, pixel_size: pixel, ..Options::default() });
     }
 }

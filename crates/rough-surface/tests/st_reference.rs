@@ -41,6 +41,7 @@ fn cases() -> Vec<Case> {
             opts: Options {
                 periodic: w[3] == "1",
                 pixel_size: (pixel > 0.0).then_some(pixel),
+                ..Options::default()
             },
             kind,
             q0: 0.0,
