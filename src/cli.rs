@@ -191,8 +191,9 @@ pub struct ExportArgs {
     #[command(flatten)]
     pub setup: Setup,
     /// What to export: the slopes against the swept parameter, the
-    /// plasticity indices, the regime map, the areas against the load, or a
-    /// measured surface's spectrum (q, psd, fit).
+    /// plasticity indices, the regime map, the areas against the load, a
+    /// measured surface's spectrum (q, psd, fit), or the moments per ζ
+    /// (m0, m2, m4, h_rms, h′, h″, R_s; Sq, Sdq and the fit as comments).
     #[arg(long, value_enum, default_value_t = ViewArg::Slopes)]
     pub view: ViewArg,
     /// CSV numbers, or an SVG picture of the view.
@@ -280,18 +281,23 @@ pub enum ViewArg {
     Map,
     Load,
     Spectrum,
+    /// The moments and what they give per ζ (export only).
+    Moments,
 }
 
-impl From<ViewArg> for crate::figure::View {
-    fn from(v: ViewArg) -> Self {
+impl ViewArg {
+    /// The explorer's view of the same name (`None` for export's own
+    /// moments view).
+    pub fn figure(self) -> Option<crate::figure::View> {
         use crate::figure::View;
-        match v {
+        Some(match self {
             ViewArg::Slopes => View::Slopes,
             ViewArg::Indices => View::Indices,
             ViewArg::Map => View::Map,
             ViewArg::Load => View::Load,
             ViewArg::Spectrum => View::Spectrum,
-        }
+            ViewArg::Moments => return None,
+        })
     }
 }
 

@@ -6,6 +6,7 @@
 //! or scene are refused, so that a mistyped command never silently prints
 //! something else.
 
+mod moments;
 mod slopes;
 mod views;
 
@@ -14,6 +15,7 @@ use std::io::Write;
 use anyhow::bail;
 use rough_model::Sweep;
 
+pub use moments::{write_moments, MOMENTS_HEADER};
 pub use slopes::{write_csv, HEADER};
 pub use views::{
     write_indices, write_load, write_map, write_spectrum, INDICES_HEADER, LOAD_HEADER, MAP_HEADER,
@@ -77,8 +79,19 @@ pub fn state_of(args: &ExportArgs) -> anyhow::Result<State> {
 }
 
 /// The view's options from `args`, refusing those that do not apply.
-pub fn options_of(args: &ExportArgs) -> anyhow::Result<(View, FigureOptions)> {
-    let view = View::from(args.view);
+/// `None` for the moments view (export's own, options checked in
+/// [`moments::check`]).
+pub fn options_of(args: &ExportArgs) -> anyhow::Result<(Option<View>, FigureOptions)> {
+    let Some(view) = args.view.figure() else {
+        moments::check(args)?;
+        return Ok((
+            None,
+            FigureOptions {
+                points: args.points.unwrap_or(DEFAULT_POINTS),
+                ..FigureOptions::default()
+            },
+        ));
+    };
     let name = view.name();
     if view == View::Load && args.sweep.is_some() {
         bail!(
@@ -113,7 +126,7 @@ pub fn options_of(args: &ExportArgs) -> anyhow::Result<(View, FigureOptions)> {
         }
     }
     Ok((
-        view,
+        Some(view),
         FigureOptions {
             points: args.points.unwrap_or(DEFAULT_POINTS),
             grid: args.grid.unwrap_or(DEFAULT_GRID),
@@ -127,6 +140,9 @@ pub fn options_of(args: &ExportArgs) -> anyhow::Result<(View, FigureOptions)> {
 pub fn run(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
     let (view, opts) = options_of(args)?;
     let state = state_of(args)?;
+    let Some(view) = view else {
+        return moments::run(args.format, &state, opts.points, out);
+    };
     if args.format == FormatArg::Svg {
         if opts.points > MAX_SVG_POINTS {
             bail!(
@@ -140,7 +156,8 @@ pub fn run(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
         out.flush()?;
         return Ok(());
     }
-    // What the reader assumed or repaired, before the header.
+    // What the reader assumed or repaired, before the header (the moments
+    // view writes its own).
     for n in state.surface.iter().flat_map(|s| s.notes()) {
         writeln!(out, "# {n}")?;
     }

@@ -4,6 +4,7 @@
 //! caption under the chart, with the claims located live under it.
 
 mod map;
+mod moments;
 mod spectrum;
 
 use anyhow::anyhow;
@@ -40,6 +41,25 @@ const PSI_ASY: RGBColor = RGBColor(230, 120, 0);
 
 /// `view` of `state` as an SVG document (UTF-8 text).
 pub fn render_svg(view: View, state: &State, opts: &FigureOptions) -> anyhow::Result<String> {
+    render_with(state, |chart_area| match view {
+        View::Slopes => slopes(chart_area, state, opts),
+        View::Indices => indices(chart_area, state, opts),
+        View::Map => map::draw(chart_area, state, opts),
+        View::Load => load(chart_area, state, opts),
+        View::Spectrum => spectrum::draw(chart_area, state),
+    })
+}
+
+/// The moments of `state` against ζ (`export --view moments`) as SVG.
+pub fn render_moments_svg(state: &State, points: usize) -> anyhow::Result<String> {
+    render_with(state, |chart_area| moments::draw(chart_area, state, points))
+}
+
+/// A picture of `state`: `draw` fills the chart, the caption goes under it.
+fn render_with(
+    state: &State,
+    draw: impl FnOnce(&Area) -> anyhow::Result<()>,
+) -> anyhow::Result<String> {
     let mut buf = String::new();
     {
         let root = SVGBackend::with_string(&mut buf, SIZE).into_drawing_area();
@@ -47,13 +67,7 @@ pub fn render_svg(view: View, state: &State, opts: &FigureOptions) -> anyhow::Re
         let lines = caption_lines(state);
         let caption_h = CAPTION_H.max(2 * 8 + LINE_H * lines.len() as u32);
         let (chart_area, caption_area) = root.split_vertically(SIZE.1 - caption_h);
-        match view {
-            View::Slopes => slopes(&chart_area, state, opts)?,
-            View::Indices => indices(&chart_area, state, opts)?,
-            View::Map => map::draw(&chart_area, state, opts)?,
-            View::Load => load(&chart_area, state, opts)?,
-            View::Spectrum => spectrum::draw(&chart_area, state)?,
-        }
+        draw(&chart_area)?;
         caption(&caption_area, &lines)?;
         root.present().map_err(plot_err)?;
     }
