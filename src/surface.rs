@@ -33,11 +33,13 @@ pub struct SurfaceSource {
 }
 
 /// Two sources are the same surface when they are the same file, read the
-/// same way, with the same content (the table compares in O(1)).
+/// same way, with the same content (the table compares in O(1)), fitted
+/// over the same band.
 impl PartialEq for SurfaceSource {
     fn eq(&self, other: &SurfaceSource) -> bool {
         self.path == other.path
             && self.options == other.options
+            && self.fit_band == other.fit_band
             && self.measured.sha256 == other.measured.sha256
             && self.measured.table == other.measured.table
     }

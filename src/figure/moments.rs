@@ -9,7 +9,6 @@
 
 use rough_model::Axis;
 
-use crate::figure::short_number;
 use crate::snapshot::State;
 
 /// The moments at `points` cutoffs ζ, log-spaced over the sweep when it is
@@ -89,7 +88,8 @@ impl MomentSeries {
 /// real-space numbers and the Hurst fit of a measured surface, or the
 /// paper's power law's parameters.
 pub fn moment_comments(state: &State) -> Vec<String> {
-    let n = short_number;
+    // Every digit: these are data (the shortest text that reads back).
+    let n = |v: f64| format!("{v:?}");
     let mut out = vec![
         "columns: zeta, q1 (1/m), lambda1 (m), m0 (m^2), m2, m4 (1/m^2), h_rms (m), \
          h_prime, h_dprime (1/m), r_s (m)"
