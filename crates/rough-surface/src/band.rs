@@ -30,6 +30,9 @@ const MIN_POINTS: usize = 3;
 const H_SLACK: f64 = 0.3;
 /// A drop between neighbouring bins, decades, that only rounding makes.
 const CLIFF: f64 = 4.0;
+/// Neighbouring pieces whose slopes differ by less than this many combined
+/// standard errors are one.
+const MERGE: f64 = 2.0;
 /// Points above which a long table is merged into groups first.
 const MAX_POINTS: usize = 240;
 
@@ -209,7 +212,7 @@ pub(crate) fn self_affine(dim: Dim, spectrum: &[(f64, f64)], modes: &[f64]) -> O
         let same = |&(a, b): &(usize, usize)| {
             let piece = sums(a, b);
             let (t, f) = (piece.line().0, (var / sxx(&piece)).sqrt());
-            (s - t).abs() <= 2.0 * (e * e + f * f).sqrt()
+            (s - t).abs() <= MERGE * (e * e + f * f).sqrt()
                 && plausible(&(a.min(i), b.max(j)))
                 && straight(&(a.min(i), b.max(j)))
         };
