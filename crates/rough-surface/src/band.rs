@@ -230,7 +230,16 @@ pub(crate) fn self_affine(dim: Dim, spectrum: &[(f64, f64)], modes: &[f64]) -> O
             (None, None) => break,
         }
     }
-    Some((pts[i].0.exp(), pts[j - 1].0.exp()))
+    // The spectrum's own wavevectors (not their logarithms' round trip).
+    let nearest = |x: f64| {
+        spectrum
+            .iter()
+            .map(|p| p.0)
+            .filter(|q| *q > 0.0)
+            .min_by(|a, b| (a.ln() - x).abs().total_cmp(&(b.ln() - x).abs()))
+            .unwrap_or(x.exp())
+    };
+    Some((nearest(pts[i].0), nearest(pts[j - 1].0)))
 }
 
 #[cfg(test)]
