@@ -27,8 +27,10 @@ fn rel(a: f64, b: f64) -> f64 {
     }
 }
 
-/// Per file: its options, q0 and the (ζ, m0, m2, m4) rows.
-fn reference() -> Vec<(String, Vec<String>, f64, Vec<[f64; 4]>)> {
+/// A reference surface: its file, options, q0 and (ζ, m0, m2, m4) rows.
+type Case = (String, Vec<String>, f64, Vec<[f64; 4]>);
+
+fn reference() -> Vec<Case> {
     let text = std::fs::read_to_string(data("reference.txt")).unwrap();
     let mut out = Vec::new();
     let mut lines = text.lines().filter(|l| !l.starts_with('#')).peekable();
