@@ -2,7 +2,7 @@
 //! code (the same `impl Widget for &App` a served lecturer gets) and
 //! written as an SVG picture of the terminal: fig2 at 100×30, a class of
 //! 31, 30 answers spread around the model's ½ crossing, before (`open`)
-//! or after (`revealed`) the reveal. The README's picture:
+//! or after (`revealed`) the reveal. The picture in docs/teaching.md:
 //!
 //! ```sh
 //! cargo run --example class_screenshot -- revealed > docs/class-poll.svg

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the README's pictures in docs/ with the program itself.
+# Regenerates the documentation's pictures in docs/ with the program itself.
 # Run from the repository root: scripts/gen_docs.sh
 set -euo pipefail
 cargo build --release --quiet

@@ -38,6 +38,16 @@ fn run(cli: Cli) -> anyhow::Result<()> {
             let mut out = BufWriter::with_capacity(1 << 16, stdout.lock());
             export::run(&a, &mut out)
         }
+        Some(Command::Bench(a)) if check_only() => {
+            if let Some(f) = &a.surface {
+                let options = rough_surface::Options {
+                    periodic: a.periodic,
+                    pixel_size: a.pixel_size,
+                };
+                roughtui::surface::SurfaceSource::read(f, options)?;
+            }
+            Ok(())
+        }
         Some(Command::Bench(a)) => roughtui::bench::run(&a),
         Some(Command::Serve(a)) => {
             let state = load_source(&a.source, &a.setup)?;
@@ -53,6 +63,9 @@ fn run(cli: Cli) -> anyhow::Result<()> {
                 (None, Some(f)) => Some(ClassCode::read(f)?),
                 (None, None) => None,
             };
+            if check_only() {
+                return Ok(());
+            }
             roughtui::serve::run(roughtui::serve::Options {
                 listen: a.listen,
                 host_key: a.host_key,
@@ -68,6 +81,9 @@ fn run(cli: Cli) -> anyhow::Result<()> {
         }
         None => {
             let state = load_source(&cli.source, &cli.setup)?;
+            if check_only() {
+                return Ok(());
+            }
             tui::run(
                 state,
                 cli.source.load.as_deref(),
@@ -75,4 +91,12 @@ fn run(cli: Cli) -> anyhow::Result<()> {
             )
         }
     }
+}
+
+/// `ROUGHTUI_CHECK_ONLY=1`: read and check everything the command line
+/// names (scene, files, values), then stop before the terminal is taken or
+/// a server listens. The documentation's commands are run this way by
+/// `tests/docs_commands.rs`.
+fn check_only() -> bool {
+    std::env::var_os("ROUGHTUI_CHECK_ONLY").is_some_and(|v| v == "1")
 }

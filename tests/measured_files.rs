@@ -27,7 +27,7 @@ fn rel(a: f64, b: f64) -> f64 {
     }
 }
 
-/// Ψ_GW, Ψ_P, Ψ* from profile moments with MODEL.md's formulas, written
+/// Ψ_GW, Ψ_P, Ψ* from profile moments with docs/model.md's formulas, written
 /// out here (H0/E = 0.01, R* = 1 mm: the material a surface opens with).
 fn indices(m0: f64, m2: f64, m4: f64) -> [f64; 3] {
     let (e_over_h0, r_star) = (100.0, 1e-3);

@@ -188,7 +188,7 @@ fn help_mentions_the_keys_the_minimum_size_and_no_color() {
 }
 
 /// Bytes for one ζ step (marker and readout move) and one h_rms step
-/// (curves redrawn too) on fig2 at 100×30; printed for the README.
+/// (curves redrawn too) on fig2 at 100×30; printed for docs/explorer.md.
 #[test]
 fn bytes_per_slider_step_at_100x30() {
     if !have_tmux() {

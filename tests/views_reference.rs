@@ -143,7 +143,7 @@ fn claims_match_the_reference() {
     values.finish("views_claims.csv values");
 }
 
-/// The numbers the README and the help quote, against the mpmath reference
+/// The numbers docs/model.md and the help quote, against the mpmath reference
 /// (`views_quoted.csv`), and quoted as the reference rounds them.
 #[test]
 fn quoted_numbers_match_the_reference_and_the_docs() {
@@ -186,7 +186,8 @@ fn quoted_numbers_match_the_reference_and_the_docs() {
     }
     report.finish("views_quoted.csv");
     // As quoted (three or four digits).
-    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md"))
+    // The paper's numbers are quoted in the model's page of the manual.
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/model.md"))
         .unwrap()
         .split_whitespace()
         .collect::<Vec<_>>()
@@ -206,7 +207,10 @@ fn quoted_numbers_match_the_reference_and_the_docs() {
         format!("{} instead of {}", r(want(3), 3), r(want(2), 3)),
         format!("to {} at ψ = {}", r(want(5), 4), r(want(4), 3)),
     ] {
-        assert!(readme.contains(&quote), "README does not say {quote:?}");
+        assert!(
+            readme.contains(&quote),
+            "docs/model.md does not say {quote:?}"
+        );
     }
     let quote = format!("{}, not {}", r(want(3), 3), r(want(2), 3));
     assert!(help.contains(&quote), "the help does not say {quote:?}");

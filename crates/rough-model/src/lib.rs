@@ -3,7 +3,7 @@
 //! Ciavarella (Lubricants 2024, 12(3), 83) into the plasticity index Ψ*.
 //!
 //! Pure and immutable: no I/O, no terminal. Inputs are validated once
-//! ([`Params::new`]); everything else is a function of them. `MODEL.md` in the
+//! ([`Params::new`]); everything else is a function of them. `docs/model.md` in the
 //! project's shared folder states every formula; each public function's doc
 //! gives its domain, units and accuracy.
 

@@ -441,7 +441,7 @@ mod tests {
 
     #[test]
     fn power_law_table_gives_the_truncated_moments() {
-        // m2 = πZ q0^(2−2H)(ζ^(2−2H) − 1)/(2−2H) and friends (MODEL.md).
+        // m2 = πZ q0^(2−2H)(ζ^(2−2H) − 1)/(2−2H) and friends (docs/model.md).
         let (z, hu, q0) = (1e-8f64, 0.8f64, 1e5f64);
         let pi = std::f64::consts::PI;
         for n in [2, 3, 17, 200] {

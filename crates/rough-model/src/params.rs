@@ -1,7 +1,7 @@
 //! Validated model inputs.
 //!
 //! A [`Params`] can only be built through [`Params::new`], which rejects every
-//! value outside the domain of `MODEL.md` with a [`ParamError`] that names the
+//! value outside the domain of `docs/model.md` with a [`ParamError`] that names the
 //! field and its valid range. Everything downstream may therefore assume finite,
 //! positive inputs.
 
@@ -210,7 +210,7 @@ fn check(field: &'static str, value: f64) -> Result<f64, ParamError> {
 pub struct Params(ParamValues);
 
 impl Params {
-    /// Validates every field against the domain table of `MODEL.md`
+    /// Validates every field against the domain table of `docs/model.md`
     /// (fields checked in declaration order; the first failure is reported).
     pub fn new(v: ParamValues) -> Result<Params, ParamError> {
         check("h0_over_e", v.h0_over_e)?;

@@ -20,7 +20,7 @@ use std::ops::{Add, Div, Mul};
 use crate::dd::Dd;
 use crate::params::Params;
 
-/// Which profile moments a computation uses (`MODEL.md`, "Spectrum").
+/// Which profile moments a computation uses (`docs/model.md`, "Spectrum").
 ///
 /// - `Truncated`: the band-limited spectrum q0 < q < ζ q0 integrated exactly,
 ///   m_n ∝ (ζ^e − 1)/e; at ζ = 1 there is no roughness (ψ = 0).

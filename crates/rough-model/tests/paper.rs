@@ -1,11 +1,11 @@
 //! What the paper computed: the closed form of Appendix A on the asymptotic
 //! moments of eq. 10, from Z = 1e-8 m^0.4 (h_rms = 19.8166… nm). The claims
-//! its text makes about Figures 2–4 (MODEL.md, "The paper's figures") are
+//! its text makes about Figures 2–4 (docs/model.md, "The paper's figures") are
 //! checked where they happen, to the precision the text gives.
 
 use rough_model::{Axis, Curves, Model, Moments, ParamValues, Params, Scene, SceneSpec, Sweep};
 
-/// h_rms of Z = 1e-8 m^0.4 at q0 = 1e5 1/m, H = 0.8 (MODEL.md).
+/// h_rms of Z = 1e-8 m^0.4 at q0 = 1e5 1/m, H = 0.8 (docs/model.md).
 const H_RMS_PAPER: f64 = 19.816636488030044e-9;
 
 fn scene(h_rms: f64, h0_over_e: f64, size_effect: bool, to: f64) -> Scene {

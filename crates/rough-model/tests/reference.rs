@@ -68,7 +68,7 @@ fn check_values_of_model_md() {
         ("closed S_pl", c.plastic, 0.900581342322006),
         ("closed S_tot", c.total, 1.00702406149844),
     ] {
-        // MODEL.md prints 15 digits.
+        // docs/model.md prints 15 digits.
         r.check(name, "psi=1", got, want, 1e-14);
     }
     let fig2 = Params::new(ParamValues {
@@ -88,7 +88,7 @@ fn check_values_of_model_md() {
         0.522964172217328,
         1e-14,
     );
-    r.finish("MODEL.md check values");
+    r.finish("docs/model.md check values");
 }
 
 fn params_of(t: &Table, row: &[Option<f64>]) -> Params {

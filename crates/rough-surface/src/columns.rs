@@ -1,7 +1,7 @@
 //! Two-column tables without a size header: a line scan `x z` (metres, or
 //! Gwyddion's XYZ-export units) or an isotropic PSD table `q C^iso`.
 //!
-//! Which one is decided from the content, documented in the README:
+//! Which one is decided from the content, documented in docs/surfaces.md:
 //!
 //! 1. A header line naming the columns decides: its first word `q`, `k`,
 //!    `wavevector` or `wavenumber`, or any word `psd`, marks a PSD table;

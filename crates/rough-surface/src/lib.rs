@@ -3,7 +3,7 @@
 //! spectrum view draws, and what identifies the file (SHA-256).
 //!
 //! Conventions follow SurfaceTopography (the library under
-//! contact.engineering), so that its numbers are the reference; MODEL.md,
+//! contact.engineering), so that its numbers are the reference; docs/model.md,
 //! "Measured surfaces", states them.
 
 mod band;
@@ -174,7 +174,7 @@ pub fn sha256_hex(bytes: &[u8]) -> String {
 
 /// Computes the surface in a file's bytes; an error carries the 1-based
 /// line it is about, if any. The format is detected from the content (see
-/// the README's "Reading surfaces"):
+/// docs/surfaces.md, "Reading the file"):
 ///
 /// - a contact.engineering TXT download (a `# Columns:` header);
 /// - a height matrix: a size header (`# Width:`/`# Height:`), or one, or

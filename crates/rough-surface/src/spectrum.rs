@@ -1,5 +1,5 @@
 //! From heights to the moment table and the display spectrum, as
-//! SurfaceTopography computes them (MODEL.md, "Measured surfaces"):
+//! SurfaceTopography computes them (docs/model.md, "Measured surfaces"):
 //!
 //! - periodic data: the mean removed, no window; otherwise the
 //!   least-squares plane (line: straight line) removed and the Hann window

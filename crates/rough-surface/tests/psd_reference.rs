@@ -1,7 +1,7 @@
 //! PSD tables against mpmath (`scripts/psd_reference.py`, 50 digits): a
 //! power law with a roll-off knee, areal and profile, as a plain table and
 //! as contact.engineering downloads; and fig2's spectrum, whose moments are
-//! MODEL.md's truncated ones.
+//! docs/model.md's truncated ones.
 
 use std::path::{Path, PathBuf};
 

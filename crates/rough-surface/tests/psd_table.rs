@@ -44,7 +44,7 @@ fn the_fit_of_fig2s_spectrum_is_fig2s_surface() {
     let fit = m.fit(1e5, 1e9).unwrap();
     assert!((fit.hurst - 0.8).abs() < 1e-13, "{fit:?}");
     assert!((fit.persson_z().unwrap() / 1e-8 - 1.0).abs() < 1e-12);
-    // MODEL.md's h_rms of fig2: 19.816636488030044 nm (mpmath: …0300551).
+    // docs/model.md's h_rms of fig2: 19.816636488030044 nm (mpmath: …0300551).
     let h = fit.h_rms().unwrap();
     assert!((h / 19.816636488030055e-9 - 1.0).abs() < 1e-12, "{h}");
     assert!((fit.psd(1e7) / m.spectrum[2].1 - 1.0).abs() < 1e-12);

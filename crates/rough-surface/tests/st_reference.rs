@@ -2,7 +2,7 @@
 //! `fourier_synthesis`, written in the formats roughtui reads, and its own
 //! moments and spectra of them (`scripts/surface_reference.py`, committed
 //! in tests/data/reference.txt). The indices are computed from the
-//! moments with MODEL.md's formulas (H0/E = 0.01, R* = 1 mm).
+//! moments with docs/model.md's formulas (H0/E = 0.01, R* = 1 mm).
 
 use std::path::{Path, PathBuf};
 
@@ -77,7 +77,7 @@ fn rel(a: f64, b: f64) -> f64 {
     }
 }
 
-/// Ψ_P, Ψ*, Ψ_GW from profile moments (MODEL.md, "Hardness, indices").
+/// Ψ_P, Ψ*, Ψ_GW from profile moments (docs/model.md, "Hardness, indices").
 fn indices(m0: f64, m2: f64, m4: f64) -> [f64; 3] {
     let (e_over_h0, r_star) = (100.0, 1e-3);
     let rs = 0.375 * (std::f64::consts::PI / m4).sqrt();

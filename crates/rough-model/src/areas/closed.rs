@@ -13,12 +13,12 @@ const INV_SQRT_2PI: f64 = 0.3989422804014327;
 /// Below this x = 1/ψ the closed-form elastic area comes from its series.
 const CLOSED_AREA_SERIES_X: f64 = 0.8;
 
-/// The paper's three-Gaussian closed form (Xu, Li and Mulvihill; MODEL.md) at
+/// The paper's three-Gaussian closed form (Xu, Li and Mulvihill; docs/model.md) at
 /// load `rho` = p̄/H and index `psi` = √V/H.
 ///
 /// Domain: ρ finite in (0, 1], ψ ≥ 0 (f64 or [`Dd`]); otherwise [`AreaError`].
 /// Returns A/A0 (dimensionless): elastic = M(p̄) − a M(−p̄) − b M(2H − p̄),
-/// total as in MODEL.md, plastic = total − elastic, each from a
+/// total as in docs/model.md, plastic = total − elastic, each from a
 /// cancellation-free form (module doc): a positive three-term sum for the
 /// plastic area, and for the elastic area a 25-polynomial Taylor series in
 /// x = 1/ψ < 0.8 where it falls like x⁵. Accuracy: within 1e-12 relative of

@@ -31,7 +31,7 @@
 //! # The paper's closed form ([`closed_form_areas`])
 //!
 //! With y = 2x², D' = 1 − e^(−y), a = (1 − e^(−(1−ρ)y))/D', b = (1 − e^(−ρy))/D'
-//! (MODEL.md's a, b after dividing the Gaussians through) and 1 − a = b e^(−2(1−ρ)x²):
+//! (docs/model.md's a, b after dividing the Gaussians through) and 1 − a = b e^(−2(1−ρ)x²):
 //!
 //! - A_tot = ((1+a)/2) erf(ρx/√2) + (b/2)[erfc((2−ρ)x/√2) + e^(−2(1−ρ)x²)]
 //! - A_pl = A_tot − A_el = ((1+b) erfc((1−ρ)x/√2) − a erfc((1+ρ)x/√2))/2

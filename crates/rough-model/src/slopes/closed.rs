@@ -1,5 +1,5 @@
 //! The paper's closed-form slopes (three Gaussians, Appendix A), with x = 1/ψ,
-//! u = x², z = x/√2 (MODEL.md):
+//! u = x², z = x/√2 (docs/model.md):
 //!
 //! - S_tot = √(2/π) x + u/(e^(2u) − 1) + u erfc(√2 x)/(1 − e^(−2u))
 //! - S_pl  = √(2/π) x e^(−u/2) + u erfc(z) coth u
