@@ -51,14 +51,16 @@ pub(crate) fn areal(
     periodic: bool,
 ) -> RealSpace {
     let (dx, dy) = (lx / nx as f64, ly / ny as f64);
-    let at = |i: usize, j: usize| h[(j % ny) * nx + i % nx];
     let (ix, jy) = if periodic { (nx, ny) } else { (nx - 1, ny - 1) };
     let mut sum = 0.0;
     for j in 0..jy {
+        let row = &h[j * nx..(j + 1) * nx];
+        let next = &h[((j + 1) % ny) * nx..((j + 1) % ny + 1) * nx];
         for i in 0..ix {
-            let v = at(i, j);
-            let gx = (at(i + 1, j) - v) / dx;
-            let gy = (at(i, j + 1) - v) / dy;
+            let v = row[i];
+            let right = if i + 1 == nx { row[0] } else { row[i + 1] };
+            let gx = (right - v) / dx;
+            let gy = (next[i] - v) / dy;
             sum += gx * gx + gy * gy;
         }
     }

@@ -78,6 +78,13 @@ fn render_measured(app: &App, axis: Axis, area: Rect, buf: &mut Buffer) {
             Some(f) => {
                 let band = format!("q {}{dash}{}", q(f.fit.q_lo), q(f.fit.q_hi));
                 let first = match f.fit.verdict().words() {
+                    // ASCII writes ± as "+-": one column less around it,
+                    // so that the band stays whole at 80 columns.
+                    None if t.glyphs.ascii_text() => format!(
+                        "  {:<5} {:>10} {band}",
+                        "H fit",
+                        hurst_se(&f.fit).replace('±', "+-")
+                    ),
                     None => format!("  {:<5}  {:>9}  {band}", "H fit", hurst_se(&f.fit)),
                     Some(_) => format!(
                         "  {:<5}  {:>9}  not self-affine",
