@@ -56,13 +56,12 @@ pub enum Message {
     /// Pin the current curves (on a measured surface first the fitted
     /// power law) as a ghost, or clear the ghost.
     ToggleGhost,
-    /// Move an end of a measured surface's Hurst fit band one spectrum
-    /// point: the upper end (else the lower), up (else down).
+    /// `[ ]` `{ }`: an end of the fit band (`upper` or lower) one point up or down.
     MoveFitBand {
         upper: bool,
         up: bool,
     },
-    /// The Hurst fit band found from the data again.
+    /// `b`: the fit band found from the data again.
     AutoFitBand,
     StartSave,
     /// Open the prompt for the selected slider's value.
