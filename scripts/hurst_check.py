@@ -44,6 +44,7 @@ def main():
     worst = {True: 0.0, False: 0.0}
     failed = False
     rows = []
+    ratios = []
     with tempfile.TemporaryDirectory() as d:
         subprocess.run([sys.executable, os.path.join(HERE, "hurst_surfaces.py"), d, reps], check=True)
         for entry in open(os.path.join(d, "surfaces.txt")):
@@ -54,6 +55,7 @@ def main():
             miss = abs(h - hurst) > tol or not ok
             failed |= miss
             worst[periodic] = max(worst[periodic], abs(h - hurst))
+            ratios.append(abs(h - hurst) / se)
             rows.append(f"{name} {hurst} {h:.4f} {se:.4f} {lo:.4e} {hi:.4e} "
                         f"{'self-affine' if ok else 'flagged'}{' MISSED' if miss else ''}")
     with open(OUT, "w") as f:
@@ -62,6 +64,9 @@ def main():
         f.write("# (q 8.04e7 /m); file, generated H, fitted H, standard error, band (1/m).\n")
         f.write(f"# Worst |H_fit - H|: periodic {worst[True]:.3f} (target 0.1), "
                 f"cropped {worst[False]:.3f} (target 0.15).\n")
+        rms = (sum(r * r for r in ratios) / len(ratios)) ** 0.5
+        f.write(f"# |H_fit - H| / standard error: rms {rms:.2f}, "
+                f"{sum(r > 2 for r in ratios)} of {len(ratios)} beyond 2.\n")
         f.write("\n".join(rows) + "\n")
     print(open(OUT).read())
     sys.exit(1 if failed else 0)

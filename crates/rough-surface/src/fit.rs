@@ -8,8 +8,11 @@
 //! The fit is weighted least squares of ln C against ln q, each bin
 //! weighted by the number of Fourier modes it averages (the scatter of a
 //! bin's ln C falls as 1/√modes; a PSD table's points weigh the same). The
-//! standard error is the slope's, σ̂/√S_xx with σ̂² the weighted residual sum
-//! over n − 2, halved for H.
+//! standard error of H combines the regression's, σ̂/√S_xx/2 with σ̂² the
+//! weighted residual sum over n − 2, with the band's: the rms change of H
+//! when the band loses one or two points at either end (a choice of band
+//! is part of what H depends on). On fourier_synthesis surfaces with a
+//! known H the deviations' rms is 1.15 of it (scripts/hurst_check.py).
 
 use std::f64::consts::PI;
 
@@ -34,7 +37,8 @@ pub struct PowerLawFit {
     pub q_lo: f64,
     pub q_hi: f64,
     pub points: usize,
-    /// The standard error of H (NaN with fewer than three points).
+    /// The standard error of H, the regression's and the band's choice's
+    /// combined (NaN with fewer than three points).
     pub hurst_se: f64,
     /// The weighted rms distance of the points from the line, in decades
     /// of C.
@@ -135,6 +139,25 @@ impl PowerLawFit {
     }
 }
 
+/// Weighted least squares of (x, y, w) points: (slope, x̄, ȳ, S_xx, the
+/// weighted residual sum, Σw); `None` without a spread in x.
+fn line(pts: &[(f64, f64, f64)]) -> Option<(f64, f64, f64, f64, f64, f64)> {
+    let w: f64 = pts.iter().map(|p| p.2).sum();
+    let mx = pts.iter().map(|p| p.2 * p.0).sum::<f64>() / w;
+    let my = pts.iter().map(|p| p.2 * p.1).sum::<f64>() / w;
+    let sxx: f64 = pts.iter().map(|p| p.2 * (p.0 - mx).powi(2)).sum();
+    if pts.len() < 2 || sxx == 0.0 {
+        return None;
+    }
+    let sxy: f64 = pts.iter().map(|p| p.2 * (p.0 - mx) * (p.1 - my)).sum();
+    let slope = sxy / sxx;
+    let ssr: f64 = pts
+        .iter()
+        .map(|p| p.2 * (p.1 - my - slope * (p.0 - mx)).powi(2))
+        .sum();
+    Some((slope, mx, my, sxx, ssr, w))
+}
+
 pub(crate) fn fit(
     dim: Dim,
     spectrum: &[(f64, f64)],
@@ -156,27 +179,30 @@ pub(crate) fn fit(
         })
         .collect();
     let n = pts.len();
-    if n < 2 {
-        return None;
-    }
-    let w: f64 = pts.iter().map(|p| p.2).sum();
-    let mx = pts.iter().map(|p| p.2 * p.0).sum::<f64>() / w;
-    let my = pts.iter().map(|p| p.2 * p.1).sum::<f64>() / w;
-    let sxx: f64 = pts.iter().map(|p| p.2 * (p.0 - mx).powi(2)).sum();
-    if sxx == 0.0 {
-        return None;
-    }
-    let sxy: f64 = pts.iter().map(|p| p.2 * (p.0 - mx) * (p.1 - my)).sum();
-    let slope = sxy / sxx;
-    let ssr: f64 = pts
-        .iter()
-        .map(|p| p.2 * (p.1 - my - slope * (p.0 - mx)).powi(2))
-        .sum();
-    let hurst_se = if n > 2 {
+    let (slope, mx, my, sxx, ssr, w) = line(&pts)?;
+    let regression = if n > 2 {
         (ssr / (n - 2) as f64 / sxx).sqrt() / 2.0
     } else {
         f64::NAN
     };
+    // How much H moves when the band loses one or two points at either
+    // end: the band's choice is part of the uncertainty.
+    let mut moves = Vec::new();
+    for k in 1..=2 {
+        if n >= MIN_POINTS + k {
+            for part in [&pts[k..], &pts[..n - k]] {
+                if let Some(l) = line(part) {
+                    moves.push(((l.0 - slope) / 2.0).powi(2));
+                }
+            }
+        }
+    }
+    let band = if moves.is_empty() {
+        0.0
+    } else {
+        (moves.iter().sum::<f64>() / moves.len() as f64).sqrt()
+    };
+    let hurst_se = (regression * regression + band * band).sqrt();
     let (lo, hi) = (pts[0].0.exp(), pts[n - 1].0.exp());
     Some(PowerLawFit {
         dim,
