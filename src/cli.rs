@@ -91,6 +91,11 @@ pub struct Setup {
     /// as the value prompt takes them: m cm mm µm um nm pm).
     #[arg(long, value_name = "LENGTH", requires = "surface", allow_hyphen_values = true, value_parser = parse_pixel_size)]
     pub pixel_size: Option<f64>,
+    /// The channel of a file of several (Gwyddion's .gwy, its ASCII
+    /// exports concatenated): its number or its title (the first channel of
+    /// heights when not given).
+    #[arg(long, value_name = "N|TITLE", requires = "surface")]
+    pub channel: Option<String>,
     /// The unit of the surface's heights, whatever the file says: m, mm,
     /// µm (um), nm, Å (A) or pm. Without it heights take the file's value
     /// unit, else its lateral unit (said in a note).
@@ -412,6 +417,9 @@ pub struct BenchArgs {
     /// The surface's sample spacing (as for the explorer).
     #[arg(long, value_name = "LENGTH", requires = "surface", allow_hyphen_values = true, value_parser = parse_pixel_size)]
     pub pixel_size: Option<f64>,
+    /// The channel of a file of several (as for the explorer).
+    #[arg(long, value_name = "N|TITLE", requires = "surface")]
+    pub channel: Option<String>,
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]

@@ -26,6 +26,7 @@ pub fn load_source(src: &Source, setup: &Setup) -> anyhow::Result<State> {
         let options = rough_surface::Options {
             periodic: setup.periodic,
             pixel_size: setup.pixel_size,
+            channel: setup.channel.clone(),
             height_unit: setup.height_unit,
         };
         State::measured(surface::SurfaceSource::read(path, options)?)?

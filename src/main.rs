@@ -43,6 +43,7 @@ fn run(cli: Cli) -> anyhow::Result<()> {
                 let options = rough_surface::Options {
                     periodic: a.periodic,
                     pixel_size: a.pixel_size,
+                    channel: a.channel.clone(),
                     height_unit: None,
                 };
                 roughtui::surface::SurfaceSource::read(f, options)?;

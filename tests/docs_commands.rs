@@ -126,7 +126,9 @@ fn words(command: &str, home: &Path) -> Vec<String> {
 /// A folder with what the documentation's commands name: the repository's
 /// `surfaces/`, `presets/` and `lessons/`, a snapshot `my-set.ron`, the
 /// surfaces `steel.txt` and `afm.txt` (the shipped example's map), a
-/// header-less line scan `scan.txt` and a lecturer's public key.
+/// header-less line scan `scan.txt`, an x3p `scan.x3p` and a Gwyddion
+/// file of four channels `afm.gwy` (rough-surface's test data) and a
+/// lecturer's public key.
 fn workspace() -> tempfile::TempDir {
     let dir = tempfile::tempdir().unwrap();
     for sub in ["surfaces", "presets", "lessons"] {
@@ -151,6 +153,10 @@ fn workspace() -> tempfile::TempDir {
         })
         .collect();
     std::fs::write(dir.path().join("scan.txt"), scan).unwrap();
+    let formats = Path::new(ROOT).join("crates/rough-surface/tests/data/formats");
+    for (from, to) in [("sur_d.x3p", "scan.x3p"), ("three.gwy", "afm.gwy")] {
+        std::fs::copy(formats.join(from), dir.path().join(to)).unwrap();
+    }
     let key = "ssh-ed25519 AAAAC3NzaC1lZDI1NTE5AAAAIOMqqnkVzrm0SdG6UOoqKLsabgH5C9okWi0dh2l9GKJl lecturer@example\n";
     std::fs::write(dir.path().join("lecturer.pub"), key).unwrap();
     std::fs::create_dir_all(dir.path().join("home/.ssh")).unwrap();

@@ -75,7 +75,7 @@ fn how_it_was_read_is_recorded() {
         pixel_size: Some(5e-8),
         ..Default::default()
     };
-    let s = surface_state(&t, opts);
+    let s = surface_state(&t, opts.clone());
     let p = save_new(d.path(), "read", &s).unwrap();
     let text = std::fs::read_to_string(&p).unwrap();
     assert!(
@@ -104,7 +104,7 @@ fn the_height_unit_and_the_fit_band_are_recorded() {
         height_unit: rough_surface::HeightUnit::parse("nm"),
         ..Default::default()
     };
-    let mut s = surface_state(&t, opts);
+    let mut s = surface_state(&t, opts.clone());
     s.set_fit_band(Some((2e6, 1e7))).unwrap();
     let p = save_new(d.path(), "units", &s).unwrap();
     let text = std::fs::read_to_string(&p).unwrap();

@@ -189,6 +189,7 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         let options = rough_surface::Options {
             periodic: args.periodic,
             pixel_size: args.pixel_size,
+            channel: args.channel.clone(),
             height_unit: None,
         };
         let t = measured::time_file(path, options, SURFACE_STEPS)?;

@@ -28,6 +28,10 @@ pub struct SurfaceFile {
         deserialize_with = "de_number"
     )]
     pub pixel_size: Option<f64>,
+    /// The channel read of a file of several (its number or title), when
+    /// one was chosen.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub channel: Option<String>,
     /// The heights' unit given with `--height-unit` ("nm"), if any.
     #[serde(
         default,
@@ -154,6 +158,7 @@ pub(super) fn read(sf: &SurfaceFile, base: Option<&Path>) -> Result<SurfaceSourc
     let options = Options {
         periodic: sf.periodic,
         pixel_size: sf.pixel_size,
+        channel: sf.channel.clone(),
         height_unit,
     };
     let mut src = SurfaceSource::read(&path, options).map_err(|e| {
@@ -191,6 +196,7 @@ pub(super) fn file_of(src: &SurfaceSource, base: Option<&Path>) -> SurfaceFile {
         sha256: src.measured.sha256.clone(),
         periodic: src.options.periodic,
         pixel_size: src.options.pixel_size,
+        channel: src.options.channel.clone(),
         height_unit: src.options.height_unit.map(|u| u.name.to_string()),
         fit_band: src.fit_band,
     }

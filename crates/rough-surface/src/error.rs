@@ -64,6 +64,9 @@ pub enum Problem {
     BadHeader(String),
     /// A command-line option that does not apply to this file.
     Option(String),
+    /// A binary file (x3p, .gwy) that is damaged or holds what is not
+    /// read, or a file in a format not read (with what to do about it).
+    Format(String),
 }
 
 impl fmt::Display for Problem {
@@ -136,6 +139,7 @@ impl fmt::Display for Problem {
             Problem::Several(s) => write!(f, "{s}"),
             Problem::BadHeader(s) => write!(f, "{s}"),
             Problem::Option(s) => write!(f, "{s}"),
+            Problem::Format(s) => write!(f, "{s}"),
         }
     }
 }

@@ -9,17 +9,22 @@
 mod band;
 mod bins;
 mod ce;
+mod channels;
 mod columns;
 mod colunits;
 mod error;
 mod fit;
+mod grid;
+mod gwy;
 mod header;
 mod matrix;
 mod psd;
 mod realspace;
+mod sniff;
 mod spectrum;
 mod text;
 mod units;
+mod x3p;
 
 use std::io::Read;
 use std::path::Path;
@@ -30,6 +35,7 @@ use sha2::{Digest, Sha256};
 
 pub use error::{Problem, SurfaceError};
 pub use fit::{PowerLawFit, Verdict, MIN_POINTS as MIN_FIT_POINTS};
+pub use grid::Grid;
 pub use realspace::RealSpace;
 pub use units::HeightUnit;
 
@@ -37,12 +43,16 @@ pub use units::HeightUnit;
 pub const MAX_BYTES: u64 = 512 << 20;
 
 /// How to read a file whose content does not say everything.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct Options {
     /// The data is periodic: no detrending beyond the mean, no window.
     pub periodic: bool,
     /// Sample spacing in metres, for data without a size header.
     pub pixel_size: Option<f64>,
+    /// The channel to read of a file of several: its number (a .gwy's N of
+    /// `/N/data`; a text file's channels from 0 in order) or its title;
+    /// `None` takes the first whose values are heights (a unit of length).
+    pub channel: Option<String>,
     /// The heights' unit, whatever the file says (`--height-unit`).
     pub height_unit: Option<HeightUnit>,
 }
@@ -161,7 +171,11 @@ pub fn read(path: &Path, opts: &Options) -> Result<Measured, SurfaceError> {
     if bytes.len() as u64 > MAX_BYTES {
         return Err(fail(None, Problem::TooLarge(bytes.len() as u64)));
     }
-    parse(&bytes, opts).map_err(|(line, problem)| fail(line, problem))
+    let ext = path
+        .extension()
+        .map(|e| e.to_string_lossy().to_ascii_lowercase())
+        .unwrap_or_default();
+    parse_file(&bytes, opts, &ext).map_err(|(line, problem)| fail(line, problem))
 }
 
 /// The SHA-256 of `bytes`, lower-case hex (what a snapshot records).
@@ -176,12 +190,44 @@ pub fn sha256_hex(bytes: &[u8]) -> String {
 /// line it is about, if any. The format is detected from the content (see
 /// docs/surfaces.md, "Reading the file"):
 ///
-/// - a contact.engineering TXT download (a `# Columns:` header);
-/// - a height matrix: a size header (`# Width:`/`# Height:`), or one, or
-///   three or more numbers per row; one row or one column is a line scan;
-/// - two columns: a line scan `x z` or a PSD table `q C^iso`
-///   (`columns`' rules).
+/// - ISO 25178-72 x3p (a zip holding `main.xml`) and Gwyddion's .gwy
+///   (`GWYP`): maps and profiles;
+/// - text, UTF-8 or else Windows-1252, with decimal points or (when the
+///   first data row has them) decimal commas:
+///   - a contact.engineering TXT download (a `# Columns:` header);
+///   - a height matrix: a size header (`# Width:`/`# Height:`), or one, or
+///     four or more numbers per row; one row or one column is a line
+///     scan (three numbers a row are an XYZ point cloud, refused with
+///     what to do);
+///   - two columns: a line scan `x z` or a PSD table `q C^iso`
+///     (`columns`' rules);
+/// - any other format recognised (NetCDF, HDF5, .npy, TIFF, Zygo, Keyence,
+///   Nanoscope …) is refused with a line saying how to convert it.
 pub fn parse(bytes: &[u8], opts: &Options) -> Result<Measured, (Option<usize>, Problem)> {
+    parse_file(bytes, opts, "")
+}
+
+/// The heights of an x3p or .gwy file as the file holds them, before any
+/// detrending (undefined points NaN); text and other formats are refused.
+pub fn read_grid(bytes: &[u8], opts: &Options) -> Result<Grid, (Option<usize>, Problem)> {
+    match sniff::format(bytes, "") {
+        sniff::Format::X3p => x3p::read(bytes),
+        sniff::Format::Gwy => gwy::read(bytes, opts.channel.as_deref()),
+        sniff::Format::Other(s) => Err((None, Problem::Format(s))),
+        sniff::Format::Text => Err((
+            None,
+            Problem::Format("text: not an x3p or .gwy file".to_string()),
+        )),
+    }
+}
+
+/// [`parse`], told the file's extension (lower case) for formats that
+/// have no magic bytes of their own.
+fn parse_file(
+    bytes: &[u8],
+    opts: &Options,
+    ext: &str,
+) -> Result<Measured, (Option<usize>, Problem)> {
     if let Some(p) = opts.pixel_size {
         if !(p.is_finite() && p > 0.0) {
             return Err((
@@ -190,19 +236,68 @@ pub fn parse(bytes: &[u8], opts: &Options) -> Result<Measured, (Option<usize>, P
             ));
         }
     }
-    let text = std::str::from_utf8(bytes).map_err(|e| {
-        let line = bytes[..e.valid_up_to()]
-            .iter()
-            .filter(|&&b| b == b'\n')
-            .count()
-            + 1;
-        (Some(line), Problem::NotText)
-    })?;
-    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let format = sniff::format(bytes, ext);
+    let no_channels = || {
+        Err((
+            None,
+            Problem::Option(
+                "--channel applies to files of several channels (Gwyddion's .gwy, \
+                 its ASCII exports concatenated)"
+                    .to_string(),
+            ),
+        ))
+    };
+    if opts.channel.is_some() && format == sniff::Format::X3p {
+        return no_channels();
+    }
+    if let (Some(u), sniff::Format::X3p | sniff::Format::Gwy) = (opts.height_unit, &format) {
+        return Err((
+            None,
+            Problem::Option(format!(
+                "--height-unit {u} applies to text files: x3p and .gwy files carry their units"
+            )),
+        ));
+    }
+    let mut notes = Vec::new();
+    let text = match format {
+        sniff::Format::Other(s) => return Err((None, Problem::Format(s))),
+        sniff::Format::X3p | sniff::Format::Gwy => {
+            let (sha256, read) = std::thread::scope(|s| {
+                let hash = s.spawn(|| sha256_hex(bytes));
+                let read = read_grid(bytes, opts).and_then(|g| grid::compute(g, opts, &mut notes));
+                (hash.join().expect("hash thread"), read)
+            });
+            let (kind, computed) = read?;
+            let what = if format == sniff::Format::X3p {
+                "x3p"
+            } else {
+                "Gwyddion .gwy"
+            };
+            let summary = format!("{what} {}", describe(&kind, opts, ""));
+            return Ok(finish(kind, computed, sha256, summary, notes));
+        }
+        sniff::Format::Text => {
+            let (text, mut assumed) = sniff::text(bytes)?;
+            notes.append(&mut assumed);
+            text
+        }
+    };
+    // Several channels: one is read.
+    let blocks = channels::blocks(&text)?;
+    let (text, skipped) = if blocks.is_empty() {
+        if opts.channel.is_some() {
+            return no_channels();
+        }
+        (&text[..], 0)
+    } else {
+        let (b, note) = channels::pick(&blocks, opts.channel.as_deref())?;
+        notes.push(note);
+        (b.text, b.first_line - 1)
+    };
     // The hash runs beside the parse.
     let (sha256, read) = std::thread::scope(|s| {
         let hash = s.spawn(|| sha256_hex(bytes));
-        let read = read_text(text, opts);
+        let read = read_text(text, opts).map_err(|(l, p)| (l.map(|l| l + skipped), p));
         (hash.join().expect("hash thread"), read)
     });
     let (kind, computed, summary) = read?;
@@ -214,11 +309,23 @@ pub fn parse(bytes: &[u8], opts: &Options) -> Result<Measured, (Option<usize>, P
             )),
         ));
     }
-    let mut notes = computed.notes;
+    Ok(finish(kind, computed, sha256, summary, notes))
+}
+
+/// The surface from what was read: the reader's notes after the file's,
+/// the plausibility warning, the default fit band.
+fn finish(
+    kind: Kind,
+    computed: spectrum::Computed,
+    sha256: String,
+    summary: String,
+    mut notes: Vec<String>,
+) -> Measured {
+    notes.extend(computed.notes);
     let heights = !matches!(kind, Kind::Psd { .. });
     notes.extend(units::plausibility(&computed.table, heights));
     let band = band::self_affine(kind.dim(), &computed.spectrum, &computed.modes);
-    Ok(Measured {
+    Measured {
         kind,
         table: Arc::new(computed.table),
         spectrum: computed.spectrum,
@@ -228,7 +335,7 @@ pub fn parse(bytes: &[u8], opts: &Options) -> Result<Measured, (Option<usize>, P
         real: computed.real,
         band,
         modes: computed.modes,
-    })
+    }
 }
 
 fn read_text(
@@ -259,6 +366,15 @@ fn read_text(
         return Err((
             Some(header.channels[1]),
             Problem::Several("several channels: one channel per file, please".to_string()),
+        ));
+    }
+    if scan.cols == 3 && scan.rows() >= 4 && !header.has_size() {
+        return Err((
+            scan.row_lines.first().copied(),
+            Problem::Format(format!(
+                "three numbers a row: looks like an XYZ point cloud (x y z), {}",
+                sniff::XYZ_HINT
+            )),
         ));
     }
     let (kind, c) = if header.has_size() || scan.cols != 2 {

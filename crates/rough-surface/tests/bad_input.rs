@@ -236,7 +236,11 @@ fn not_text_and_empty() {
     bytes.extend_from_slice(b"1 2 \xff 4\n");
     let f = file(&bytes);
     let e = read(&f.path, &Options::default()).unwrap_err().to_string();
-    assert!(e.ends_with(", line 8: not UTF-8 text"), "{e}");
+    // Not UTF-8: read as Windows-1252, where 0xFF is 'ÿ'.
+    assert!(e.ends_with(", line 8: 'ÿ' is not a number"), "{e}");
+    let f = file(b"1 2\n\x00\x01\x02\xff\n");
+    let e = read(&f.path, &Options::default()).unwrap_err().to_string();
+    assert!(e.contains("a binary file of a format not read"), "{e}");
     assert_eq!(
         refuse(""),
         "bad surface FILE: no data rows (the file is empty or all comments)"
@@ -249,19 +253,39 @@ fn not_text_and_empty() {
 
 #[test]
 fn other_refusals() {
+    // Decimal commas are read (formats.rs tests the values).
     assert_eq!(
         refuse("1,5 2,5 3,5 4,5\n"),
-        "bad surface FILE, line 1: '1,5' has a decimal comma: write numbers with a decimal point"
+        "bad surface FILE: no size: add a header line '# Width: 10 µm' (the scan's length) \
+         or give the sample spacing with --pixel-size"
     );
     let two = format!(
         "# Channel: Height\n{}# Channel: Phase\n{}",
         map(SIZE, &GOOD),
         map("", &GOOD)
     );
+    // Two channels (Gwyddion's exports concatenated): the first of
+    // heights is read, an error in it names the file's line.
+    let f = file(two.as_bytes());
+    let m = read(&f.path, &Options::default()).unwrap();
     assert_eq!(
-        refuse(&two),
-        "bad surface FILE, line 9: a header line ('Channel: Phase') after the data: \
-         one channel per file, please"
+        m.notes,
+        vec![
+            "channel 0 'Height' (nm) read; also in the file: 1 'Phase' (m) (--channel N or TITLE)"
+        ]
+    );
+    assert_eq!(
+        refuse(&two.replacen("2 1 4 3", "2 1 x 3", 1)),
+        "bad surface FILE, line 6: 'x' is not a number"
+    );
+    let wrong = two.replace("Value units: nm", "Value units: V").replace(
+        "# Channel: Phase\n",
+        "# Channel: Phase\n# Value units: deg\n",
+    );
+    assert_eq!(
+        refuse(&wrong),
+        "bad surface FILE: no channel holds heights (values in a unit of length): \
+         0 'Height' (V), 1 'Phase' (deg)"
     );
     let dir = tempfile::tempdir().unwrap();
     let e = read(dir.path(), &Options::default()).unwrap_err();

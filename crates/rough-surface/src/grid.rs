@@ -1,0 +1,104 @@
+//! Heights on a regular grid as an instrument's file holds them (x3p,
+//! Gwyddion's .gwy): sizes in metres, undefined points as NaN, and the
+//! step from them to the moment table.
+
+use crate::error::{Failure, Problem};
+use crate::spectrum::{self, Computed};
+use crate::{Kind, Options};
+
+/// Heights on a regular grid, read from a binary file.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Grid {
+    /// Points along x (columns).
+    pub nx: usize,
+    /// Points along y (rows); 1 for a profile.
+    pub ny: usize,
+    /// The size along x in metres: nx times the spacing.
+    pub lx: f64,
+    /// The size along y in metres (ny times the spacing; a profile's is 0).
+    pub ly: f64,
+    /// Heights in metres, row after row (x fastest); an undefined point
+    /// (masked, invalid, NaN or an infinity in the file) is `f64::NAN`.
+    pub z: Vec<f64>,
+    /// What the reader assumed, one line each (they go to
+    /// [`crate::Measured::notes`]).
+    pub notes: Vec<String>,
+}
+
+impl Grid {
+    /// A profile (one row) rather than a map.
+    pub fn is_profile(&self) -> bool {
+        self.ny == 1
+    }
+
+    /// How many points are undefined.
+    pub fn undefined(&self) -> usize {
+        self.z.iter().filter(|v| v.is_nan()).count()
+    }
+
+    /// What the grid is, for [`crate::Measured::kind`].
+    pub fn kind(&self) -> Kind {
+        if self.is_profile() {
+            Kind::Line {
+                n: self.nx,
+                l: self.lx,
+            }
+        } else {
+            Kind::Map {
+                nx: self.nx,
+                ny: self.ny,
+                lx: self.lx,
+                ly: self.ly,
+            }
+        }
+    }
+}
+
+/// The moment table and spectrum of `g`'s heights; `g.notes` move to
+/// `notes`.
+pub(crate) fn compute(
+    mut g: Grid,
+    opts: &Options,
+    notes: &mut Vec<String>,
+) -> Result<(Kind, Computed), Failure> {
+    notes.append(&mut g.notes);
+    if let Some(p) = opts.pixel_size {
+        return Err((
+            None,
+            Problem::Option(format!(
+                "--pixel-size {p} m does not apply: the file gives its size"
+            )),
+        ));
+    }
+    let kind = g.kind();
+    let few = |axis, got| Err((None, Problem::TooFew { axis, got }));
+    if g.is_profile() && g.nx < 4 {
+        return few("the line", g.nx);
+    }
+    if !g.is_profile() && g.nx < 4 {
+        return few("x", g.nx);
+    }
+    if !g.is_profile() && g.ny < 4 {
+        return few("y", g.ny);
+    }
+    let undefined = g.undefined();
+    if undefined > 0 {
+        // The harmonic fill of undefined points belongs to the map
+        // pipeline; until it is there they are refused, named.
+        return Err((
+            None,
+            Problem::Format(format!(
+                "{undefined} of {} points are undefined (masked or invalid in the file): \
+                 this build does not fill undefined points",
+                g.z.len()
+            )),
+        ));
+    }
+    let c = if g.is_profile() {
+        spectrum::line(g.z, g.lx, opts.periodic)
+    } else {
+        spectrum::map(g.z, g.nx, g.ny, g.lx, g.ly, opts.periodic)
+    }
+    .map_err(|p| (None, p))?;
+    Ok((kind, c))
+}
