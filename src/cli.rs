@@ -231,6 +231,10 @@ pub struct ExportArgs {
     /// units).
     #[arg(long, value_name = "AXIS:FROM:TO", value_parser = parse_sweep)]
     pub sweep: Option<(Axis, f64, f64)>,
+    /// Seed of the simulated surface's random phases (contact views only;
+    /// default 1).
+    #[arg(long, value_name = "N")]
+    pub seed: Option<u64>,
 }
 
 /// Most points an export computes along a curve.
@@ -288,11 +292,15 @@ pub enum ViewArg {
     Spectrum,
     /// The moments and what they give per ζ (export only).
     Moments,
+    /// The boundary-element simulation beside the theory, against the load.
+    Contact,
+    /// The simulation's plastic share against ζ beside the theory's.
+    ContactSweep,
 }
 
 impl ViewArg {
-    /// The explorer's view of the same name (`None` for export's own
-    /// moments view).
+    /// The figure view, or `None` for export's own moments view
+    /// (src/export/moments.rs) and the contact views (src/contact.rs).
     pub fn figure(self) -> Option<crate::figure::View> {
         use crate::figure::View;
         Some(match self {
@@ -301,7 +309,7 @@ impl ViewArg {
             ViewArg::Map => View::Map,
             ViewArg::Load => View::Load,
             ViewArg::Spectrum => View::Spectrum,
-            ViewArg::Moments => return None,
+            ViewArg::Moments | ViewArg::Contact | ViewArg::ContactSweep => return None,
         })
     }
 }

@@ -4,6 +4,7 @@
 
 pub mod bench;
 pub mod cli;
+pub mod contact;
 pub mod csv_number;
 pub mod export;
 pub mod figure;

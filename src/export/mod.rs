@@ -22,7 +22,7 @@ pub use views::{
     SPECTRUM_HEADER,
 };
 
-use crate::cli::{ExportArgs, FormatArg, OnOff};
+use crate::cli::{ExportArgs, FormatArg, OnOff, ViewArg};
 use crate::figure::{render_svg, FigureOptions, View, DEFAULT_GRID};
 use crate::snapshot::State;
 
@@ -79,18 +79,12 @@ pub fn state_of(args: &ExportArgs) -> anyhow::Result<State> {
 }
 
 /// The view's options from `args`, refusing those that do not apply.
-/// `None` for the moments view (export's own, options checked in
-/// [`moments::check`]).
-pub fn options_of(args: &ExportArgs) -> anyhow::Result<(Option<View>, FigureOptions)> {
+pub fn options_of(args: &ExportArgs) -> anyhow::Result<(View, FigureOptions)> {
     let Some(view) = args.view.figure() else {
-        moments::check(args)?;
-        return Ok((
-            None,
-            FigureOptions {
-                points: args.points.unwrap_or(DEFAULT_POINTS),
-                ..FigureOptions::default()
-            },
-        ));
+        bail!(
+            "the moments and contact views are written by export::moments and \
+             crate::contact, not as figures"
+        );
     };
     let name = view.name();
     if view == View::Load && args.sweep.is_some() {
@@ -126,7 +120,7 @@ pub fn options_of(args: &ExportArgs) -> anyhow::Result<(Option<View>, FigureOpti
         }
     }
     Ok((
-        Some(view),
+        view,
         FigureOptions {
             points: args.points.unwrap_or(DEFAULT_POINTS),
             grid: args.grid.unwrap_or(DEFAULT_GRID),
@@ -138,11 +132,17 @@ pub fn options_of(args: &ExportArgs) -> anyhow::Result<(Option<View>, FigureOpti
 /// Runs `roughtui export`: writes the view to `out`. Every refusal happens
 /// before anything is written.
 pub fn run(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
+    if args.view == ViewArg::Moments {
+        moments::check(args)?;
+        let state = state_of(args)?;
+        let points = args.points.unwrap_or(DEFAULT_POINTS);
+        return moments::run(args.format, &state, points, out);
+    }
+    if args.view.figure().is_none() {
+        return crate::contact::export(args, out);
+    }
     let (view, opts) = options_of(args)?;
     let state = state_of(args)?;
-    let Some(view) = view else {
-        return moments::run(args.format, &state, opts.points, out);
-    };
     if args.format == FormatArg::Svg {
         if opts.points > MAX_SVG_POINTS {
             bail!(

@@ -1,0 +1,275 @@
+//! Elastic–perfectly-plastic contact of a rigid rough surface on an elastic
+//! half-space, by boundary elements: the beside-the-theory simulation of
+//! roughtui's contact view.
+//!
+//! - Compliance in Fourier space, ũ(q) = 2 p̃(q)/(E* |q|) on a periodic
+//!   cell (the kernel of Tamaas and ContactMechanics), or Love's influence
+//!   coefficients on a zero-padded 2N × 2N grid for a non-periodic window.
+//! - Pressure saturation at the hardness (Kato's saturated contact): find p
+//!   minimising ½⟨p, Kp⟩ − ⟨p, h⟩ with 0 ≤ p ≤ H and mean(p) = p̄, by a
+//!   bound-constrained conjugate gradient ([`Contact::solve`] states the
+//!   stopping rule).
+//! - Surfaces: [`synthesise`] a periodic Gaussian power-law surface from a
+//!   seed; [`low_pass`] a measured map to q ≤ ζ q0.
+//!
+//! No hardening, no adhesion, no tangential traction, small slopes.
+//! Memory: about ten N² arrays of f64 (periodic), forty for the free
+//! boundary's padded grid.
+
+mod fft;
+mod solver;
+mod surface;
+
+use std::fmt;
+
+pub use surface::{low_pass, moments, synthesise, Moments, PowerLaw};
+
+/// How the grid meets what lies beyond it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Boundary {
+    /// The surface repeats with period L in x and y.
+    Periodic,
+    /// The surface is a window on an infinite half-space loaded only inside
+    /// it (measured maps that are not periodic).
+    Free,
+}
+
+/// Solver settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Options {
+    /// Stop when the rms violation of the contact conditions, relative to
+    /// the rms height, is at most this.
+    pub tolerance: f64,
+    /// Give up after this many iterations.
+    pub max_iterations: usize,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            tolerance: 1e-10,
+            max_iterations: 20_000,
+        }
+    }
+}
+
+/// One load's result. Areas are fractions of the nominal area A0.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LoadResult {
+    /// Imposed mean pressure p̄.
+    pub p_mean: f64,
+    /// The pressure cap in use (∞: purely elastic).
+    pub hardness: f64,
+    /// Contact area (p > 0).
+    pub area: f64,
+    /// Elastic part, 0 < p < H.
+    pub elastic_area: f64,
+    /// Plastic part, p = H.
+    pub plastic_area: f64,
+    /// Mean separation over A0: mean of max(gap, 0).
+    pub mean_gap: f64,
+    /// Conjugate-gradient iterations.
+    pub iterations: usize,
+    /// Final residual (see [`Contact::solve`]).
+    pub residual: f64,
+}
+
+/// What went wrong.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ContactError {
+    /// The inputs are not a valid problem; the message says which and why.
+    Input(String),
+    /// The iteration limit was reached.
+    NotConverged { iterations: usize, residual: f64 },
+    /// The progress callback asked to stop.
+    Cancelled,
+}
+
+impl fmt::Display for ContactError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ContactError::Input(s) => write!(f, "{s}"),
+            ContactError::NotConverged {
+                iterations,
+                residual,
+            } => write!(
+                f,
+                "contact solver did not converge: residual {residual:.3e} after {iterations} iterations"
+            ),
+            ContactError::Cancelled => write!(f, "contact solution cancelled"),
+        }
+    }
+}
+
+impl std::error::Error for ContactError {}
+
+/// A rigid rough surface against an elastic half-space, ready to be loaded.
+pub struct Contact {
+    n: usize,
+    length: f64,
+    bccg: solver::Bccg,
+    pressure: Vec<f64>,
+    gap: Vec<f64>,
+    last_load: Option<f64>,
+}
+
+impl Contact {
+    /// `heights`: n × n, row-major (x fastest), of the rigid surface (up is
+    /// towards the half-space: contact starts at the highest point);
+    /// `length`: side of the cell; `e_star`: composite modulus.
+    pub fn new(
+        heights: Vec<f64>,
+        n: usize,
+        length: f64,
+        e_star: f64,
+        boundary: Boundary,
+    ) -> Result<Self, ContactError> {
+        if n < 2 || !n.is_power_of_two() {
+            return Err(ContactError::Input(format!(
+                "grid side {n}: must be a power of two, at least 2"
+            )));
+        }
+        if heights.len() != n * n {
+            return Err(ContactError::Input(format!(
+                "{} heights for a {n} × {n} grid",
+                heights.len()
+            )));
+        }
+        if let Some(i) = heights.iter().position(|v| !v.is_finite()) {
+            return Err(ContactError::Input(format!(
+                "height at row {}, column {} is not a finite number",
+                i / n,
+                i % n
+            )));
+        }
+        if !(length.is_finite() && length > 0.0) {
+            return Err(ContactError::Input(format!(
+                "cell side {length}: must be finite and positive"
+            )));
+        }
+        if !(e_star.is_finite() && e_star > 0.0) {
+            return Err(ContactError::Input(format!(
+                "composite modulus {e_star}: must be finite and positive"
+            )));
+        }
+        let op = match boundary {
+            Boundary::Periodic => fft::Compliance::periodic(n, length, e_star),
+            Boundary::Free => fft::Compliance::free(n, length, e_star),
+        };
+        Ok(Contact {
+            n,
+            length,
+            bccg: solver::Bccg::new(heights, op),
+            pressure: vec![0.0; n * n],
+            gap: vec![0.0; n * n],
+            last_load: None,
+        })
+    }
+
+    /// Grid side.
+    pub fn n(&self) -> usize {
+        self.n
+    }
+
+    /// Cell side.
+    pub fn length(&self) -> f64 {
+        self.length
+    }
+
+    /// rms height of the surface (the residual's scale).
+    pub fn h_rms(&self) -> f64 {
+        self.bccg.h_rms
+    }
+
+    /// Pressure of the last solution, n × n row-major.
+    pub fn pressure(&self) -> &[f64] {
+        &self.pressure
+    }
+
+    /// Gap of the last solution (zero on the elastic contact, negative
+    /// where the cap let the surface through).
+    pub fn gap(&self) -> &[f64] {
+        &self.gap
+    }
+
+    /// Solve at mean pressure `p_mean` (0 < p̄ ≤ H) with the pressure capped
+    /// at `hardness` (`f64::INFINITY` for a purely elastic contact).
+    ///
+    /// Stopping rule: with the gap g = u − h + λ (λ makes g average zero
+    /// over the nodes with 0 < p < H), the residual is the rms over all
+    /// nodes of g on those nodes, min(g, 0) where p = 0 and max(g, 0) where
+    /// p = H, divided by the surface's rms height; the solver stops when it
+    /// is ≤ `opts.tolerance`. The mean pressure is imposed exactly at every
+    /// iteration. Starts from the previous solution, rescaled, if any.
+    pub fn solve(
+        &mut self,
+        p_mean: f64,
+        hardness: f64,
+        opts: &Options,
+    ) -> Result<LoadResult, ContactError> {
+        self.solve_with_progress(p_mean, hardness, opts, &mut |_, _| true)
+    }
+
+    /// [`Contact::solve`] with `progress(iteration, residual)` called at
+    /// every iteration; returning false cancels.
+    pub fn solve_with_progress(
+        &mut self,
+        p_mean: f64,
+        hardness: f64,
+        opts: &Options,
+        progress: &mut dyn FnMut(usize, f64) -> bool,
+    ) -> Result<LoadResult, ContactError> {
+        if !(p_mean.is_finite() && p_mean > 0.0) {
+            return Err(ContactError::Input(format!(
+                "mean pressure {p_mean}: must be finite and positive"
+            )));
+        }
+        if hardness.is_nan() || hardness <= 0.0 {
+            return Err(ContactError::Input(format!(
+                "hardness {hardness}: must be positive (∞ for elastic)"
+            )));
+        }
+        if p_mean > hardness * (1.0 + 1e-12) {
+            return Err(ContactError::Input(format!(
+                "mean pressure {p_mean} above the hardness {hardness}: no admissible pressure"
+            )));
+        }
+        if opts.tolerance.is_nan() || opts.tolerance <= 0.0 {
+            return Err(ContactError::Input(format!(
+                "tolerance {}: must be positive",
+                opts.tolerance
+            )));
+        }
+        if let Some(prev) = self.last_load {
+            let k = p_mean / prev;
+            self.pressure.iter_mut().for_each(|v| *v *= k);
+        }
+        self.last_load = None;
+        let r = self.bccg.solve(
+            p_mean.min(hardness),
+            hardness,
+            opts,
+            &mut self.pressure,
+            &mut self.gap,
+            progress,
+        );
+        match &r {
+            Ok(_) => self.last_load = Some(p_mean.min(hardness)),
+            Err(_) => self.pressure.iter_mut().for_each(|v| *v = 0.0),
+        }
+        r
+    }
+
+    /// Solve each load in turn (each warm-starts the next).
+    pub fn sweep(
+        &mut self,
+        loads: &[f64],
+        hardness: f64,
+        opts: &Options,
+    ) -> Result<Vec<LoadResult>, ContactError> {
+        loads
+            .iter()
+            .map(|&p| self.solve(p, hardness, opts))
+            .collect()
+    }
+}

@@ -1,0 +1,174 @@
+//! Surfaces for the contact solver: a periodic Gaussian surface with a
+//! power-law spectrum synthesised from a seed, its moments as the realisation
+//! has them, and the low-pass filter that keeps wavevectors q ≤ q_cut.
+//!
+//! Convention (Persson's): h(x) = Σ_q h_q e^{iq·x} on a cell of side L, with
+//! ⟨|h_q|²⟩ = C(q) (2π/L)², so that ⟨h²⟩ = ∫ C(q) d²q.
+
+use rand_chacha::ChaCha8Rng;
+use rand_core::{RngCore, SeedableRng};
+use rustfft::num_complex::Complex64;
+
+use crate::fft::{signed, Fft2};
+use crate::ContactError;
+
+/// An isotropic power law C(q) = z q^(−2(1+hurst)) on q0 ≤ |q| ≤ q1.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PowerLaw {
+    /// Amplitude Z, m^(2H)·m² … (the model's `Z`).
+    pub z: f64,
+    /// Hurst exponent, 0 < H ≤ 1.
+    pub hurst: f64,
+    /// Lower cutoff, 1/m.
+    pub q0: f64,
+    /// Upper cutoff ζ q0, 1/m.
+    pub q1: f64,
+}
+
+impl PowerLaw {
+    fn psd(&self, q: f64) -> f64 {
+        // A relative margin keeps the wavevectors exactly on a cutoff in.
+        let eps = 1e-9;
+        if q < self.q0 * (1.0 - eps) || q > self.q1 * (1.0 + eps) {
+            0.0
+        } else {
+            self.z * q.powf(-2.0 * (1.0 + self.hurst))
+        }
+    }
+}
+
+/// Standard normal deviates by Box–Muller on a ChaCha8 stream, so that a
+/// seed gives the same surface on every platform and version.
+struct Normal(ChaCha8Rng, Option<f64>);
+
+impl Normal {
+    fn next(&mut self) -> f64 {
+        if let Some(v) = self.1.take() {
+            return v;
+        }
+        let unit = |r: &mut ChaCha8Rng| ((r.next_u64() >> 11) as f64 + 0.5) / (1u64 << 53) as f64;
+        let (u1, u2) = (unit(&mut self.0), unit(&mut self.0));
+        let rad = (-2.0 * u1.ln()).sqrt();
+        let (s, c) = (2.0 * std::f64::consts::PI * u2).sin_cos();
+        self.1 = Some(rad * s);
+        rad * c
+    }
+}
+
+fn check_grid(n: usize, length: f64) -> Result<(), ContactError> {
+    if n < 2 || !n.is_power_of_two() {
+        return Err(ContactError::Input(format!(
+            "grid side {n}: must be a power of two, at least 2"
+        )));
+    }
+    if !(length.is_finite() && length > 0.0) {
+        return Err(ContactError::Input(format!(
+            "cell side {length}: must be finite and positive"
+        )));
+    }
+    Ok(())
+}
+
+/// A periodic Gaussian surface on an n × n grid of side `length`: white
+/// noise from `seed` filtered by √C(q) (every mode's amplitude random, its
+/// phase uniform), mean zero. Row-major, heights in the units of √Z·q^…
+pub fn synthesise(
+    n: usize,
+    length: f64,
+    spectrum: &PowerLaw,
+    seed: u64,
+) -> Result<Vec<f64>, ContactError> {
+    check_grid(n, length)?;
+    let ok = |v: f64| v.is_finite() && v > 0.0;
+    let valid = ok(spectrum.z)
+        && ok(spectrum.q0)
+        && ok(spectrum.q1)
+        && spectrum.q1 >= spectrum.q0
+        && spectrum.hurst > 0.0
+        && spectrum.hurst <= 1.0;
+    if !valid {
+        return Err(ContactError::Input(format!(
+            "power law {spectrum:?}: needs Z, q0 > 0, q1 ≥ q0 and 0 < H ≤ 1"
+        )));
+    }
+    let mut rng = Normal(ChaCha8Rng::seed_from_u64(seed), None);
+    let noise: Vec<f64> = (0..n * n).map(|_| rng.next()).collect();
+    let mut fft = Fft2::new(n);
+    let mut spec = vec![Complex64::new(0.0, 0.0); fft.m() * n];
+    fft.forward(&noise, &mut spec);
+    let dq = 2.0 * std::f64::consts::PI / length;
+    // ⟨|W_k|²⟩ = n² for white noise; |H_k|² must be n⁴ C dq².
+    let gain = n as f64 * dq;
+    for kx in 0..fft.m() {
+        for ky in 0..n {
+            let q = dq * signed(kx, n).hypot(signed(ky, n));
+            spec[kx * n + ky] *= gain * spectrum.psd(q).sqrt();
+        }
+    }
+    let mut h = vec![0.0; n * n];
+    fft.inverse(&mut spec, &mut h);
+    Ok(h)
+}
+
+/// Keep only the Fourier modes with |q| ≤ `q_cut` (the mean stays).
+pub fn low_pass(h: &[f64], n: usize, length: f64, q_cut: f64) -> Result<Vec<f64>, ContactError> {
+    check_grid(n, length)?;
+    if h.len() != n * n {
+        return Err(ContactError::Input(format!(
+            "{} heights for a {n} × {n} grid",
+            h.len()
+        )));
+    }
+    let mut fft = Fft2::new(n);
+    let mut spec = vec![Complex64::new(0.0, 0.0); fft.m() * n];
+    fft.forward(h, &mut spec);
+    let dq = 2.0 * std::f64::consts::PI / length;
+    for kx in 0..fft.m() {
+        for ky in 0..n {
+            if dq * signed(kx, n).hypot(signed(ky, n)) > q_cut * (1.0 + 1e-9) {
+                spec[kx * n + ky] = Complex64::new(0.0, 0.0);
+            }
+        }
+    }
+    let mut out = vec![0.0; n * n];
+    fft.inverse(&mut spec, &mut out);
+    Ok(out)
+}
+
+/// Spectral moments of a periodic map as the realisation has them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Moments {
+    /// rms height about the mean.
+    pub h_rms: f64,
+    /// rms gradient √⟨|∇h|²⟩ = √(2 m2), the model's h′.
+    pub rms_slope: f64,
+}
+
+/// [`Moments`] of a periodic n × n map of side `length` (spectral slope).
+pub fn moments(h: &[f64], n: usize, length: f64) -> Result<Moments, ContactError> {
+    check_grid(n, length)?;
+    let mut fft = Fft2::new(n);
+    let m = fft.m();
+    let mut spec = vec![Complex64::new(0.0, 0.0); m * n];
+    fft.forward(h, &mut spec);
+    let dq = 2.0 * std::f64::consts::PI / length;
+    let (mut var, mut grad) = (0.0, 0.0);
+    for kx in 0..m {
+        // Half spectrum: the bins 1 … n/2−1 stand for their mirror images too.
+        let w = if kx == 0 || kx == m - 1 { 1.0 } else { 2.0 };
+        for ky in 0..n {
+            if kx == 0 && ky == 0 {
+                continue;
+            }
+            let q2 = dq * dq * (signed(kx, n).powi(2) + signed(ky, n).powi(2));
+            let a = spec[kx * n + ky].norm_sqr() * w;
+            var += a;
+            grad += a * q2;
+        }
+    }
+    let n4 = (n * n) as f64 * (n * n) as f64;
+    Ok(Moments {
+        h_rms: (var / n4).sqrt(),
+        rms_slope: (grad / n4).sqrt(),
+    })
+}

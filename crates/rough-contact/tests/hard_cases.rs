@@ -1,0 +1,195 @@
+//! Hard cases: the full plastic load, hardness far above and far below the
+//! elastic pressures, loads from 1e-4 H to H, flat plateaus, bad input; and
+//! the synthesised surfaces' spectrum.
+
+use rough_contact::{
+    low_pass, moments, synthesise, Boundary, Contact, ContactError, Options, PowerLaw,
+};
+
+const N: usize = 128;
+
+fn surface(seed: u64) -> Vec<f64> {
+    let law = PowerLaw {
+        z: 1.0,
+        hurst: 0.8,
+        q0: 2.0 * std::f64::consts::PI,
+        q1: 16.0 * 2.0 * std::f64::consts::PI,
+    };
+    let h = synthesise(N, 1.0, &law, seed).unwrap();
+    let m = moments(&h, N, 1.0).unwrap();
+    h.iter().map(|v| v * 0.1 / m.rms_slope).collect()
+}
+
+fn mean(p: &[f64]) -> f64 {
+    p.iter().sum::<f64>() / p.len() as f64
+}
+
+#[test]
+fn full_load_is_all_plastic() {
+    for boundary in [Boundary::Periodic, Boundary::Free] {
+        let mut c = Contact::new(surface(3), N, 1.0, 1.0, boundary).unwrap();
+        let r = c.solve(0.05, 0.05, &Options::default()).unwrap();
+        assert_eq!(r.area, 1.0);
+        assert_eq!(r.plastic_area, 1.0);
+        assert_eq!(r.elastic_area, 0.0);
+        assert!(c.pressure().iter().all(|&p| p == 0.05));
+        assert!((mean(c.pressure()) / 0.05 - 1.0).abs() < 1e-12);
+    }
+}
+
+#[test]
+fn loads_from_1e_4_to_1_hardness() {
+    let hardness = 0.05;
+    let mut c = Contact::new(surface(4), N, 1.0, 1.0, Boundary::Periodic).unwrap();
+    let mut last = 0.0;
+    for k in 0..=16 {
+        let p_over_h = 10f64.powf(-4.0 + 0.25 * k as f64);
+        let r = c
+            .solve(p_over_h * hardness, hardness, &Options::default())
+            .unwrap();
+        assert!(r.residual <= 1e-10 * 100.0, "{r:?}");
+        let m = mean(c.pressure());
+        assert!(
+            (m / (p_over_h * hardness) - 1.0).abs() < 1e-12,
+            "{p_over_h}: {m}"
+        );
+        assert!(r.area >= last, "area falls at {p_over_h}: {r:?}");
+        assert!(c.pressure().iter().all(|&p| (0.0..=hardness).contains(&p)));
+        // The load balance: plastic nodes carry H, free ones less.
+        assert!(r.plastic_area * hardness <= p_over_h * hardness * (1.0 + 1e-12));
+        last = r.area;
+    }
+    assert_eq!(last, 1.0);
+}
+
+#[test]
+fn hardness_far_above_is_elastic_far_below_is_plastic() {
+    let h = surface(5);
+    let p_mean = 1e-3;
+    let mut elastic = Contact::new(h.clone(), N, 1.0, 1.0, Boundary::Periodic).unwrap();
+    let e = elastic
+        .solve(p_mean, f64::INFINITY, &Options::default())
+        .unwrap();
+    let mut capped = Contact::new(h.clone(), N, 1.0, 1.0, Boundary::Periodic).unwrap();
+    let c = capped.solve(p_mean, 1e3, &Options::default()).unwrap();
+    assert_eq!(c.plastic_area, 0.0);
+    assert_eq!(c.area, e.area);
+    let d = elastic
+        .pressure()
+        .iter()
+        .zip(capped.pressure())
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0, f64::max);
+    assert!(d < 1e-9 * p_mean, "{d}");
+    // Far below: every contact node but at most one at the hardness.
+    let hardness = 2e-4 * 20.0; // p̄/H = 1/4, elastic pressures ~ E* h' ≫ H
+    let mut soft = Contact::new(h, N, 1.0, 1.0, Boundary::Periodic).unwrap();
+    let s = soft.solve(p_mean, hardness, &Options::default()).unwrap();
+    let cells = (N * N) as f64;
+    assert!(s.elastic_area * cells <= 0.2 * s.area * cells, "{s:?}");
+    assert!(
+        (s.plastic_area - p_mean / hardness).abs() <= s.elastic_area,
+        "{s:?}"
+    );
+}
+
+#[test]
+fn flat_plateau_and_flat_surface() {
+    let mut h = surface(6);
+    let top = {
+        let mut s = h.clone();
+        s.sort_by(f64::total_cmp);
+        s[s.len() - 200]
+    };
+    h.iter_mut().for_each(|v| *v = v.min(top));
+    let mut c = Contact::new(h, N, 1.0, 1.0, Boundary::Periodic).unwrap();
+    let r = c.solve(1e-4, 0.05, &Options::default()).unwrap();
+    // The 200 plateau nodes touch first, all of them.
+    assert!(r.area * (N * N) as f64 >= 200.0, "{r:?}");
+    let mut flat = Contact::new(vec![0.0; N * N], N, 1.0, 1.0, Boundary::Periodic).unwrap();
+    let r = flat.solve(1e-3, 0.05, &Options::default()).unwrap();
+    assert_eq!(r.area, 1.0);
+    assert!(flat.pressure().iter().all(|&p| p == 1e-3));
+}
+
+#[test]
+fn bad_input_is_named() {
+    let err = |r: Result<Contact, ContactError>| match r {
+        Err(ContactError::Input(s)) => s,
+        _ => panic!("accepted"),
+    };
+    assert!(
+        err(Contact::new(vec![0.0; 9], 3, 1.0, 1.0, Boundary::Periodic)).contains("power of two")
+    );
+    assert!(
+        err(Contact::new(vec![0.0; 15], 4, 1.0, 1.0, Boundary::Periodic)).contains("15 heights")
+    );
+    let mut h = vec![0.0; 16];
+    h[6] = f64::NAN;
+    assert!(err(Contact::new(h, 4, 1.0, 1.0, Boundary::Periodic)).contains("row 1, column 2"));
+    assert!(err(Contact::new(vec![0.0; 16], 4, 1.0, 0.0, Boundary::Periodic)).contains("modulus"));
+    let mut c = Contact::new(surface(7), N, 1.0, 1.0, Boundary::Periodic).unwrap();
+    for (p, hard) in [(0.1, 0.05), (-1.0, 0.05), (f64::NAN, 0.05), (0.01, 0.0)] {
+        match c.solve(p, hard, &Options::default()) {
+            Err(ContactError::Input(_)) => {}
+            other => panic!("{p}, {hard}: {other:?}"),
+        }
+    }
+}
+
+#[test]
+fn synthesis_has_the_spectrum_it_was_asked_for() {
+    let law = PowerLaw {
+        z: 1e-3,
+        hurst: 0.7,
+        q0: 2.0 * std::f64::consts::PI,
+        q1: 8.0 * 2.0 * std::f64::consts::PI,
+    };
+    // Expected ⟨|∇h|²⟩: the sum of C(q) q² dq² over the band's modes.
+    let dq = 2.0 * std::f64::consts::PI;
+    let mut expected = 0.0;
+    for i in -64i32..64 {
+        for j in -64i32..64 {
+            let q = dq * ((i * i + j * j) as f64).sqrt();
+            if q >= law.q0 * (1.0 - 1e-9) && q <= law.q1 * (1.0 + 1e-9) {
+                expected += law.z * q.powf(-2.0 * (1.0 + law.hurst)) * q * q * dq * dq;
+            }
+        }
+    }
+    let seeds = 16;
+    let mut acc = 0.0;
+    for seed in 0..seeds {
+        let h = synthesise(N, 1.0, &law, seed).unwrap();
+        assert_eq!(h, synthesise(N, 1.0, &law, seed).unwrap());
+        assert!(mean(&h).abs() < 1e-12);
+        // Nothing outside the band.
+        let inside = low_pass(&h, N, 1.0, law.q1).unwrap();
+        let d = h
+            .iter()
+            .zip(&inside)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max);
+        assert!(d < 1e-12, "{d}");
+        let below = low_pass(&h, N, 1.0, 0.99 * law.q0).unwrap();
+        assert!(below.iter().all(|v| v.abs() < 1e-12));
+        acc += moments(&h, N, 1.0).unwrap().rms_slope.powi(2);
+    }
+    let ratio = acc / seeds as f64 / expected;
+    assert!((ratio - 1.0).abs() < 0.05, "⟨|∇h|²⟩ ratio {ratio}");
+}
+
+#[test]
+fn progress_can_cancel() {
+    let mut c = Contact::new(surface(8), N, 1.0, 1.0, Boundary::Periodic).unwrap();
+    let mut calls = 0;
+    let r = c.solve_with_progress(1e-3, 0.05, &Options::default(), &mut |it, res| {
+        calls += 1;
+        assert!(res.is_finite() && it < 3);
+        it < 2
+    });
+    assert_eq!(r, Err(ContactError::Cancelled));
+    assert_eq!(calls, 3);
+    // The next solve starts afresh and converges.
+    let r = c.solve(1e-3, 0.05, &Options::default()).unwrap();
+    assert!(r.residual <= 1e-10);
+}

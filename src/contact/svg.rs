@@ -1,0 +1,171 @@
+//! The contact views as SVG: the simulation's points beside the theory's
+//! curves, in the paper's colours (elastic black, plastic blue, total red).
+
+use std::io::Write;
+
+use plotters::prelude::*;
+use rough_model::areas;
+
+use super::{load_rows, sweep_rows, SWEEP_LOAD};
+use crate::snapshot::State;
+
+const SIZE: (u32, u32) = (900, 600);
+const ELASTIC: RGBColor = RGBColor(0, 0, 0);
+const PLASTIC: RGBColor = RGBColor(0, 0, 255);
+const TOTAL: RGBColor = RGBColor(255, 0, 0);
+
+fn err(e: impl std::fmt::Display) -> anyhow::Error {
+    anyhow::anyhow!("cannot draw the picture: {e}")
+}
+
+fn log_points(from: f64, to: f64, n: usize) -> Vec<f64> {
+    (0..n)
+        .map(|i| from * (to / from).powf(i as f64 / (n - 1) as f64))
+        .collect()
+}
+
+/// A/A0 against p̄/H (both log): simulation points, theory curves.
+pub fn contact(
+    out: &mut impl Write,
+    state: &State,
+    points: usize,
+    seed: u64,
+) -> anyhow::Result<()> {
+    let (sim, rows) = load_rows(state, points, seed)?;
+    let theory: Vec<(f64, rough_model::Areas)> = log_points(1e-3, 1.0, 120)
+        .into_iter()
+        .filter_map(|x| areas(sim.model, sim.psi, x).ok().map(|a| (x, a)))
+        .collect();
+    let floor = rows
+        .iter()
+        .flat_map(|r| [r.sim.area, r.sim.elastic_area, r.sim.plastic_area])
+        .chain(theory.iter().map(|(_, a)| a.total))
+        .filter(|&v| v > 0.0)
+        .fold(1.0, f64::min)
+        .max(1e-8)
+        / 2.0;
+    let mut buf = String::new();
+    {
+        let root = SVGBackend::with_string(&mut buf, SIZE).into_drawing_area();
+        root.fill(&WHITE).map_err(err)?;
+        let title = format!(
+            "{}: simulation (points, {n}×{n}, seed {}) and theory (lines)",
+            state.name,
+            sim.seed,
+            n = sim.contact.n()
+        );
+        let mut chart = ChartBuilder::on(&root)
+            .caption(title, ("sans-serif", 18))
+            .margin(16)
+            .x_label_area_size(48)
+            .y_label_area_size(70)
+            .build_cartesian_2d((1e-3f64..1.0).log_scale(), (floor..1.0f64).log_scale())
+            .map_err(err)?;
+        chart
+            .configure_mesh()
+            .x_desc("p̄/H (H = hardness in use)")
+            .y_desc("A/A0")
+            .x_label_formatter(&|v| format!("{v:.0e}"))
+            .y_label_formatter(&|v| format!("{v:.0e}"))
+            .draw()
+            .map_err(err)?;
+        type Pick = fn(&rough_model::Areas) -> f64;
+        type PickSim = fn(&rough_contact::LoadResult) -> f64;
+        let series: [(&str, RGBColor, Pick, PickSim); 3] = [
+            ("total", TOTAL, |a| a.total, |r| r.area),
+            ("elastic", ELASTIC, |a| a.elastic, |r| r.elastic_area),
+            ("plastic", PLASTIC, |a| a.plastic, |r| r.plastic_area),
+        ];
+        for (name, colour, pick, pick_sim) in series {
+            let line: Vec<(f64, f64)> = theory
+                .iter()
+                .map(|(x, a)| (*x, pick(a)))
+                .filter(|&(_, y)| y > floor)
+                .collect();
+            chart
+                .draw_series(LineSeries::new(line, colour.stroke_width(2)))
+                .map_err(err)?
+                .label(format!("{name}: theory"))
+                .legend(move |(x, y)| PathElement::new([(x, y), (x + 18, y)], colour));
+            let pts: Vec<(f64, f64)> = rows
+                .iter()
+                .map(|r| (r.p_over_h, pick_sim(&r.sim)))
+                .filter(|&(_, y)| y > floor)
+                .collect();
+            chart
+                .draw_series(pts.into_iter().map(|p| Circle::new(p, 4, colour.filled())))
+                .map_err(err)?
+                .label(format!("{name}: simulation"))
+                .legend(move |(x, y)| Circle::new((x + 9, y), 4, colour.filled()));
+        }
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::LowerRight)
+            .border_style(BLACK)
+            .background_style(WHITE.mix(0.9))
+            .draw()
+            .map_err(err)?;
+        root.present().map_err(err)?;
+    }
+    out.write_all(buf.as_bytes())?;
+    out.flush()?;
+    Ok(())
+}
+
+/// Plastic share of the contact area against ζ at p̄/H = [`SWEEP_LOAD`].
+pub fn sweep(out: &mut impl Write, state: &State, seed: u64) -> anyhow::Result<()> {
+    let (_, rows) = sweep_rows(state, seed)?;
+    let mut buf = String::new();
+    {
+        let root = SVGBackend::with_string(&mut buf, SIZE).into_drawing_area();
+        root.fill(&WHITE).map_err(err)?;
+        let title = format!(
+            "{}: plastic share of the contact area at p̄/H = {SWEEP_LOAD}, seed {seed}",
+            state.name
+        );
+        let mut chart = ChartBuilder::on(&root)
+            .caption(title, ("sans-serif", 18))
+            .margin(16)
+            .x_label_area_size(48)
+            .y_label_area_size(60)
+            .build_cartesian_2d((1f64..128.0).log_scale(), 0f64..1.0)
+            .map_err(err)?;
+        chart
+            .configure_mesh()
+            .x_desc("ζ = q1/q0")
+            .y_desc("A_pl/A")
+            .draw()
+            .map_err(err)?;
+        let line: Vec<(f64, f64)> = rows
+            .iter()
+            .map(|r| (r.zeta, r.theory_share()))
+            .filter(|p| p.1.is_finite())
+            .collect();
+        chart
+            .draw_series(LineSeries::new(line, PLASTIC.stroke_width(2)))
+            .map_err(err)?
+            .label("theory")
+            .legend(|(x, y)| PathElement::new([(x, y), (x + 18, y)], PLASTIC));
+        let pts: Vec<(f64, f64)> = rows
+            .iter()
+            .map(|r| (r.zeta, r.share()))
+            .filter(|p| p.1.is_finite())
+            .collect();
+        chart
+            .draw_series(pts.into_iter().map(|p| Circle::new(p, 5, PLASTIC.filled())))
+            .map_err(err)?
+            .label("simulation")
+            .legend(|(x, y)| Circle::new((x + 9, y), 5, PLASTIC.filled()));
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::UpperRight)
+            .border_style(BLACK)
+            .background_style(WHITE.mix(0.9))
+            .draw()
+            .map_err(err)?;
+        root.present().map_err(err)?;
+    }
+    out.write_all(buf.as_bytes())?;
+    out.flush()?;
+    Ok(())
+}

@@ -1,0 +1,116 @@
+//! `roughtui export --view contact` and `--view contact-sweep`: the
+//! parameter lines, the header, the loads, the simulation beside the
+//! theory, and the refusals (exit status 2, a message naming the problem).
+//! The solver's accuracy is tested in crates/rough-contact against Westergaard,
+//! Hertz and Tamaas.
+
+mod common;
+use common::cli::{run, stdout};
+
+fn parse(csv: &str) -> (Vec<&str>, &str, Vec<Vec<f64>>) {
+    let comments: Vec<&str> = csv.lines().filter(|l| l.starts_with('#')).collect();
+    let mut rest = csv.lines().filter(|l| !l.starts_with('#'));
+    let header = rest.next().unwrap();
+    let rows = rest
+        .map(|l| l.split(',').map(|v| v.parse::<f64>().unwrap()).collect())
+        .collect();
+    (comments, header, rows)
+}
+
+#[test]
+fn contact_view_csv() {
+    let csv = stdout(&[
+        "export", "--view", "contact", "--preset", "fig2", "--set", "zeta=16",
+    ]);
+    let (comments, header, rows) = parse(&csv);
+    assert!(comments
+        .iter()
+        .any(|c| c.contains("128 × 128 grid") && c.contains("seed 1")));
+    assert!(comments
+        .iter()
+        .any(|c| c.contains("hardness_in_use_over_e = 0.01")));
+    assert_eq!(
+        header,
+        "p_over_h,area,elastic_area,plastic_area,mean_gap,iterations,residual,\
+         theory_area,theory_elastic_area,theory_plastic_area"
+    );
+    assert_eq!(rows.len(), 13);
+    assert_eq!(rows[0][0], 1e-3);
+    assert_eq!(rows[12][0], 1.0);
+    let mut last = 0.0;
+    for r in &rows {
+        // Parts add up on the grid and in the theory.
+        assert!((r[2] + r[3] - r[1]).abs() < 1e-12, "{r:?}");
+        assert!((r[8] + r[9] - r[7]).abs() < 1e-9, "{r:?}");
+        assert!(r[1] >= last && r[1] <= 1.0);
+        assert!(r[6] <= 1e-10, "residual {r:?}");
+        last = r[1];
+    }
+    // At p̄ = H everything is at the hardness, in both.
+    assert_eq!(&rows[12][1..4], &[1.0, 0.0, 1.0]);
+    assert!((rows[12][7] - 1.0).abs() < 1e-12 && (rows[12][9] - 1.0).abs() < 1e-12);
+    // Another seed, another surface, same header.
+    let other = stdout(&[
+        "export", "--view", "contact", "--preset", "fig2", "--set", "zeta=16", "--seed", "7",
+        "--points", "3",
+    ]);
+    let (_, _, other) = parse(&other);
+    assert_eq!(other.len(), 3);
+    assert_ne!(other[0][1], rows[0][1]);
+}
+
+#[test]
+fn contact_sweep_csv_and_svg() {
+    let csv = stdout(&["export", "--view", "contact-sweep", "--preset", "fig2"]);
+    let (comments, header, rows) = parse(&csv);
+    assert!(header.starts_with("zeta,p_over_h,plastic_share,theory_plastic_share,"));
+    assert!(comments.iter().any(|c| c.contains("zeta = 1,")));
+    let zetas: Vec<f64> = rows.iter().map(|r| r[0]).collect();
+    assert_eq!(zetas, [1.0, 2.0, 4.0, 8.0, 16.0, 32.0, 64.0, 128.0]);
+    let grids: Vec<f64> = rows.iter().map(|r| r[6]).collect();
+    assert_eq!(grids, [32.0, 32.0, 32.0, 64.0, 128.0, 256.0, 512.0, 1024.0]);
+    for r in &rows {
+        assert_eq!(r[1], 0.01);
+        assert!(
+            (0.0..=1.0).contains(&r[2]) && (0.0..=1.0).contains(&r[3]),
+            "{r:?}"
+        );
+    }
+    let svg = stdout(&[
+        "export", "--view", "contact", "--preset", "fig3", "--set", "zeta=8", "--format", "svg",
+        "--points", "4",
+    ]);
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let text: String = doc.descendants().filter_map(|n| n.text()).collect();
+    assert!(
+        text.contains("simulation") && text.contains("theory"),
+        "{text}"
+    );
+}
+
+#[test]
+fn contact_refusals() {
+    for (args, needle) in [
+        (vec!["--set", "zeta=1000"], "ζ ≤ 128"),
+        (
+            vec!["--grid", "3x3"],
+            "--grid does not apply to --view contact",
+        ),
+        (vec!["--points", "100"], "at most 64 loads"),
+        (
+            vec!["--surface", "surfaces/example.txt"],
+            "power-law surface",
+        ),
+    ] {
+        let mut all = vec!["export", "--view", "contact", "--preset", "fig2"];
+        if args[0] == "--surface" {
+            all.truncate(3);
+        }
+        all.extend(&args);
+        let out = run(&all);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{all:?}: {err}");
+        assert!(err.contains(needle), "{all:?}: {err}");
+        assert!(out.stdout.is_empty());
+    }
+}
