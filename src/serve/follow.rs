@@ -194,6 +194,8 @@ fn edits(msg: &Message) -> bool {
             | M::NextView
             | M::PrevView
             | M::NextMapY
+            | M::MoveFitBand { .. }
+            | M::AutoFitBand
             // Typing a slider's value: the lecturer's next move would
             // overwrite it.
             | M::StartValue
