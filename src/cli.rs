@@ -109,6 +109,16 @@ pub struct Setup {
     /// heights when not given).
     #[arg(long, value_name = "N|TITLE", requires = "surface")]
     pub channel: Option<String>,
+    /// The unit of the surface's heights, whatever the file says: m, mm,
+    /// µm (um), nm, Å (A) or pm. Without it heights take the file's value
+    /// unit, else its lateral unit (said in a note).
+    #[arg(long, value_name = "UNIT", requires = "surface", value_parser = parse_height_unit)]
+    pub height_unit: Option<rough_surface::HeightUnit>,
+    /// The Hurst fit band of a measured surface: wavevectors in 1/m
+    /// (1e6:1e8) or wavelengths with a unit (60nm:6um) [default: the
+    /// spectrum's self-affine stretch, found from the data].
+    #[arg(long, value_name = "FROM:TO", value_parser = parse_fit_band)]
+    pub fit_band: Option<(f64, f64)>,
     /// Set a parameter, e.g. --set h0-over-e=0.001 --set r-star=0.5mm
     /// (repeatable; units as the value prompt takes them). AXIS is one of
     /// h0-over-e, h-rms, zeta, hurst, r-star; or q0 (1/m) or l (the
@@ -145,6 +155,7 @@ impl Setup {
             series: self.series.clone(),
             direction: self.direction.map(Into::into),
             channel: self.channel.clone(),
+            height_unit: self.height_unit,
         }
     }
 }
@@ -158,6 +169,7 @@ impl BenchArgs {
             series: self.series.clone(),
             direction: self.direction.map(Into::into),
             channel: self.channel.clone(),
+            height_unit: None,
         }
     }
 }
@@ -170,6 +182,52 @@ fn parse_pixel_size(s: &str) -> Result<f64, String> {
     } else {
         Err(format!("\"{}\" is not a length > 0", s.trim()))
     }
+}
+
+/// `--height-unit`: a length unit.
+fn parse_height_unit(s: &str) -> Result<rough_surface::HeightUnit, String> {
+    rough_surface::HeightUnit::parse(s).ok_or_else(|| {
+        format!(
+            "\"{}\" is not a length unit: m, mm, µm (um), nm, Å (A) or pm",
+            s.trim()
+        )
+    })
+}
+
+/// `--fit-band FROM:TO`: two wavevectors in 1/m, or two wavelengths with
+/// a unit (q = 2π/λ), as (q_lo, q_hi).
+pub fn parse_fit_band(s: &str) -> Result<(f64, f64), String> {
+    let bad = || {
+        format!(
+            "\"{}\" is not a band: FROM:TO in 1/m (1e6:1e8) or as wavelengths (60nm:6um)",
+            s.trim()
+        )
+    };
+    let (a, b) = s.split_once(':').ok_or_else(bad)?;
+    let q = |v: &str| -> Result<(f64, bool), String> {
+        let v = v.trim();
+        if v.ends_with(|c: char| c.is_alphabetic()) {
+            let l = crate::tui::value_input::parse_value(Axis::HRms, v)?;
+            Ok((std::f64::consts::TAU / l, true))
+        } else {
+            v.parse::<f64>().map(|q| (q, false)).map_err(|_| bad())
+        }
+    };
+    let ((a, la), (b, lb)) = (q(a)?, q(b)?);
+    if la != lb {
+        return Err(format!(
+            "\"{}\": both ends in 1/m or both as wavelengths with a unit",
+            s.trim()
+        ));
+    }
+    let (lo, hi) = (a.min(b), a.max(b));
+    if !(lo > 0.0 && hi.is_finite() && hi > lo) {
+        return Err(format!(
+            "\"{}\": a band needs two different lengths > 0",
+            s.trim()
+        ));
+    }
+    Ok((lo, hi))
 }
 
 /// What `--set` (and a `KEY=VALUE` typed at the value prompt) sets.
@@ -266,8 +324,9 @@ pub struct ExportArgs {
     #[command(flatten)]
     pub setup: Setup,
     /// What to export: the slopes against the swept parameter, the
-    /// plasticity indices, the regime map, the areas against the load, or a
-    /// measured surface's spectrum (q, psd, fit).
+    /// plasticity indices, the regime map, the areas against the load, a
+    /// measured surface's spectrum (q, psd, fit), or the moments per ζ
+    /// (m0, m2, m4, h_rms, h′, h″, R_s; Sq, Sdq and the fit as comments).
     #[arg(long, value_enum, default_value_t = ViewArg::Slopes)]
     pub view: ViewArg,
     /// CSV numbers, or an SVG picture of the view.
@@ -359,6 +418,8 @@ pub enum ViewArg {
     Map,
     Load,
     Spectrum,
+    /// The moments and what they give per ζ (export only).
+    Moments,
     /// The boundary-element simulation beside the theory, against the load.
     Contact,
     /// The simulation's plastic share against ζ beside the theory's.
@@ -369,7 +430,8 @@ pub enum ViewArg {
 }
 
 impl ViewArg {
-    /// The figure view, or `None` for the contact views (src/contact.rs).
+    /// The figure view, or `None` for export's own moments view
+    /// (src/export/moments.rs) and the contact views (src/contact.rs).
     pub fn figure(self) -> Option<crate::figure::View> {
         use crate::figure::View;
         Some(match self {
@@ -378,7 +440,9 @@ impl ViewArg {
             ViewArg::Map => View::Map,
             ViewArg::Load => View::Load,
             ViewArg::Spectrum => View::Spectrum,
-            ViewArg::Contact | ViewArg::ContactSweep | ViewArg::ContactMap => return None,
+            ViewArg::Moments | ViewArg::Contact | ViewArg::ContactSweep | ViewArg::ContactMap => {
+                return None
+            }
         })
     }
 }

@@ -40,8 +40,14 @@ pub fn load_base(src: &Source, setup: &Setup) -> anyhow::Result<State> {
     })
 }
 
-/// Every `--set` of `setup` applied to `state`; the refusal names the pair.
+/// `--fit-band` and every `--set` of `setup` applied to `state`; the
+/// refusal names the pair.
 pub fn apply_setup(state: &mut State, setup: &Setup) -> anyhow::Result<()> {
+    if let Some(band) = setup.fit_band {
+        state
+            .set_fit_band(Some(band))
+            .map_err(|e| anyhow::anyhow!("--fit-band: {e}"))?;
+    }
     apply_sets(state, &setup.set).map_err(|(at, e)| match at {
         Some(k) => {
             let (key, text) = &setup.set[k];

@@ -58,6 +58,9 @@ fn run(cli: Cli) -> anyhow::Result<()> {
             if let Some(w) = state.surface_warning() {
                 println!("warning: {w}");
             }
+            for n in state.surface.iter().flat_map(|s| s.notes()) {
+                println!("{n}");
+            }
             use roughtui::serve::code::ClassCode;
             let class_code = match (&a.class_code, &a.class_code_file) {
                 (Some(w), _) => Some(ClassCode::word(w).context("--class-code")?),

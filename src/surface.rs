@@ -27,14 +27,19 @@ pub struct SurfaceSource {
     /// When loaded from a snapshot that recorded another SHA-256: that one
     /// (the file changed since the snapshot was saved).
     pub recorded_sha256: Option<String>,
+    /// The Hurst fit band set by hand (`--fit-band`, the spectrum view's
+    /// keys), 1/m; `None`: the self-affine stretch found from the data.
+    pub fit_band: Option<(f64, f64)>,
 }
 
 /// Two sources are the same surface when they are the same file, read the
-/// same way, with the same content (the table compares in O(1)).
+/// same way, with the same content (the table compares in O(1)), fitted
+/// over the same band.
 impl PartialEq for SurfaceSource {
     fn eq(&self, other: &SurfaceSource) -> bool {
         self.path == other.path
             && self.options == other.options
+            && self.fit_band == other.fit_band
             && self.measured.sha256 == other.measured.sha256
             && self.measured.table == other.measured.table
     }
@@ -66,6 +71,7 @@ impl SurfaceSource {
             options,
             measured: Arc::new(measured),
             recorded_sha256: None,
+            fit_band: None,
         })
     }
 
@@ -103,14 +109,24 @@ impl SurfaceSource {
         self.measured.kind.dim()
     }
 
-    /// The least-squares power law through the spectrum over the band
-    /// [q0, ζ q0] (`None` with fewer than two points in it).
-    pub fn fit(&self, zeta: f64) -> Option<PowerLawFit> {
-        let q0 = self.q0();
-        // The band's ends are data points: a cutoff a rounding below one
+    /// The Hurst fit band, 1/m: the one set by hand, else the self-affine
+    /// stretch found from the data (`None` when none was found).
+    pub fn fit_band(&self) -> Option<(f64, f64)> {
+        self.fit_band.or(self.measured.band)
+    }
+
+    /// The least-squares power law through the spectrum over the fit band
+    /// (`None` with fewer than two points in it).
+    pub fn fit(&self) -> Option<PowerLawFit> {
+        let (lo, hi) = self.fit_band()?;
+        // The band's ends are data points: an end a rounding below one
         // still takes it.
-        self.measured
-            .fit(q0 * (1.0 - 1e-12), zeta * q0 * (1.0 + 1e-12))
+        self.measured.fit(lo * (1.0 - 1e-12), hi * (1.0 + 1e-12))
+    }
+
+    /// The notes of the surface as read (units, repairs, warnings).
+    pub fn notes(&self) -> &[String] {
+        &self.measured.notes
     }
 
     /// What the file held, in words: "a 512 × 512 map of 10 µm × 10 µm".
@@ -177,8 +193,8 @@ pub fn fitted_params(state: &State) -> Result<Params, String> {
         .as_ref()
         .ok_or("no measured surface: the fit is of one")?;
     let fit = src
-        .fit(state.params.zeta())
-        .ok_or("fewer than two spectrum points in the band q0…q1: no power-law fit")?;
+        .fit()
+        .ok_or("fewer than two spectrum points in the fit band: no power-law fit")?;
     let (_, h_rms) = fit_amplitude(&fit).ok_or_else(|| {
         format!(
             "the fit's H = {:.3} is outside (0, 1]: no self-affine power law to compare",
@@ -195,7 +211,7 @@ pub fn fitted_params(state: &State) -> Result<Params, String> {
 }
 
 /// The values a measured state holds for the parameters the data fixes:
-/// h_rms = √m0 of the whole data, H of the fit over the whole band (kept
+/// h_rms = √m0 of the whole data, H of the fit over the fit band (kept
 /// inside (0, 1]), q0 of the data. Written into snapshots for reference;
 /// recomputed from the file when one is loaded.
 pub fn fixed_values(src: &SurfaceSource, mut v: ParamValues) -> ParamValues {
@@ -207,7 +223,7 @@ pub fn fixed_values(src: &SurfaceSource, mut v: ParamValues) -> ParamValues {
     } else {
         v.h_rms
     };
-    let hu = src.fit(src.zeta_max()).map_or(0.8, |f| f.hurst);
+    let hu = src.fit().map_or(0.8, |f| f.hurst);
     v.hurst = if hu.is_finite() {
         hu.clamp(0.01, 1.0)
     } else {
@@ -217,6 +233,19 @@ pub fn fixed_values(src: &SurfaceSource, mut v: ParamValues) -> ParamValues {
 }
 
 impl State {
+    /// Sets the measured surface's Hurst fit band (`None`: the one found
+    /// from the data) and the H the scene records with it.
+    pub fn set_fit_band(&mut self, band: Option<(f64, f64)>) -> Result<(), String> {
+        let src = self
+            .surface
+            .as_mut()
+            .ok_or("the fit band is a measured surface's: give one with --surface FILE")?;
+        src.fit_band = band;
+        let values = fixed_values(src, self.params.values());
+        self.params = Params::new(values).map_err(|e| e.to_string())?;
+        Ok(())
+    }
+
     /// The scene a surface opens on: the paper's material (H0/E = 0.01,
     /// R* = 1 mm, size effect on), the sweep over ζ from 1 to the largest ζ
     /// the data allows and the marker there, the exact model (the data
@@ -326,6 +355,8 @@ mod tests {
             q_lo: q0,
             q_hi: 1e9,
             points: 5,
+            hurst_se: 0.0,
+            rms_decades: 0.0,
         };
         let (z, h) = fit_amplitude(&fit).unwrap();
         assert!((z / 1e-8 - 1.0).abs() < 1e-14, "{z}");

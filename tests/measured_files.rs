@@ -9,7 +9,7 @@
 
 mod common;
 
-use common::cli::{stdout, BIN};
+use common::cli::{noted, run, BIN};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
@@ -65,8 +65,8 @@ fn deviation(args: &[&str], rows: &[[f64; 4]], tol: f64) -> f64 {
     let n = rows.len().to_string();
     let mut a = vec!["export", "--view", "indices", "--points", &n];
     a.extend_from_slice(args);
-    let csv = stdout(&a);
-    let mut lines = csv.lines().filter(|l| !l.starts_with('#'));
+    let (csv, _) = noted(&a);
+    let mut lines = csv.lines();
     assert_eq!(
         lines.next(),
         Some("zeta,psi_gw,psi_p,psi_star,psi_star_asymptotic,hardness_ratio")
@@ -153,7 +153,9 @@ fn every_view_of_a_map_and_a_download_exports() {
             ("load", "load,elastic,plastic,total"),
             ("spectrum", "q,psd,fit"),
         ] {
-            let csv = stdout(&["export", "--surface", f, "--view", view]);
+            let out = run(&["export", "--surface", f, "--view", view]);
+            assert_eq!(out.status.code(), Some(0), "{f} {view}");
+            let csv = String::from_utf8(out.stdout).unwrap();
             // The scene first: the file and its SHA-256 among the `#` lines.
             let name = file.file_name().unwrap().to_str().unwrap();
             let comments: Vec<&str> = csv.lines().take_while(|l| l.starts_with('#')).collect();
@@ -168,7 +170,7 @@ fn every_view_of_a_map_and_a_download_exports() {
             let header_line = csv.lines().find(|l| !l.starts_with('#'));
             assert_eq!(header_line, Some(header), "{f} {view}");
             assert!(csv.lines().count() > 10, "{f} {view}: {csv}");
-            let svg = stdout(&["export", "--surface", f, "--view", view, "--format", "svg"]);
+            let (svg, _) = noted(&["export", "--surface", f, "--view", view, "--format", "svg"]);
             assert!(
                 svg.contains("<svg") && svg.trim_end().ends_with("</svg>"),
                 "{f} {view}"

@@ -8,7 +8,7 @@ mod common;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
-use common::cli::{stdout, BIN};
+use common::cli::{noted, BIN};
 use roughtui::snapshot::{load_file, save_new, State};
 use roughtui::surface::SurfaceSource;
 
@@ -41,7 +41,9 @@ fn refused(args: &[&str], words: &[&str]) {
 fn spectrum(args: &[&str]) -> Vec<Vec<f64>> {
     let mut a = vec!["export", "--view", "spectrum", "--set", "zeta=4"];
     a.extend_from_slice(args);
-    stdout(&a)
+    // The notes (the channel read, the units) are comment lines.
+    noted(&a)
+        .0
         .lines()
         .skip(1)
         .map(|l| l.split(',').filter_map(|f| f.parse().ok()).collect())

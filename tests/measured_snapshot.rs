@@ -137,6 +137,45 @@ fn the_direction_and_the_measurement_are_recorded() {
 }
 
 #[test]
+fn the_height_unit_and_the_fit_band_are_recorded() {
+    let d = tempfile::tempdir().unwrap();
+    let t = d.path().join("map.txt");
+    let mut text = String::from("# Width: 4 um\n# Height: 4 um\n");
+    for j in 0..8 {
+        let row: Vec<String> = (0..8)
+            .map(|i| format!("{}", ((i * 7 + j * 13) % 11) as f64 + 0.1 * (i * j) as f64))
+            .collect();
+        text.push_str(&row.join(" "));
+        text.push('\n');
+    }
+    std::fs::write(&t, text).unwrap();
+    let opts = rough_surface::Options {
+        height_unit: rough_surface::HeightUnit::parse("nm"),
+        ..Default::default()
+    };
+    let mut s = surface_state(&t, opts.clone());
+    s.set_fit_band(Some((2e6, 1e7))).unwrap();
+    let p = save_new(d.path(), "units", &s).unwrap();
+    let text = std::fs::read_to_string(&p).unwrap();
+    assert!(
+        text.contains(", height_unit: \"nm\", fit_band: (2000000.0, 10000000.0)),"),
+        "{text}"
+    );
+    let back = load_file(&p).unwrap();
+    assert_eq!(back, s);
+    let src = back.surface.unwrap();
+    assert_eq!(src.options, opts);
+    assert_eq!(src.fit_band, Some((2e6, 1e7)));
+    // A unit the snapshot cannot read names itself.
+    let bad = text.replace("height_unit: \"nm\"", "height_unit: \"furlong\"");
+    let e = State::from_bytes_in(bad.as_bytes(), Some(d.path())).unwrap_err();
+    assert!(
+        e.to_string().contains("\"furlong\" is not a length unit"),
+        "{e}"
+    );
+}
+
+#[test]
 fn old_snapshots_stay_byte_for_byte() {
     let s = State::from_ron(common::GOOD).unwrap();
     assert!(s.surface.is_none());

@@ -45,15 +45,26 @@ fn press(a: &mut App, code: KeyCode, mods: KeyModifiers) {
 }
 
 #[test]
-fn tab_and_shift_tab_cycle_the_four_views() {
+fn tab_and_shift_tab_cycle_the_five_views() {
     let mut a = app("fig2", (80, 24), Theme::colored());
     assert_eq!(a.view, View::Slopes);
     let mut seen = vec![];
-    for _ in 0..4 {
+    for _ in 0..5 {
         press(&mut a, KeyCode::Tab, KeyModifiers::NONE);
         seen.push(a.view);
     }
-    assert_eq!(seen, [View::Indices, View::Map, View::Load, View::Slopes]);
+    assert_eq!(
+        seen,
+        [
+            View::Indices,
+            View::Map,
+            View::Load,
+            View::Contact,
+            View::Slopes
+        ]
+    );
+    press(&mut a, KeyCode::BackTab, KeyModifiers::SHIFT);
+    assert_eq!(a.view, View::Contact);
     press(&mut a, KeyCode::BackTab, KeyModifiers::SHIFT);
     assert_eq!(a.view, View::Load);
     press(&mut a, KeyCode::BackTab, KeyModifiers::NONE);

@@ -129,18 +129,22 @@ pub fn synthetic(n: usize) -> anyhow::Result<State> {
             ly: l,
         },
         table: Arc::new(table),
-        spectrum,
         sha256: "0".repeat(64),
         summary: format!("synthetic map {n} × {n}"),
         notes: Vec::new(),
         measurement: None,
         slopes: None,
+        real: None,
+        band: Measured::find_band(Dim::Areal, &spectrum, &[]),
+        modes: Vec::new(),
+        spectrum,
     };
     State::measured(SurfaceSource {
         path: std::path::PathBuf::from(format!("synthetic-{n}x{n}.txt")),
         options: Options::default(),
         measured: Arc::new(measured),
         recorded_sha256: None,
+        fit_band: None,
     })
 }
 

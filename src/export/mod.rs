@@ -6,6 +6,7 @@
 //! or scene are refused, so that a mistyped command never silently prints
 //! something else.
 
+mod moments;
 mod slopes;
 mod views;
 
@@ -14,13 +15,14 @@ use std::io::Write;
 use anyhow::bail;
 use rough_model::Sweep;
 
+pub use moments::{write_moments, MOMENTS_HEADER};
 pub use slopes::{write_csv, HEADER};
 pub use views::{
     write_indices, write_load, write_map, write_spectrum, INDICES_HEADER, LOAD_HEADER, MAP_HEADER,
     SPECTRUM_HEADER,
 };
 
-use crate::cli::{ExportArgs, FormatArg, OnOff};
+use crate::cli::{ExportArgs, FormatArg, OnOff, ViewArg};
 use crate::figure::{render_svg, FigureOptions, View, DEFAULT_GRID};
 use crate::snapshot::State;
 
@@ -40,6 +42,15 @@ pub fn state_of(args: &ExportArgs) -> anyhow::Result<State> {
     if let Some(w) = state.surface_warning() {
         // The export goes on with the file as it is now; the user is told.
         let _ = writeln!(std::io::stderr(), "roughtui: warning: {w}");
+    }
+    for n in state.surface.iter().flat_map(|s| s.notes()) {
+        // "warning: …" notes say so themselves.
+        let kind = if n.starts_with("warning:") {
+            ""
+        } else {
+            "note: "
+        };
+        let _ = writeln!(std::io::stderr(), "roughtui: {kind}{n}");
     }
     if let Some(m) = args.model {
         state.model = m.into();
@@ -77,7 +88,10 @@ pub fn state_of(args: &ExportArgs) -> anyhow::Result<State> {
 /// The view's options from `args`, refusing those that do not apply.
 pub fn options_of(args: &ExportArgs) -> anyhow::Result<(View, FigureOptions)> {
     let Some(view) = args.view.figure() else {
-        bail!("the contact views are written by crate::contact, not as figures");
+        bail!(
+            "the moments and contact views are written by export::moments and \
+             crate::contact, not as figures"
+        );
     };
     let name = view.name();
     if view == View::Load && args.sweep.is_some() {
@@ -125,6 +139,12 @@ pub fn options_of(args: &ExportArgs) -> anyhow::Result<(View, FigureOptions)> {
 /// Runs `roughtui export`: writes the view to `out`. Every refusal happens
 /// before anything is written.
 pub fn run(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
+    if args.view == ViewArg::Moments {
+        moments::check(args)?;
+        let state = state_of(args)?;
+        let points = args.points.unwrap_or(DEFAULT_POINTS);
+        return moments::run(args.format, &state, points, out);
+    }
     if args.view.figure().is_none() {
         return crate::contact::export(args, out);
     }
@@ -142,6 +162,11 @@ pub fn run(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
         out.write_all(svg.as_bytes())?;
         out.flush()?;
         return Ok(());
+    }
+    // What the reader assumed or repaired, before the header (the moments
+    // view writes its own).
+    for n in state.surface.iter().flat_map(|s| s.notes()) {
+        writeln!(out, "# {n}")?;
     }
     match view {
         View::Slopes => write_csv(out, &state, opts.points),

@@ -29,6 +29,7 @@ mod claims;
 mod colour;
 mod map;
 mod minimum;
+mod moments;
 mod number;
 pub mod scene_text;
 mod series;
@@ -40,11 +41,12 @@ pub use colour::{
     share_ansi16, share_ansi256, share_char, share_colour, ANSI16_SCALE, ANSI256_SCALE, RAMP,
 };
 pub use map::{axis_arg, MapCache, MapSpec, RegimeMap, DEFAULT_GRID};
+pub use moments::{moment_comments, MomentSeries};
 pub use number::short_number;
 pub use rough_model::slopes::{ELASTIC_BELOW, PLASTIC_ABOVE};
 pub use series::{IndexSeries, LoadCurve};
 pub use spectrum::{NotMeasured, SpectrumSeries};
-pub use svg::render_svg;
+pub use svg::{render_moments_svg, render_svg};
 
 use rough_model::Axis;
 

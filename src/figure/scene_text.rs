@@ -131,12 +131,18 @@ fn span_full(state: &State, view: View, opts: &FigureOptions) -> String {
 /// and view, every parameter with all its digits, the sweep or map, model,
 /// moments and size effect, and a measured surface's file and SHA-256.
 pub fn full_lines(state: &State, view: View, opts: &FigureOptions) -> Vec<String> {
+    full_lines_of(state, view.name(), span_full(state, view, opts))
+}
+
+/// [`full_lines`] of a picture or table that is not one of the explorer's
+/// views (`export --view moments`): `what` names it, `span` says what it
+/// spans.
+pub fn full_lines_of(state: &State, what: &str, span: String) -> Vec<String> {
     let p = &state.params;
     let mut lines = vec![format!(
-        "roughtui {}: scene {:?}, view {}",
+        "roughtui {}: scene {:?}, view {what}",
         env!("CARGO_PKG_VERSION"),
         state.name,
-        view.name()
     )];
     for axis in Axis::ALL {
         let unit = match axis_unit(axis) {
@@ -160,7 +166,7 @@ pub fn full_lines(state: &State, view: View, opts: &FigureOptions) -> Vec<String
         full(p.q0()),
         full(std::f64::consts::TAU / p.q0())
     ));
-    lines.push(span_full(state, view, opts));
+    lines.push(span);
     lines.push(format!("model = {}", state.model.label()));
     lines.push(format!("moments = {}", moments(state)));
     lines.push(format!("size_effect = {}", on_off(state.size_effect)));
@@ -176,15 +182,6 @@ pub fn full_lines(state: &State, view: View, opts: &FigureOptions) -> Vec<String
 pub fn short_lines(state: &State, view: View, opts: &FigureOptions) -> Vec<String> {
     let p = &state.params;
     let swept = state.sweep.axis();
-    let mut params: Vec<String> = Axis::ALL
-        .iter()
-        .map(|&a| format!("{} = {}", caption_symbol(a), short_value(a, p.get(a))))
-        .collect();
-    params.push(format!(
-        "q0 = {} 1/m (L = {})",
-        short_number(p.q0()),
-        short_length(std::f64::consts::TAU / p.q0())
-    ));
     let range = |a: Axis, from: f64, to: f64| {
         format!(
             "{} {} … {}",
@@ -208,6 +205,21 @@ pub fn short_lines(state: &State, view: View, opts: &FigureOptions) -> Vec<Strin
         }),
         View::Load | View::Spectrum | View::Contact => None,
     };
+    short_lines_of(state, span)
+}
+
+/// [`short_lines`] with what the picture spans (`span`) given.
+pub fn short_lines_of(state: &State, span: Option<String>) -> Vec<String> {
+    let p = &state.params;
+    let mut params: Vec<String> = Axis::ALL
+        .iter()
+        .map(|&a| format!("{} = {}", caption_symbol(a), short_value(a, p.get(a))))
+        .collect();
+    params.push(format!(
+        "q0 = {} 1/m (L = {})",
+        short_number(p.q0()),
+        short_length(std::f64::consts::TAU / p.q0())
+    ));
     let mut how: Vec<String> = span.into_iter().collect();
     how.push(state.model.label().to_string());
     how.push(format!("{} moments", moments(state)));

@@ -1,6 +1,6 @@
 //! The spectrum view's data: a measured surface's spectrum (log-binned for
 //! maps and lines, the table itself for a PSD table), the least-squares
-//! power law over the band [q0, q1] on screen, and the cutoff q1 = ζ q0.
+//! power law over the fit band, and the cutoff q1 = ζ q0.
 
 use std::fmt;
 
@@ -18,8 +18,8 @@ pub struct SpectrumSeries {
     /// Wavevectors, 1/m, increasing.
     pub q: Vec<f64>,
     pub psd: Vec<f64>,
-    /// The fitted power law at each q inside the band [q0, q1]; `None`
-    /// outside it.
+    /// The fitted power law at each q inside the fit band; `None` outside
+    /// it.
     pub fit: Vec<Option<f64>>,
     /// The fit itself, `None` with fewer than two points in the band.
     pub power_law: Option<PowerLawFit>,
@@ -49,7 +49,7 @@ impl SpectrumSeries {
         let src = state.surface.as_ref().ok_or(NotMeasured)?;
         let q0 = src.q0();
         let q1 = state.params.zeta() * q0;
-        let power_law = src.fit(state.params.zeta());
+        let power_law = src.fit();
         let dim = src.dim();
         let data = &src.measured.spectrum;
         let (q, psd): (Vec<f64>, Vec<f64>) = data.iter().copied().unzip();
@@ -57,7 +57,8 @@ impl SpectrumSeries {
             .iter()
             .map(|&x| {
                 let f = power_law?;
-                (x >= f.q_lo && x <= f.q_hi).then(|| f.psd_at_q0 * (x / q0).powf(f.slope))
+                let inside = x >= f.q_lo * (1.0 - 1e-12) && x <= f.q_hi * (1.0 + 1e-12);
+                inside.then(|| f.psd_at_q0 * (x / q0).powf(f.slope))
             })
             .collect();
         Ok(SpectrumSeries {

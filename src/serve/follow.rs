@@ -206,6 +206,8 @@ fn edits(msg: &Message) -> bool {
             | M::ContactLoad { .. }
             | M::ContactSweep
             | M::ContactSeed
+            | M::MoveFitBand { .. }
+            | M::AutoFitBand
             // Typing a slider's value: the lecturer's next move would
             // overwrite it.
             | M::StartValue

@@ -50,6 +50,39 @@ pub struct SurfaceFile {
     /// one was chosen.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub channel: Option<String>,
+    /// The heights' unit given with `--height-unit` ("nm"), if any.
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "ser_text",
+        deserialize_with = "de_text"
+    )]
+    pub height_unit: Option<String>,
+    /// The Hurst fit band set by hand, (q_lo, q_hi) in 1/m; absent: the
+    /// self-affine stretch found from the data.
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "ser_pair",
+        deserialize_with = "de_pair"
+    )]
+    pub fit_band: Option<(f64, f64)>,
+}
+
+fn ser_pair<S: Serializer>(v: &Option<(f64, f64)>, s: S) -> Result<S::Ok, S::Error> {
+    v.unwrap_or_default().serialize(s)
+}
+
+fn de_pair<'de, D: Deserializer<'de>>(d: D) -> Result<Option<(f64, f64)>, D::Error> {
+    <(f64, f64)>::deserialize(d).map(Some)
+}
+
+fn ser_text<S: Serializer>(v: &Option<String>, s: S) -> Result<S::Ok, S::Error> {
+    v.as_deref().unwrap_or_default().serialize(s)
+}
+
+fn de_text<'de, D: Deserializer<'de>>(d: D) -> Result<Option<String>, D::Error> {
+    String::deserialize(d).map(Some)
 }
 
 /// `direction: x` or `direction: y` in a snapshot.
@@ -122,6 +155,10 @@ pub enum SurfaceProblem {
     Bad(SurfaceError),
     /// `pixel_size` is not a length > 0.
     PixelSize(f64),
+    /// `height_unit` is not a length unit.
+    HeightUnit(String),
+    /// `fit_band` is not two wavevectors 0 < q_lo < q_hi.
+    FitBand(f64, f64),
 }
 
 impl fmt::Display for SurfaceProblem {
@@ -137,6 +174,15 @@ impl fmt::Display for SurfaceProblem {
             SurfaceProblem::PixelSize(v) => write!(
                 f,
                 "surface.pixel_size = {v} is out of range: it must be a length > 0 in metres"
+            ),
+            SurfaceProblem::FitBand(a, b) => write!(
+                f,
+                "surface.fit_band = ({a}, {b}) is out of range: two wavevectors in 1/m, \
+                 0 < the first < the second"
+            ),
+            SurfaceProblem::HeightUnit(u) => write!(
+                f,
+                "surface.height_unit = {u:?} is not a length unit: m, mm, µm, nm, Å or pm"
             ),
         }
     }
@@ -158,12 +204,20 @@ pub(super) fn read(sf: &SurfaceFile, base: Option<&Path>) -> Result<SurfaceSourc
         Some(b) if recorded.is_relative() => b.join(recorded),
         _ => recorded.to_path_buf(),
     };
+    let height_unit = match &sf.height_unit {
+        Some(u) => Some(
+            rough_surface::HeightUnit::parse(u)
+                .ok_or_else(|| SurfaceProblem::HeightUnit(u.clone()))?,
+        ),
+        None => None,
+    };
     let options = Options {
         periodic: sf.periodic,
         pixel_size: sf.pixel_size,
         series: sf.series.clone(),
         direction: sf.direction.map(Into::into),
         channel: sf.channel.clone(),
+        height_unit,
     };
     let mut src = SurfaceSource::read(&path, options).map_err(|e| {
         let missing = matches!(&e.problem, Problem::Read(_)) && !path.exists();
@@ -176,6 +230,12 @@ pub(super) fn read(sf: &SurfaceFile, base: Option<&Path>) -> Result<SurfaceSourc
             SurfaceProblem::Bad(e)
         }
     })?;
+    if let Some((a, b)) = sf.fit_band {
+        if !(a > 0.0 && b > a && b.is_finite()) {
+            return Err(SurfaceProblem::FitBand(a, b));
+        }
+        src.fit_band = Some((a, b));
+    }
     if src.measured.sha256 != sf.sha256 {
         src.recorded_sha256 = Some(sf.sha256.clone());
     }
@@ -197,5 +257,7 @@ pub(super) fn file_of(src: &SurfaceSource, base: Option<&Path>) -> SurfaceFile {
         series: src.options.series.clone(),
         direction: src.options.direction.map(Into::into),
         channel: src.options.channel.clone(),
+        height_unit: src.options.height_unit.map(|u| u.name.to_string()),
+        fit_band: src.fit_band,
     }
 }

@@ -56,6 +56,13 @@ pub enum Message {
     /// Pin the current curves (on a measured surface first the fitted
     /// power law) as a ghost, or clear the ghost.
     ToggleGhost,
+    /// `[ ]` `{ }`: an end of the fit band (`upper` or lower) one point up or down.
+    MoveFitBand {
+        upper: bool,
+        up: bool,
+    },
+    /// `b`: the fit band found from the data again.
+    AutoFitBand,
     StartSave,
     /// Open the prompt for the selected slider's value.
     StartValue,
@@ -172,7 +179,7 @@ struct CurveKey {
 type LoadKey = (rough_model::Params, SceneSpec);
 
 /// What the spectrum view depends on: the surface and the cutoff ζ.
-type SpectrumKey = (rough_model::Roughness, f64, usize);
+type SpectrumKey = (rough_model::Roughness, f64, usize, Option<(f64, f64)>);
 
 pub struct App {
     pub state: State,
@@ -288,6 +295,8 @@ impl App {
         }
         if let Some(w) = app.state.surface_warning() {
             app.set_status(w, true);
+        } else {
+            measured::show_notes(&mut app);
         }
         app.refresh();
         app
@@ -391,7 +400,13 @@ impl App {
                 }
             }
             View::Spectrum => {
-                let key = (self.state.roughness(), self.state.params.zeta(), points);
+                let band = self.state.surface.as_ref().and_then(|s| s.fit_band());
+                let key = (
+                    self.state.roughness(),
+                    self.state.params.zeta(),
+                    points,
+                    band,
+                );
                 if self.spectrum_key.as_ref() != Some(&key) {
                     self.spectrum = compute_spectrum(&self.state, points);
                     self.spectrum_key = Some(key);
@@ -547,6 +562,8 @@ pub fn update(app: &mut App, msg: Message) {
         }
         Message::SavePicture => app.save_picture(),
         Message::ToggleGhost => measured::toggle_ghost(app),
+        Message::MoveFitBand { upper, up } => measured::move_fit_band(app, upper, up),
+        Message::AutoFitBand => measured::auto_fit_band(app),
         Message::StartSave => {
             // The prefill is a file name: no separators or control characters.
             let name: String = app

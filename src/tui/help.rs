@@ -103,7 +103,22 @@ pub const SYMBOLS: &[(&str, &str)] = &[
 /// The symbols only a measured surface shows, listed after ζ on one.
 pub const MEASURED_SYMBOLS: &[(&str, &str)] = &[
     ("q0 q1", "the band of wavevectors the moments sum over"),
-    ("H fit", "a power-law fit over q0…q1, for orientation only"),
+    (
+        "H fit",
+        "a power-law fit over the fit band, found from the data",
+    ),
+    ("", "or set ([ ] { } move its ends, b: found again);"),
+    ("", "with its standard error; flagged when not self-affine"),
+    (
+        "h_rms(ζ)",
+        "rms height from the PSD up to ζ: √m0, detrended, windowed",
+    ),
+    ("h′(ζ)", "rms slope from the PSD up to ζ: √(2 m2)"),
+    (
+        "Sq Sdq",
+        "real space, detrended, no window: rms height and gradient",
+    ),
+    ("Rq RΔq", "a line scan's real-space rms height and slope"),
 ];
 
 /// Where [`SYMBOLS`] names the regime marks: the glyph set's own.

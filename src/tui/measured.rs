@@ -99,6 +99,90 @@ pub fn cycle_sweep(app: &mut App) {
     }
 }
 
+/// The surface's notes (units assumed, repairs, warnings) on the status
+/// row, a warning shown as one; nothing when there are none.
+pub fn show_notes(app: &mut App) {
+    let Some(src) = app.state.surface.as_ref() else {
+        return;
+    };
+    let notes = src.notes();
+    if notes.is_empty() {
+        return;
+    }
+    let warning = notes.iter().any(|n| n.starts_with("warning:"));
+    app.set_status(notes.join(" · "), warning);
+}
+
+/// `[ ]` `{ }`: moves an end of the fit band to the neighbouring point of
+/// the spectrum, keeping at least [`rough_surface::MIN_FIT_POINTS`] points
+/// in the band.
+pub fn move_fit_band(app: &mut App, upper: bool, up: bool) {
+    let Some(src) = app.state.surface.as_ref() else {
+        app.set_status(
+            "the fit band is a measured surface's: 5 or --surface FILE",
+            true,
+        );
+        return;
+    };
+    let qs: Vec<f64> = src.measured.spectrum.iter().map(|p| p.0).collect();
+    let Some((lo, hi)) = src.fit_band() else {
+        app.set_status("no fit band: the spectrum has too few points", true);
+        return;
+    };
+    // The band's ends as indices of the spectrum's points.
+    let at = |q: f64| qs.partition_point(|&x| x < q * (1.0 - 1e-9));
+    let (mut i, mut j) = (at(lo), at(hi).min(qs.len() - 1));
+    let min = rough_surface::MIN_FIT_POINTS - 1;
+    let moved = match (upper, up) {
+        (false, false) => i.checked_sub(1).map(|k| i = k),
+        (false, true) => (i + 1 + min <= j).then(|| i += 1),
+        (true, false) => (j >= i + 1 + min).then(|| j -= 1),
+        (true, true) => (j + 1 < qs.len()).then(|| j += 1),
+    };
+    if moved.is_none() {
+        app.set_status(
+            format!(
+                "the fit band cannot move that way: it keeps {} points inside the data",
+                min + 1
+            ),
+            true,
+        );
+        return;
+    }
+    if let Err(e) = app.state.set_fit_band(Some((qs[i], qs[j]))) {
+        app.set_status(e, true);
+        return;
+    }
+    app.modified = true;
+    say_fit(app, "b: the band found from the data");
+}
+
+/// `b`: the fit band found from the data again.
+pub fn auto_fit_band(app: &mut App) {
+    if let Err(e) = app.state.set_fit_band(None) {
+        app.set_status(e, true);
+        return;
+    }
+    app.modified = true;
+    say_fit(app, "found from the data");
+}
+
+/// The status row after the fit band changed: the band and H over it.
+fn say_fit(app: &mut App, how: &str) {
+    let Some(f) = app.state.surface.as_ref().and_then(|s| s.fit()) else {
+        app.set_status("no power law fits the band", true);
+        return;
+    };
+    let h = match f.verdict().words() {
+        None => format!("H {}", super::views::hurst_se(&f)),
+        Some(w) => format!("H {:.2}: {w}", f.hurst),
+    };
+    app.set_status(
+        format!("fit band {:.2e}…{:.2e} /m ({how}): {h}", f.q_lo, f.q_hi),
+        false,
+    );
+}
+
 /// `5`: back to the measured surface the session started on.
 pub fn load_surface(app: &mut App) {
     match app.home.clone() {
@@ -106,6 +190,7 @@ pub fn load_surface(app: &mut App) {
             let name = s.name.clone();
             app.load_state(s);
             app.set_status(format!("loaded {name} (measured surface)"), false);
+            show_notes(app);
         }
         None => app.set_status(
             "no measured surface in this session: start with --surface FILE",

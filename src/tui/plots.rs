@@ -249,13 +249,15 @@ pub fn compute_load(state: &State, points: usize) -> LoadPlot {
 }
 
 /// The spectrum view's curves on log-log axes: the data, the power law
-/// fitted over [q0, q1], and the cutoff q1.
+/// fitted over the fit band, the band's ends, and the cutoff q1.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct SpectrumPlot {
     /// (log10 q, log10 PSD) of the data.
     pub data: Vec<(f64, f64)>,
-    /// The fitted power law over [q0, q1], same axes.
+    /// The fitted power law over the fit band, same axes.
     pub fit: Vec<(f64, f64)>,
+    /// log10 of the fit band's ends.
+    pub band: Option<[f64; 2]>,
     /// log10 q1, the cutoff (the marker).
     pub q1: f64,
     /// log10 q0.
@@ -287,7 +289,8 @@ pub fn compute_spectrum(state: &State, points: usize) -> SpectrumPlot {
     let data = log_curve(true, &s.q, s.psd.iter().copied());
     let x_bounds = decades_around(data.iter().map(|p| p.0));
     let y_bounds = decades_around(data.iter().map(|p| p.1));
-    let (a, b) = (s.q0.log10(), s.q1.log10().min(x_bounds[1]));
+    let band = s.power_law.map(|f| [f.q_lo.log10(), f.q_hi.log10()]);
+    let [a, b] = band.unwrap_or([0.0, 0.0]);
     let n = points.clamp(2, 400);
     let fit = if s.power_law.is_some() && b > a {
         let qs: Vec<f64> = (0..n)
@@ -304,8 +307,9 @@ pub fn compute_spectrum(state: &State, points: usize) -> SpectrumPlot {
     SpectrumPlot {
         data,
         fit,
+        band,
         q1: s.q1.log10(),
-        q0: a,
+        q0: s.q0.log10(),
         x_bounds,
         y_bounds,
         label: s.psd_label(),

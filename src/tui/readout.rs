@@ -18,7 +18,7 @@ pub struct Readout {
     /// The other model's slopes at the same ψ.
     pub other: Slopes,
     pub persson: f64,
-    /// On a measured surface: the least-squares power law over [q0, q1].
+    /// On a measured surface: the least-squares power law over the fit band.
     pub fit: Option<Fit>,
 }
 
@@ -35,7 +35,7 @@ impl Readout {
         let surface = state.roughness().surface(&state.params, state.moments);
         let psi = surface.indices.psi_in_use(state.size_effect);
         let fit = state.surface.as_ref().and_then(|src| {
-            let fit = src.fit(state.params.zeta())?;
+            let fit = src.fit()?;
             Some(Fit {
                 fit,
                 h_rms: fit_amplitude(&fit).map(|a| a.1),

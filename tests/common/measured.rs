@@ -27,6 +27,7 @@ fn source(name: &str, measured: Measured) -> SurfaceSource {
         options: Options::default(),
         measured: Arc::new(measured),
         recorded_sha256: None,
+        fit_band: None,
     }
 }
 
@@ -46,15 +47,19 @@ pub fn line_state() -> State {
         .map(|n| (n as f64 * q0, 1e-18 * (n as f64).powf(-2.4)))
         .collect();
     let table = MomentTable::from_discrete(Dim::Profile, q0, terms.clone()).unwrap();
+    let spectrum: Vec<(f64, f64)> = terms.iter().map(|&(q, w)| (q, w * l)).collect();
     let m = Measured {
         kind: Kind::Line { n: 128, l },
         table: Arc::new(table),
-        spectrum: terms.iter().map(|&(q, w)| (q, w * l)).collect(),
         sha256: "0".repeat(64),
         summary: "line scan of 128 points".to_string(),
         notes: Vec::new(),
         measurement: None,
         slopes: None,
+        real: None,
+        band: Measured::find_band(Dim::Profile, &spectrum, &[]),
+        modes: Vec::new(),
+        spectrum,
     };
     State::measured(source("line.txt", m)).unwrap()
 }

@@ -70,6 +70,15 @@ impl Bins {
             .map(|s| (s[1] / s[0], s[2] / s[0]))
             .collect()
     }
+
+    /// How many points (weights) each bin [`Bins::finish`] reports holds.
+    pub fn counts(&self) -> Vec<f64> {
+        self.sums
+            .iter()
+            .filter(|s| s[0] > 0.0)
+            .map(|s| s[0])
+            .collect()
+    }
 }
 
 #[cfg(test)]

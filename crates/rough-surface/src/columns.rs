@@ -45,7 +45,11 @@ fn hint(lines: &[(usize, &str)], header: &Header) -> Option<Hint> {
             .split(|c: char| c.is_whitespace() || matches!(c, ',' | ';' | '#'))
             .filter(|w| !w.is_empty())
             .collect();
-        match words.first().copied() {
+        // "x/mm", "x(mm)": the name before its unit.
+        let first = words
+            .first()
+            .map(|w| w.split(['/', '(', '[']).next().unwrap_or(w));
+        match first {
             Some("q" | "k" | "wavevector" | "wavenumber") => psd = true,
             Some("x" | "position" | "distance") => scan = true,
             _ => {}
@@ -210,11 +214,47 @@ pub(crate) fn read(
     let all: Vec<&str> = text.split('\n').collect();
     let fields = first_fields(&all, lines);
     let dx = uniform(&x, &fields).map_err(|(i, p)| (Some(lines[i]), p))?;
-    let (sx, sz) = (header.lateral_scale()?, header.value_scale()?);
+    let (sx, sz, note) = scales(&scan.header, header, opts)?;
     let z: Vec<f64> = y.iter().map(|v| v / sz).collect();
     let l = n as f64 * dx / sx;
-    let c = spectrum::line(z, l, opts.periodic).map_err(|p| (None, p))?;
+    let mut c = spectrum::line(z, l, opts.periodic).map_err(|p| (None, p))?;
+    c.notes.extend(note);
     Ok((Kind::Line { n, l }, c))
+}
+
+/// An `x z` table's x and z units per metre (divide by them) and the note
+/// on the heights' unit: a header naming the columns' units (`x (mm),z
+/// (um)`) first, else the labels (`Lateral units`, `Value units`); heights
+/// without a unit take the x unit.
+fn scales(
+    lines: &[(usize, &str)],
+    header: &Header,
+    opts: &Options,
+) -> Result<(f64, f64, Option<String>), Failure> {
+    use crate::units::{heights, Source};
+    let unit = |u: &str, line: usize| {
+        crate::header::per_metre(u).ok_or((Some(line), Problem::UnknownUnit(u.to_string())))
+    };
+    let Some((line, x, z)) = crate::colunits::scan_units(lines) else {
+        let source = match (&header.value_unit, &header.x_unit) {
+            (Some((u, l)), _) => Source::File(u, *l),
+            (None, Some((u, l))) => Source::Lateral(u, *l, "the lateral unit"),
+            (None, None) => Source::Nothing,
+        };
+        let (sz, note) = heights(source, opts.height_unit)?;
+        return Ok((header.lateral_scale()?, sz, note));
+    };
+    let sx = match &x {
+        Some(u) => unit(u, line)?,
+        None => header.lateral_scale()?,
+    };
+    let source = match (&z, &x) {
+        (Some(u), _) => Source::File(u, line),
+        (None, Some(u)) => Source::Lateral(u, line, "the x column's unit"),
+        (None, None) => Source::Nothing,
+    };
+    let (sz, note) = heights(source, opts.height_unit)?;
+    Ok((sx, sz, note))
 }
 
 /// The first field of every data row, as written.

@@ -1,7 +1,18 @@
 //! A least-squares power law through a spectrum, for orientation only (the
-//! model never uses it): its Hurst exponent and amplitude over the band on
-//! screen, and the self-affine surface it stands for in the paper's
-//! convention, so that it can be drawn as a ghost.
+//! model never uses it): its Hurst exponent with a standard error and its
+//! amplitude over a fit band (by default the self-affine stretch
+//! [`crate::band`] finds), whether it is self-affine there at all, and the
+//! self-affine surface it stands for in the paper's convention, so that it
+//! can be drawn as a ghost.
+//!
+//! The fit is weighted least squares of ln C against ln q, each bin
+//! weighted by the number of Fourier modes it averages (the scatter of a
+//! bin's ln C falls as 1/√modes; a PSD table's points weigh the same). The
+//! standard error of H combines the regression's, σ̂/√S_xx/2 with σ̂² the
+//! weighted residual sum over n − 2, with the band's: the rms change of H
+//! when the band loses one or two points at either end (a choice of band
+//! is part of what H depends on). On fourier_synthesis surfaces with a
+//! known H the deviations' rms is 1.15 of it (scripts/hurst_check.py).
 
 use std::f64::consts::PI;
 
@@ -26,9 +37,62 @@ pub struct PowerLawFit {
     pub q_lo: f64,
     pub q_hi: f64,
     pub points: usize,
+    /// The standard error of H, the regression's and the band's choice's
+    /// combined (NaN with fewer than three points).
+    pub hurst_se: f64,
+    /// The weighted rms distance of the points from the line, in decades
+    /// of C.
+    pub rms_decades: f64,
+}
+
+/// Whether a fit describes a self-affine surface over its band.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Verdict {
+    /// 0 < H ≤ 1, a straight line to [`POOR_DECADES`], at least
+    /// [`MIN_POINTS`] points over at least [`MIN_DECADES`].
+    SelfAffine,
+    /// H outside (0, 1].
+    OutOfRange,
+    /// The points stray from the line by more than [`POOR_DECADES`] rms.
+    Poor,
+    /// Fewer than [`MIN_POINTS`] points, or a band under [`MIN_DECADES`].
+    TooShort,
+}
+
+/// A fit whose points lie further than this from its line, rms in decades
+/// of C (a factor 1.26), is not a power law over the band.
+pub const POOR_DECADES: f64 = 0.1;
+/// Fewest points of a fit that says anything.
+pub const MIN_POINTS: usize = 4;
+/// The narrowest band, decades of q, a fit is judged over.
+pub const MIN_DECADES: f64 = 0.5;
+
+impl Verdict {
+    /// In words, for the screen: `None` for a self-affine fit.
+    pub fn words(&self) -> Option<&'static str> {
+        match self {
+            Verdict::SelfAffine => None,
+            Verdict::OutOfRange => Some("H outside (0, 1]: not self-affine over this band"),
+            Verdict::Poor => Some("not a power law over this band"),
+            Verdict::TooShort => Some("too short a band to tell"),
+        }
+    }
 }
 
 impl PowerLawFit {
+    /// Whether the fit is self-affine over its band ([`Verdict`]).
+    pub fn verdict(&self) -> Verdict {
+        if self.points < MIN_POINTS || (self.q_hi / self.q_lo).log10() < MIN_DECADES {
+            Verdict::TooShort
+        } else if !(self.hurst > 0.0 && self.hurst <= 1.0) {
+            Verdict::OutOfRange
+        } else if self.rms_decades > POOR_DECADES {
+            Verdict::Poor
+        } else {
+            Verdict::SelfAffine
+        }
+    }
+
     /// The fitted PSD at `q` (1/m), in the spectrum's own units.
     pub fn psd(&self, q: f64) -> f64 {
         self.psd_at_q0 * (q / self.q0).powf(self.slope)
@@ -75,42 +139,81 @@ impl PowerLawFit {
     }
 }
 
+/// Weighted least squares of (x, y, w) points: (slope, x̄, ȳ, S_xx, the
+/// weighted residual sum, Σw); `None` without a spread in x.
+fn line(pts: &[(f64, f64, f64)]) -> Option<(f64, f64, f64, f64, f64, f64)> {
+    let w: f64 = pts.iter().map(|p| p.2).sum();
+    let mx = pts.iter().map(|p| p.2 * p.0).sum::<f64>() / w;
+    let my = pts.iter().map(|p| p.2 * p.1).sum::<f64>() / w;
+    let sxx: f64 = pts.iter().map(|p| p.2 * (p.0 - mx).powi(2)).sum();
+    if pts.len() < 2 || sxx == 0.0 {
+        return None;
+    }
+    let sxy: f64 = pts.iter().map(|p| p.2 * (p.0 - mx) * (p.1 - my)).sum();
+    let slope = sxy / sxx;
+    let ssr: f64 = pts
+        .iter()
+        .map(|p| p.2 * (p.1 - my - slope * (p.0 - mx)).powi(2))
+        .sum();
+    Some((slope, mx, my, sxx, ssr, w))
+}
+
 pub(crate) fn fit(
     dim: Dim,
     spectrum: &[(f64, f64)],
+    modes: &[f64],
     q_lo: f64,
     q_hi: f64,
     q0: f64,
 ) -> Option<PowerLawFit> {
-    let pts: Vec<(f64, f64)> = spectrum
+    let pts: Vec<(f64, f64, f64)> = spectrum
         .iter()
-        .filter(|(q, c)| *q >= q_lo && *q <= q_hi && *c > 0.0)
-        .map(|(q, c)| (q.ln(), c.ln()))
+        .enumerate()
+        .filter(|(_, (q, c))| *q >= q_lo && *q <= q_hi && *c > 0.0)
+        .map(|(i, (q, c))| {
+            (
+                q.ln(),
+                c.ln(),
+                modes.get(i).copied().unwrap_or(1.0).max(1.0),
+            )
+        })
         .collect();
     let n = pts.len();
-    if n < 2 {
-        return None;
-    }
-    let mx = pts.iter().map(|p| p.0).sum::<f64>() / n as f64;
-    let my = pts.iter().map(|p| p.1).sum::<f64>() / n as f64;
-    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
-    if sxx == 0.0 {
-        return None;
-    }
-    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
-    let slope = sxy / sxx;
-    let hurst = match dim {
-        Dim::Areal => -slope / 2.0 - 1.0,
-        Dim::Profile => (-slope - 1.0) / 2.0,
+    let (slope, mx, my, sxx, ssr, w) = line(&pts)?;
+    let regression = if n > 2 {
+        (ssr / (n - 2) as f64 / sxx).sqrt() / 2.0
+    } else {
+        f64::NAN
     };
+    // How much H moves when the band loses one or two points at either
+    // end: the band's choice is part of the uncertainty.
+    let mut moves = Vec::new();
+    for k in 1..=2 {
+        if n >= MIN_POINTS + k {
+            for part in [&pts[k..], &pts[..n - k]] {
+                if let Some(l) = line(part) {
+                    moves.push(((l.0 - slope) / 2.0).powi(2));
+                }
+            }
+        }
+    }
+    let band = if moves.is_empty() {
+        0.0
+    } else {
+        (moves.iter().sum::<f64>() / moves.len() as f64).sqrt()
+    };
+    let hurst_se = (regression * regression + band * band).sqrt();
+    let (lo, hi) = (pts[0].0.exp(), pts[n - 1].0.exp());
     Some(PowerLawFit {
         dim,
-        hurst,
+        hurst: crate::band::hurst(dim, slope),
         slope,
         q0,
         psd_at_q0: (my + slope * (q0.ln() - mx)).exp(),
-        q_lo,
-        q_hi,
+        q_lo: lo.max(q_lo),
+        q_hi: hi.min(q_hi),
         points: n,
+        hurst_se,
+        rms_decades: (ssr / w).sqrt() / std::f64::consts::LN_10,
     })
 }

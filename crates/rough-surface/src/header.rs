@@ -16,6 +16,7 @@
 //! value unit; with no unit anywhere, SI metres.
 
 use crate::error::{Failure, Problem};
+use crate::units::Source;
 
 const WIDTH: &[&str] = &[
     "Width",
@@ -188,12 +189,26 @@ impl Header {
         *self == Header::default()
     }
 
-    /// The heights' unit per metre (SI without a value unit): divide by it.
-    pub fn value_scale(&self) -> Result<f64, Failure> {
-        match &self.value_unit {
-            None => Ok(1.0),
-            Some((u, line)) => unit(u, *line),
+    /// Where the heights' unit comes from: the value unit, else the
+    /// lateral unit (the width's own, the x unit, the y size's own), else
+    /// nowhere (metres).
+    pub fn height_source(&self) -> Source<'_> {
+        if let Some((u, line)) = &self.value_unit {
+            return Source::File(u, *line);
         }
+        fn size(s: &Option<Size>) -> Option<(&str, usize)> {
+            s.as_ref().and_then(|s| Some((s.unit.as_deref()?, s.line)))
+        }
+        if let Some((u, line)) = size(&self.width) {
+            return Source::Lateral(u, line, "the width's unit");
+        }
+        if let Some((u, line)) = &self.x_unit {
+            return Source::Lateral(u, *line, "the lateral unit");
+        }
+        if let Some((u, line)) = size(&self.height) {
+            return Source::Lateral(u, line, "the y size's unit");
+        }
+        Source::Nothing
     }
 
     /// The width and height in metres, resolved as SurfaceTopography does:
@@ -248,7 +263,7 @@ mod tests {
         .unwrap();
         assert_eq!(h.channels, vec![1]);
         assert_eq!(h.sizes().unwrap(), (Some(12e-6), Some(8e-6)));
-        assert_eq!(h.value_scale().unwrap(), 1e9);
+        assert_eq!(h.height_source(), Source::File("nm", 4));
         // SurfaceTopography's to_matrix: sizes in the value unit.
         let h = Header::read(&[
             (1, "Width: 2.5"),
@@ -276,10 +291,11 @@ mod tests {
             Header::read(&[(2, "Width: wide")]).unwrap_err(),
             (Some(2), Problem::BadHeader(_))
         ));
-        let h = Header::read(&[(5, "Value units: V")]).unwrap();
+        // Heights without a value unit take the width's.
+        let h = Header::read(&[(2, "Width: 5 um"), (3, "Height: 3.75 um")]).unwrap();
         assert_eq!(
-            h.value_scale().unwrap_err(),
-            (Some(5), Problem::UnknownUnit("V".into()))
+            h.height_source(),
+            Source::Lateral("um", 2, "the width's unit")
         );
         // "Height distribution" is not a Height label.
         assert!(Header::read(&[(1, "Height distribution")])

@@ -7,10 +7,12 @@
 //! "Measured surfaces", states them.
 
 mod anisotropy;
+mod band;
 mod bins;
 mod ce;
 mod channels;
 mod columns;
+mod colunits;
 mod decimal;
 mod error;
 mod fill;
@@ -22,10 +24,12 @@ mod matrix;
 mod prepare;
 mod profiles;
 mod psd;
+mod realspace;
 mod sniff;
 mod spectrum;
 mod stream;
 mod text;
+mod units;
 mod x3p;
 
 use std::path::Path;
@@ -37,8 +41,10 @@ use sha2::{Digest, Sha256};
 pub use anisotropy::{Slopes, RATIO as ANISOTROPY_RATIO};
 pub use error::{Problem, SurfaceError};
 pub use fill::MAX_UNDEFINED;
-pub use fit::PowerLawFit;
+pub use fit::{PowerLawFit, Verdict, MIN_POINTS as MIN_FIT_POINTS};
 pub use grid::Grid;
+pub use realspace::RealSpace;
+pub use units::HeightUnit;
 
 /// Files larger than this are refused before they are read (512 MiB).
 pub const MAX_BYTES: u64 = 512 << 20;
@@ -60,6 +66,8 @@ pub struct Options {
     /// `/N/data`; a text file's channels from 0 in order) or its title;
     /// `None` takes the first whose values are heights (a unit of length).
     pub channel: Option<String>,
+    /// The heights' unit, whatever the file says (`--height-unit`).
+    pub height_unit: Option<HeightUnit>,
 }
 
 /// A direction on a map: x along its rows, y across them.
@@ -148,13 +156,42 @@ pub struct Measured {
     /// ζ); a note says when they differ by more than
     /// [`ANISOTROPY_RATIO`].
     pub slopes: Option<Slopes>,
+    /// Sq and Sdq of a map, Rq and RΔq of a line scan (real space, after
+    /// the detrend, no window); `None` for PSD tables.
+    pub real: Option<RealSpace>,
+    /// The Fourier modes averaged in each point of `spectrum` (the fit's
+    /// weights); empty for PSD tables, whose points weigh the same.
+    pub modes: Vec<f64>,
+    /// The default Hurst fit band, 1/m: the spectrum's self-affine
+    /// stretch (`band`'s rules); `None` with too few points.
+    pub band: Option<(f64, f64)>,
 }
 
 impl Measured {
     /// Least-squares power law through the spectrum's points with q in
     /// [q_lo, q_hi]; `None` with fewer than two points there.
     pub fn fit(&self, q_lo: f64, q_hi: f64) -> Option<PowerLawFit> {
-        fit::fit(self.kind.dim(), &self.spectrum, q_lo, q_hi, self.table.q0())
+        fit::fit(
+            self.kind.dim(),
+            &self.spectrum,
+            &self.modes,
+            q_lo,
+            q_hi,
+            self.table.q0(),
+        )
+    }
+
+    /// The fit over the default band ([`Measured::band`]).
+    pub fn default_fit(&self) -> Option<PowerLawFit> {
+        let (lo, hi) = self.band?;
+        // The band's ends are data points: a rounding below one still takes it.
+        self.fit(lo * (1.0 - 1e-12), hi * (1.0 + 1e-12))
+    }
+
+    /// The default fit band of a spectrum, for a [`Measured`] built by hand
+    /// (a benchmark's synthetic surface).
+    pub fn find_band(dim: Dim, spectrum: &[(f64, f64)], modes: &[f64]) -> Option<(f64, f64)> {
+        band::self_affine(dim, spectrum, modes)
     }
 }
 
@@ -278,6 +315,14 @@ fn parse_file(
     if opts.channel.is_some() && format == sniff::Format::X3p {
         return no_channels();
     }
+    if let (Some(u), sniff::Format::X3p | sniff::Format::Gwy) = (opts.height_unit, &format) {
+        return Err((
+            None,
+            Problem::Option(format!(
+                "--height-unit {u} applies to text files: x3p and .gwy files carry their units"
+            )),
+        ));
+    }
     let mut notes = Vec::new();
     let text = match format {
         sniff::Format::Other(s) => return Err((None, Problem::Format(s))),
@@ -336,7 +381,16 @@ fn parse_file(
         let read = read_text(text, opts).map_err(|(l, p)| (l.map(|l| l + skipped), p));
         (hash.join().expect("hash thread"), read)
     });
-    Ok(measured(read?, sha256, notes))
+    let r = read?;
+    if let (Kind::Psd { .. }, Some(u)) = (&r.kind, opts.height_unit) {
+        return Err((
+            None,
+            Problem::Option(format!(
+                "--height-unit {u} does not apply to a PSD table: it holds no heights"
+            )),
+        ));
+    }
+    Ok(measured(r, sha256, notes))
 }
 
 fn check_options(opts: &Options) -> Result<(), (Option<usize>, Problem)> {
@@ -363,18 +417,26 @@ fn not_a_download(opts: &Options) -> Result<(), (Option<usize>, Problem)> {
     }
 }
 
-/// The surface read, the reader's `notes` before the pipeline's.
+/// The surface from what was read: the reader's `notes` before the
+/// pipeline's, the plausibility warning, the default fit band.
 fn measured(r: Reading, sha256: String, mut notes: Vec<String>) -> Measured {
-    notes.extend(r.computed.notes);
+    let c = r.computed;
+    notes.extend(c.notes);
+    let heights = !matches!(r.kind, Kind::Psd { .. });
+    notes.extend(units::plausibility(&c.table, heights));
+    let band = band::self_affine(r.kind.dim(), &c.spectrum, &c.modes);
     Measured {
         kind: r.kind,
-        table: Arc::new(r.computed.table),
-        spectrum: r.computed.spectrum,
+        table: Arc::new(c.table),
+        spectrum: c.spectrum,
         sha256,
         summary: r.summary,
         notes,
         measurement: r.measurement,
-        slopes: r.computed.slopes,
+        slopes: c.slopes,
+        real: c.real,
+        modes: c.modes,
+        band,
     }
 }
 

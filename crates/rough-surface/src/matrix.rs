@@ -57,7 +57,7 @@ pub(crate) fn read(
             )),
         ));
     }
-    let z = header.value_scale()?;
+    let (z, note) = crate::units::heights(header.height_source(), opts.height_unit)?;
     let mut h = scan.values;
     if z != 1.0 {
         h.iter_mut().for_each(|v| *v /= z);
@@ -68,7 +68,8 @@ pub(crate) fn read(
             (None, Some(p)) => p * n as f64,
             (None, None) => return Err((None, Problem::NoSize { line: true })),
         };
-        let c = spectrum::line(h, l, opts.periodic).map_err(|p| (None, p))?;
+        let mut c = spectrum::line(h, l, opts.periodic).map_err(|p| (None, p))?;
+        c.notes.extend(note);
         return Ok((Kind::Line { n, l }, c));
     }
     let (lx, ly) = match (width, height, opts.pixel_size) {
@@ -86,8 +87,9 @@ pub(crate) fn read(
         }
     };
     if let Some(direction) = opts.direction {
-        let c = profiles::profiles(h, (cols, rows), (lx, ly), opts.periodic, direction)
+        let mut c = profiles::profiles(h, (cols, rows), (lx, ly), opts.periodic, direction)
             .map_err(|p| (None, p))?;
+        c.notes.extend(note);
         let kind = Kind::Profiles {
             direction,
             nx: cols,
@@ -97,7 +99,8 @@ pub(crate) fn read(
         };
         return Ok((kind, c));
     }
-    let c = spectrum::map(h, cols, rows, lx, ly, opts.periodic).map_err(|p| (None, p))?;
+    let mut c = spectrum::map(h, cols, rows, lx, ly, opts.periodic).map_err(|p| (None, p))?;
+    c.notes.extend(note);
     Ok((
         Kind::Map {
             nx: cols,

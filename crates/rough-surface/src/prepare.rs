@@ -1,6 +1,7 @@
-//! A map's heights made ready for its FFT in two passes over the grid, on
-//! several threads: the mean (periodic) or the least-squares plane removed
-//! and SurfaceTopography's radial Hann window applied, as
+//! A map's heights made ready for its FFT in passes over the grid, on
+//! several threads: the mean (periodic) or the least-squares plane removed,
+//! then (between the two, the real-space Sq and Sdq are taken) the radial
+//! Hann window of SurfaceTopography applied, as
 //! [`crate::spectrum`]'s `detrend` and `window_2d` do one step at a time
 //! (same formulas; sums in another order, so equal to the rounding).
 
@@ -35,15 +36,13 @@ fn sums(block: &[f64], nx: usize, j0: usize, (cx, cy): (f64, f64), first: f64) -
     [s, sx, sy, f64::from(u8::from(same))]
 }
 
-/// The mean removed (`periodic`), or the plane removed and the window
-/// applied; returns the window's normalisation s² = N / Σ w² (1 when
-/// periodic). Refuses flat heights as `detrend` does.
-pub(crate) fn prepare(
+/// The mean removed (`periodic`) or the least-squares plane removed, in
+/// place; refuses flat heights as `detrend` does.
+pub(crate) fn detrend(
     h: &mut [f64],
     (nx, ny): (usize, usize),
-    (lx, ly): (f64, f64),
     periodic: bool,
-) -> Result<f64, Problem> {
+) -> Result<(), Problem> {
     let n = (nx * ny) as f64;
     let c = ((nx as f64 - 1.0) / 2.0, (ny as f64 - 1.0) / 2.0);
     let per = per(ny);
@@ -66,12 +65,50 @@ pub(crate) fn prepare(
     let mean = total(0) / n;
     if periodic {
         h.iter_mut().for_each(|v| *v -= mean);
-        return Ok(1.0);
+        return Ok(());
     }
     let sxx: f64 = (0..nx).map(|i| (i as f64 - c.0).powi(2)).sum::<f64>() * ny as f64;
     let syy: f64 = (0..ny).map(|j| (j as f64 - c.1).powi(2)).sum::<f64>() * nx as f64;
     let b = if sxx > 0.0 { total(1) / sxx } else { 0.0 };
     let cy = if syy > 0.0 { total(2) / syy } else { 0.0 };
+    let parts: Vec<[f64; 2]> = std::thread::scope(|s| {
+        let handles: Vec<_> = h
+            .chunks_mut(per * nx)
+            .enumerate()
+            .map(|(blk, block)| {
+                s.spawn(move || {
+                    let (mut var, mut rest) = (0.0, 0.0);
+                    for (k, row) in block.chunks_exact_mut(nx).enumerate() {
+                        let j = blk * per + k;
+                        let base = mean + cy * (j as f64 - c.1);
+                        for (i, v) in row.iter_mut().enumerate() {
+                            var += (*v - mean) * (*v - mean);
+                            *v -= base + b * (i as f64 - c.0);
+                            rest += *v * *v;
+                        }
+                    }
+                    [var, rest]
+                })
+            })
+            .collect();
+        handles
+            .into_iter()
+            .map(|t| t.join().expect("plane"))
+            .collect()
+    });
+    let total = |k: usize| parts.iter().map(|p| p[k]).sum::<f64>();
+    let (var, rest) = (total(0) / n, total(1) / n);
+    if rest <= FLAT * FLAT * var {
+        return Err(Problem::Flat { plane: true });
+    }
+    Ok(())
+}
+
+/// SurfaceTopography's radial Hann window applied to detrended heights;
+/// returns its normalisation s² = N / Σ w².
+pub(crate) fn window(h: &mut [f64], (nx, ny): (usize, usize), (lx, ly): (f64, f64)) -> f64 {
+    let n = (nx * ny) as f64;
+    let per = per(ny);
     // get_window_2D: r from grid point (nx//2, ny//2) in physical units,
     // w = 0.5 + 0.5 cos(π r / r_max) for r ≤ r_max = min(Lx, Ly)/2, else 0.
     let maxr = lx.min(ly) / 2.0;
@@ -81,14 +118,14 @@ pub(crate) fn prepare(
     let ax: Vec<f64> = (0..=far)
         .map(|d| (lx * d as f64 / nx as f64).powi(2))
         .collect();
-    let parts: Vec<[f64; 3]> = std::thread::scope(|s| {
+    let parts: Vec<f64> = std::thread::scope(|s| {
         let handles: Vec<_> = h
             .chunks_mut(per * nx)
             .enumerate()
             .map(|(blk, block)| {
                 let ax = &ax;
                 s.spawn(move || {
-                    let (mut var, mut rest, mut sw) = (0.0, 0.0, 0.0);
+                    let mut sw = 0.0;
                     let mut w = vec![0.0; far + 1];
                     for (k, row) in block.chunks_exact_mut(nx).enumerate() {
                         let j = blk * per + k;
@@ -101,29 +138,20 @@ pub(crate) fn prepare(
                                 0.5 + 0.5 * (PI * r / maxr).cos()
                             };
                         }
-                        let base = mean + cy * (j as f64 - c.1);
                         for (i, v) in row.iter_mut().enumerate() {
-                            var += (*v - mean) * (*v - mean);
-                            *v -= base + b * (i as f64 - c.0);
-                            rest += *v * *v;
                             let wi = w[i.abs_diff(nx / 2)];
                             *v *= wi;
                             sw += wi * wi;
                         }
                     }
-                    [var, rest, sw]
+                    sw
                 })
             })
             .collect();
         handles
             .into_iter()
-            .map(|t| t.join().expect("plane"))
+            .map(|t| t.join().expect("window"))
             .collect()
     });
-    let total = |k: usize| parts.iter().map(|p| p[k]).sum::<f64>();
-    let (var, rest, sw) = (total(0) / n, total(1) / n, total(2));
-    if rest <= FLAT * FLAT * var {
-        return Err(Problem::Flat { plane: true });
-    }
-    Ok(n / sw)
+    n / parts.iter().sum::<f64>()
 }

@@ -72,6 +72,8 @@ pub(crate) fn profiles(
         spectrum: bins.finish(),
         notes,
         slopes: None,
+        real: None,
+        modes: bins.counts(),
     })
 }
 

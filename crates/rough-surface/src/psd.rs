@@ -38,6 +38,8 @@ pub(crate) fn table(
             spectrum,
             notes: Vec::new(),
             slopes: None,
+            real: None,
+            modes: Vec::new(),
         },
     ))
 }

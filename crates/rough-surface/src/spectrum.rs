@@ -29,6 +29,7 @@ use crate::bins::Bins;
 use crate::error::Problem;
 use crate::fill;
 use crate::prepare;
+use crate::realspace::{self, RealSpace};
 use crate::Slopes;
 
 /// What a surface's heights give the model and the screen.
@@ -39,6 +40,10 @@ pub(crate) struct Computed {
     pub notes: Vec<String>,
     /// A map's rms slopes along x and y ([`crate::Measured::slopes`]).
     pub slopes: Option<Slopes>,
+    /// Sq and Sdq (maps), Rq and RΔq (lines); `None` for PSD tables.
+    pub real: Option<RealSpace>,
+    /// The Fourier modes in each point of `spectrum` (empty for tables).
+    pub modes: Vec<f64>,
 }
 
 /// The residual rms below which detrended heights count as nothing left
@@ -175,7 +180,13 @@ pub(crate) fn map(
     periodic: bool,
 ) -> Result<Computed, Problem> {
     let notes: Vec<String> = fill::fill(&mut h, nx, ny, periodic)?.into_iter().collect();
-    let s2 = prepare::prepare(&mut h, (nx, ny), (lx, ly), periodic)?;
+    prepare::detrend(&mut h, (nx, ny), periodic)?;
+    let real = realspace::areal(&h, nx, ny, lx, ly, periodic);
+    let s2 = if periodic {
+        1.0
+    } else {
+        prepare::window(&mut h, (nx, ny), (lx, ly))
+    };
     let mut planner = FftPlanner::<f64>::new();
     let nh = nx / 2 + 1;
     let half = rows_half(&h, nx, ny, &planner.plan_fft_forward(nx));
@@ -285,6 +296,8 @@ pub(crate) fn map(
         spectrum: bins.finish(),
         notes,
         slopes: Some(slopes),
+        real: Some(real),
+        modes: bins.counts(),
     })
 }
 
@@ -318,6 +331,7 @@ pub(crate) fn line(mut h: Vec<f64>, l: f64, periodic: bool) -> Result<Computed, 
     let n = h.len();
     let notes: Vec<String> = fill::fill(&mut h, n, 1, periodic)?.into_iter().collect();
     detrend(&mut h, n, 1, periodic)?;
+    let real = realspace::profile(&h, l, periodic);
     let s2 = if periodic { 1.0 } else { window_1d(&mut h) };
     let mut buf: Vec<Complex<f64>> = h.iter().map(|&v| Complex::new(v, 0.0)).collect();
     drop(h);
@@ -344,6 +358,8 @@ pub(crate) fn line(mut h: Vec<f64>, l: f64, periodic: bool) -> Result<Computed, 
         spectrum: bins.finish(),
         notes,
         slopes: None,
+        real: Some(real),
+        modes: bins.counts(),
     })
 }
 

@@ -6,6 +6,7 @@
 mod curves;
 mod legend;
 mod map;
+mod moments;
 mod spectrum;
 
 use anyhow::anyhow;
@@ -41,8 +42,9 @@ const PSI_GW: RGBColor = RGBColor(128, 0, 128);
 const PSI_ASY: RGBColor = RGBColor(230, 120, 0);
 
 /// The colours only dashed curves have (Persson's line, eq. 13, the
-/// spectrum's fit): their 2-px strokes are dashed by the viewer.
-const DASHED: [RGBColor; 2] = [PERSSON, PSI_ASY];
+/// spectrum's fit, the moments' real-space levels): their 2-px strokes are
+/// dashed by the viewer.
+const DASHED: [RGBColor; 4] = [PERSSON, PSI_ASY, moments::SQ, moments::SDQ];
 
 /// `svg` with every 2-px stroke of a [`DASHED`] colour dashed 9 on, 6 off.
 fn dash(mut svg: String) -> String {
@@ -57,18 +59,62 @@ fn dash(mut svg: String) -> String {
 /// scene's parameters, the view's caption and, where the view shows the
 /// sweep, the claims; the full parameter set also goes into `<desc>`.
 pub fn render_svg(view: View, state: &State, opts: &FigureOptions) -> anyhow::Result<String> {
-    let lines = caption_lines(view, state, opts);
-    // The legend goes inside the plot where no line passes, else the
-    // picture is drawn again with the plot narrower and the legend right
-    // of it.
-    let buf = match render_once(view, state, opts, &lines, None)? {
+    let draw = |area: &Area, room| match view {
+        View::Slopes => curves::slopes(area, state, opts, room),
+        View::Indices => curves::indices(area, state, opts, room),
+        View::Map => map::draw(area, state, opts).map(|()| Placed::Inside),
+        View::Load => curves::load(area, state, opts, room),
+        View::Spectrum => spectrum::draw(area, state, room),
+        View::Contact => Err(anyhow::anyhow!(
+            "the contact view's picture is drawn by crate::contact (export --view contact \
+             --format svg, contact-map)"
+        )),
+    };
+    let title = format!("{} — {} view", state.name, view.name());
+    let desc = scene_text::full_lines(state, view, opts);
+    render(&draw, &caption_lines(view, state, opts), &title, &desc)
+}
+
+/// The moments of `state` against ζ (`export --view moments`) as SVG, with
+/// the scene under the chart and in `<desc>` as every picture has it.
+pub fn render_moments_svg(state: &State, points: usize) -> anyhow::Result<String> {
+    let draw = |area: &Area, room| moments::draw(area, state, points, room);
+    let s = crate::figure::MomentSeries::of(state, points)?;
+    let (from, to) = (s.zeta[0], s.zeta[s.len() - 1]);
+    let span = format!("moments = zeta from {from:?} to {to:?}, {points} points (log-spaced)");
+    let mut desc = scene_text::full_lines_of(state, "moments", span);
+    desc.extend(crate::figure::moment_comments(state));
+    let short = format!("moments at ζ {} … {}", short_number(from), short_number(to));
+    let mut lines: Vec<(String, RGBColor)> = scene_text::short_lines_of(state, Some(short))
+        .iter()
+        .flat_map(|l| wrap(l, CAPTION_W))
+        .map(|l| (l, SCENE))
+        .collect();
+    let what = "The spectrum's moments against the cutoff ζ: h_rms = √m0, the rms slope \
+                h′ = √(2 m2) and the rms curvature h″ = √(8 m4/3); on a measured surface \
+                the real-space Sq and Sdq (Rq and RΔq) beside them.";
+    lines.extend(wrap(what, CAPTION_W).into_iter().map(|l| (l, BLACK)));
+    render(&draw, &lines, &format!("{} — moments", state.name), &desc)
+}
+
+/// A picture: `draw` fills the chart (the legend inside the plot where no
+/// line passes, else the picture is drawn again with the plot narrower
+/// and the legend right of it), `lines` go under it, `title` and `desc`
+/// into the document's head.
+fn render(
+    draw: &dyn Fn(&Area, Option<u32>) -> anyhow::Result<Placed>,
+    lines: &[(String, RGBColor)],
+    title: &str,
+    desc: &[String],
+) -> anyhow::Result<String> {
+    let buf = match render_once(draw, lines, None)? {
         (buf, Placed::Inside) => buf,
-        (_, Placed::NoRoom(room)) => render_once(view, state, opts, &lines, Some(room))?.0,
+        (_, Placed::NoRoom(room)) => render_once(draw, lines, Some(room))?.0,
     };
     let head = format!(
         "\n<title>{}</title>\n<desc>{}</desc>\n<style>rect{{shape-rendering:crispEdges}}</style>",
-        xml_text(&format!("{} — {} view", state.name, view.name())),
-        xml_text(&scene_text::full_lines(state, view, opts).join("\n"))
+        xml_text(title),
+        xml_text(&desc.join("\n"))
     );
     Ok(after_svg_tag(dash(buf), &head))
 }
@@ -76,9 +122,7 @@ pub fn render_svg(view: View, state: &State, opts: &FigureOptions) -> anyhow::Re
 /// One drawing of the picture, `room` pixels kept right of the plot for
 /// the legend (inside the plot when `None`), and where the legend went.
 fn render_once(
-    view: View,
-    state: &State,
-    opts: &FigureOptions,
+    draw: &dyn Fn(&Area, Option<u32>) -> anyhow::Result<Placed>,
     lines: &[(String, RGBColor)],
     room: Option<u32>,
 ) -> anyhow::Result<(String, Placed)> {
@@ -88,17 +132,7 @@ fn render_once(
         root.fill(&WHITE).map_err(plot_err)?;
         let caption_h = CAPTION_H.max(2 * 8 + LINE_H * lines.len() as u32);
         let (chart_area, caption_area) = root.split_vertically(SIZE.1 - caption_h);
-        let placed = match view {
-            View::Slopes => curves::slopes(&chart_area, state, opts, room)?,
-            View::Indices => curves::indices(&chart_area, state, opts, room)?,
-            View::Map => map::draw(&chart_area, state, opts).map(|()| Placed::Inside)?,
-            View::Load => curves::load(&chart_area, state, opts, room)?,
-            View::Spectrum => spectrum::draw(&chart_area, state, room)?,
-            View::Contact => anyhow::bail!(
-                "the contact view's picture is drawn by crate::contact (export --view \
-                 contact --format svg, contact-map)"
-            ),
-        };
+        let placed = draw(&chart_area, room)?;
         caption(&caption_area, lines)?;
         root.present().map_err(plot_err)?;
         placed

@@ -1,5 +1,6 @@
 //! A measured surface's spectrum as SVG: the data on log-log axes, the
-//! power law fitted over [q0, q1] dashed, and the cutoff q1 = ζ q0.
+//! power law fitted over the fit band dashed across it, the band's ends
+//! as grey guides, and the cutoff q1 = ζ q0.
 
 use plotters::prelude::*;
 
@@ -13,6 +14,7 @@ const DATA: RGBColor = RGBColor(0, 0, 0);
 /// The fit is dashed: the colour of the dashed curves (`super::DASHED`).
 const FIT: RGBColor = super::PSI_ASY;
 const CUTOFF: RGBColor = RGBColor(0, 0, 255);
+const BAND: RGBColor = RGBColor(150, 150, 150);
 
 /// Ticks and labels of λ = 2π/q above the plot, at whole decades of λ
 /// (and its halves, 2 and 5, where fewer than three decades show).
@@ -91,9 +93,9 @@ pub(super) fn draw(area: &Area, state: &State, room: Option<u32>) -> anyhow::Res
     )
     .map_err(plot_err)?;
     if let Some(f) = s.power_law {
-        // Sampled, so that the part inside the chart is drawn where an end
-        // lies outside it.
-        let (a, b) = (s.q0.log10(), s.q1.min(qhi).log10());
+        // Sampled across the band, so that the part inside the chart is
+        // drawn where an end lies outside it.
+        let (a, b) = (f.q_lo.log10(), f.q_hi.log10());
         let qs: Vec<f64> = (0..=200)
             .map(|i| 10f64.powf(a + (b - a) * f64::from(i) / 200.0))
             .collect();
@@ -101,16 +103,29 @@ pub(super) fn draw(area: &Area, state: &State, room: Option<u32>) -> anyhow::Res
             .iter()
             .map(|&q| s.fit_at(q).unwrap_or(f64::NAN))
             .collect();
-        let amp = s
-            .fit_h_rms
-            .map(|h| format!(", h_rms {} m", short_number(h)))
-            .unwrap_or_default();
         let label = format!(
-            "power law fitted over q0…q1: H = {}{amp} ({} points)",
-            short_number(f.hurst),
-            f.points
+            "power law fitted over the fit band {}…{} /m: {}",
+            short_number(f.q_lo),
+            short_number(f.q_hi),
+            fit_words(&f, s.fit_h_rms)
         );
         line(&mut c, &mut lg, xy, (&qs, &ys), FIT, Stroke::Dashed, &label)?;
+        let r = y.range();
+        let mut named = false;
+        for q in [f.q_lo, f.q_hi] {
+            if x.contains(q) {
+                let label = (!named).then_some("the fit band's ends");
+                named = true;
+                guide(
+                    &mut c,
+                    &mut lg,
+                    (x.to(q), r.start),
+                    (x.to(q), r.end),
+                    BAND,
+                    label,
+                )?;
+            }
+        }
     }
     let r = y.range();
     if x.contains(s.q1) {
@@ -130,4 +145,27 @@ pub(super) fn draw(area: &Area, state: &State, room: Option<u32>) -> anyhow::Res
         )?;
     }
     lg.draw(area, &c, room.is_some())
+}
+
+/// "H = 0.81 ± 0.03, h_rms of the fitted power law 12 nm (18 points)", or
+/// why the band is not self-affine.
+pub fn fit_words(f: &rough_surface::PowerLawFit, h_rms: Option<f64>) -> String {
+    let h = if f.hurst_se.is_finite() {
+        format!(
+            "H = {} ± {}",
+            short_number(f.hurst),
+            short_number(f.hurst_se)
+        )
+    } else {
+        format!("H = {}", short_number(f.hurst))
+    };
+    match (f.verdict().words(), h_rms) {
+        (Some(w), _) => format!("{h} — {w} ({} points)", f.points),
+        (None, Some(hr)) => format!(
+            "{h}, h_rms of the fitted power law {} m ({} points)",
+            short_number(hr),
+            f.points
+        ),
+        (None, None) => format!("{h} ({} points)", f.points),
+    }
 }

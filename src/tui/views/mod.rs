@@ -11,6 +11,7 @@ mod load;
 mod map;
 pub(crate) mod overlap;
 mod side;
+pub use side::hurst_se;
 mod slopes;
 mod spectrum;
 

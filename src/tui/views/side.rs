@@ -55,37 +55,57 @@ pub fn render_sliders(app: &App, area: Rect, rows: u16, buf: &mut Buffer) {
     }
 }
 
+/// "0.81±0.03": a fit's H with its standard error.
+pub fn hurst_se(f: &rough_surface::PowerLawFit) -> String {
+    if f.hurst_se.is_finite() {
+        format!("{:.2}±{:.2}", f.hurst, f.hurst_se)
+    } else {
+        format!("{:.2}", f.hurst)
+    }
+}
+
 /// A line the data fixes on a measured surface, read-only (dim): h_rms as
-/// √m0 at the cutoff, H as a least-squares power-law fit over [q0, q1]
-/// with its band; with two rows per slider, the fit's amplitude and points
-/// (or what h_rms is) under it.
+/// √m0 at the cutoff, H as a least-squares power-law fit over the fit band
+/// with its standard error and band, or why it is not self-affine there;
+/// with two rows per slider, the fitted power law's h_rms and points (or
+/// what h_rms is) under it.
 fn render_measured(app: &App, axis: Axis, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
     let r = &app.readout;
     // Two digits: the band's ends fit the panel at 80 columns.
     let q = |v: f64| format!("{v:.1e}");
+    let dash = if t.glyphs.ascii_text() { "-" } else { "…" };
     let (first, second) = match axis {
         Axis::Hurst => match r.fit {
-            Some(f) => (
-                format!(
-                    "  {:<5}  {:>9}  q {}{}{}",
-                    "H fit",
-                    fmt_num(f.fit.hurst),
-                    q(f.fit.q_lo),
-                    // The band whole at 80 columns in every glyph set.
-                    if t.glyphs.ascii_text() { "-" } else { "…" },
-                    q(f.fit.q_hi)
-                ),
-                format!(
-                    "   C(q0) {} · h_rms {} · {} pts",
-                    short_number(f.fit.psd_at_q0),
-                    f.h_rms.map_or("—".into(), fmt_len),
-                    f.fit.points
-                ),
-            ),
+            Some(f) => {
+                let band = format!("q {}{dash}{}", q(f.fit.q_lo), q(f.fit.q_hi));
+                let first = match f.fit.verdict().words() {
+                    // ASCII writes ± as "+-": one column less around it,
+                    // so that the band stays whole at 80 columns.
+                    None if t.glyphs.ascii_text() => format!(
+                        "  {:<5} {:>10} {band}",
+                        "H fit",
+                        hurst_se(&f.fit).replace('±', "+-")
+                    ),
+                    None => format!("  {:<5}  {:>9}  {band}", "H fit", hurst_se(&f.fit)),
+                    Some(_) => format!(
+                        "  {:<5}  {:>9}  not self-affine",
+                        "H fit",
+                        format!("({})", fmt_num(f.fit.hurst))
+                    ),
+                };
+                let second = match (f.fit.verdict().words(), f.h_rms) {
+                    (Some(w), _) => format!("   {w}; {band}"),
+                    (None, Some(h)) => {
+                        format!("   h_rms of the fitted power law {}", fmt_len(h))
+                    }
+                    (None, None) => format!("   {} pts", f.fit.points),
+                };
+                (first, second)
+            }
             None => (
                 format!("  {:<5}  {:>9}  too few points", "H fit", "—"),
-                "   no power law fits the band q0…q1".into(),
+                "   no power law fits the fit band".into(),
             ),
         },
         _ => (
@@ -208,7 +228,7 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
         )),
         Line::raw(format!("{:<w$}{}", tx("Ψ*asy"), tx(&asym), w = w[0])),
         Line::raw(pair("R_s", len(sp.r_s), "λ1", len(sp.lambda1))),
-        Line::raw(pair("h_rms", len(sp.h_rms_actual), "h′", num(sp.rms_slope))),
+        spectral_line(app, &tx, sp.h_rms_actual, sp.rms_slope),
         Line::raw(pair(
             "ε",
             num(2.0 * sp.rms_slope),
@@ -244,13 +264,22 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
             fmt_rel(o.total, sl.total)
         ))),
     ];
+    let mut at = 7;
+    if let Some(rs) = s.surface.as_ref().and_then(|src| src.measured.real) {
+        let (a, b) = rs.names();
+        lines.insert(
+            6,
+            Line::raw(pair(a, len(rs.rms_height), b, num(rs.rms_slope))),
+        );
+        at += 1;
+    }
     // Where there is room: the longest wavelength (the power law's q0,
     // set with q0=… or l=… at the value prompt; a surface's own).
     if usize::from(area.height) > lines.len() {
         let q0 = s.params.q0();
         let l = std::f64::consts::TAU / q0;
         lines.insert(
-            7,
+            at,
             Line::raw(pair(
                 "q0",
                 tx(&format!("{}/m", short_number(q0))),
@@ -259,5 +288,36 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
             )),
         );
     }
+    // What the reader assumed or repaired, under the readout.
+    if let Some(src) = &s.surface {
+        for n in src.notes() {
+            lines.push(Line::styled(tx(n), t.dim));
+        }
+    }
     Paragraph::new(lines).render(area, buf);
+}
+
+/// The spectral h_rms and h′: on a measured surface named as from the PSD
+/// up to ζ (beside Sq and Sdq), else as the power law's.
+fn spectral_line<'a>(app: &App, tx: &dyn Fn(&str) -> String, h: f64, slope: f64) -> Line<'a> {
+    if app.state.is_measured() {
+        Line::raw(tx(&format!(
+            "h_rms(ζ) {:<8} h′(ζ) {}",
+            fmt_len(h),
+            fmt_num(slope)
+        )))
+    } else {
+        let w = if app.theme.glyphs.ascii_text() {
+            [8, 10, 8]
+        } else {
+            [6, 10, 7]
+        };
+        Line::raw(pair(
+            w,
+            &tx("h_rms"),
+            tx(&fmt_len(h)),
+            &tx("h′"),
+            tx(&fmt_num(slope)),
+        ))
+    }
 }

@@ -1,7 +1,8 @@
 //! The spectrum view (measured surfaces only): the data's PSD against the
-//! wavevector on log-log axes, the power law fitted over the band [q0, q1]
-//! on screen, and the cutoff q1 = ζ q0 as the marker: the band the model's
-//! moments sum over, and how far the data is from a power law there.
+//! wavevector on log-log axes, the power law fitted over the fit band (its
+//! ends drawn as guides; `[ ]` `{ }` move them, `b` finds the band again),
+//! and the cutoff q1 = ζ q0 as the marker: the band the model's moments
+//! sum over, and how far the data is from a power law there.
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
@@ -24,7 +25,13 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     let glyphs = t.glyphs;
     let mut title = format!("{} vs q", p.label);
     if let Some(f) = app.readout.fit {
-        title.push_str(&format!(" · fit H {:.2}", f.fit.hurst));
+        match f.fit.verdict().words() {
+            None => title.push_str(&format!(" · H {}", super::side::hurst_se(&f.fit))),
+            Some(_) => title.push_str(&format!(
+                " · H {:.2}: not self-affine over the band",
+                f.fit.hurst
+            )),
+        }
     }
     if let Some(a) = anisotropy(app) {
         title.push_str(&a);
@@ -48,14 +55,18 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         ..t.elastic
     };
     let fit = CurveStyle {
-        name: "fit over q0…q1",
+        name: "fit",
         ..t.psi_asy
+    };
+    let band_style = CurveStyle {
+        name: "fit band",
+        ..t.ghost
     };
     let cut = CurveStyle {
         name: "q1 = ζ q0",
         ..t.marker_line
     };
-    chart::legend(t, &[&data, &fit, &cut], area, buf);
+    chart::legend(t, &[&data, &fit, &band_style, &cut], area, buf);
     let rows = f64::from(g.height.max(1));
     let x = Scale::decades(p.x_bounds);
     let y = thinned(p.y_bounds, rows);
@@ -66,12 +77,24 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     } else {
         &[]
     };
-    let sets = vec![
+    let edge = |q: f64| [(q, p.y_bounds[0]), (q, p.y_bounds[1])];
+    let edges: Vec<[(f64, f64); 2]> = p
+        .band
+        .iter()
+        .flatten()
+        .filter(|q| **q >= p.x_bounds[0] && **q <= p.x_bounds[1])
+        .map(|&q| edge(q))
+        .collect();
+    let mut sets: Vec<_> = edges
+        .iter()
+        .map(|e| chart::dataset(&band_style, e))
+        .collect();
+    sets.extend([
         chart::dataset(&cut, cutoff),
         chart::dataset(&data, &p.data),
         // The fit over the data, so that the band it spans shows.
         chart::dataset(&fit, &p.fit),
-    ];
+    ]);
     chart::plot(sets, (p.x_bounds, p.y_bounds), g, buf);
 }
 

@@ -1,0 +1,106 @@
+//! The real-space numbers a researcher compares first, as Gwyddion and
+//! contact.engineering report them (SurfaceTopography 1.27.1's
+//! `Uniform/ScalarParameters.py`), from the heights after the same detrend
+//! as the spectrum (mean for periodic data, else the least-squares plane
+//! or line) and without a window:
+//!
+//! - maps: Sq = `rms_height_from_area`, the rms of h about its mean; Sdq =
+//!   `rms_gradient`, √⟨(∂h/∂x)² + (∂h/∂y)²⟩ with first-order upwind
+//!   differences (h_(i+1) − h_i)/Δ; periodic data wrap around, otherwise both
+//!   derivatives are trimmed to the (nx − 1) × (ny − 1) points whose stencils
+//!   lie inside the data;
+//! - line scans: Rq = `rms_height_from_profile`, Rq about the mean; RΔq =
+//!   `rms_slope_from_profile`, the rms of the same difference (n − 1 of them,
+//!   or n wrapping around when periodic).
+
+/// Real-space rms height and rms slope (gradient for maps).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RealSpace {
+    /// A map's (Sq, Sdq) rather than a line's (Rq, RΔq).
+    pub areal: bool,
+    /// Sq or Rq, m.
+    pub rms_height: f64,
+    /// Sdq or RΔq, dimensionless.
+    pub rms_slope: f64,
+}
+
+impl RealSpace {
+    /// The names, (height, slope): ("Sq", "Sdq") or ("Rq", "RΔq").
+    pub fn names(&self) -> (&'static str, &'static str) {
+        if self.areal {
+            ("Sq", "Sdq")
+        } else {
+            ("Rq", "RΔq")
+        }
+    }
+}
+
+fn rms_about_mean(h: &[f64]) -> f64 {
+    let n = h.len() as f64;
+    let mean = h.iter().sum::<f64>() / n;
+    (h.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / n).sqrt()
+}
+
+/// A map of nx × ny detrended heights (rows of nx along x) over lx × ly.
+pub(crate) fn areal(
+    h: &[f64],
+    nx: usize,
+    ny: usize,
+    lx: f64,
+    ly: f64,
+    periodic: bool,
+) -> RealSpace {
+    let (dx, dy) = (lx / nx as f64, ly / ny as f64);
+    let (ix, jy) = if periodic { (nx, ny) } else { (nx - 1, ny - 1) };
+    let mut sum = 0.0;
+    for j in 0..jy {
+        let row = &h[j * nx..(j + 1) * nx];
+        let next = &h[((j + 1) % ny) * nx..((j + 1) % ny + 1) * nx];
+        for i in 0..ix {
+            let v = row[i];
+            let right = if i + 1 == nx { row[0] } else { row[i + 1] };
+            let gx = (right - v) / dx;
+            let gy = (next[i] - v) / dy;
+            sum += gx * gx + gy * gy;
+        }
+    }
+    RealSpace {
+        areal: true,
+        rms_height: rms_about_mean(h),
+        rms_slope: (sum / (ix * jy) as f64).sqrt(),
+    }
+}
+
+/// A line of n detrended heights over l.
+pub(crate) fn profile(h: &[f64], l: f64, periodic: bool) -> RealSpace {
+    let n = h.len();
+    let dx = l / n as f64;
+    let m = if periodic { n } else { n - 1 };
+    let sum: f64 = (0..m).map(|i| ((h[(i + 1) % n] - h[i]) / dx).powi(2)).sum();
+    RealSpace {
+        areal: false,
+        rms_height: rms_about_mean(h),
+        rms_slope: (sum / m as f64).sqrt(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_tilted_line_and_a_periodic_cosine() {
+        // Differences of a line of slope 2: RΔq = 2 exactly.
+        let h: Vec<f64> = (0..8).map(|i| 2.0 * i as f64 * 0.5).collect();
+        let r = profile(&h, 4.0, false);
+        assert!((r.rms_slope - 2.0).abs() < 1e-15);
+        // A periodic cosine of amplitude a: Sq = a/√2.
+        let (nx, ny, a) = (16, 4, 0.3);
+        let h: Vec<f64> = (0..nx * ny)
+            .map(|k| a * (2.0 * std::f64::consts::PI * (k % nx) as f64 / nx as f64).cos())
+            .collect();
+        let r = areal(&h, nx, ny, 1.0, 1.0, true);
+        assert!((r.rms_height - a / 2f64.sqrt()).abs() < 1e-15);
+        assert_eq!(r.names(), ("Sq", "Sdq"));
+    }
+}
