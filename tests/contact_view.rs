@@ -86,7 +86,7 @@ fn the_readout_gives_the_simulation_and_the_theory_at_the_chosen_load() {
     settle(&mut a);
     let r = a.contact.chosen().unwrap().as_ref().unwrap().result;
     let t = a.contact.theory.at_load.unwrap();
-    let (line, error) = roughtui::tui::views::contact::readout(&a.contact, 200);
+    let (line, error) = roughtui::tui::views::contact::readout(&a.contact, 200, Glyphs::Braille);
     assert!(!error);
     use roughtui::tui::views::contact::{pct, share_pct};
     assert_eq!(
@@ -105,7 +105,7 @@ fn the_readout_gives_the_simulation_and_the_theory_at_the_chosen_load() {
     // ] and [ move the load a quarter decade; the readout follows.
     ch(&mut a, ']');
     assert_eq!(a.contact.load, 5);
-    let (line, _) = roughtui::tui::views::contact::readout(&a.contact, 200);
+    let (line, _) = roughtui::tui::views::contact::readout(&a.contact, 200, Glyphs::Braille);
     assert!(line.starts_with("simulation at p̄ = 0.01778 H"), "{line}");
     for _ in 0..20 {
         ch(&mut a, '[');

@@ -69,7 +69,11 @@ fn moments(file: &str, more: &[&str]) -> (String, Vec<String>) {
         "5",
     ];
     a.extend_from_slice(more);
-    noted(&a)
+    let (csv, mut notes) = noted(&a);
+    // The small maps written here are not isotropic; their anisotropy note
+    // is tested with the lay in measured_missing.rs.
+    notes.retain(|n| !n.starts_with("anisotropic"));
+    (csv, notes)
 }
 
 #[test]

@@ -508,7 +508,11 @@ fn only_a_served_student_has_the_follow_key() {
     assert!(!help_pages(&mut student).contains("follow the lecturer"));
     student.lecturer_keys = true;
     assert_eq!(message_for_key(&student, &f), Some(Message::Follow));
-    // First in the footer, so that 80 columns keep it.
+    // The footer offers it only while a lecturer is connected (the key
+    // itself answers "no lecturer connected" otherwise) ...
+    assert!(!footer(&student, 200).contains("f follow"));
+    student.lecturer_here = true;
+    // ... and first, so that 80 columns keep it.
     assert!(footer(&student, 78).starts_with("f follow  "));
     assert!(screen(&student).contains("f follow"));
     let help = help_pages(&mut student);

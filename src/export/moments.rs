@@ -10,7 +10,7 @@ use anyhow::bail;
 use super::MAX_SVG_POINTS;
 use crate::cli::{ExportArgs, FormatArg};
 use crate::csv_number;
-use crate::figure::{moment_comments, render_moments_svg, MomentSeries};
+use crate::figure::{moment_comments, render_moments_svg, scene_text, MomentSeries};
 use crate::snapshot::State;
 
 /// The moments view's CSV header: ζ, q1 (1/m), λ1 (m), the profile moments
@@ -58,7 +58,17 @@ pub(super) fn run(
 /// The comment lines and the table of `state`'s moments at `points` ζ.
 pub fn write_moments(out: &mut impl Write, state: &State, points: usize) -> anyhow::Result<()> {
     let s = MomentSeries::of(state, points)?;
-    for c in moment_comments(state) {
+    // The scene first, as every CSV has it, then what stands beside the
+    // moments.
+    let span = format!(
+        "moments = zeta from {} to {}, {points} points (log-spaced)",
+        csv_number::format(s.zeta[0]),
+        csv_number::format(s.zeta[s.len() - 1])
+    );
+    for c in scene_text::full_lines_of(state, "moments", span)
+        .into_iter()
+        .chain(moment_comments(state))
+    {
         writeln!(out, "# {c}")?;
     }
     writeln!(out, "{MOMENTS_HEADER}")?;

@@ -120,9 +120,20 @@ fn span_full(state: &State, view: View, opts: &FigureOptions) -> String {
             if state.size_effect { "H_y" } else { "H0" },
             opts.points
         ),
-        View::Spectrum => "spectrum = the data's, with the power law fitted over q0 to \
-                           q1 = zeta q0"
-            .to_string(),
+        View::Spectrum => match state.surface.as_ref().and_then(|s| s.fit()) {
+            Some(f) => format!(
+                "spectrum = the data's, with the power law fitted over its fit band \
+                 q = {} to {} 1/m ({})",
+                full(f.q_lo),
+                full(f.q_hi),
+                if state.surface.as_ref().is_some_and(|s| s.fit_band.is_some()) {
+                    "set"
+                } else {
+                    "found from the data"
+                }
+            ),
+            None => "spectrum = the data's (no power law fitted)".to_string(),
+        },
         View::Contact => "contact = the boundary-element simulation beside the theory".to_string(),
     }
 }

@@ -180,6 +180,7 @@ async fn run(start: Start) {
     let is_lecturer = s.is_lecturer();
     s.ex.app.student = !is_lecturer;
     s.ex.app.lecturer_keys = shared.lecturer_keys.any();
+    s.ex.app.lecturer_here = s.lecturer.borrow().is_some();
     let name = clean_name(&name);
     let joined = Instant::now();
     let mut marker = s.marker();
@@ -326,6 +327,7 @@ async fn run(start: Start) {
                     break;
                 }
                 let shown = s.lecturer.borrow_and_update().clone();
+                s.ex.app.lecturer_here = shown.is_some();
                 let e = s.follow.on_lecturer(shown.is_some());
                 s.effect(e);
                 if s.follow.following() && shown.is_some() {

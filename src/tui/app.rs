@@ -223,6 +223,8 @@ pub struct App {
     pub student: bool,
     /// Whether the class has a lecturer to follow (`--lecturer-keys`).
     pub lecturer_keys: bool,
+    /// Whether a lecturer is connected now (the footer offers `f` then).
+    pub lecturer_here: bool,
     /// The measured surface's scene the session started on, which `5`
     /// returns to after a preset; `None` without a surface.
     pub home: Option<State>,
@@ -271,6 +273,7 @@ impl App {
             ghost: None,
             student: false,
             lecturer_keys: false,
+            lecturer_here: false,
             home: None,
             class: Classroom::default(),
             contact: Default::default(),

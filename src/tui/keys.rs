@@ -361,8 +361,8 @@ pub fn message_for_event(app: &App, ev: &Event) -> Option<Message> {
 /// The footer for the app's mode in `width` columns: the entries in table
 /// order, those that do not fit left out, but help, save, picture, quit and
 /// (on a surface) `5` always kept (so 80 columns show them); `g` only on
-/// the slopes view and
-/// `y` only on the map, where they act.
+/// the slopes view, `y` only on the map, where they act, and `f` only while
+/// a lecturer is connected.
 pub fn footer(app: &App, width: usize) -> String {
     let glyphs = app.theme.glyphs;
     let entries: Vec<(Cow<str>, bool)> = BINDINGS
@@ -372,6 +372,9 @@ pub fn footer(app: &App, width: usize) -> String {
             b.keys.iter().all(|(_, m)| match m {
                 Message::ToggleGhost => app.view == View::Slopes,
                 Message::NextMapY => app.view == View::Map,
+                // `f` answers "no lecturer connected" when there is none;
+                // the footer offers it only when there is one.
+                Message::Follow => app.lecturer_here,
                 _ => true,
             })
         })

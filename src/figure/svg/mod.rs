@@ -528,8 +528,9 @@ pub(crate) fn view_caption(view: View, state: &State) -> String {
         View::Load => "Contact areas against the load at the parameters above, with the \
                        initial slope drawn from the origin."
             .to_string(),
-        View::Spectrum => "The surface's power spectrum, the power law fitted over the band \
-                           q0…q1 and the cutoff q1 = ζ q0."
+        View::Spectrum => "The surface's power spectrum, the power law fitted over its fit \
+                           band (the grey lines: the spectrum's self-affine stretch unless set) \
+                           and the cutoff q1 = ζ q0."
             .to_string(),
         View::Contact => "The boundary-element simulation of the scene's surface beside the \
                           theory's areas."

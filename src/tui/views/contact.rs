@@ -18,6 +18,7 @@ use crate::contact::scene::Node;
 use crate::tui::app::App;
 use crate::tui::contact::{load_value, sweep_zetas, ContactPane, LOADS};
 use crate::tui::fmt::fmt_num;
+use crate::tui::glyphs::Glyphs;
 use crate::tui::layout::Y_LABEL_W;
 use crate::tui::theme::{CurveStyle, Theme};
 
@@ -74,7 +75,7 @@ pub fn load_text(v: f64) -> String {
 
 /// The readout's line at the chosen load, the longest form that fits
 /// `width`.
-pub fn readout(pane: &ContactPane, width: usize) -> (String, bool) {
+pub fn readout(pane: &ContactPane, width: usize, g: Glyphs) -> (String, bool) {
     let at = load_text(load_value(pane.load));
     let theory = pane
         .theory
@@ -112,6 +113,7 @@ pub fn readout(pane: &ContactPane, width: usize) -> (String, bool) {
         ],
         Err(e) => vec![format!("at p̄ = {at} H: {e}")],
     };
+    let forms: Vec<String> = forms.iter().map(|f| g.text(f).into_owned()).collect();
     let fits = |s: &String| Span::raw(s.as_str()).width() <= width;
     let line = forms
         .iter()
@@ -202,9 +204,9 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
         let text = "simulation points · theory S_pl/S_tot lines · b: areas vs load";
         Line::styled(gl.text(text).into_owned(), t.dim).render(row1, buf);
     } else {
-        let (line, error) = readout(pane, w);
+        let (line, error) = readout(pane, w, gl);
         let style = if error { t.error } else { Style::new() };
-        Line::styled(gl.text(&line).into_owned(), style).render(row1, buf);
+        Line::styled(line, style).render(row1, buf);
     }
     let body = Rect::new(area.x, area.y + 2, area.width, area.height - 2);
     if pane.sweep {
