@@ -137,6 +137,7 @@ pub fn synthetic(n: usize) -> anyhow::Result<State> {
         real: None,
         band: Measured::find_band(Dim::Areal, &spectrum, &[]),
         modes: Vec::new(),
+        heights: None,
         spectrum,
     };
     State::measured(SurfaceSource {

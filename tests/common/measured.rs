@@ -59,6 +59,7 @@ pub fn line_state() -> State {
         real: None,
         band: Measured::find_band(Dim::Profile, &spectrum, &[]),
         modes: Vec::new(),
+        heights: None,
         spectrum,
     };
     State::measured(source("line.txt", m)).unwrap()

@@ -22,7 +22,7 @@ mod surface;
 
 use std::fmt;
 
-pub use surface::{low_pass, moments, synthesise, Moments, PowerLaw};
+pub use surface::{low_pass, moments, resample, synthesise, Moments, PowerLaw};
 
 /// How the grid meets what lies beyond it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

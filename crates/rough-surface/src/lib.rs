@@ -43,6 +43,7 @@ pub use error::{Problem, SurfaceError};
 pub use fill::MAX_UNDEFINED;
 pub use fit::{PowerLawFit, Verdict, MIN_POINTS as MIN_FIT_POINTS};
 pub use grid::Grid;
+pub use prepare::Heights;
 pub use realspace::RealSpace;
 pub use units::HeightUnit;
 
@@ -165,6 +166,9 @@ pub struct Measured {
     /// The default Hurst fit band, 1/m: the spectrum's self-affine
     /// stretch (`band`'s rules); `None` with too few points.
     pub band: Option<(f64, f64)>,
+    /// A map's heights for the contact simulation ([`Heights`]: filled,
+    /// detrended, not windowed); `None` for lines, profiles and PSD tables.
+    pub heights: Option<Arc<Heights>>,
 }
 
 impl Measured {
@@ -437,6 +441,7 @@ fn measured(r: Reading, sha256: String, mut notes: Vec<String>) -> Measured {
         real: c.real,
         modes: c.modes,
         band,
+        heights: c.heights,
     }
 }
 

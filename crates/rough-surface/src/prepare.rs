@@ -155,3 +155,33 @@ pub(crate) fn window(h: &mut [f64], (nx, ny): (usize, usize), (lx, ly): (f64, f6
     });
     n / parts.iter().sum::<f64>()
 }
+
+/// A map's heights as a contact simulation needs them: undefined points
+/// filled, the mean (periodic) or the least-squares plane removed, no
+/// window. Row-major, `nx` heights a row along x, `ny` rows; metres.
+///
+/// Memory: the map's own vector kept (periodic maps: the buffer the
+/// spectrum was computed from, no copy) or one copy taken before the
+/// window (other maps): 8 bytes a point, 128 MiB for a 4096² map, held as
+/// long as the surface is loaded.
+#[derive(PartialEq)]
+pub struct Heights {
+    pub nx: usize,
+    pub ny: usize,
+    pub lx: f64,
+    pub ly: f64,
+    /// Read with `--periodic`.
+    pub periodic: bool,
+    pub z: Vec<f64>,
+}
+
+/// The dimensions only: a map's heights are too many to print.
+impl std::fmt::Debug for Heights {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "Heights({} × {}, {} m × {} m, periodic: {})",
+            self.nx, self.ny, self.lx, self.ly, self.periodic
+        )
+    }
+}

@@ -74,6 +74,7 @@ pub(crate) fn profiles(
         slopes: None,
         real: None,
         modes: bins.counts(),
+        heights: None,
     })
 }
 

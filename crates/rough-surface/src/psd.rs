@@ -40,6 +40,7 @@ pub(crate) fn table(
             slopes: None,
             real: None,
             modes: Vec::new(),
+            heights: None,
         },
     ))
 }

@@ -44,6 +44,8 @@ pub(crate) struct Computed {
     pub real: Option<RealSpace>,
     /// The Fourier modes in each point of `spectrum` (empty for tables).
     pub modes: Vec<f64>,
+    /// A map's detrended heights ([`crate::Measured::heights`]).
+    pub heights: Option<Arc<prepare::Heights>>,
 }
 
 /// The residual rms below which detrended heights count as nothing left
@@ -182,6 +184,19 @@ pub(crate) fn map(
     let notes: Vec<String> = fill::fill(&mut h, nx, ny, periodic)?.into_iter().collect();
     prepare::detrend(&mut h, (nx, ny), periodic)?;
     let real = realspace::areal(&h, nx, ny, lx, ly, periodic);
+    let keep = |z: Vec<f64>| {
+        let (nx, ny, lx, ly, periodic) = (nx, ny, lx, ly, periodic);
+        Arc::new(prepare::Heights {
+            nx,
+            ny,
+            lx,
+            ly,
+            periodic,
+            z,
+        })
+    };
+    // Periodic maps are not windowed: their buffer is kept after the FFT.
+    let copy = (!periodic).then(|| keep(h.clone()));
     let s2 = if periodic {
         1.0
     } else {
@@ -190,7 +205,7 @@ pub(crate) fn map(
     let mut planner = FftPlanner::<f64>::new();
     let nh = nx / 2 + 1;
     let half = rows_half(&h, nx, ny, &planner.plan_fft_forward(nx));
-    drop(h);
+    let heights = Some(copy.unwrap_or_else(|| keep(h)));
     let fft_y = planner.plan_fft_forward(ny);
 
     let n2 = ((nx * ny) as f64).powi(2);
@@ -298,6 +313,7 @@ pub(crate) fn map(
         slopes: Some(slopes),
         real: Some(real),
         modes: bins.counts(),
+        heights,
     })
 }
 
@@ -360,6 +376,7 @@ pub(crate) fn line(mut h: Vec<f64>, l: f64, periodic: bool) -> Result<Computed, 
         slopes: None,
         real: Some(real),
         modes: bins.counts(),
+        heights: None,
     })
 }
 
