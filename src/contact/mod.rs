@@ -11,6 +11,7 @@
 
 pub mod engine;
 pub mod map_svg;
+pub mod measured;
 pub mod scene;
 mod svg;
 
@@ -68,6 +69,8 @@ pub struct Simulation {
     pub seed: u64,
     /// rms slope of the solved surface (the scene's √(2 m2)).
     pub rms_slope: f64,
+    /// A measured map: how it is cropped, sampled and bounded.
+    pub measured: Option<String>,
 }
 
 impl Simulation {
@@ -78,7 +81,18 @@ impl Simulation {
             .roughness()
             .surface(&state.params, state.moments)
             .indices;
+        let measured = match measured::heights_of(state)? {
+            Some((_, h)) => {
+                let p = &state.params;
+                Some(measured::describe(
+                    &h,
+                    &measured::plan(&h, p.zeta() * p.q0())?,
+                ))
+            }
+            None => None,
+        };
         Ok(Simulation {
+            measured,
             contact: key.build()?,
             hardness: key.hardness(),
             psi: ix.psi_in_use(state.size_effect),
@@ -131,13 +145,22 @@ fn comments(out: &mut impl Write, state: &State, sim: &Simulation) -> anyhow::Re
     // A sweep's first point solves another ζ than the scene's.
     let p = &p.with(rough_model::Axis::Zeta, sim.zeta).unwrap_or(*p);
     writeln!(out, "# scene: {}", state.name)?;
-    writeln!(
-        out,
-        "# simulation: elastic–perfectly-plastic BEM (rough-contact), periodic {n} × {n} grid \
+    if let Some(m) = &sim.measured {
+        writeln!(
+            out,
+            "# simulation: elastic–perfectly-plastic BEM (rough-contact), {m}, wavevectors \
+             q ≤ zeta q0 = {} 1/m kept",
+            csv_number::format(p.zeta() * p.q0())
+        )?;
+    } else {
+        writeln!(
+            out,
+            "# simulation: elastic–perfectly-plastic BEM (rough-contact), periodic {n} × {n} grid \
          of side 2π/q0, power-law Gaussian surface, seed {}",
-        sim.seed,
-        n = sim.contact.n()
-    )?;
+            sim.seed,
+            n = sim.contact.n()
+        )?;
+    }
     writeln!(
         out,
         "# h0_over_e = {}, hardness_in_use_over_e = {}, zeta = {}, hurst = {}, h_rms = {} m, \
@@ -231,7 +254,9 @@ fn share(plastic: f64, total: f64) -> f64 {
 pub fn sweep_rows(state: &State, seed: u64) -> anyhow::Result<(Simulation, Vec<SweepRow>)> {
     let mut rows = vec![];
     let mut first = None;
-    for zeta in sweep_zetas() {
+    // A measured map's ζ stops at its data's largest.
+    let zeta_max = state.roughness().zeta_max() * (1.0 + 1e-12);
+    for zeta in sweep_zetas().into_iter().filter(|z| *z <= zeta_max) {
         let mut s = state.clone();
         s.params = s
             .params

@@ -3,10 +3,9 @@
 //! on the same inputs ask for the same key, whatever else differs between
 //! their scenes (model, view, sweep), and so share one solution.
 
-use anyhow::bail;
 use rough_contact::{moments, synthesise, Boundary, Contact, PowerLaw};
 
-use super::{grid_for, MAX_GRID};
+use super::{grid_for, measured, MAX_GRID};
 use crate::snapshot::State;
 
 /// The surface and cap of one simulation; every field is an input of
@@ -25,16 +24,15 @@ pub struct SceneKey {
     /// Grid side.
     pub n: usize,
     pub seed: u64,
+    /// A measured map: its file's SHA-256 and how it was read
+    /// ([`super::measured`]); `None`: the power law.
+    pub surface: Option<super::measured::SurfaceId>,
 }
 
 /// Why a scene cannot be simulated, in the explorer's words.
 pub fn unsolvable(state: &State) -> Option<String> {
     if state.is_measured() {
-        return Some(
-            "a measured surface's heights are not kept after its moments are tabulated: \
-             the simulation solves the paper's power law only"
-                .into(),
-        );
+        return SceneKey::of(state, 0).err().map(|e| format!("{e:#}"));
     }
     let zeta = state.params.zeta();
     grid_for(zeta).err().map(|_| {
@@ -50,18 +48,27 @@ pub fn unsolvable(state: &State) -> Option<String> {
 
 impl SceneKey {
     /// The power-law scene of `state` with phases from `seed`.
+    /// A measured map's key is its file's and reading's (the seed plays no
+    /// part: it is stored as 0).
     pub fn of(state: &State, seed: u64) -> anyhow::Result<SceneKey> {
-        if state.is_measured() {
-            bail!(
-                "the contact view solves the paper's power-law surface; a measured surface's \
-                 heights are not kept after its moments are tabulated, so it cannot be solved \
-                 here yet"
-            );
-        }
         let p = &state.params;
         let surface = state.roughness().surface(p, state.moments);
         let ix = surface.indices;
         let hardness = p.h0_over_e() * ix.hardness_in_use(state.size_effect);
+        if let Some((id, h)) = measured::heights_of(state)? {
+            let plan = measured::plan(&h, p.zeta() * p.q0())?;
+            return Ok(SceneKey {
+                z: 0,
+                hurst: 0,
+                q0: p.q0().to_bits(),
+                zeta: p.zeta().to_bits(),
+                rms_slope: surface.spectrum.rms_slope.to_bits(),
+                hardness: hardness.to_bits(),
+                n: plan.n,
+                seed: 0,
+                surface: Some(id),
+            });
+        }
         Ok(SceneKey {
             z: surface.spectrum.z.to_bits(),
             hurst: p.hurst().to_bits(),
@@ -71,6 +78,7 @@ impl SceneKey {
             hardness: hardness.to_bits(),
             n: grid_for(p.zeta())?,
             seed,
+            surface: None,
         })
     }
 
@@ -92,6 +100,9 @@ impl SceneKey {
     pub fn build(&self) -> anyhow::Result<Contact> {
         let f = f64::from_bits;
         let (n, q0) = (self.n, f(self.q0));
+        if let Some(id) = &self.surface {
+            return measured::build(id, f(self.zeta) * q0);
+        }
         let length = 2.0 * std::f64::consts::PI / q0;
         let law = PowerLaw {
             z: f(self.z),

@@ -149,7 +149,7 @@ pub fn resample(
     check_grid(n, length)?;
     check_grid(n_out, length)?;
     let dq = 2.0 * std::f64::consts::PI / length;
-    if n_out > n || q_cut >= dq * (n_out / 2) as f64 {
+    if n_out > n || (n_out < n && q_cut >= dq * (n_out / 2) as f64) {
         return Err(ContactError::Input(format!(
             "cannot resample {n}² to {n_out}² keeping q ≤ {q_cut:e}: the grid must shrink \
              and keep the cutoff below its Nyquist wavenumber"
