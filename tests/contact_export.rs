@@ -98,8 +98,8 @@ fn contact_refusals() {
         ),
         (vec!["--points", "100"], "at most 64 loads"),
         (
-            vec!["--surface", "surfaces/example.txt"],
-            "power-law surface",
+            vec!["--surface", "surfaces/example.txt", "--direction", "x"],
+            "needs heights on a grid",
         ),
     ] {
         let mut all = vec!["export", "--view", "contact", "--preset", "fig2"];

@@ -102,19 +102,26 @@ pub fn map_svg(map: &[Node], n: usize, title: &str, note: &str) -> String {
 pub fn caption(
     name: &str,
     n: usize,
-    seed: u64,
+    seed: Option<u64>,
     p_over_h: f64,
     area: f64,
     plastic: f64,
 ) -> (String, String) {
     let share = if area > 0.0 { plastic / area } else { 0.0 };
+    let (what, cell) = match seed {
+        Some(seed) => (format!("seed {seed}"), "the periodic cell of side 2π/q0"),
+        None => (
+            "measured map".to_string(),
+            "the map's solved square (its crop: export --view contact)",
+        ),
+    };
     (
         format!(
-            "{name}: contact map at p̄ = {} H, {n}×{n}, seed {seed}",
+            "{name}: contact map at p̄ = {} H, {n}×{n}, {what}",
             crate::tui::views::contact::load_text(p_over_h)
         ),
         format!(
-            "A/A0 = {:.4} %, {:.1} % of it at the hardness; the periodic cell of side 2π/q0",
+            "A/A0 = {:.4} %, {:.1} % of it at the hardness; {cell}",
             100.0 * area,
             100.0 * share
         ),
@@ -145,6 +152,7 @@ pub fn export(args: &ExportArgs, out: &mut impl std::io::Write) -> anyhow::Resul
     let r = c.solve(SWEEP_LOAD * h, h, &rough_contact::Options::default())?;
     let map = classify(c.pressure(), h);
     let n = key.n;
+    let seed = key.surface.is_none().then_some(seed);
     let (title, note) = caption(&state.name, n, seed, SWEEP_LOAD, r.area, r.plastic_area);
     match args.format {
         FormatArg::Svg => out.write_all(map_svg(&map, n, &title, &note).as_bytes())?,

@@ -254,9 +254,15 @@ fn share(plastic: f64, total: f64) -> f64 {
 pub fn sweep_rows(state: &State, seed: u64) -> anyhow::Result<(Simulation, Vec<SweepRow>)> {
     let mut rows = vec![];
     let mut first = None;
-    // A measured map's ζ stops at its data's largest.
+    // A measured map's ζ runs from the first that keeps a mode of its
+    // solved square to its data's largest.
     let zeta_max = state.roughness().zeta_max() * (1.0 + 1e-12);
-    for zeta in sweep_zetas().into_iter().filter(|z| *z <= zeta_max) {
+    let zeta_min = match measured::heights_of(state)? {
+        Some((_, h)) => measured::lowest_zeta(&h) * (1.0 - 1e-9),
+        None => 0.0,
+    };
+    let zetas = sweep_zetas().into_iter();
+    for zeta in zetas.filter(|z| (zeta_min..=zeta_max).contains(z)) {
         let mut s = state.clone();
         s.params = s
             .params
@@ -334,7 +340,7 @@ pub fn write_contact_sweep(out: &mut impl Write, state: &State, seed: u64) -> an
     comments(out, state, &sim)?;
     writeln!(
         out,
-        "# zeta swept over 1, 2, 4, …, 128 at p_over_h = {SWEEP_LOAD}, each on its own grid \
+        "# zeta swept over 1, 2, 4, …, 128 (a measured map's: those it resolves) at p_over_h = {SWEEP_LOAD}, each on its own grid \
          (column grid); the lines above are the first point's"
     )?;
     writeln!(out, "{SWEEP_HEADER}")?;

@@ -48,10 +48,13 @@ pub fn contact(
     {
         let root = SVGBackend::with_string(&mut buf, SIZE).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
+        let what = match sim.measured {
+            Some(_) => "measured map".to_string(),
+            None => format!("seed {}", sim.seed),
+        };
         let title = format!(
-            "{}: simulation (points, {n}×{n}, seed {}) and theory (lines)",
+            "{}: simulation (points, {n}×{n}, {what}) and theory (lines)",
             state.name,
-            sim.seed,
             n = sim.contact.n()
         );
         let mut chart = ChartBuilder::on(&root)
@@ -119,8 +122,12 @@ pub fn sweep(out: &mut impl Write, state: &State, seed: u64) -> anyhow::Result<(
     {
         let root = SVGBackend::with_string(&mut buf, SIZE).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
+        let what = match state.is_measured() {
+            true => "measured map".to_string(),
+            false => format!("seed {seed}"),
+        };
         let title = format!(
-            "{}: plastic share of the contact area at p̄/H = {SWEEP_LOAD}, seed {seed}",
+            "{}: plastic share of the contact area at p̄/H = {SWEEP_LOAD}, {what}",
             state.name
         );
         let mut chart = ChartBuilder::on(&root)

@@ -179,7 +179,13 @@ impl ContactPane {
             self.load,
         );
         let mut tasks = vec![];
-        if self.sweep && !state.is_measured() {
+        if self.sweep && state.is_measured() {
+            self.why_not = Some(
+                "b plots the power law's ζ sweep; a measured map's: roughtui export --view \
+                 contact-sweep --surface FILE"
+                    .into(),
+            );
+        } else if self.sweep {
             self.why_not = None;
             for se in [false, true] {
                 for z in sweep_zetas() {
@@ -269,6 +275,10 @@ pub fn on_key(app: &mut super::app::App, msg: super::app::Message) {
             app.contact.load = k;
         }
         Message::ContactSweep => pane.sweep = !pane.sweep,
+        Message::ContactSeed if app.state.is_measured() => app.set_status(
+            "a measured map has no seed: the simulation solves its own heights",
+            true,
+        ),
         Message::ContactSeed => {
             let seed = pane.seed.wrapping_add(1);
             app.state.seed = Some(seed);
@@ -297,11 +307,15 @@ pub fn picture(app: &super::app::App) -> anyhow::Result<String> {
         None => anyhow::bail!("the contact map is not solved yet: p again when it is"),
     };
     let n = pane.tasks.first().map_or(0, |t| t.scene.n);
+    let measured = pane
+        .tasks
+        .first()
+        .is_some_and(|t| t.scene.surface.is_some());
     let r = &solved.result;
     let (title, note) = crate::contact::map_svg::caption(
         &app.state.name,
         n,
-        pane.seed,
+        (!measured).then_some(pane.seed),
         load_value(pane.load),
         r.area,
         r.plastic_area,

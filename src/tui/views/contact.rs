@@ -182,7 +182,12 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
             pane.seed
         )
     } else {
+        let measured = pane
+            .tasks
+            .first()
+            .is_some_and(|t| t.scene.surface.is_some());
         match n {
+            Some(n) if measured => format!("simulation {n}² · measured map"),
             Some(n) => format!("simulation {n}² · seed {}", pane.seed),
             None => "simulation".into(),
         }

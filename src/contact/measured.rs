@@ -1,0 +1,199 @@
+//! A researcher's measured map as the contact simulation solves it.
+//!
+//! The heights are the map's as `rough-surface` keeps them for this
+//! ([`rough_surface::Heights`]: undefined points filled, the mean or the
+//! plane removed, no window). The solver's FFT operators take a square grid
+//! whose side is a power of two, so a map that is not one is **cropped**:
+//! the centred square of side c = the largest power of two ≤ min(nx, ny)
+//! (nothing is padded, no height is invented). Wavevectors |q| ≤ ζ q0 are
+//! kept (q0 = 2π/max(Lx, Ly), the cutoff the indices use), and the square
+//! is Fourier-resampled to N = the power of two ≥ 8 ζ c/max(nx, ny) (eight
+//! nodes per shortest wavelength, at least [`MIN_GRID`]) when that is
+//! smaller than c; N ≤ [`MAX_GRID`]. A map read with `--periodic` whose
+//! grid is such a square already is solved with the periodic kernel; every
+//! other map (or crop) on the free-boundary variant (zero-padded 2N × 2N,
+//! Love's coefficients).
+//!
+//! The scene's key names the map by its file's SHA-256 and a hash of how it
+//! was read; the heights themselves are found in a process-wide registry of
+//! the surfaces loaded (weak references: a surface nobody holds is freed).
+
+use std::collections::hash_map::DefaultHasher;
+use std::collections::HashMap;
+use std::hash::{Hash, Hasher};
+use std::sync::{Arc, Mutex, OnceLock, Weak};
+
+use anyhow::{anyhow, bail};
+use rough_contact::{resample, Boundary, Contact};
+use rough_surface::Heights;
+
+use super::{MAX_GRID, MIN_GRID};
+use crate::snapshot::State;
+
+/// SHA-256 of the file and a hash of the reading options.
+pub type SurfaceId = ([u8; 32], u64);
+
+type Registry = Mutex<HashMap<SurfaceId, Weak<Heights>>>;
+
+fn registry() -> &'static Registry {
+    static R: OnceLock<Registry> = OnceLock::new();
+    R.get_or_init(Registry::default)
+}
+
+/// The map of a measured scene, why not if it has none, and its id
+/// (registered so that [`build`] finds its heights).
+pub fn heights_of(state: &State) -> anyhow::Result<Option<(SurfaceId, Arc<Heights>)>> {
+    let Some(src) = &state.surface else {
+        return Ok(None);
+    };
+    let Some(h) = &src.measured.heights else {
+        bail!(
+            "the contact simulation needs heights on a grid: {} is {}, which has none \
+             (line scans, profiles read with --direction and PSD tables cannot be solved)",
+            src.path.display(),
+            match src.measured.kind {
+                rough_surface::Kind::Line { .. } => "a line scan",
+                rough_surface::Kind::Profiles { .. } => "a map read as profiles",
+                _ => "a PSD table",
+            }
+        );
+    };
+    let mut sha = [0u8; 32];
+    let hex = src.measured.sha256.as_bytes();
+    for (i, b) in sha.iter_mut().enumerate() {
+        let digit = |k: usize| {
+            hex.get(k)
+                .and_then(|c| (*c as char).to_digit(16))
+                .unwrap_or(0)
+        };
+        *b = (digit(2 * i) * 16 + digit(2 * i + 1)) as u8;
+    }
+    let mut hasher = DefaultHasher::new();
+    format!("{:?}", src.options).hash(&mut hasher);
+    let id = (sha, hasher.finish());
+    let mut reg = registry().lock().unwrap_or_else(|e| e.into_inner());
+    reg.retain(|_, w| w.strong_count() > 0);
+    reg.insert(id, Arc::downgrade(h));
+    Ok(Some((id, Arc::clone(h))))
+}
+
+/// How a map is cut and sampled for the solver.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Plan {
+    /// Side of the centred square cropped from the map, in points.
+    pub crop: usize,
+    /// Side of the solver's grid.
+    pub n: usize,
+    /// Side of the square, m.
+    pub length: f64,
+    pub boundary: Boundary,
+}
+
+/// The plan for `h` with cutoff `q_cut` (1/m).
+pub fn plan(h: &Heights, q_cut: f64) -> anyhow::Result<Plan> {
+    let (dx, dy) = (h.lx / h.nx as f64, h.ly / h.ny as f64);
+    if (dx - dy).abs() > 1e-6 * dx.max(dy) {
+        bail!(
+            "the map's pixels are {dx:e} m × {dy:e} m: the contact solver takes square pixels \
+             only (--pixel-size sets both)"
+        );
+    }
+    let crop = 1usize << h.nx.min(h.ny).ilog2();
+    if crop < MIN_GRID {
+        bail!(
+            "the map is {} × {} points: the contact simulation needs a square of at least \
+             {MIN_GRID} × {MIN_GRID}",
+            h.nx,
+            h.ny
+        );
+    }
+    let length = crop as f64 * dx;
+    if q_cut * (1.0 + 1e-9) < std::f64::consts::TAU / length {
+        bail!(
+            "ζ = {:.3} keeps no wavelength shorter than the solved {crop} × {crop} square's \
+             side: the contact simulation needs ζ ≥ {:.3} on this map",
+            q_cut * h.lx.max(h.ly) / std::f64::consts::TAU,
+            lowest_zeta(h)
+        );
+    }
+    let need = (8.0 * q_cut * length / std::f64::consts::TAU).ceil();
+    let n = if need > crop as f64 {
+        crop
+    } else {
+        (need as usize).next_power_of_two().clamp(MIN_GRID, crop)
+    };
+    if n > MAX_GRID {
+        bail!(
+            "ζ = {:.3} on this {crop} × {crop} square needs a grid of {} nodes a side (8 per \
+             shortest wavelength, or the data's own); the contact simulation solves up to \
+             {MAX_GRID}: lower ζ to compare",
+            q_cut * h.lx.max(h.ly) / std::f64::consts::TAU,
+            need.min(crop as f64)
+        );
+    }
+    let periodic = h.periodic && h.nx == crop && h.ny == crop;
+    Ok(Plan {
+        crop,
+        n,
+        length,
+        boundary: if periodic {
+            Boundary::Periodic
+        } else {
+            Boundary::Free
+        },
+    })
+}
+
+/// The smallest ζ that keeps a mode of the solved square: max(Lx, Ly)
+/// over the square's side.
+pub fn lowest_zeta(h: &Heights) -> f64 {
+    let crop = 1usize << h.nx.min(h.ny).max(1).ilog2();
+    h.lx.max(h.ly) / (crop as f64 * h.lx / h.nx as f64)
+}
+
+/// The map's crop filtered to q ≤ `q_cut` on the plan's grid (metres).
+pub fn solver_heights(h: &Heights, p: &Plan, q_cut: f64) -> anyhow::Result<Vec<f64>> {
+    let (x0, y0) = ((h.nx - p.crop) / 2, (h.ny - p.crop) / 2);
+    let mut sq = Vec::with_capacity(p.crop * p.crop);
+    for row in h.z.chunks_exact(h.nx).skip(y0).take(p.crop) {
+        sq.extend_from_slice(&row[x0..x0 + p.crop]);
+    }
+    Ok(resample(&sq, p.crop, p.length, q_cut, p.n)?)
+}
+
+/// The surface `id` with cutoff `q_cut`, ready to be loaded (E* = 1).
+pub fn build(id: &SurfaceId, q_cut: f64) -> anyhow::Result<Contact> {
+    let h = registry()
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .get(id)
+        .and_then(Weak::upgrade)
+        .ok_or_else(|| anyhow!("the measured surface is no longer loaded"))?;
+    let p = plan(&h, q_cut)?;
+    let z = solver_heights(&h, &p, q_cut)?;
+    Ok(Contact::new(z, p.n, p.length, 1.0, p.boundary)?)
+}
+
+/// One line on how the map is solved, for the CSV's parameter lines.
+pub fn describe(h: &Heights, p: &Plan) -> String {
+    let crop = if p.crop == h.nx && p.crop == h.ny {
+        format!("{} × {} map", h.nx, h.ny)
+    } else {
+        format!(
+            "{} × {} map cropped to its centred {c} × {c}",
+            h.nx,
+            h.ny,
+            c = p.crop
+        )
+    };
+    let grid = if p.n == p.crop {
+        String::new()
+    } else {
+        format!(", resampled to {n} × {n}", n = p.n)
+    };
+    let side = match p.boundary {
+        Boundary::Periodic => "periodic",
+        Boundary::Free => "free-boundary (zero-padded 2N × 2N)",
+    };
+    format!("{side}, measured {crop}{grid}, side {} m", p.length)
+}
