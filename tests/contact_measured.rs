@@ -289,3 +289,26 @@ fn the_explorer_solves_a_measured_map_in_its_contact_view() {
     let why = a.contact.why_not.clone().unwrap_or_default();
     assert!(why.contains("export --view contact-sweep"), "{why}");
 }
+
+#[test]
+fn the_cache_key_names_the_file_and_how_it_was_read() {
+    use roughtui::contact::scene::SceneKey;
+    let (a, b) = (scene(), scene());
+    let ka = SceneKey::of(&a, 1).unwrap();
+    // Same file, same reading, any seed: one key (the engine shares it).
+    assert_eq!(ka, SceneKey::of(&b, 7).unwrap());
+    let sha = a.surface.as_ref().unwrap().measured.sha256.clone();
+    let id = ka.surface.unwrap();
+    let hex: String = id.0.iter().map(|b| format!("{b:02x}")).collect();
+    assert_eq!(hex, sha);
+    // Read without --periodic: another key (and the free boundary).
+    let src = SurfaceSource::read(&data("periodic64.txt"), Default::default()).unwrap();
+    let mut c = State::measured(src).unwrap();
+    c.params = a.params;
+    c.size_effect = false;
+    let kc = SceneKey::of(&c, 1).unwrap();
+    assert_ne!(ka, kc);
+    assert_eq!(ka.surface.unwrap().0, kc.surface.unwrap().0);
+    let sim = Simulation::of(&c, 1).unwrap();
+    assert!(sim.measured.unwrap().starts_with("free-boundary"));
+}
