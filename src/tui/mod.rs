@@ -17,6 +17,7 @@ pub mod keys;
 pub mod layout;
 pub mod line_edit;
 pub mod measured;
+pub mod message;
 pub mod plots;
 pub mod prompt;
 pub mod readout;
