@@ -312,3 +312,39 @@ fn the_cache_key_names_the_file_and_how_it_was_read() {
     let sim = Simulation::of(&c, 1).unwrap();
     assert!(sim.measured.unwrap().starts_with("free-boundary"));
 }
+
+#[test]
+fn big_and_odd_maps_are_planned_as_documented() {
+    use rough_contact::Boundary;
+    use rough_surface::Heights;
+    use roughtui::contact::measured::plan;
+    let tau = std::f64::consts::TAU;
+    let map = |nx: usize, ny: usize, periodic: bool| Heights {
+        nx,
+        ny,
+        lx: nx as f64 * 1e-8,
+        ly: ny as f64 * 1e-8,
+        periodic,
+        z: vec![],
+    };
+    // A 4096² periodic map: ζ = 16 of its q0 wants 8 × 16 = 128 nodes.
+    let h = map(4096, 4096, true);
+    let q0 = tau / h.lx;
+    let p = plan(&h, 16.0 * q0).unwrap();
+    assert_eq!((p.crop, p.n, p.boundary), (4096, 128, Boundary::Periodic));
+    // ζ = 200 wants 1600 nodes: beyond the solver's 1024.
+    let e = plan(&h, 200.0 * q0).unwrap_err().to_string();
+    assert!(e.contains("solves up to 1024"), "{e}");
+    // A 3000 × 2000 map: its centred 1024² on the free boundary, the data's
+    // own resolution at the largest ζ.
+    let h = map(3000, 2000, true);
+    let q0 = tau / h.lx;
+    let p = plan(&h, 1500.0 * q0).unwrap();
+    assert_eq!((p.crop, p.n, p.boundary), (1024, 1024, Boundary::Free));
+    assert!((p.length - 1024e-8).abs() < 1e-20);
+    // Pixels that are not square.
+    let mut h = map(256, 256, false);
+    h.ly *= 2.0;
+    let e = plan(&h, 1e8).unwrap_err().to_string();
+    assert!(e.contains("square pixels"), "{e}");
+}
