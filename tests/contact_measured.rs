@@ -348,3 +348,32 @@ fn big_and_odd_maps_are_planned_as_documented() {
     let e = plan(&h, 1e8).unwrap_err().to_string();
     assert!(e.contains("square pixels"), "{e}");
 }
+
+#[test]
+fn a_solve_finds_any_loaded_copy_of_the_map() {
+    use roughtui::contact::scene::SceneKey;
+    // A file of its own (another SHA-256 than the other tests' map).
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("copy.txt");
+    let text = std::fs::read_to_string(data("periodic64.txt")).unwrap();
+    std::fs::write(&path, format!("# a copy\n{text}")).unwrap();
+    let read = || {
+        let opts = rough_surface::Options {
+            periodic: true,
+            ..Default::default()
+        };
+        let mut s = State::measured(SurfaceSource::read(&path, opts).unwrap()).unwrap();
+        s.params = scene().params;
+        s
+    };
+    // Two explorers read the same file; the one that read it last leaves.
+    let first = read();
+    let key = SceneKey::of(&first, 1).unwrap();
+    let second = read();
+    assert_eq!(SceneKey::of(&second, 1).unwrap(), key);
+    drop(second);
+    assert_eq!(key.build().unwrap().n(), N);
+    drop(first);
+    let e = key.build().err().unwrap().to_string();
+    assert!(e.contains("no longer loaded"), "{e}");
+}

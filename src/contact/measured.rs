@@ -33,7 +33,9 @@ use crate::snapshot::State;
 /// SHA-256 of the file and a hash of the reading options.
 pub type SurfaceId = ([u8; 32], u64);
 
-type Registry = Mutex<HashMap<SurfaceId, Weak<Heights>>>;
+/// Every loaded copy of each surface (explorers that read the same file
+/// each hold their own): a solve finds any one still alive.
+type Registry = Mutex<HashMap<SurfaceId, Vec<Weak<Heights>>>>;
 
 fn registry() -> &'static Registry {
     static R: OnceLock<Registry> = OnceLock::new();
@@ -72,8 +74,16 @@ pub fn heights_of(state: &State) -> anyhow::Result<Option<(SurfaceId, Arc<Height
     format!("{:?}", src.options).hash(&mut hasher);
     let id = (sha, hasher.finish());
     let mut reg = registry().lock().unwrap_or_else(|e| e.into_inner());
-    reg.retain(|_, w| w.strong_count() > 0);
-    reg.insert(id, Arc::downgrade(h));
+    reg.values_mut()
+        .for_each(|v| v.retain(|w| w.strong_count() > 0));
+    reg.retain(|_, v| !v.is_empty());
+    let copies = reg.entry(id).or_default();
+    if !copies
+        .iter()
+        .any(|w| std::ptr::eq(w.as_ptr(), Arc::as_ptr(h)))
+    {
+        copies.push(Arc::downgrade(h));
+    }
     Ok(Some((id, Arc::clone(h))))
 }
 
@@ -167,7 +177,7 @@ pub fn build(id: &SurfaceId, q_cut: f64) -> anyhow::Result<Contact> {
         .lock()
         .unwrap_or_else(|e| e.into_inner())
         .get(id)
-        .and_then(Weak::upgrade)
+        .and_then(|v| v.iter().find_map(Weak::upgrade))
         .ok_or_else(|| anyhow!("the measured surface is no longer loaded"))?;
     let p = plan(&h, q_cut)?;
     let z = solver_heights(&h, &p, q_cut)?;
