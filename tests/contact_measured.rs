@@ -276,7 +276,7 @@ fn the_explorer_solves_a_measured_map_in_its_contact_view() {
     let text = common::app::screen(&a);
     assert!(text.contains("simulation 64² · measured map"), "{text}");
     assert!(text.contains("simulation at p̄ = 0.01 H: contact"), "{text}");
-    // No seed to change; b's sweep says where a map's sweep is.
+    // No seed to change.
     update(&mut a, Message::ContactSeed);
     let st = a.status.clone().unwrap();
     assert!(
@@ -284,10 +284,25 @@ fn the_explorer_solves_a_measured_map_in_its_contact_view() {
         "{}",
         st.text
     );
+    // b: the ζ the map resolves (to 32·√2), with H0 and with H_y.
     update(&mut a, Message::ContactSweep);
-    update(&mut a, Message::Tick);
-    let why = a.contact.why_not.clone().unwrap_or_default();
-    assert!(why.contains("export --view contact-sweep"), "{why}");
+    let start = Instant::now();
+    loop {
+        update(&mut a, Message::Tick);
+        if !a.contact.busy() {
+            break;
+        }
+        assert!(start.elapsed() < Duration::from_secs(120), "solver hung");
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    assert!(a.contact.why_not.is_none(), "{:?}", a.contact.why_not);
+    assert_eq!(a.contact.zetas, [1.0, 2.0, 4.0, 8.0, 16.0, 32.0]);
+    assert_eq!(a.contact.results.len(), 12);
+    assert!(a.contact.results.iter().all(|r| matches!(r, Some(Ok(_)))));
+    assert_eq!(a.contact.theory.curves.len(), 2);
+    assert!(a.contact.theory.curves.iter().all(|c| c.len() > 10));
+    let text = common::app::screen(&a);
+    assert!(text.contains("plastic share vs ζ"), "{text}");
 }
 
 #[test]

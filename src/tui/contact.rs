@@ -72,6 +72,9 @@ pub struct ContactPane {
     pub sweep: bool,
     /// The scene's seed (the snapshot's, 1 by default).
     pub seed: u64,
+    /// The ζ of the `b` plot: [`sweep_zetas`], a measured map's those it
+    /// resolves.
+    pub zetas: Vec<f64>,
     /// Why the scene cannot be simulated (then nothing is requested).
     pub why_not: Option<String>,
     /// The tasks on screen and what the cache holds for each.
@@ -91,6 +94,7 @@ impl Default for ContactPane {
             load: DEFAULT_LOAD,
             sweep: false,
             seed: DEFAULT_SEED,
+            zetas: vec![],
             why_not: None,
             tasks: vec![],
             results: vec![],
@@ -179,16 +183,26 @@ impl ContactPane {
             self.load,
         );
         let mut tasks = vec![];
-        if self.sweep && state.is_measured() {
-            self.why_not = Some(
-                "b plots the power law's ζ sweep; a measured map's: roughtui export --view \
-                 contact-sweep --surface FILE"
-                    .into(),
-            );
-        } else if self.sweep {
+        if self.sweep {
             self.why_not = None;
+            // A measured map: the ζ whose scene it can solve (none when it
+            // has no heights on a grid: then the reason).
+            let mut keys = vec![];
+            let zeta_max = state.roughness().zeta_max() * (1.0 + 1e-12);
+            for z in sweep_zetas().into_iter().filter(|z| *z <= zeta_max) {
+                let mut s = state.clone();
+                s.params = s.params.with(Axis::Zeta, z).ok()?;
+                match SceneKey::of(&s, self.seed) {
+                    Ok(_) => keys.push(z),
+                    Err(e) => self.why_not = Some(format!("{e:#}")),
+                }
+            }
+            if !keys.is_empty() {
+                self.why_not = None;
+            }
+            self.zetas = keys;
             for se in [false, true] {
-                for z in sweep_zetas() {
+                for &z in &self.zetas {
                     let mut s = state.clone();
                     s.size_effect = se;
                     s.params = s.params.with(Axis::Zeta, z).ok()?;
@@ -207,11 +221,8 @@ impl ContactPane {
 
     fn theory_of(&self, state: &State, _r: &Request) -> Theory {
         let p = state.params;
-        if self.sweep && state.is_measured() {
-            return Theory::default();
-        }
         if self.sweep {
-            let zs = sweep_zetas();
+            let zs = &self.zetas;
             let hi = zs.last().copied().unwrap_or(1.0).log10();
             let curves = [false, true]
                 .into_iter()

@@ -16,7 +16,7 @@ use ratatui::widgets::{Dataset, GraphType, Paragraph, Widget, Wrap};
 use super::chart::{self, Scale};
 use crate::contact::scene::Node;
 use crate::tui::app::App;
-use crate::tui::contact::{load_value, sweep_zetas, ContactPane, LOADS};
+use crate::tui::contact::{load_value, ContactPane, LOADS};
 use crate::tui::fmt::fmt_num;
 use crate::tui::glyphs::Glyphs;
 use crate::tui::layout::Y_LABEL_W;
@@ -461,7 +461,7 @@ fn sweep_chart(app: &App, area: Rect, buf: &mut Buffer) {
             .render(g, buf);
         return;
     }
-    let zs = sweep_zetas();
+    let zs = &pane.zetas;
     let mut sims: [Vec<(f64, f64)>; 2] = Default::default();
     for (i, r) in pane.results.iter().enumerate() {
         let (set, k) = (i / zs.len(), i % zs.len());
