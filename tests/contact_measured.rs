@@ -372,23 +372,57 @@ fn a_solve_finds_any_loaded_copy_of_the_map() {
     let path = dir.path().join("copy.txt");
     let text = std::fs::read_to_string(data("periodic64.txt")).unwrap();
     std::fs::write(&path, format!("# a copy\n{text}")).unwrap();
-    let read = || {
+    let read_file = |path: &Path| {
         let opts = rough_surface::Options {
             periodic: true,
             ..Default::default()
         };
-        let mut s = State::measured(SurfaceSource::read(&path, opts).unwrap()).unwrap();
+        let mut s = State::measured(SurfaceSource::read(path, opts).unwrap()).unwrap();
         s.params = scene().params;
         s
     };
-    // Two explorers read the same file; the one that read it last leaves.
+    let read = || read_file(&path);
+    // Exploring keeps no heights; the first solve reads them.
     let first = read();
+    assert!(first.surface.as_ref().unwrap().measured.heights.is_none());
     let key = SceneKey::of(&first, 1).unwrap();
+    // Two explorers read the same file; the one that read it last leaves.
     let second = read();
     assert_eq!(SceneKey::of(&second, 1).unwrap(), key);
     drop(second);
     assert_eq!(key.build().unwrap().n(), N);
     drop(first);
+    // The last surfaces solved stay in memory ...
+    assert_eq!(key.build().unwrap().n(), N);
+    // ... until as many others were solved.
+    for k in 0..roughtui::contact::measured::KEPT {
+        let other = dir.path().join(format!("other{k}.txt"));
+        std::fs::write(&other, format!("# another copy {k}\n{text}")).unwrap();
+        let s = read_file(&other);
+        SceneKey::of(&s, 1).unwrap();
+    }
     let e = key.build().err().unwrap().to_string();
     assert!(e.contains("no longer loaded"), "{e}");
+}
+
+#[test]
+fn a_map_changed_since_it_was_read_is_named_not_solved() {
+    use roughtui::contact::scene::SceneKey;
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("changed.txt");
+    let text = std::fs::read_to_string(data("periodic64.txt")).unwrap();
+    std::fs::write(&path, format!("# before\n{text}")).unwrap();
+    let opts = rough_surface::Options {
+        periodic: true,
+        ..Default::default()
+    };
+    let mut s = State::measured(SurfaceSource::read(&path, opts).unwrap()).unwrap();
+    s.params = scene().params;
+    std::fs::write(&path, format!("# after\n{text}")).unwrap();
+    let e = SceneKey::of(&s, 1).err().unwrap().to_string();
+    assert!(e.contains("changed since it was read"), "{e}");
+    // The file is left as it is.
+    assert!(std::fs::read_to_string(&path)
+        .unwrap()
+        .starts_with("# after"));
 }

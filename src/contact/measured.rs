@@ -43,12 +43,16 @@ fn registry() -> &'static Registry {
 }
 
 /// The map of a measured scene, why not if it has none, and its id
-/// (registered so that [`build`] finds its heights).
+/// (registered so that [`build`] finds its heights). The explorer reads a
+/// surface without its heights ([`rough_surface::read`]); the first solve
+/// reads the file again with them ([`rough_surface::read_heights`],
+/// checking that it is the file the scene was computed on) and the last
+/// [`KEPT`] surfaces read so stay in memory.
 pub fn heights_of(state: &State) -> anyhow::Result<Option<(SurfaceId, Arc<Heights>)>> {
     let Some(src) = &state.surface else {
         return Ok(None);
     };
-    let Some(h) = &src.measured.heights else {
+    if !matches!(src.measured.kind, rough_surface::Kind::Map { .. }) {
         bail!(
             "the contact simulation needs heights on a grid: {} is {}, which has none \
              (line scans, profiles read with --direction and PSD tables cannot be solved)",
@@ -59,7 +63,7 @@ pub fn heights_of(state: &State) -> anyhow::Result<Option<(SurfaceId, Arc<Height
                 _ => "a PSD table",
             }
         );
-    };
+    }
     let mut sha = [0u8; 32];
     let hex = src.measured.sha256.as_bytes();
     for (i, b) in sha.iter_mut().enumerate() {
@@ -73,6 +77,10 @@ pub fn heights_of(state: &State) -> anyhow::Result<Option<(SurfaceId, Arc<Height
     let mut hasher = DefaultHasher::new();
     format!("{:?}", src.options).hash(&mut hasher);
     let id = (sha, hasher.finish());
+    let h = match &src.measured.heights {
+        Some(h) => Arc::clone(h),
+        None => kept(id, src)?,
+    };
     let mut reg = registry().lock().unwrap_or_else(|e| e.into_inner());
     reg.values_mut()
         .for_each(|v| v.retain(|w| w.strong_count() > 0));
@@ -80,11 +88,48 @@ pub fn heights_of(state: &State) -> anyhow::Result<Option<(SurfaceId, Arc<Height
     let copies = reg.entry(id).or_default();
     if !copies
         .iter()
-        .any(|w| std::ptr::eq(w.as_ptr(), Arc::as_ptr(h)))
+        .any(|w| std::ptr::eq(w.as_ptr(), Arc::as_ptr(&h)))
     {
-        copies.push(Arc::downgrade(h));
+        copies.push(Arc::downgrade(&h));
     }
-    Ok(Some((id, Arc::clone(h))))
+    Ok(Some((id, h)))
+}
+
+/// Surfaces whose heights were read for a solve and stay in memory.
+pub const KEPT: usize = 2;
+
+/// The heights of surface `id`: kept from an earlier read, or read again
+/// from `src`'s file (which must still be the file the scene was computed
+/// on).
+fn kept(id: SurfaceId, src: &crate::surface::SurfaceSource) -> anyhow::Result<Arc<Heights>> {
+    type Kept = Mutex<Vec<(SurfaceId, Arc<Heights>)>>;
+    static K: OnceLock<Kept> = OnceLock::new();
+    let k = K.get_or_init(Kept::default);
+    if let Some((_, h)) = k
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .iter()
+        .find(|(i, _)| *i == id)
+    {
+        return Ok(Arc::clone(h));
+    }
+    let m = rough_surface::read_heights(&src.path, &src.options)?;
+    if m.sha256 != src.measured.sha256 {
+        bail!(
+            "{} changed since it was read: load it again for the contact simulation",
+            src.path.display()
+        );
+    }
+    let h = m
+        .heights
+        .ok_or_else(|| anyhow!("{}: no heights on a grid", src.path.display()))?;
+    let mut k = k.lock().unwrap_or_else(|e| e.into_inner());
+    k.retain(|(i, _)| *i != id);
+    k.push((id, Arc::clone(&h)));
+    if k.len() > KEPT {
+        k.remove(0);
+    }
+    Ok(h)
 }
 
 /// How a map is cut and sampled for the solver.

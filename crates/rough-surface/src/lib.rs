@@ -166,7 +166,8 @@ pub struct Measured {
     /// The default Hurst fit band, 1/m: the spectrum's self-affine
     /// stretch (`band`'s rules); `None` with too few points.
     pub band: Option<(f64, f64)>,
-    /// A map's heights for the contact simulation ([`Heights`]: filled,
+    /// A map's heights for the contact simulation, when read with
+    /// [`read_heights`] ([`Heights`]: filled,
     /// detrended, not windowed); `None` for lines, profiles and PSD tables.
     pub heights: Option<Arc<Heights>>,
 }
@@ -202,6 +203,35 @@ impl Measured {
 /// Reads and computes the surface in `path`. Every refusal names the file
 /// and, where there is one, the line.
 pub fn read(path: &Path, opts: &Options) -> Result<Measured, SurfaceError> {
+    read_keeping(path, opts, false)
+}
+
+std::thread_local! {
+    /// Set while [`read_heights`] reads on this thread.
+    static KEEP_HEIGHTS: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Whether the read under way keeps a map's heights ([`read_heights`]).
+pub(crate) fn keeping_heights() -> bool {
+    KEEP_HEIGHTS.with(|k| k.get())
+}
+
+/// [`read`], keeping a map's heights in [`Measured::heights`] (filled, the
+/// mean or plane removed, no window: what the contact simulation solves);
+/// `heights` stays `None` for what is not a map. [`read`] keeps none, so
+/// that a surface only explored costs no more memory than its spectrum.
+pub fn read_heights(path: &Path, opts: &Options) -> Result<Measured, SurfaceError> {
+    read_keeping(path, opts, true)
+}
+
+fn read_keeping(path: &Path, opts: &Options, keep: bool) -> Result<Measured, SurfaceError> {
+    let before = KEEP_HEIGHTS.with(|k| k.replace(keep));
+    let r = read_inner(path, opts);
+    KEEP_HEIGHTS.with(|k| k.set(before));
+    r
+}
+
+fn read_inner(path: &Path, opts: &Options) -> Result<Measured, SurfaceError> {
     let fail = |line, problem| SurfaceError {
         path: path.to_path_buf(),
         line,

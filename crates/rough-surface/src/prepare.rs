@@ -160,10 +160,10 @@ pub(crate) fn window(h: &mut [f64], (nx, ny): (usize, usize), (lx, ly): (f64, f6
 /// filled, the mean (periodic) or the least-squares plane removed, no
 /// window. Row-major, `nx` heights a row along x, `ny` rows; metres.
 ///
-/// Memory: the map's own vector kept (periodic maps: the buffer the
-/// spectrum was computed from, no copy) or one copy taken before the
-/// window (other maps): 8 bytes a point, 128 MiB for a 4096² map, held as
-/// long as the surface is loaded.
+/// Kept only when asked ([`crate::read_heights`]): the map's own vector
+/// (periodic maps: the buffer the spectrum was computed from, no copy) or
+/// one copy taken before the window (other maps): 8 bytes a point, 128 MiB
+/// for a 4096² map.
 #[derive(PartialEq)]
 pub struct Heights {
     pub nx: usize,

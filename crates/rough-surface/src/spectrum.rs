@@ -195,8 +195,12 @@ pub(crate) fn map(
             z,
         })
     };
-    // Periodic maps are not windowed: their buffer is kept after the FFT.
-    let copy = (!periodic).then(|| keep(h.clone()));
+    // Only when asked ([`crate::read_heights`]): a 4096² map's heights are
+    // 128 MiB, which the explorer does not hold unless the contact
+    // simulation wants them. Periodic maps are not windowed: their buffer
+    // is kept after the FFT; other maps' are copied before the window.
+    let wanted = crate::keeping_heights();
+    let copy = (wanted && !periodic).then(|| keep(h.clone()));
     let s2 = if periodic {
         1.0
     } else {
@@ -205,7 +209,12 @@ pub(crate) fn map(
     let mut planner = FftPlanner::<f64>::new();
     let nh = nx / 2 + 1;
     let half = rows_half(&h, nx, ny, &planner.plan_fft_forward(nx));
-    let heights = Some(copy.unwrap_or_else(|| keep(h)));
+    let heights = if wanted {
+        Some(copy.unwrap_or_else(|| keep(h)))
+    } else {
+        drop(h);
+        None
+    };
     let fft_y = planner.plan_fft_forward(ny);
 
     let n2 = ((nx * ny) as f64).powi(2);
