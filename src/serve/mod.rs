@@ -198,33 +198,6 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
     // The console log's writer exists before the banner, so that a server
     // that has printed its banner has all its threads.
     let log = Log::new(opts.quiet);
-    // The banner; a console that is gone (a closed pipe) does not stop the
-    // server.
-    let mut out = std::io::stdout().lock();
-    macro_rules! say {
-        ($($t:tt)*) => {
-            let _ = writeln!(out, $($t)*);
-        };
-    }
-    say!("roughtui serve: listening on {addr}");
-    say!(
-        "host key {} ({}): {fingerprint}",
-        key_path.display(),
-        if generated { "new" } else { "reused" }
-    );
-    let mut extra = Vec::new();
-    if opts.class_code.is_some() {
-        extra.push("class code: on (students type it at \"class code:\")".to_string());
-    }
-    if !opts.quiet {
-        extra.push("log: a line per join and leave (times UTC), a summary each minute".into());
-    }
-    let lecturer = lecturer_keys.any().then_some(auth::LECTURER);
-    for line in banner::lines(addr, lecturer, &extra) {
-        say!("{line}");
-    }
-    let _ = out.flush();
-    drop(out);
 
     let mut methods = vec![MethodKind::None, MethodKind::PublicKey];
     if opts.class_code.is_some() {
@@ -283,6 +256,35 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
     let turned_away = Limits::new(TURNED_AWAY.0, TURNED_AWAY.1);
     let login = login_deadline();
     let mut stop = Stop::new()?;
+    // The banner, once everything is set up (signals caught, the contact
+    // engine's threads started, no file open for set-up): a server that has
+    // printed it holds only what it keeps. A console that is gone (a closed
+    // pipe) does not stop the server.
+    let mut out = std::io::stdout().lock();
+    macro_rules! say {
+        ($($t:tt)*) => {
+            let _ = writeln!(out, $($t)*);
+        };
+    }
+    say!("roughtui serve: listening on {addr}");
+    say!(
+        "host key {} ({}): {fingerprint}",
+        key_path.display(),
+        if generated { "new" } else { "reused" }
+    );
+    let mut extra = Vec::new();
+    if shared.class_code.is_some() {
+        extra.push("class code: on (students type it at \"class code:\")".to_string());
+    }
+    if shared.log.on() {
+        extra.push("log: a line per join and leave (times UTC), a summary each minute".into());
+    }
+    let lecturer = shared.lecturer_keys.any().then_some(auth::LECTURER);
+    for line in banner::lines(addr, lecturer, &extra) {
+        say!("{line}");
+    }
+    let _ = out.flush();
+    drop(out);
     loop {
         let (socket, peer) = tokio::select! {
             accepted = listener.accept() => match accepted {
