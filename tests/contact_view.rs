@@ -267,3 +267,43 @@ fn p_saves_the_contact_map_at_the_chosen_load() {
         st.text
     );
 }
+
+/// A measured map's heights are read for the contact view alone: the other
+/// views never open its file again (a 4096² map's would take a second and
+/// 134 MB on the first screen).
+#[test]
+fn a_measured_maps_heights_are_read_for_the_contact_view_alone() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("map.txt");
+    let data = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data/measured_contact/periodic64.txt");
+    // A byte more than the committed map: no other test's kept heights.
+    let mut text = std::fs::read(data).unwrap();
+    text.push(b'\n');
+    std::fs::write(&path, text).unwrap();
+    let opts = rough_surface::Options {
+        periodic: true,
+        ..Default::default()
+    };
+    let src = roughtui::surface::SurfaceSource::read(&path, opts).unwrap();
+    let state = roughtui::snapshot::State::measured(src).unwrap();
+    // Gone from the disk: a view that read the file again would fail.
+    std::fs::remove_file(&path).unwrap();
+    let mut a = App::new(state, Theme::colored(), (120, 36));
+    a.contact.engine = Engine::new(1);
+    for axis in [2, 0] {
+        a.selected = axis;
+        for up in [true, false, true] {
+            update(&mut a, Message::Step { up, fine: false });
+            assert!(a.contact.why_not.is_none() && a.contact.tasks.is_empty());
+        }
+    }
+    assert!(!screen(&a).contains("map.txt: cannot"), "{}", screen(&a));
+    to_contact(&mut a);
+    let why = a
+        .contact
+        .why_not
+        .clone()
+        .expect("the contact view reads the file");
+    assert!(why.contains("map.txt"), "{why}");
+}

@@ -84,6 +84,8 @@ pub struct ContactPane {
     pub theory: Theory,
     request: Option<Request>,
     ticket: Option<Ticket>,
+    /// The scene [`ContactPane::request`] was worked out for.
+    scene: Option<State>,
 }
 
 impl Default for ContactPane {
@@ -102,6 +104,7 @@ impl Default for ContactPane {
             theory: Theory::default(),
             request: None,
             ticket: None,
+            scene: None,
         }
     }
 }
@@ -126,6 +129,19 @@ impl ContactPane {
     /// new one; the results are read from the cache.
     pub fn refresh(&mut self, state: &State, shown: bool) {
         self.seed = state.seed.unwrap_or(DEFAULT_SEED);
+        if !shown {
+            // Off screen nothing is worked out (a measured map's scene
+            // would read its heights from the file): a job on the scene
+            // last shown goes on, one on another scene stops.
+            if !self.scene.as_ref().is_some_and(|s| same_scene(s, state)) {
+                self.ticket = None;
+                self.progress = Progress::default();
+                self.request = None;
+                self.scene = None;
+            }
+            return;
+        }
+        self.scene = Some(state.clone());
         let request = self.request_for(state);
         if request.as_ref().map(|r| &r.tasks) != self.request.as_ref().map(|r| &r.tasks) {
             self.ticket = None;
@@ -141,9 +157,6 @@ impl ContactPane {
                 .map(|r| r.tasks.clone())
                 .unwrap_or_default();
             self.request = request;
-        }
-        if !shown {
-            return;
         }
         self.results = self.tasks.iter().map(|t| self.engine.get(t)).collect();
         let all_in = self.results.iter().all(Option::is_some);
@@ -337,4 +350,27 @@ pub fn picture(app: &super::app::App) -> anyhow::Result<String> {
         &title,
         &note,
     ))
+}
+
+/// Whether `a` and `b` are the same scene for the simulation, told without
+/// reading a measured map's heights (its file is known by path, reading
+/// and SHA-256).
+fn same_scene(a: &State, b: &State) -> bool {
+    let surface = match (&a.surface, &b.surface) {
+        (None, None) => true,
+        (Some(x), Some(y)) => {
+            x.path == y.path
+                && x.options == y.options
+                && x.fit_band == y.fit_band
+                && x.measured.sha256 == y.measured.sha256
+        }
+        _ => false,
+    };
+    surface
+        && a.params == b.params
+        && a.size_effect == b.size_effect
+        && a.model == b.model
+        && a.moments == b.moments
+        && a.seed == b.seed
+        && a.sweep == b.sweep
 }

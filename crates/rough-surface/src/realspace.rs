@@ -41,6 +41,26 @@ fn rms_about_mean(h: &[f64]) -> f64 {
     (h.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / n).sqrt()
 }
 
+/// Σ f over blocks of the rows 0..ny, each block on a thread of its own.
+fn rows_sum<F>(ny: usize, f: F) -> (f64, f64)
+where
+    F: Fn(std::ops::Range<usize>) -> (f64, f64) + Sync,
+{
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get().min(4));
+    let per = ny.div_ceil(threads).max(1);
+    std::thread::scope(|s| {
+        let f = &f;
+        let parts: Vec<_> = (0..ny)
+            .step_by(per)
+            .map(|j0| s.spawn(move || f(j0..(j0 + per).min(ny))))
+            .collect();
+        parts
+            .into_iter()
+            .map(|p| p.join().expect("real-space sums"))
+            .fold((0.0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1))
+    })
+}
+
 /// A map of nx × ny detrended heights (rows of nx along x) over lx × ly.
 pub(crate) fn areal(
     h: &[f64],
@@ -52,22 +72,32 @@ pub(crate) fn areal(
 ) -> RealSpace {
     let (dx, dy) = (lx / nx as f64, ly / ny as f64);
     let (ix, jy) = if periodic { (nx, ny) } else { (nx - 1, ny - 1) };
-    let mut sum = 0.0;
-    for j in 0..jy {
-        let row = &h[j * nx..(j + 1) * nx];
-        let next = &h[((j + 1) % ny) * nx..((j + 1) % ny + 1) * nx];
-        for i in 0..ix {
-            let v = row[i];
-            let right = if i + 1 == nx { row[0] } else { row[i + 1] };
-            let gx = (right - v) / dx;
-            let gy = (next[i] - v) / dy;
-            sum += gx * gx + gy * gy;
+    let n = h.len() as f64;
+    let (sum, _) = rows_sum(ny, |r| (h[r.start * nx..r.end * nx].iter().sum(), 0.0));
+    let mean = sum / n;
+    let (squares, gradient) = rows_sum(ny, |r| {
+        let squares = h[r.start * nx..r.end * nx]
+            .iter()
+            .map(|v| (v - mean).powi(2))
+            .sum();
+        let mut sum = 0.0;
+        for j in r.start..r.end.min(jy) {
+            let row = &h[j * nx..(j + 1) * nx];
+            let next = &h[((j + 1) % ny) * nx..((j + 1) % ny + 1) * nx];
+            for i in 0..ix {
+                let v = row[i];
+                let right = if i + 1 == nx { row[0] } else { row[i + 1] };
+                let gx = (right - v) / dx;
+                let gy = (next[i] - v) / dy;
+                sum += gx * gx + gy * gy;
+            }
         }
-    }
+        (squares, sum)
+    });
     RealSpace {
         areal: true,
-        rms_height: rms_about_mean(h),
-        rms_slope: (sum / (ix * jy) as f64).sqrt(),
+        rms_height: (squares / n).sqrt(),
+        rms_slope: (gradient / (ix * jy) as f64).sqrt(),
     }
 }
 
