@@ -299,11 +299,13 @@ fn a_measured_maps_heights_are_read_for_the_contact_view_alone() {
         }
     }
     assert!(!screen(&a).contains("map.txt: cannot"), "{}", screen(&a));
+    // The contact view reads it, on a thread of its own: meanwhile the
+    // view says so, then why it cannot.
     to_contact(&mut a);
-    let why = a
-        .contact
-        .why_not
-        .clone()
-        .expect("the contact view reads the file");
+    let why = a.contact.why_not.clone().expect("the view says why not");
     assert!(why.contains("map.txt"), "{why}");
+    settle(&mut a);
+    let why = a.contact.why_not.clone().expect("the file is gone");
+    assert!(why.contains("map.txt") && !why.contains("reading"), "{why}");
+    assert!(a.contact.tasks.is_empty());
 }

@@ -27,6 +27,7 @@ use anyhow::{anyhow, bail};
 use rough_contact::{resample, Boundary, Contact};
 use rough_surface::Heights;
 
+use super::engine::Waker;
 use super::{MAX_GRID, MIN_GRID};
 use crate::snapshot::State;
 
@@ -64,19 +65,7 @@ pub fn heights_of(state: &State) -> anyhow::Result<Option<(SurfaceId, Arc<Height
             }
         );
     }
-    let mut sha = [0u8; 32];
-    let hex = src.measured.sha256.as_bytes();
-    for (i, b) in sha.iter_mut().enumerate() {
-        let digit = |k: usize| {
-            hex.get(k)
-                .and_then(|c| (*c as char).to_digit(16))
-                .unwrap_or(0)
-        };
-        *b = (digit(2 * i) * 16 + digit(2 * i + 1)) as u8;
-    }
-    let mut hasher = DefaultHasher::new();
-    format!("{:?}", src.options).hash(&mut hasher);
-    let id = (sha, hasher.finish());
+    let id = surface_id(src);
     let h = match &src.measured.heights {
         Some(h) => Arc::clone(h),
         None => kept(id, src)?,
@@ -98,20 +87,47 @@ pub fn heights_of(state: &State) -> anyhow::Result<Option<(SurfaceId, Arc<Height
 /// Surfaces whose heights were read for a solve and stay in memory.
 pub const KEPT: usize = 2;
 
-/// The heights of surface `id`: kept from an earlier read, or read again
-/// from `src`'s file (which must still be the file the scene was computed
-/// on).
-fn kept(id: SurfaceId, src: &crate::surface::SurfaceSource) -> anyhow::Result<Arc<Heights>> {
-    type Kept = Mutex<Vec<(SurfaceId, Arc<Heights>)>>;
+/// The id of `src`'s surface: its file's SHA-256 and a hash of how it was
+/// read.
+fn surface_id(src: &crate::surface::SurfaceSource) -> SurfaceId {
+    let mut sha = [0u8; 32];
+    let hex = src.measured.sha256.as_bytes();
+    for (i, b) in sha.iter_mut().enumerate() {
+        let digit = |k: usize| {
+            hex.get(k)
+                .and_then(|c| (*c as char).to_digit(16))
+                .unwrap_or(0)
+        };
+        *b = (digit(2 * i) * 16 + digit(2 * i + 1)) as u8;
+    }
+    let mut hasher = DefaultHasher::new();
+    format!("{:?}", src.options).hash(&mut hasher);
+    (sha, hasher.finish())
+}
+
+type Kept = Mutex<Vec<(SurfaceId, Arc<Heights>)>>;
+
+fn kept_list() -> &'static Kept {
     static K: OnceLock<Kept> = OnceLock::new();
-    let k = K.get_or_init(Kept::default);
-    if let Some((_, h)) = k
+    K.get_or_init(Kept::default)
+}
+
+/// The heights of surface `id` if a read keeps them.
+fn cached(id: SurfaceId) -> Option<Arc<Heights>> {
+    kept_list()
         .lock()
         .unwrap_or_else(|e| e.into_inner())
         .iter()
         .find(|(i, _)| *i == id)
-    {
-        return Ok(Arc::clone(h));
+        .map(|(_, h)| Arc::clone(h))
+}
+
+/// The heights of surface `id`: kept from an earlier read, or read again
+/// from `src`'s file (which must still be the file the scene was computed
+/// on).
+fn kept(id: SurfaceId, src: &crate::surface::SurfaceSource) -> anyhow::Result<Arc<Heights>> {
+    if let Some(h) = cached(id) {
+        return Ok(h);
     }
     let m = rough_surface::read_heights(&src.path, &src.options)?;
     if m.sha256 != src.measured.sha256 {
@@ -123,13 +139,95 @@ fn kept(id: SurfaceId, src: &crate::surface::SurfaceSource) -> anyhow::Result<Ar
     let h = m
         .heights
         .ok_or_else(|| anyhow!("{}: no heights on a grid", src.path.display()))?;
-    let mut k = k.lock().unwrap_or_else(|e| e.into_inner());
+    let mut k = kept_list().lock().unwrap_or_else(|e| e.into_inner());
     k.retain(|(i, _)| *i != id);
     k.push((id, Arc::clone(&h)));
     if k.len() > KEPT {
         k.remove(0);
     }
     Ok(h)
+}
+
+/// Where the heights of a scene's map are, for a view that must not wait
+/// on the file ([`fetch`]).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Fetch {
+    /// In memory (or the scene needs none): [`heights_of`] returns at once.
+    Ready,
+    /// Being read on a thread of their own; the waker is called when done.
+    Reading,
+    /// The last read failed, and why (tried again after [`RETRY`]).
+    Failed(String),
+}
+
+/// How long a failed read is reported before the file is tried again.
+pub const RETRY: std::time::Duration = std::time::Duration::from_secs(2);
+
+enum Read {
+    Running(Vec<Waker>),
+    Failed(String, std::time::Instant),
+}
+
+/// [`heights_of`] without waiting: the heights of `state`'s map if in
+/// memory; else their read is started on a thread (one per surface,
+/// however many explorers ask) and `wake` called when it ends. A 4096² map
+/// takes about a second to read: the explorer (and, under `serve`, the
+/// other sessions on the same worker) go on meanwhile.
+pub fn fetch(state: &State, wake: &Waker) -> Fetch {
+    type Reads = Mutex<HashMap<SurfaceId, Read>>;
+    static R: OnceLock<Reads> = OnceLock::new();
+    let Some(src) = &state.surface else {
+        return Fetch::Ready;
+    };
+    if src.measured.heights.is_some()
+        || !matches!(src.measured.kind, rough_surface::Kind::Map { .. })
+    {
+        return Fetch::Ready;
+    }
+    let id = surface_id(src);
+    if cached(id).is_some() {
+        return Fetch::Ready;
+    }
+    let reads = R.get_or_init(Reads::default);
+    let mut r = reads.lock().unwrap_or_else(|e| e.into_inner());
+    match r.get_mut(&id) {
+        Some(Read::Running(wakers)) => {
+            if !wakers.iter().any(|w| Arc::ptr_eq(w, wake)) {
+                wakers.push(Arc::clone(wake));
+            }
+            return Fetch::Reading;
+        }
+        Some(Read::Failed(why, at)) if at.elapsed() < RETRY => return Fetch::Failed(why.clone()),
+        _ => {}
+    }
+    r.insert(id, Read::Running(vec![Arc::clone(wake)]));
+    let src = src.clone();
+    let started = std::thread::Builder::new()
+        .name("heights".into())
+        .spawn(move || {
+            let done = kept(id, &src);
+            let mut r = reads.lock().unwrap_or_else(|e| e.into_inner());
+            let wakers = match r.remove(&id) {
+                Some(Read::Running(w)) => w,
+                _ => vec![],
+            };
+            if let Err(e) = done {
+                r.insert(
+                    id,
+                    Read::Failed(format!("{e:#}"), std::time::Instant::now()),
+                );
+            }
+            drop(r);
+            for w in wakers {
+                w();
+            }
+        });
+    if let Err(e) = started {
+        let why = format!("cannot start a thread to read the heights: {e}");
+        r.insert(id, Read::Failed(why.clone(), std::time::Instant::now()));
+        return Fetch::Failed(why);
+    }
+    Fetch::Reading
 }
 
 /// How a map is cut and sampled for the solver.

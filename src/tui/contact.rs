@@ -10,6 +10,7 @@ use std::sync::Arc;
 use rough_model::{areas, psi_in_use, slopes, Axis, Model};
 
 use crate::contact::engine::{Engine, Outcome, Progress, Task, Ticket, Waker};
+use crate::contact::measured::{self, Fetch};
 use crate::contact::scene::{unsolvable, SceneKey};
 use crate::contact::{grid_for, DEFAULT_SEED, MAX_GRID};
 use crate::snapshot::State;
@@ -86,6 +87,8 @@ pub struct ContactPane {
     ticket: Option<Ticket>,
     /// The scene [`ContactPane::request`] was worked out for.
     scene: Option<State>,
+    /// A measured map's heights are being read (the view says so).
+    reading: bool,
 }
 
 impl Default for ContactPane {
@@ -105,6 +108,7 @@ impl Default for ContactPane {
             request: None,
             ticket: None,
             scene: None,
+            reading: false,
         }
     }
 }
@@ -113,7 +117,7 @@ impl ContactPane {
     /// Whether a job is under way for the scene on screen (the session
     /// then wakes for its progress).
     pub fn busy(&self) -> bool {
-        self.ticket.is_some() && !self.progress.finished
+        self.reading || (self.ticket.is_some() && !self.progress.finished)
     }
 
     /// The result for the chosen load (load plot), if solved.
@@ -139,6 +143,34 @@ impl ContactPane {
                 self.request = None;
                 self.scene = None;
             }
+            return;
+        }
+        // A measured map's heights are read off this thread first.
+        let fetched = measured::fetch(state, &self.waker);
+        self.reading = fetched == Fetch::Reading;
+        let wait = match fetched {
+            Fetch::Ready => None,
+            Fetch::Reading => Some(format!(
+                "reading the heights of {} for the simulation …",
+                state.surface.as_ref().map_or_else(String::new, |s| {
+                    s.path
+                        .file_name()
+                        .unwrap_or(s.path.as_os_str())
+                        .to_string_lossy()
+                        .into_owned()
+                })
+            )),
+            Fetch::Failed(why) => Some(why),
+        };
+        if let Some(why) = wait {
+            self.why_not = Some(why);
+            self.ticket = None;
+            self.progress = Progress::default();
+            self.request = None;
+            self.scene = None;
+            self.tasks.clear();
+            self.results.clear();
+            self.theory = Theory::default();
             return;
         }
         self.scene = Some(state.clone());
