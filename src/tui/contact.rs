@@ -384,21 +384,11 @@ pub fn picture(app: &super::app::App) -> anyhow::Result<String> {
     ))
 }
 
-/// Whether `a` and `b` are the same scene for the simulation, told without
-/// reading a measured map's heights (its file is known by path, reading
-/// and SHA-256).
+/// Whether `a` and `b` are the same scene for the simulation (their names,
+/// captions and views aside). A measured surface compares by file, reading
+/// and SHA-256, and its moment table by fingerprint: nothing is read.
 fn same_scene(a: &State, b: &State) -> bool {
-    let surface = match (&a.surface, &b.surface) {
-        (None, None) => true,
-        (Some(x), Some(y)) => {
-            x.path == y.path
-                && x.options == y.options
-                && x.fit_band == y.fit_band
-                && x.measured.sha256 == y.measured.sha256
-        }
-        _ => false,
-    };
-    surface
+    a.surface == b.surface
         && a.params == b.params
         && a.size_effect == b.size_effect
         && a.model == b.model
