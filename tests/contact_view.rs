@@ -309,3 +309,68 @@ fn a_measured_maps_heights_are_read_for_the_contact_view_alone() {
     assert!(why.contains("map.txt") && !why.contains("reading"), "{why}");
     assert!(a.contact.tasks.is_empty());
 }
+
+/// While a measured map's heights are read the contact view says so and
+/// the explorer goes on: leaving the view stops the waiting (nothing ticks
+/// off screen), and coming back after the read solves the map.
+#[test]
+fn the_contact_view_waits_on_a_slow_file_without_the_explorer() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("slow.txt");
+    let data = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data/measured_contact/periodic64.txt");
+    // Two bytes more than the committed map: no other test's kept heights.
+    let mut text = std::fs::read(data).unwrap();
+    text.extend_from_slice(b"\n\n");
+    std::fs::write(&path, &text).unwrap();
+    let opts = rough_surface::Options {
+        periodic: true,
+        ..Default::default()
+    };
+    let src = roughtui::surface::SurfaceSource::read(&path, opts).unwrap();
+    let mut state = roughtui::snapshot::State::measured(src).unwrap();
+    state.params = state.params.with(Axis::Zeta, 4.0).unwrap();
+    // The file becomes a pipe: reading it waits until the text is written.
+    std::fs::remove_file(&path).unwrap();
+    let made = std::process::Command::new("mkfifo")
+        .arg(&path)
+        .status()
+        .unwrap();
+    assert!(made.success());
+    let mut a = App::new(state, Theme::colored(), (120, 36));
+    a.contact.engine = Engine::new(1);
+    to_contact(&mut a);
+    assert!(a.contact.busy());
+    let why = a.contact.why_not.clone().unwrap();
+    assert!(
+        why.contains("reading the heights of slow.txt for the simulation"),
+        "{why}"
+    );
+    assert!(screen(&a).contains("reading the heights of slow.txt"));
+    // The explorer answers meanwhile; off the view nothing waits.
+    a.selected = 0;
+    update(
+        &mut a,
+        Message::Step {
+            up: true,
+            fine: false,
+        },
+    );
+    update(
+        &mut a,
+        Message::Step {
+            up: false,
+            fine: false,
+        },
+    );
+    press(&mut a, KeyCode::Tab, KeyModifiers::NONE);
+    assert_ne!(a.view, View::Contact);
+    assert!(!a.contact.busy());
+    // The text arrives; back on the view the map is solved.
+    let writer = std::thread::spawn(move || std::fs::write(&path, text).unwrap());
+    writer.join().unwrap();
+    to_contact(&mut a);
+    settle(&mut a);
+    assert!(a.contact.why_not.is_none(), "{:?}", a.contact.why_not);
+    assert!(matches!(a.contact.chosen(), Some(Ok(_))));
+}

@@ -136,7 +136,9 @@ impl ContactPane {
         if !shown {
             // Off screen nothing is worked out (a measured map's scene
             // would read its heights from the file): a job on the scene
-            // last shown goes on, one on another scene stops.
+            // last shown goes on, one on another scene stops. A read of
+            // heights goes on too, but nobody waits on it here.
+            self.reading = false;
             if !self.scene.as_ref().is_some_and(|s| same_scene(s, state)) {
                 self.ticket = None;
                 self.progress = Progress::default();
