@@ -17,6 +17,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
+use common::lecture::{lecturer_key, lecturer_line};
 use common::room::Room;
 use common::serve::{have_ssh, Server};
 use common::tmux::{have_tmux, BIN};
@@ -176,13 +177,7 @@ fn the_lecturer_needs_no_code_and_nobody_else_is_the_lecturer() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
-    let key = dir.path().join("lect");
-    assert!(Command::new("ssh-keygen")
-        .args(["-q", "-t", "ed25519", "-N", "", "-f"])
-        .arg(&key)
-        .status()
-        .unwrap()
-        .success());
+    let key = lecturer_key(dir.path());
     let keys = key.with_extension("pub");
     let srv = Server::start(
         dir.path(),
@@ -367,13 +362,7 @@ async fn names_are_shown_escaped_and_cut_and_the_console_logs_the_class() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
-    let key = dir.path().join("lect");
-    assert!(Command::new("ssh-keygen")
-        .args(["-q", "-t", "ed25519", "-N", "", "-f"])
-        .arg(&key)
-        .status()
-        .unwrap()
-        .success());
+    let key = lecturer_key(dir.path());
     let keys = key.with_extension("pub");
     let env = [("ROUGHTUI_SUMMARY_MS", "500")];
     let srv = Server::start_env(
@@ -382,11 +371,7 @@ async fn names_are_shown_escaped_and_cut_and_the_console_logs_the_class() {
         &env,
     );
     let room = Room::new("names", (100, 30));
-    let k = key.to_str().unwrap();
-    room.open(
-        "lect",
-        &srv.ssh_line("lecturer", &["-t", "-i", k, "-o", "IdentitiesOnly=yes"]),
-    );
+    room.open("lect", &lecturer_line(&srv, &key));
     room.wait("lect", "the lecturer's class line", 20, |s| {
         s.contains("0 students · 0 following · 0 on their own")
     });
@@ -500,13 +485,7 @@ fn thirty_students_predict_then_the_model_answers() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
-    let key = dir.path().join("lect");
-    assert!(Command::new("ssh-keygen")
-        .args(["-q", "-t", "ed25519", "-N", "", "-f"])
-        .arg(&key)
-        .status()
-        .unwrap()
-        .success());
+    let key = lecturer_key(dir.path());
     let keys = key.with_extension("pub");
     let srv = Server::start(
         dir.path(),
@@ -518,11 +497,7 @@ fn thirty_students_predict_then_the_model_answers() {
         ],
     );
     let room = Room::new("poll", (100, 30));
-    let k = key.to_str().unwrap();
-    room.open(
-        "lect",
-        &srv.ssh_line("lecturer", &["-t", "-i", k, "-o", "IdentitiesOnly=yes"]),
-    );
+    room.open("lect", &lecturer_line(&srv, &key));
     room.wait("lect", "the lecturer's explorer", 30, |s| {
         s.contains("Readout")
     });
@@ -687,13 +662,7 @@ fn fig3_polls_its_minimum_and_then_a_value_the_lecturer_types() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
-    let key = dir.path().join("lect");
-    assert!(Command::new("ssh-keygen")
-        .args(["-q", "-t", "ed25519", "-N", "", "-f"])
-        .arg(&key)
-        .status()
-        .unwrap()
-        .success());
+    let key = lecturer_key(dir.path());
     let keys = key.with_extension("pub");
     let srv = Server::start(
         dir.path(),
@@ -705,11 +674,7 @@ fn fig3_polls_its_minimum_and_then_a_value_the_lecturer_types() {
         ],
     );
     let room = Room::new("typed", (100, 30));
-    let k = key.to_str().unwrap();
-    room.open(
-        "lect",
-        &srv.ssh_line("lecturer", &["-t", "-i", k, "-o", "IdentitiesOnly=yes"]),
-    );
+    room.open("lect", &lecturer_line(&srv, &key));
     room.wait("lect", "the lecturer's explorer", 30, |s| {
         s.contains("Readout")
     });

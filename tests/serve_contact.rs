@@ -7,8 +7,8 @@
 
 mod common;
 
-use std::process::Command;
 
+use common::lecture::{lecturer_key, lecturer_line};
 use common::room::Room;
 use common::serve::{have_ssh, Server};
 use common::tmux::have_tmux;
@@ -19,13 +19,7 @@ fn a_class_solves_the_lecturers_contact_scene_once() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
-    let key = dir.path().join("lect");
-    assert!(Command::new("ssh-keygen")
-        .args(["-q", "-t", "ed25519", "-N", "", "-f"])
-        .arg(&key)
-        .status()
-        .unwrap()
-        .success());
+    let key = lecturer_key(dir.path());
     let keys = key.with_extension("pub");
     // ζ = 32: a 256² grid, seconds in a debug build.
     let srv = Server::start(
@@ -40,11 +34,7 @@ fn a_class_solves_the_lecturers_contact_scene_once() {
         ],
     );
     let room = Room::new("contact", (160, 48));
-    let k = key.to_str().unwrap();
-    room.open(
-        "lect",
-        &srv.ssh_line("lecturer", &["-t", "-i", k, "-o", "IdentitiesOnly=yes"]),
-    );
+    room.open("lect", &lecturer_line(&srv, &key));
     room.wait("lect", "the lecturer's explorer", 30, |s| {
         s.contains("Readout")
     });
