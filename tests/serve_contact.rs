@@ -7,7 +7,6 @@
 
 mod common;
 
-
 use common::lecture::{lecturer_key, lecturer_line};
 use common::room::Room;
 use common::serve::{have_ssh, Server};

@@ -50,6 +50,14 @@ pub use units::HeightUnit;
 /// Files larger than this are refused before they are read (512 MiB).
 pub const MAX_BYTES: u64 = 512 << 20;
 
+/// Threads for the parallel passes (parse, plane, window, FFTs, Sq): the
+/// machine's cores, at most four; asked once (the answer reads cgroup
+/// files).
+pub(crate) fn threads() -> usize {
+    static N: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
+    *N.get_or_init(|| std::thread::available_parallelism().map_or(1, |n| n.get().min(4)))
+}
+
 /// How to read a file whose content does not say everything.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Options {

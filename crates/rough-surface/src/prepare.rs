@@ -10,13 +10,9 @@ use std::f64::consts::PI;
 use crate::error::Problem;
 use crate::spectrum::FLAT;
 
-fn threads() -> usize {
-    std::thread::available_parallelism().map_or(1, |n| n.get().min(4))
-}
-
 /// Rows per thread's block.
 fn per(ny: usize) -> usize {
-    ny.div_ceil(threads()).max(1)
+    ny.div_ceil(crate::threads()).max(1)
 }
 
 /// Pass one, per block of rows from `j0`: Σh, Σ(i − cx)h, Σ(j − cy)h and

@@ -52,10 +52,6 @@ pub(crate) struct Computed {
 /// (relative to the heights' rms about their mean): rounding leaves ~1e-16.
 pub(crate) const FLAT: f64 = 1e-10;
 
-fn threads() -> usize {
-    std::thread::available_parallelism().map_or(1, |n| n.get().min(4))
-}
-
 /// Refuses constant heights; returns their mean and variance.
 fn moments(h: &[f64]) -> Result<(f64, f64), Problem> {
     if h.iter().all(|&v| v == h[0]) {
@@ -137,7 +133,7 @@ fn rows_half(h: &[f64], nx: usize, ny: usize, fft: &Arc<dyn Fft<f64>>) -> Vec<Co
     let nh = nx / 2 + 1;
     let mut out = vec![Complex::new(0.0, 0.0); ny * nh];
     let pairs = ny.div_ceil(2);
-    let per = pairs.div_ceil(threads()).max(1);
+    let per = pairs.div_ceil(crate::threads()).max(1);
     std::thread::scope(|s| {
         for (t, block) in out.chunks_mut(2 * per * nh).enumerate() {
             let fft = Arc::clone(fft);
@@ -234,7 +230,7 @@ pub(crate) fn map(
     let my = ny / 2 + 1;
     // Every (kx, ky) of the half grid; (0, 0), the mean, is dropped below.
     let mut terms = vec![(0.0, 0.0); nh * my];
-    let per = nh.div_ceil(threads()).max(1);
+    let per = nh.div_ceil(crate::threads()).max(1);
     // The column FFTs a few columns at a time, gathered from the row-major
     // half spectrum (no transposed copy), each column's terms made at once.
     const COLS: usize = 8;

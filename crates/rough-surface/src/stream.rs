@@ -203,7 +203,7 @@ fn stream(
     hasher: &mut Sha256,
     (first_line, cols, per_value): (usize, usize, usize),
 ) -> Result<Rest, Failure> {
-    let workers = std::thread::available_parallelism().map_or(1, |n| n.get().min(4));
+    let workers = crate::threads();
     // Room for every height, from the first row's bytes per number (with a
     // margin; pages never written cost no memory).
     let estimate = (len as usize / per_value) * 5 / 4 + cols;

@@ -258,7 +258,7 @@ pub(crate) fn scan<'a>(text: &'a str, head: Head<'a>) -> Result<Scan<'a>, Failur
     };
     let body = &text[start..];
     let threads = if body.len() >= PARALLEL_FROM {
-        std::thread::available_parallelism().map_or(1, |n| n.get().min(4))
+        crate::threads()
     } else {
         1
     };
