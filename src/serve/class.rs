@@ -13,12 +13,12 @@
 use std::collections::BTreeMap;
 use std::net::IpAddr;
 use std::sync::{Arc, Mutex, MutexGuard};
-use std::time::Instant;
+use std::time::{Instant, SystemTime};
 
 use tokio::sync::watch;
 
-use super::csv::csv_field;
 pub use super::csv::CSV_HEADER;
+use super::csv::{csv_field, csv_value};
 use super::follow::Shown;
 use crate::csv_number;
 pub use crate::tui::class::duration;
@@ -82,6 +82,11 @@ pub struct Poll {
     /// The lecturer's scene when the poll opened: every student answers on it.
     pub scene: Shown,
     pub revealed: bool,
+    /// Revealed after the lecturer changed the scene asked about (the
+    /// truth is the scene's as asked).
+    pub changed: bool,
+    /// The answers, once the lecturer shows them to everyone (`d`).
+    pub answers: Option<Arc<[f64]>>,
 }
 
 /// Why an answer was not taken.
@@ -116,8 +121,8 @@ struct Student {
 #[derive(Debug)]
 struct Open {
     poll: Arc<Poll>,
-    /// By seat: the name then, and the answer.
-    answers: BTreeMap<u64, (String, f64)>,
+    /// By seat: the name then, the answer and when it came.
+    answers: BTreeMap<u64, (String, f64, SystemTime)>,
     /// The students who were here at the reveal without an answer.
     silent: Vec<String>,
 }
@@ -128,6 +133,31 @@ struct Inner {
     next_poll: u64,
     seats: BTreeMap<u64, Student>,
     poll: Option<Open>,
+}
+
+impl Inner {
+    /// `name`, or `name-2`, `name-3` … when a student here (or one whose
+    /// answer the last poll keeps) already has it: the roster and the
+    /// CSV tell them apart.
+    fn distinct(&self, name: &str) -> String {
+        let taken = |n: &str| {
+            self.seats.values().any(|s| s.name == n)
+                || (self.poll.as_ref()).is_some_and(|o| o.answers.values().any(|a| a.0 == n))
+        };
+        if !taken(name) {
+            return name.to_string();
+        }
+        (2..)
+            .map(|k| {
+                // Cut to NAME_CHARS with its number kept.
+                let suffix = format!("-{k}");
+                let keep = NAME_CHARS.saturating_sub(suffix.chars().count());
+                let base: String = name.chars().take(keep).collect();
+                format!("{base}{suffix}")
+            })
+            .find(|n| !taken(n))
+            .unwrap_or_else(|| name.to_string())
+    }
 }
 
 /// A place in the class, from [`Class::join`].
@@ -184,10 +214,11 @@ impl Class {
         let mut c = self.lock();
         c.next_seat += 1;
         let id = c.next_seat;
+        let name = c.distinct(name);
         c.seats.insert(
             id,
             Student {
-                name: name.to_string(),
+                name,
                 addr,
                 following,
                 size,
@@ -198,6 +229,11 @@ impl Class {
         drop(c);
         self.changed();
         id
+    }
+
+    /// The name a seat has in the class (made distinct at [`Class::join`]).
+    pub fn name(&self, id: SeatId) -> Option<String> {
+        self.lock().seats.get(&id).map(|s| s.name.clone())
     }
 
     /// The lecturer removes a student: their session ends, told why;
@@ -252,6 +288,8 @@ impl Class {
             question,
             scene,
             revealed: false,
+            changed: false,
+            answers: None,
         });
         c.poll = Some(Open {
             poll: Arc::clone(&poll),
@@ -264,8 +302,9 @@ impl Class {
         poll.id
     }
 
-    /// Reveals the open poll's answer; whether there was one to reveal.
-    pub fn reveal(&self) -> bool {
+    /// Reveals the open poll's answer (`changed`: the lecturer's scene is
+    /// no longer the one asked about); whether there was one to reveal.
+    pub fn reveal(&self, changed: bool) -> bool {
         let mut c = self.lock();
         let Inner { seats, poll, .. } = &mut *c;
         let Some(open) = poll.as_mut().filter(|o| !o.poll.revealed) else {
@@ -273,6 +312,7 @@ impl Class {
         };
         let mut p = (*open.poll).clone();
         p.revealed = true;
+        p.changed = changed;
         open.poll = Arc::new(p);
         open.silent = seats
             .iter()
@@ -283,6 +323,22 @@ impl Class {
         drop(c);
         self.poll.send_replace(Some(poll));
         self.changed();
+        true
+    }
+
+    /// Shows the revealed poll's answers to every student (the lecturer's
+    /// `d`); whether there was a revealed poll.
+    pub fn share_answers(&self) -> bool {
+        let mut c = self.lock();
+        let Some(open) = c.poll.as_mut().filter(|o| o.poll.revealed) else {
+            return false;
+        };
+        let mut p = (*open.poll).clone();
+        p.answers = Some(open.answers.values().map(|a| a.1).collect());
+        open.poll = Arc::new(p);
+        let poll = Arc::clone(&open.poll);
+        drop(c);
+        self.poll.send_replace(Some(poll));
         true
     }
 
@@ -326,10 +382,11 @@ impl Class {
         let Some(open) = c.poll.as_mut() else {
             return Err(Refused::NoPoll);
         };
-        if open.poll.id != poll || open.poll.revealed || !value.is_finite() {
+        let nowhere = value == crate::tui::class::NOWHERE && open.poll.question.nowhere_ok();
+        if open.poll.id != poll || open.poll.revealed || !(value.is_finite() || nowhere) {
             return Err(Refused::Closed);
         }
-        open.answers.insert(id, (name, value));
+        open.answers.insert(id, (name, value, SystemTime::now()));
         drop(c);
         self.changed();
         Ok(())
@@ -374,7 +431,9 @@ impl Class {
     /// answer in the order students came, then a `no answer` row for each
     /// student here (at the reveal, or now while the poll is open) who
     /// did not answer. Values in the model's units (metres for lengths);
-    /// `offset` is the answer minus the truth.
+    /// `offset` is the answer minus the truth; `step` the lesson's step
+    /// the poll was asked on (empty outside a lesson), `time` when the
+    /// answer came (UTC).
     pub fn csv(&self) -> Option<String> {
         self.csv_rows().map(|rows| format!("{CSV_HEADER}\n{rows}"))
     }
@@ -389,16 +448,24 @@ impl Class {
             csv_field(&ascii.text(&q.text(&crate::tui::class::ASCII))),
             csv_field(&ascii.text(q.axis.symbol())),
             q.unit().to_string(),
-            csv_number::format(q.truth),
+            csv_value(q.truth),
         ]
         .join(",");
+        let step = (o.poll.scene.step.as_ref())
+            .filter(|s| s.left.is_none())
+            .map_or(String::new(), |s| s.at.to_string());
         let mut s = String::new();
-        for (name, v) in o.answers.values() {
-            s.push_str(&format!(
-                "{head},{},{},{}\n",
-                csv_field(name),
-                csv_number::format(*v),
+        for (name, v, at) in o.answers.values() {
+            let offset = if v.is_finite() && q.truth.is_finite() {
                 csv_number::format(*v - q.truth)
+            } else {
+                String::new()
+            };
+            s.push_str(&format!(
+                "{head},{},{},{offset},{step},{}\n",
+                csv_field(name),
+                csv_value(*v),
+                super::csv::utc(*at)
             ));
         }
         let silent: Vec<String> = if o.poll.revealed {
@@ -411,7 +478,7 @@ impl Class {
                 .collect()
         };
         for name in silent {
-            s.push_str(&format!("{head},{},no answer,\n", csv_field(&name)));
+            s.push_str(&format!("{head},{},no answer,,{step},\n", csv_field(&name)));
         }
         Some(s)
     }
@@ -428,6 +495,11 @@ impl Class {
             ..crate::tui::class::ASCII
         };
         (self.students() > 0).then(|| format!("class: {}", self.view().line(&CONSOLE)))
+    }
+
+    /// Whether the last poll is open (asked, not revealed).
+    pub fn poll_open(&self) -> bool {
+        self.lock().poll.as_ref().is_some_and(|o| !o.poll.revealed)
     }
 
     /// The address a seat came from.
@@ -460,6 +532,53 @@ mod tests {
     }
 
     const HOME: IpAddr = IpAddr::V4(std::net::Ipv4Addr::LOCALHOST);
+
+    /// The CSV with each answer's time (checked for its form) as `T`.
+    fn untimed(csv: &str) -> String {
+        let mut out = String::new();
+        for line in csv.lines() {
+            let (rest, time) = line.rsplit_once(',').unwrap();
+            if time.is_empty() || time == "time" {
+                out.push_str(line);
+            } else {
+                assert_eq!((time.len(), &time[10..11], &time[19..]), (20, "T", "Z"));
+                out.push_str(&format!("{rest},T"));
+            }
+            out.push('\n');
+        }
+        out
+    }
+
+    #[test]
+    fn two_students_of_one_name_get_distinct_names() {
+        let class = Class::default();
+        let a = class.join("ada", HOME, (80, 24), "braille", true);
+        let b = class.join("ada", HOME, (80, 24), "braille", true);
+        let c = class.join("ada", HOME, (80, 24), "braille", true);
+        assert_eq!(class.name(a).unwrap(), "ada");
+        assert_eq!(class.name(b).unwrap(), "ada-2");
+        assert_eq!(class.name(c).unwrap(), "ada-3");
+        // A long name keeps its number within NAME_CHARS.
+        let long = "b".repeat(NAME_CHARS);
+        class.join(&long, HOME, (80, 24), "braille", true);
+        let d = class.join(&long, HOME, (80, 24), "braille", true);
+        let n = class.name(d).unwrap();
+        assert!(n.ends_with("-2") && n.chars().count() == NAME_CHARS, "{n}");
+        // One who answered and left keeps the name in the poll's rows.
+        let id = class.open(question(), shown());
+        class.answer(b, id, 100.0).unwrap();
+        class.leave(b);
+        let e = class.join("ada", HOME, (80, 24), "braille", true);
+        assert_eq!(class.name(e).unwrap(), "ada-4");
+        assert!(class.reveal(false));
+        let names: Vec<String> = (class.csv().unwrap().lines().skip(1))
+            .map(|l| l.split(',').nth(4).unwrap().to_string())
+            .collect();
+        let mut sorted = names.clone();
+        sorted.sort();
+        sorted.dedup();
+        assert_eq!(sorted.len(), names.len(), "{names:?}");
+    }
 
     #[test]
     fn names_are_escaped_and_cut() {
@@ -535,8 +654,8 @@ mod tests {
         // Bob leaves: his answer stays and still counts.
         class.leave(b);
         assert_eq!(class.view().line(&UNICODE), "2 students · 2/3 answered");
-        assert!(class.reveal());
-        assert!(!class.reveal());
+        assert!(class.reveal(false));
+        assert!(!class.reveal(false));
         assert!(poll.borrow_and_update().as_ref().unwrap().revealed);
         let state = |v: ClassView| {
             (
@@ -566,11 +685,11 @@ mod tests {
             "a late answer woke the lecturer"
         );
         assert_eq!(
-            class.csv().unwrap(),
-            "question,quantity,unit,truth,name,answer,offset\n\
-             where does the plastic share pass 1/2?,zeta,,321.5,alice,200,-121.5\n\
-             where does the plastic share pass 1/2?,zeta,,321.5,\"b,\"\"ob\"\"\",1000,678.5\n\
-             where does the plastic share pass 1/2?,zeta,,321.5,carol,no answer,\n"
+            untimed(&class.csv().unwrap()),
+            "question,quantity,unit,truth,name,answer,offset,step,time\n\
+             where does the plastic share pass 1/2?,zeta,,321.5,alice,200,-121.5,,T\n\
+             where does the plastic share pass 1/2?,zeta,,321.5,\"b,\"\"ob\"\"\",1000,678.5,,T\n\
+             where does the plastic share pass 1/2?,zeta,,321.5,carol,no answer,,,\n"
         );
         assert_eq!(
             class.view().line(&UNICODE),
@@ -586,10 +705,13 @@ mod tests {
         class.answer(c, id2, 5.0).unwrap();
         // While open, everyone here without an answer is a no-answer row.
         assert_eq!(
-            class.csv().unwrap().lines().skip(1).collect::<Vec<_>>(),
+            untimed(&class.csv().unwrap())
+                .lines()
+                .skip(1)
+                .collect::<Vec<_>>(),
             [
-                "where does the plastic share pass 1/2?,zeta,,321.5,carol,5,-316.5",
-                "where does the plastic share pass 1/2?,zeta,,321.5,alice,no answer,"
+                "where does the plastic share pass 1/2?,zeta,,321.5,carol,5,-316.5,,T",
+                "where does the plastic share pass 1/2?,zeta,,321.5,alice,no answer,,,"
             ]
         );
         assert!(class.cancel());

@@ -376,6 +376,8 @@ impl Stop {
 /// ended") and closes; after at most [`GOODBYE_TIME`] the console's
 /// summary.
 async fn goodbye(shared: &Shared, limits: &Limits) {
+    // An open poll's answers are not lost with the class.
+    let open = poll::save_open(shared);
     shared.ending.send_replace(true);
     let until = tokio::time::Instant::now() + GOODBYE_TIME;
     while limits.open() > 0 && tokio::time::Instant::now() < until {
@@ -383,6 +385,9 @@ async fn goodbye(shared: &Shared, limits: &Limits) {
     }
     let saved = shared.saved.lock().map(|s| s.clone()).unwrap_or_default();
     let mut out = std::io::stdout().lock();
+    if let Some(line) = open {
+        let _ = writeln!(out, "{line}");
+    }
     for line in banner::summary(shared.class.seen(), shared.class.polls(), &saved) {
         let _ = writeln!(out, "{line}");
     }

@@ -13,6 +13,9 @@ use crate::figure::{short_number, Claim, ClaimKind, View};
 /// A value of `axis` to four digits, lengths in a readable unit: `321.5`,
 /// `20 nm`, `0.85`.
 pub fn fmt_value(axis: Axis, v: f64) -> String {
+    if v == NOWHERE {
+        return "nowhere".into();
+    }
     if !matches!(axis, Axis::HRms | Axis::RStar) {
         return short_number(v);
     }
@@ -28,6 +31,11 @@ pub fn fmt_value(axis: Axis, v: f64) -> String {
     };
     format!("{} {unit}", short_number(v * scale))
 }
+
+/// The answer, or the truth, of a poll that allows "nowhere in the
+/// sweep" ([`Ask::ShareEver`]): the student's `0`, the model's when the
+/// plastic share never passes ½.
+pub const NOWHERE: f64 = f64::INFINITY;
 
 /// The characters the class panels draw that are not plain ASCII, in one
 /// place, with their ASCII stand-ins.
@@ -84,6 +92,9 @@ pub enum Ask {
     Index { rising: bool, size_effect: bool },
     /// Where the total slope has its minimum inside the sweep.
     Minimum,
+    /// Where the plastic share passes ½, if anywhere in the sweep (the
+    /// truth may be [`NOWHERE`], and so may an answer: a student's `0`).
+    ShareEver,
     /// A value the lecturer typed.
     Typed,
 }
@@ -135,21 +146,38 @@ impl Question {
                 format!("where does {psi} {verb} 1?")
             }
             Ask::Minimum => "where is the total slope smallest?".to_string(),
+            Ask::ShareEver => {
+                format!("where does the plastic share pass {half} now (if anywhere)?")
+            }
             Ask::Typed => format!("which {} is it?", self.axis.symbol()),
         }
     }
 
     /// `ζ = 321.5`
     pub fn value(&self, v: f64) -> String {
+        if v == NOWHERE {
+            return "nowhere in the sweep".into();
+        }
         format!("{} = {}", self.axis.symbol(), fmt_value(self.axis, v))
     }
 
+    /// Whether a student may answer "nowhere" (`0`).
+    pub fn nowhere_ok(&self) -> bool {
+        self.ask == Ask::ShareEver
+    }
+
     /// How far `answer` is from the truth, said plainly: on log axes a
-    /// percentage below a factor of two ("1.7 % low"), a factor from two
+    /// percentage of the truth below a factor of two ("1.6 % low"), a factor from two
     /// on ("13× high"); on the Hurst exponent's linear axis the difference
     /// ("0.1 low").
     pub fn off(&self, answer: f64, g: &ClassGlyphs) -> String {
         let t = self.truth;
+        match (answer == NOWHERE, t == NOWHERE) {
+            (true, true) => return "right".into(),
+            (false, true) => return "it never passes".into(),
+            (true, false) => return "it does pass".into(),
+            (false, false) => {}
+        }
         if self.axis.is_log() {
             if !(answer > 0.0 && t > 0.0) {
                 return "off the scale".into();
@@ -160,8 +188,9 @@ impl Question {
                 return "spot on".into();
             }
             if f < 2.0 {
-                // Two digits: 1.7 %, 24 %; 0.8 % under one per cent.
-                let pc = (f - 1.0) * 100.0;
+                // Two digits: 1.6 %, 24 %; 0.8 % under one per cent. Of
+                // the truth: low is (1 − answer/truth), high (answer/truth − 1).
+                let pc = (answer / t - 1.0).abs() * 100.0;
                 let pc = if pc < 10.0 {
                     format!("{pc:.1}")
                 } else {
@@ -309,6 +338,8 @@ pub struct Asked {
     /// Their answer, once sent.
     pub answer: Option<f64>,
     pub revealed: bool,
+    /// Revealed after the lecturer changed the scene asked about.
+    pub changed: bool,
 }
 
 impl Asked {
@@ -317,7 +348,10 @@ impl Asked {
         let q = &self.question;
         let sep = g.sep;
         if self.revealed {
-            let truth = format!("the model: {}", q.value(q.truth));
+            // The lecturer changed the scene after asking: the truth is
+            // the scene's as asked.
+            let asked = if self.changed { ", as asked" } else { "" };
+            let truth = format!("the model{asked}: {}", q.value(q.truth));
             let line = match self.answer {
                 Some(a) => format!(
                     "{truth}{sep}you: {}{sep}{}",
@@ -336,15 +370,23 @@ impl Asked {
         match self.answer {
             None => {
                 let ask = format!("Predict: {}", q.text(g));
-                [
-                    " Move the marker and press Enter",
-                    " Marker, then Enter",
-                    "",
-                ]
-                .iter()
-                .map(|how| format!("{ask}{how}"))
-                .find(|s| s.chars().count() <= width)
-                .unwrap_or(ask)
+                let hows: &[&str] = if q.nowhere_ok() {
+                    &[
+                        " Marker and Enter, or 0: nowhere",
+                        " Enter, or 0: nowhere",
+                        "",
+                    ]
+                } else {
+                    &[
+                        " Move the marker and press Enter",
+                        " Marker, then Enter",
+                        "",
+                    ]
+                };
+                hows.iter()
+                    .map(|how| format!("{ask}{how}"))
+                    .find(|s| s.chars().count() <= width)
+                    .unwrap_or(ask)
             }
             Some(a) => format!(
                 "you answered {}{sep}Enter again changes it{sep}waiting for the reveal",
@@ -377,6 +419,14 @@ pub struct Classroom {
     pub remove: Option<u64>,
     /// The lecturer's scene list, while open.
     pub scenes: Option<crate::tui::scenes::SceneList>,
+    /// The revealed poll's answers, when the lecturer shows them to
+    /// everyone (`d`): a student's chart draws their histogram.
+    pub tally: Option<Tally>,
+    /// The class's web page with its code (`serve --web`), for the
+    /// lecturer's `Q`.
+    pub join_url: Option<String>,
+    /// `Q`'s full-screen QR code is up (any key closes it).
+    pub join_shown: bool,
 }
 
 impl Classroom {
@@ -391,8 +441,25 @@ impl Classroom {
     /// The question whose answer no screen shows: an open poll's, or the
     /// poll a lesson's step is about to ask (until its reveal).
     pub fn hidden_question(&self) -> Option<Question> {
+        let step = self.step.as_ref().filter(|s| s.left.is_none());
         self.open_question()
-            .or_else(|| self.step.as_ref().and_then(|s| s.pending))
+            .or_else(|| step.and_then(|s| s.pending))
+    }
+
+    /// Whether the chart's regime marks wait: every mark may bracket the
+    /// answer of a claim's poll (the share's 10 % and 90 % marks bracket
+    /// its ½, Ψ = 1 sits near it); a typed value's poll hides none.
+    pub fn marks_hidden(&self) -> bool {
+        match self.hidden_question() {
+            Some(q) => q.ask != Ask::Typed,
+            None => self.claims_hidden(),
+        }
+    }
+
+    /// Whether the claims line and the chart's regime marks wait: a poll
+    /// open or about to be asked, or a lesson's step that hides them.
+    pub fn claims_hidden(&self) -> bool {
+        self.hidden_question().is_some() || self.step.as_ref().is_some_and(|s| s.hides_claims())
     }
 }
 
@@ -474,8 +541,11 @@ mod tests {
     #[test]
     fn how_far_off() {
         let z = q(Axis::Zeta, Ask::Typed, 321.5);
-        // The issue's own example: 316.2 is 1.7 % low.
-        assert_eq!(z.off(316.2, &UNICODE), "1.7 % low");
+        // Per cent of the truth: 316.2 is (1 − 316.2/321.5) = 1.6 % low.
+        assert_eq!(z.off(316.2, &UNICODE), "1.6 % low");
+        // fig1's share: 0.005623 for 0.008318 is 32 % low (not 48 %).
+        let s = q(Axis::H0OverE, Ask::Share { rising: false }, 0.008318);
+        assert_eq!(s.off(0.005623, &UNICODE), "32 % low");
         assert_eq!(z.off(400.0, &UNICODE), "24 % high");
         assert_eq!(z.off(322.0, &UNICODE), "0.2 % high");
         assert_eq!(z.off(321.6, &UNICODE), "spot on");
@@ -535,6 +605,7 @@ mod tests {
             question: q(Axis::Zeta, Ask::Share { rising: false }, 321.5),
             answer: None,
             revealed: false,
+            changed: false,
         };
         for w in [80, 60, 40] {
             let l = a.line(&UNICODE, w);
