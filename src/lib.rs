@@ -5,7 +5,6 @@
 pub mod bench;
 pub mod cli;
 pub mod contact;
-pub mod csv_number;
 pub mod export;
 pub mod figure;
 pub mod lesson;
@@ -114,7 +113,7 @@ pub fn apply_sets(
 /// takes them), checked as the prompt checks it. A caption that described
 /// the scene before goes when a parameter other than the swept one changes.
 pub fn set(state: &mut State, axis: Axis, text: &str) -> Result<(), String> {
-    let v = tui::value_input::parse_value(axis, text)?;
+    let v = physical::value::parse_value(axis, text)?;
     set_value(state, axis, v, text)
 }
 
@@ -124,7 +123,7 @@ fn set_value(state: &mut State, axis: Axis, v: f64, typed: &str) -> Result<(), S
     if !r.is_parameter(axis) {
         return Err(rough_model::RoughnessError::NotAParameter(axis).to_string());
     }
-    let params = tui::value_input::apply_number(&state.params, axis, v, typed)?;
+    let params = physical::value::apply_number(&state.params, axis, v, typed)?;
     let mut next = state.clone();
     next.params = params;
     next.check().map_err(|e| match e {

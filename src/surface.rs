@@ -131,7 +131,7 @@ impl SurfaceSource {
 
     /// What the file held, in words: "a 512 × 512 map of 10 µm × 10 µm".
     pub fn describe(&self) -> String {
-        use crate::tui::fmt::fmt_len;
+        use crate::physical::print::fmt_len;
         match self.measured.kind {
             Kind::Map { nx, ny, lx, ly } => {
                 format!("a {nx} × {ny} map of {} × {}", fmt_len(lx), fmt_len(ly))
@@ -276,8 +276,8 @@ impl State {
                 "{}: {}, q0 = {} /m, ζ up to {}; the paper's material H0/E = 0.01, R* = 1 mm.",
                 src.file_name(),
                 src.describe(),
-                crate::figure::short_number(src.q0()),
-                crate::figure::short_number(zeta_max)
+                crate::physical::short_number(src.q0()),
+                crate::physical::short_number(zeta_max)
             ),
             MAX_CAPTION_CHARS,
         );

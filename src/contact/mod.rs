@@ -23,7 +23,7 @@ use rough_model::{areas, Areas};
 use scene::SceneKey;
 
 use crate::cli::{ExportArgs, FormatArg};
-use crate::csv_number;
+use crate::physical::csv_number;
 use crate::snapshot::State;
 
 /// Largest grid side the scene solves (ζ ≤ 128).

@@ -39,7 +39,7 @@ pub fn unsolvable(state: &State) -> Option<String> {
         format!(
             "ζ = {} needs a grid of {} nodes a side (8 per shortest wavelength); the \
              simulation solves up to {MAX_GRID} (ζ ≤ {}): lower ζ to compare",
-            crate::tui::fmt::fmt_num(zeta),
+            crate::physical::print::fmt_num(zeta),
             (8.0 * zeta).ceil(),
             MAX_GRID / 8
         )

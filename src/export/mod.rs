@@ -69,7 +69,7 @@ pub fn state_of(args: &ExportArgs) -> anyhow::Result<State> {
     }
     if let Some((axis, from, to)) = args.sweep {
         for v in [from, to] {
-            crate::physical::check(axis, v, &crate::figure::short_number(v))
+            crate::physical::check(axis, v, &crate::physical::short_number(v))
                 .map_err(|e| anyhow::anyhow!("--sweep: {e}"))?;
         }
         state.sweep = Sweep::new(axis, from, to).map_err(|e| anyhow::anyhow!("--sweep: {e}"))?;

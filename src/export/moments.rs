@@ -9,8 +9,8 @@ use anyhow::bail;
 
 use super::MAX_SVG_POINTS;
 use crate::cli::{ExportArgs, FormatArg};
-use crate::csv_number;
 use crate::figure::{moment_comments, render_moments_svg, scene_text, MomentSeries};
+use crate::physical::csv_number;
 use crate::snapshot::State;
 
 /// The moments view's CSV header: ζ, q1 (1/m), λ1 (m), the profile moments

@@ -6,9 +6,9 @@ use std::sync::mpsc;
 
 use rough_model::{Curves, Scene, SceneSpec};
 
-use crate::csv_number;
 use crate::figure::scene_text::csv_comments;
 use crate::figure::{FigureOptions, View};
+use crate::physical::csv_number;
 use crate::snapshot::State;
 
 /// The CSV header after the first column, which is named after the swept

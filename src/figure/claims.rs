@@ -11,8 +11,8 @@
 use rough_model::{slopes, Axis};
 
 use super::minimum::{bracketed, refine};
-use super::number::short_number;
 use super::series::at;
+use crate::physical::short_number;
 use crate::snapshot::State;
 
 /// Which quantity does what.

@@ -30,7 +30,6 @@ mod colour;
 mod map;
 mod minimum;
 mod moments;
-mod number;
 pub mod scene_text;
 mod series;
 mod spectrum;
@@ -42,7 +41,6 @@ pub use colour::{
 };
 pub use map::{axis_arg, MapCache, MapSpec, RegimeMap, DEFAULT_GRID};
 pub use moments::{moment_comments, MomentSeries};
-pub use number::short_number;
 pub use rough_model::slopes::{ELASTIC_BELOW, PLASTIC_ABOVE};
 pub use series::{IndexSeries, LoadCurve};
 pub use spectrum::{NotMeasured, SpectrumSeries};

@@ -7,8 +7,8 @@
 use rough_model::{Axis, Curves};
 
 use super::app::App;
-use super::fmt::{fmt_len, fmt_param};
 use super::plots::{compute_plot, Plot};
+use crate::physical::print::{fmt_len, fmt_param};
 use crate::snapshot::{GhostOf, GhostScene, Shown, State};
 
 /// What a ghost shows.

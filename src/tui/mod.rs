@@ -9,7 +9,6 @@ pub mod caps;
 pub mod caption;
 pub mod class;
 pub mod contact;
-pub mod fmt;
 pub mod ghost;
 pub mod glyphs;
 pub mod help;
@@ -27,8 +26,8 @@ pub mod status;
 pub mod steps;
 pub mod term;
 pub mod theme;
-pub mod value_input;
 pub mod views;
+pub mod wrap;
 
 use std::io::Write;
 use std::time::Instant;

@@ -3,8 +3,8 @@
 //! lecturer's truth prompt hands a poll's typed true value to the server.
 
 use super::app::{App, Hint, Mode};
-use super::fmt::{fmt_param, fmt_short};
-use super::value_input;
+use crate::physical::print::{fmt_param, fmt_short};
+use crate::physical::value;
 use crate::snapshot;
 
 /// `KEY=VALUE …` typed at the value prompt: any of `--set`'s keys (q0,
@@ -50,7 +50,7 @@ pub fn accept(app: &mut App) {
                 app.mode = Mode::Main;
                 return;
             }
-            match value_input::apply_value(&app.state.params, axis, &text) {
+            match value::apply_value(&app.state.params, axis, &text) {
                 Ok(p) => {
                     let mut next = app.state.clone();
                     next.params = p;
@@ -111,7 +111,7 @@ pub fn accept(app: &mut App) {
                 return;
             }
             let sweep = app.state.sweep;
-            match value_input::parse_value(axis, &text) {
+            match value::parse_value(axis, &text) {
                 Ok(v) if sweep.axis() == axis && (sweep.from()..=sweep.to()).contains(&v) => {
                     app.mode = Mode::Main;
                     app.status = None;

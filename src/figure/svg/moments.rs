@@ -5,7 +5,8 @@
 
 use super::legend::{Legend, Placed};
 use super::{chart, line, positive_span, title, Area, Scale, Stroke};
-use crate::figure::{short_number, MomentSeries};
+use crate::figure::MomentSeries;
+use crate::physical::short_number;
 use crate::snapshot::State;
 use plotters::prelude::RGBColor;
 

@@ -7,7 +7,8 @@ use plotters::prelude::*;
 use super::legend::{Legend, Placed};
 use super::{chart_with_top, guide, line, plot_err, title, Area, Chart, Scale, Stroke};
 use crate::figure::scene_text::short_length;
-use crate::figure::{short_number, SpectrumSeries};
+use crate::figure::SpectrumSeries;
+use crate::physical::short_number;
 use crate::snapshot::State;
 
 const DATA: RGBColor = RGBColor(0, 0, 0);

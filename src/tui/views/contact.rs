@@ -15,9 +15,9 @@ use ratatui::widgets::{Dataset, GraphType, Paragraph, Widget, Wrap};
 
 use super::chart::{self, Scale};
 use crate::contact::scene::Node;
+use crate::physical::print::fmt_num;
 use crate::tui::app::App;
 use crate::tui::contact::{load_value, ContactPane, LOADS};
-use crate::tui::fmt::fmt_num;
 use crate::tui::glyphs::Glyphs;
 use crate::tui::layout::Y_LABEL_W;
 use crate::tui::theme::{CurveStyle, Theme};
