@@ -6,7 +6,7 @@
 use rough_contact::{moments, synthesise, Boundary, Contact, PowerLaw};
 
 use super::{grid_for, measured, MAX_GRID};
-use crate::snapshot::State;
+use crate::scene::State;
 
 /// The surface and cap of one simulation; every field is an input of
 /// [`Surface::build`].

@@ -9,7 +9,7 @@ use rough_model::{Curves, Scene, SceneSpec};
 use crate::figure::scene_text::csv_comments;
 use crate::figure::{FigureOptions, View};
 use crate::physical::csv_number;
-use crate::snapshot::State;
+use crate::scene::State;
 
 /// The CSV header after the first column, which is named after the swept
 /// parameter (`zeta`, `h0_over_e`, `h_rms`, `hurst`, `r_star`).

@@ -10,7 +10,7 @@ use crate::figure::{
     FigureOptions, IndexSeries, LoadCurve, MapSpec, RegimeMap, SpectrumSeries, View,
 };
 use crate::physical::csv_number;
-use crate::snapshot::State;
+use crate::scene::State;
 
 /// The index view's CSV header after the first column, which is named
 /// after the swept parameter (`zeta`, `h0_over_e`, …).

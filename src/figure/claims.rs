@@ -13,7 +13,7 @@ use rough_model::{slopes, Axis};
 use super::minimum::{bracketed, refine};
 use super::series::at;
 use crate::physical::short_number;
-use crate::snapshot::State;
+use crate::scene::State;
 
 /// Which quantity does what.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

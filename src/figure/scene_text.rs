@@ -10,7 +10,7 @@ use rough_model::Axis;
 
 use super::{axis_unit, FigureOptions, MapSpec, View};
 use crate::physical::short_number;
-use crate::snapshot::State;
+use crate::scene::State;
 
 /// A number as the CSV prints it: the shortest digits that read back.
 fn full(v: f64) -> String {

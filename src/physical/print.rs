@@ -132,3 +132,15 @@ pub fn fmt_rel(other: f64, this: f64) -> String {
         format!("×{}", fmt_num(other / this))
     }
 }
+
+/// The load p̄/H as the readout writes it: four significant digits,
+/// trailing zeros dropped (0.01778, 0.01, 1).
+pub fn load_text(v: f64) -> String {
+    let decimals = (3 - v.log10().floor() as i32).max(0) as usize;
+    let s = format!("{v:.decimals$}");
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    }
+}

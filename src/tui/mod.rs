@@ -34,7 +34,7 @@ use std::time::Instant;
 
 use crossterm::event::{self, Event, KeyCode};
 
-use crate::snapshot::State;
+use crate::scene::State;
 use caps::Caps;
 use session::Session;
 

@@ -17,7 +17,7 @@ fn set_pairs(app: &mut App, text: &str) {
         .collect();
     let mut next = app.state.clone();
     let applied = pairs.and_then(|p| {
-        crate::apply_sets(&mut next, &p).map_err(|(at, e)| match at {
+        crate::cli::setup::apply_sets(&mut next, &p).map_err(|(at, e)| match at {
             Some(k) => format!("{}: {e}", text.split_whitespace().nth(k).unwrap_or("")),
             None => e,
         })
@@ -32,7 +32,7 @@ fn set_pairs(app: &mut App, text: &str) {
             }
         }
         // In the explorer's words: the key that helps is `a`.
-        Err(e) if e.ends_with(crate::HURST_ONE_SET) => {
+        Err(e) if e.ends_with(crate::scene::HURST_ONE_SET) => {
             app.set_status(super::app::HURST_ONE_ASYMPTOTIC, true)
         }
         Err(e) => app.set_status(e, true),
@@ -56,7 +56,7 @@ pub fn accept(app: &mut App) {
                     next.params = p;
                     if let Err(e) = next.check() {
                         let text = match e {
-                            snapshot::Invalid::Moments(_) => {
+                            crate::scene::Invalid::Moments(_) => {
                                 super::app::HURST_ONE_ASYMPTOTIC.into()
                             }
                             e => e.to_string(),

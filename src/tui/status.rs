@@ -13,7 +13,7 @@ use super::glyphs::Glyphs;
 use super::line_edit::LineEdit;
 use crate::physical::print::{fmt_param, fmt_short};
 use crate::physical::value;
-use crate::snapshot::State;
+use crate::scene::State;
 use rough_model::Axis;
 
 /// Advice that holds only in some states.

@@ -11,7 +11,7 @@ use super::{
 };
 use crate::figure::{FigureOptions, IndexSeries, LoadCurve};
 use crate::physical::short_number;
-use crate::snapshot::State;
+use crate::scene::State;
 
 /// A vertical guide at the current value of the swept parameter, named
 /// in the legend ("ζ = 128, the marker") when it is on the chart.
