@@ -225,6 +225,14 @@ pub fn relative_to(path: &Path, base: &Path) -> PathBuf {
     out
 }
 
+/// `text` without control characters, at most `max` characters.
+pub fn printable(text: &str, max: usize) -> String {
+    text.chars()
+        .map(|c| if c.is_control() { '_' } else { c })
+        .take(max)
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -264,12 +272,4 @@ mod tests {
         let bad = PowerLawFit { hurst: 1.2, ..fit };
         assert_eq!(fit_amplitude(&bad), None);
     }
-}
-
-/// `text` without control characters, at most `max` characters.
-pub fn printable(text: &str, max: usize) -> String {
-    text.chars()
-        .map(|c| if c.is_control() { '_' } else { c })
-        .take(max)
-        .collect()
 }
