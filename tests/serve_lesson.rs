@@ -88,7 +88,7 @@ fn a_lesson_steps_polls_into_one_csv_and_everyone_follows() {
         let shown = if truth == nowhere {
             "nowhere".to_string()
         } else {
-            roughtui::figure::short_number(truth)
+            roughtui::physical::short_number(truth)
         };
         for (i, s) in screens.iter().enumerate() {
             assert!(!s.contains(&shown), "{shown}:\n{s}");

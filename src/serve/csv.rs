@@ -25,7 +25,7 @@ pub fn csv_value(v: f64) -> String {
     if v == crate::tui::class::NOWHERE {
         "nowhere".into()
     } else {
-        crate::csv_number::format(v)
+        crate::physical::csv_number::format(v)
     }
 }
 

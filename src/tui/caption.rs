@@ -5,7 +5,7 @@
 
 use rough_model::{Model, Moments, Params, Sweep};
 
-use crate::snapshot::State;
+use crate::scene::State;
 
 /// The most rows of a caption shown in a class or a lesson.
 pub const MAX_CAPTION_ROWS: usize = 4;
@@ -33,7 +33,7 @@ pub fn rows(app: &crate::tui::app::App) -> u16 {
     }
     let g = app.theme.glyphs;
     let width = usize::from(app.size.0);
-    let caption = crate::tui::fmt::wrap(&g.text(text(app)), width, MAX_CAPTION_ROWS, g.cut());
+    let caption = crate::tui::wrap::wrap(&g.text(text(app)), width, MAX_CAPTION_ROWS, g.cut());
     (lines + caption.len() + 1) as u16
 }
 
