@@ -68,6 +68,11 @@ impl Bye {
         self.0.lock().unwrap_or_else(|p| p.into_inner()).1 = on;
     }
 
+    /// Why the server ends the session, if it does.
+    pub fn why(&self) -> Option<String> {
+        self.0.lock().unwrap_or_else(|p| p.into_inner()).0.clone()
+    }
+
     /// The goodbye's bytes for the terminal as it is now.
     pub fn bytes(&self) -> Vec<u8> {
         let (why, normal) = std::mem::take(&mut *self.0.lock().unwrap_or_else(|p| p.into_inner()));

@@ -227,7 +227,10 @@ async fn run(start: Start) {
     ex.app.contact.engine = Arc::clone(&shared.contact);
     // The first screen's line on switching the drawing, until the first
     // key or HINT_FOR.
-    let mut hint = Some(term::hint(caps.glyphs, why.as_deref()));
+    // (Not in a browser: xterm.js draws braille, and M is in the help.)
+    let mut hint = via
+        .is_empty()
+        .then(|| term::hint(caps.glyphs, why.as_deref()));
     let hint_until = Instant::now() + term::HINT_FOR;
     let mut lecturer = shared.follow.subscribe();
     let follow = Follow::start(lecturer.borrow_and_update().is_some());
@@ -250,6 +253,7 @@ async fn run(start: Start) {
     let mut roster = shared.class.watch_roster();
     let mut polls = shared.class.watch_poll();
     if is_lecturer {
+        s.ex.app.class.join_url.clone_from(&shared.join_url);
         shared.lecturer_joined(&mut s.ex.app);
         s.ex.app.class.view = Some(shared.class.view());
         roster.mark_unchanged();
@@ -257,6 +261,14 @@ async fn run(start: Start) {
         if s.follow.following() {
             s.catch_up();
             s.ex.app.set_status(FOLLOWING, false);
+        } else if let Some(lesson) = &shared.lesson {
+            // Before the lecturer comes: the lesson's first step, its
+            // claims hidden as the lesson says (they may answer a poll).
+            let at = crate::lesson::LessonAt {
+                lesson: Arc::clone(lesson),
+                at: 0,
+            };
+            s.ex.app.class.step = Some(at.line());
         }
         let following = s.follow.following();
         let id = shared

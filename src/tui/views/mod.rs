@@ -7,6 +7,7 @@ pub mod class;
 pub mod compact;
 pub mod contact;
 mod indices;
+mod join;
 mod load;
 mod map;
 pub(crate) mod overlap;
@@ -33,6 +34,9 @@ use crate::tui::wrap::wrap;
 
 impl Widget for &App {
     fn render(self, area: Rect, buf: &mut Buffer) {
+        if self.class.join_shown {
+            return join::render(self, area, buf);
+        }
         let rows = crate::tui::caption::rows(self);
         let Some(r) = Regions::with_caption(area, rows) else {
             if compact::applies(self) {
