@@ -80,7 +80,10 @@ pub async fn upgrade(
     if socket.write_all(answer.as_bytes()).await.is_err() {
         return;
     }
+    // Keys are a few bytes: a read buffer of 4 KiB, not tungstenite's
+    // 128 KiB, for each of a class's idle sessions.
     let config = WebSocketConfig::default()
+        .read_buffer_size(4 * 1024)
         .max_message_size(Some(MAX_MESSAGE))
         .max_frame_size(Some(MAX_MESSAGE));
     let ws = WebSocketStream::from_partially_read(socket, rest, WsRole::Server, Some(config)).await;
