@@ -117,6 +117,11 @@ pub struct LessonAt {
 }
 
 impl LessonAt {
+    /// `lesson` at step `at` (from 0).
+    pub fn new(lesson: Arc<Lesson>, at: usize) -> LessonAt {
+        LessonAt { lesson, at }
+    }
+
     pub fn step(&self) -> &Step {
         &self.lesson.steps[self.at.min(self.lesson.steps.len() - 1)]
     }
