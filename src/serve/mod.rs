@@ -131,10 +131,7 @@ impl Shared {
     fn lecturer_joined(&self, app: &mut crate::tui::app::App) {
         self.lecturers.fetch_add(1, Ordering::SeqCst);
         if let Some(lesson) = &self.lesson {
-            app.class.lesson = Some(crate::lesson::LessonAt {
-                lesson: Arc::clone(lesson),
-                at: 0,
-            });
+            app.class.lesson = Some(crate::lesson::LessonAt::new(Arc::clone(lesson), 0));
             crate::lesson::show(app);
         }
         let last = self.last.lock().ok().and_then(|l| l.clone());

@@ -117,9 +117,17 @@ pub(super) fn on_key(s: &mut Seat, msg: Message) {
                     // truth is the scene's as asked, and says so.
                     let changed = !crate::tui::caption::same_scene(&app.state, &p.scene.state);
                     class.reveal(changed);
-                    // The lesson's step has had its poll: its answer shows.
+                    // The lesson's step has had its poll: its answer and
+                    // its claims show (and, from now on, those of the
+                    // steps before it that hid theirs for this poll).
                     if let Some(step) = app.class.step.as_mut() {
                         step.pending = None;
+                        step.claims_hidden = false;
+                        if step.left.is_none() {
+                            if let Some(at) = app.class.lesson.as_mut() {
+                                at.mark_revealed();
+                            }
+                        }
                     }
                     let q = &p.question;
                     let saved = match to_lesson_csv(s) {

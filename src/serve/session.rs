@@ -264,10 +264,7 @@ async fn run(start: Start) {
         } else if let Some(lesson) = &shared.lesson {
             // Before the lecturer comes: the lesson's first step, its
             // claims hidden as the lesson says (they may answer a poll).
-            let at = crate::lesson::LessonAt {
-                lesson: Arc::clone(lesson),
-                at: 0,
-            };
+            let at = crate::lesson::LessonAt::new(Arc::clone(lesson), 0);
             s.ex.app.class.step = Some(at.line());
         }
         let following = s.follow.following();
