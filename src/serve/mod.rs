@@ -23,6 +23,7 @@ pub mod session;
 pub mod stream;
 pub mod term;
 pub mod web;
+pub mod wire;
 
 use std::io::Write;
 use std::net::SocketAddr;
