@@ -84,8 +84,10 @@ fn reveal(app: &mut App) {
     if let Some(p) = app.class.view.as_mut().and_then(|v| v.poll.as_mut()) {
         p.revealed = true;
     }
+    // As the server reveals: the step's answer and its claims show.
     if let Some(s) = app.class.step.as_mut() {
         s.pending = None;
+        s.claims_hidden = false;
     }
     update(app, Message::Tick);
 }
