@@ -22,7 +22,8 @@ use tokio::time::{sleep_until, Instant};
 
 use super::auth::Role;
 use super::class::{self, clean_name, Note, SeatId};
-use super::follow::{Effect, Follow, Shown, CALLED_BACK, FOLLOWING};
+use super::follow::{Effect, Follow, Scene, Shown, CALLED_BACK, FOLLOWING};
+use super::frames;
 use super::input::{self, Decoder};
 use super::output::{self, FrameBuf};
 use super::panel::{Key as PanelKey, Panel};
@@ -88,7 +89,14 @@ pub(super) struct Seat {
     pub seat: Option<SeatId>,
     /// The poll a student is in (its id).
     pub poll: Option<u64>,
-    pub lecturer: watch::Receiver<Option<Shown>>,
+    pub lecturer: watch::Receiver<Option<Arc<Shown>>>,
+    /// The scene the explorer shows, or is to show (`pending`), while it
+    /// is the lecturer's or the poll's as it came (none of the student's
+    /// own moves on it): then its frame may be shared (see `frames`).
+    pub scene: Option<Scene>,
+    /// `scene` is not applied yet: the explorer catches up when it needs
+    /// to (a key, a frame no one else drew).
+    pub pending: bool,
 }
 
 impl Seat {
@@ -96,10 +104,64 @@ impl Seat {
         self.role == Role::Lecturer
     }
 
-    /// Shows the lecturer's latest state.
-    pub fn catch_up(&mut self) {
-        if let Some(s) = self.lecturer.borrow().as_ref() {
-            s.apply(&mut self.ex.app);
+    /// Is to show the lecturer's latest state (see `pending`).
+    pub fn follow_lecturer(&mut self) {
+        let shown = self.lecturer.borrow().clone();
+        if let Some(s) = shown {
+            self.show(Scene::Lecturer(s));
+        }
+    }
+
+    /// The explorer is to show `scene`, when it next needs to (see
+    /// `pending`).
+    pub fn show(&mut self, scene: Scene) {
+        self.scene = Some(scene);
+        self.pending = true;
+        if self.ex.app.ghost.is_some() {
+            // A ghost that no longer fits goes, and says so, now: before
+            // what the caller says next (such a screen is never shared).
+            self.sync();
+        }
+    }
+
+    /// Brings the explorer up to its scene, if it is behind.
+    pub fn sync(&mut self) {
+        if std::mem::take(&mut self.pending) {
+            if let Some(scene) = &self.scene {
+                scene.apply(&mut self.ex.app);
+            }
+        }
+    }
+
+    /// Applies `msg` to the explorer, brought up to its scene first.
+    pub fn update(&mut self, msg: Message) -> std::io::Result<()> {
+        self.own_move(&msg);
+        self.sync();
+        self.ex.update(msg)
+    }
+
+    /// The explorer changed on its own: what it shows is its own now
+    /// (until it follows again), unless `msg` changed only its look.
+    fn own_move(&mut self, msg: &Message) {
+        use Message as M;
+        let look_only = matches!(
+            msg,
+            M::ToggleHelp
+                | M::CloseHelp
+                | M::HelpPage { .. }
+                | M::Resize(..)
+                | M::Redraw
+                | M::CycleGlyphs
+                | M::ToggleColor
+                | M::Answer
+                | M::AnswerNowhere
+                | M::Follow
+                | M::Tick
+                | M::Quit
+        );
+        if !look_only {
+            self.sync();
+            self.scene = None;
         }
     }
 
@@ -108,7 +170,7 @@ impl Seat {
         match e {
             Effect::Say(s) => self.ex.app.set_status(s, false),
             Effect::Catch => {
-                self.catch_up();
+                self.follow_lecturer();
                 self.ex.app.set_status(FOLLOWING, false);
             }
             Effect::None => {}
@@ -177,6 +239,8 @@ async fn run(start: Start) {
         seat: None,
         poll: None,
         lecturer,
+        scene: None,
+        pending: false,
     };
     let is_lecturer = s.is_lecturer();
     s.ex.app.student = !is_lecturer;
@@ -194,7 +258,7 @@ async fn run(start: Start) {
         roster.mark_unchanged();
     } else {
         if s.follow.following() {
-            s.catch_up();
+            s.follow_lecturer();
             s.ex.app.set_status(FOLLOWING, false);
         } else if let Some(lesson) = &shared.lesson {
             // Before the lecturer comes: the lesson's first step, its
@@ -259,7 +323,7 @@ async fn run(start: Start) {
                                 // The terminal's answer to Ctrl-L's question.
                                 Event::Resize(w, h) => {
                                     if (w, h) != s.ex.app.size {
-                                        if s.ex.update(Message::Resize(w, h)).is_err() {
+                                        if s.update(Message::Resize(w, h)).is_err() {
                                             s.ex.app.quit = true;
                                             break;
                                         }
@@ -281,7 +345,7 @@ async fn run(start: Start) {
                                         panel = None;
                                         bye.normal_screen(false);
                                         // The explorer whole again.
-                                        if s.ex.update(Message::Redraw).is_err() {
+                                        if s.update(Message::Redraw).is_err() {
                                             s.ex.app.quit = true;
                                             break;
                                         }
@@ -290,6 +354,8 @@ async fn run(start: Start) {
                                 }
                                 continue;
                             }
+                            // A key is the student's: the explorer catches up.
+                            s.sync();
                             if s.ex.message_for(&Event::Key(key)) == Some(Message::Redraw) {
                                 decoder.expect_size();
                             }
@@ -325,7 +391,7 @@ async fn run(start: Start) {
                         }
                     }
                     WireIn::Resize(w, h) => {
-                        if s.ex.update(Message::Resize(w, h)).is_err() {
+                        if s.update(Message::Resize(w, h)).is_err() {
                             break;
                         }
                         s.note(Note::Size(w, h));
@@ -344,7 +410,7 @@ async fn run(start: Start) {
                 if s.follow.following() && shown.is_some() {
                     // Watching the lecturer counts as activity.
                     deadline = Instant::now() + idle;
-                    s.catch_up();
+                    s.follow_lecturer();
                 }
                 dirty = true;
             }
@@ -360,7 +426,7 @@ async fn run(start: Start) {
                     if let Some(p) = panel.take() {
                         raw.extend(p.close());
                         bye.normal_screen(false);
-                        if s.ex.update(Message::Redraw).is_err() {
+                        if s.update(Message::Redraw).is_err() {
                             break;
                         }
                     }
@@ -381,7 +447,7 @@ async fn run(start: Start) {
                 dirty = true;
             }
             () = solver.notified(), if s.ex.app.contact.busy() => {
-                if s.ex.update(Message::Tick).is_err() {
+                if s.update(Message::Tick).is_err() {
                     break;
                 }
                 dirty = true;
@@ -428,13 +494,7 @@ async fn run(start: Start) {
                 // While the snapshot is shown, changes wait for its close
                 // (which draws the explorer whole).
                 if dirty && panel.is_none() {
-                    let drawn = s.ex.draw_with(|app, f| {
-                        // Not over a screen too small for the explorer.
-                        if let Some(h) = hint.as_ref().filter(|_| !app.too_small()) {
-                            term::draw_hint(f, h, app.theme.glyphs);
-                        }
-                    });
-                    if drawn.is_err() {
+                    if frames::draw(&mut s, hint.as_ref()).is_err() {
                         break;
                     }
                     bytes.extend(buf.take());
@@ -511,10 +571,10 @@ fn on_key(s: &mut Seat, panel: &mut Option<Panel>, raw: &mut Vec<u8>, key: KeyEv
         }
         if let e @ Effect::Say(_) = s.follow.on_message(&msg) {
             // The edit applies first; the status says what happened.
-            let ok = s.ex.update(msg).is_ok();
+            let ok = s.update(msg).is_ok();
             s.effect(e);
             return ok;
         }
     }
-    s.ex.update(msg).is_ok()
+    s.update(msg).is_ok()
 }
