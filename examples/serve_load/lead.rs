@@ -21,22 +21,20 @@ pub const EVERY: Duration = Duration::from_millis(250);
 /// summary).
 pub type Counts = Arc<Mutex<Option<String>>>;
 
-/// Rendered for followers, taken by others, drawn alone, from a
-/// `frames:` line.
-fn parse(line: &str) -> (u64, u64, u64) {
+/// Rendered for followers, taken by others, drawn alone, sent as bytes
+/// another session wrote, from a `frames:` line.
+fn parse(line: &str) -> [u64; 4] {
+    // (Past the log's time of day.)
+    let line = line.split_once("frames: ").map_or("", |(_, rest)| rest);
     let nums: Vec<u64> = line
         .split(|c: char| !c.is_ascii_digit())
         .filter_map(|w| w.parse().ok())
         .collect();
-    (
-        nums.first().copied().unwrap_or(0),
-        nums.get(1).copied().unwrap_or(0),
-        nums.get(2).copied().unwrap_or(0),
-    )
+    std::array::from_fn(|i| nums.get(i).copied().unwrap_or(0))
 }
 
 /// The counts once the class is quiet (a summary comes every 200 ms).
-async fn settled(counts: &Counts) -> anyhow::Result<(u64, u64, u64)> {
+async fn settled(counts: &Counts) -> anyhow::Result<[u64; 4]> {
     tokio::time::sleep(Duration::from_millis(800)).await;
     let line = counts.lock().unwrap().clone();
     let line = line.ok_or_else(|| anyhow::anyhow!("the server wrote no frames: line"))?;
@@ -84,7 +82,7 @@ pub async fn run(
     lat.sort_by(f64::total_cmp);
     let pct = |p: f64| super::percentile(&lat, p);
     let n = followers.len();
-    let per_key = |a: u64, b: u64| (b - a) as f64 / KEYS as f64;
+    let per_key = |i: usize| (c1[i] - c0[i]) as f64 / KEYS as f64;
     Ok(vec![
         format!(
             "the lecturer leads: {KEYS} keys (one every {EVERY:?}) to {n} followers: key-to-frame p50 {:.2} ms, p99 {:.2} ms, max {:.2} ms over {} frames ({missed} missed); {:.0} bytes per follower per key",
@@ -95,10 +93,11 @@ pub async fn run(
             bytes as f64 / (n * KEYS) as f64
         ),
         format!(
-            "  per key: {:.1} frames rendered for followers, {:.1} taken by others, {:.1} drawn alone (the lecturer's one among them); server CPU {cpu:.2} s ({:.1} ms per key)",
-            per_key(c0.0, c1.0),
-            per_key(c0.1, c1.1),
-            per_key(c0.2, c1.2),
+            "  per key: {:.1} frames rendered for followers, {:.1} taken by others ({:.1} of them sent as the bytes another wrote), {:.1} drawn alone (the lecturer's one among them); server CPU {cpu:.2} s ({:.1} ms per key)",
+            per_key(0),
+            per_key(1),
+            per_key(3),
+            per_key(2),
             cpu * 1e3 / KEYS as f64
         ),
     ])

@@ -30,7 +30,40 @@ struct Key {
 /// about 300 kB; older scenes' frames are never asked for again).
 const KEEP: usize = 24;
 
-type Slot = Arc<OnceLock<Arc<Buffer>>>;
+/// A shared frame, once rendered, and the bytes that turn a screen
+/// showing another shared frame into it.
+#[derive(Default)]
+struct Slot {
+    frame: OnceLock<Arc<Buffer>>,
+    /// From a frame (by identity, which the `Arc` kept here holds) to
+    /// this one: the bytes the first session to make that change wrote.
+    from: Mutex<Vec<Change>>,
+}
+
+/// A frame shown before, and the bytes that change it into another.
+type Change = (Arc<Buffer>, Arc<[u8]>);
+
+/// Changes into one frame kept (each from another frame shown before).
+const FROM: usize = 8;
+
+impl Slot {
+    fn bytes_from(&self, shown: &Arc<Buffer>) -> Option<Arc<[u8]>> {
+        let from = self.from.lock().unwrap_or_else(|p| p.into_inner());
+        let found = from.iter().find(|(f, _)| Arc::ptr_eq(f, shown));
+        found.map(|(_, b)| Arc::clone(b))
+    }
+
+    fn keep_from(&self, shown: Arc<Buffer>, bytes: Vec<u8>) {
+        let mut from = self.from.lock().unwrap_or_else(|p| p.into_inner());
+        if from.iter().any(|(f, _)| Arc::ptr_eq(f, &shown)) {
+            return;
+        }
+        if from.len() >= FROM {
+            from.remove(0);
+        }
+        from.push((shown, bytes.into()));
+    }
+}
 
 /// The class's shared frames, and how many frames its sessions rendered
 /// and took rendered.
@@ -38,8 +71,9 @@ pub struct Frames {
     /// Whether followers share frames (`ROUGHTUI_SHARED_FRAMES=off`: each
     /// renders its own, as before they did, to measure what sharing saves).
     share: bool,
-    kept: Mutex<Vec<(Key, Slot)>>,
+    kept: Mutex<Vec<(Key, Arc<Slot>)>>,
     rendered: AtomicU64,
+    as_bytes: AtomicU64,
     alone: AtomicU64,
     taken: AtomicU64,
     /// (Tests) the frames taken that differ from the taker's own render.
@@ -54,6 +88,7 @@ impl Default for Frames {
             share: !off,
             kept: Mutex::default(),
             rendered: AtomicU64::default(),
+            as_bytes: AtomicU64::default(),
             alone: AtomicU64::default(),
             taken: AtomicU64::default(),
             #[cfg(test)]
@@ -66,10 +101,11 @@ impl Frames {
     /// The console's line on the frames drawn so far.
     pub fn summary(&self) -> String {
         format!(
-            "frames: {} rendered for followers of one shape, taken {} times by others; {} drawn by a session alone{}",
+            "frames: {} rendered for followers of one shape, taken {} times by others; {} drawn by a session alone; {} sent as the bytes another session wrote{}",
             self.rendered(),
             self.taken(),
             self.alone(),
+            self.as_bytes(),
             if self.share { "" } else { " (ROUGHTUI_SHARED_FRAMES=off)" }
         )
     }
@@ -85,13 +121,19 @@ impl Frames {
         self.alone.load(Ordering::Relaxed)
     }
 
+    /// Shared frames a session sent as the bytes another session wrote
+    /// for the same change of screen.
+    pub fn as_bytes(&self) -> u64 {
+        self.as_bytes.load(Ordering::Relaxed)
+    }
+
     /// Frames a session took from another's render.
     pub fn taken(&self) -> u64 {
         self.taken.load(Ordering::Relaxed)
     }
 
     /// The slot for `key`: the one kept, or a new one (the oldest goes).
-    fn slot(&self, key: &Key) -> Slot {
+    fn slot(&self, key: &Key) -> Arc<Slot> {
         let mut kept = self.kept.lock().unwrap_or_else(|p| p.into_inner());
         if let Some((_, slot)) = kept.iter().find(|(k, _)| k == key) {
             return Arc::clone(slot);
@@ -99,7 +141,7 @@ impl Frames {
         if kept.len() >= KEEP {
             kept.remove(0);
         }
-        let slot = Slot::default();
+        let slot = Arc::<Slot>::default();
         kept.push((key.clone(), Arc::clone(&slot)));
         slot
     }
@@ -126,7 +168,7 @@ pub(super) fn draw(s: &mut Seat, hint: Option<&String>) -> std::io::Result<()> {
     let mut rendered = false;
     // Another session rendering this frame now is waited for (a render
     // blocks its thread anyway).
-    let frame = Arc::clone(slot.get_or_init(|| {
+    let frame = Arc::clone(slot.frame.get_or_init(|| {
         s.sync();
         rendered = true;
         Arc::new(s.ex.render(overlay))
@@ -146,7 +188,27 @@ pub(super) fn draw(s: &mut Seat, hint: Option<&String>) -> std::io::Result<()> {
             m.push(diff);
         }
     }
-    s.ex.draw_frame(&frame)
+    // A screen that showed a shared frame goes on as every other screen
+    // that showed it and goes on to this one: the first of them works out
+    // the bytes, the others send them.
+    let shown = s.ex.shown().cloned();
+    if let Some(bytes) = shown.as_ref().and_then(|f| slot.bytes_from(f)) {
+        #[cfg(test)]
+        if let Some(f) = &shown {
+            if *bytes != *tests::encode(f, &frame) {
+                let mut m = frames.mismatches.lock().unwrap();
+                m.push("the bytes sent are not the change of screen".into());
+            }
+        }
+        frames.as_bytes.fetch_add(1, Ordering::Relaxed);
+        return s.ex.draw_frame_as(&frame, &bytes);
+    }
+    let start = s.out.len();
+    s.ex.draw_frame(&frame)?;
+    if let Some(f) = shown {
+        slot.keep_from(f, s.out.since(start));
+    }
+    Ok(())
 }
 
 /// What the session's next frame shows, if others may show it too: a

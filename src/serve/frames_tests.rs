@@ -203,6 +203,17 @@ pub(super) fn differ(own: &Buffer, taken: &Buffer) -> Option<String> {
     Some(rows.join("\n"))
 }
 
+/// The bytes a terminal backend writes to change `from` into `to` (as
+/// a frame drawn over `from` does, the cursor hidden).
+pub(super) fn encode(from: &Buffer, to: &Buffer) -> Vec<u8> {
+    use ratatui::backend::{Backend, CrosstermBackend};
+    let mut out = Vec::new();
+    let mut b = CrosstermBackend::new(&mut out);
+    b.draw(from.diff(to).into_iter()).unwrap();
+    b.hide_cursor().unwrap();
+    out
+}
+
 /// Waits until the class has drawn what it had to: no frame drawn for
 /// 300 ms. The counts then.
 async fn settled(frames: &Frames) -> (u64, u64, u64) {
@@ -265,6 +276,7 @@ async fn followers_of_one_shape_share_one_render() {
     // the three shapes; the other seven of the eight take theirs.
     let counts = || (frames.rendered(), frames.taken(), frames.alone());
     let (r0, t0, a0) = counts();
+    let b0 = frames.as_bytes();
     lecturer.key("\t").await;
     until(&students, "the index view", |s| {
         s.contains("plasticity indices vs")
@@ -273,6 +285,9 @@ async fn followers_of_one_shape_share_one_render() {
     assert_eq!(frames.rendered() - r0, 3, "renders for the students");
     assert_eq!(frames.taken() - t0, N as u64 - 1, "frames taken");
     assert_eq!(frames.alone() - a0, 1, "the lecturer's");
+    // The eight showed one frame before: one of them works out the
+    // change, the others send its bytes.
+    assert_eq!(frames.as_bytes() - b0, N as u64 - 1, "frames sent as bytes");
     // Each has the right screen: the eight one and the same, the small
     // one its own 24 rows, the ASCII one ASCII only.
     let first = same[0].text();

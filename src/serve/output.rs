@@ -30,6 +30,22 @@ impl FrameBuf {
     pub fn take(&self) -> Vec<u8> {
         std::mem::take(&mut *self.0.lock().unwrap_or_else(|p| p.into_inner()))
     }
+
+    /// How many bytes wait.
+    pub fn len(&self) -> usize {
+        self.0.lock().unwrap_or_else(|p| p.into_inner()).len()
+    }
+
+    /// Whether none wait.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The bytes written past the first `from`.
+    pub fn since(&self, from: usize) -> Vec<u8> {
+        let b = self.0.lock().unwrap_or_else(|p| p.into_inner());
+        b.get(from..).unwrap_or_default().to_vec()
+    }
 }
 
 impl Write for FrameBuf {

@@ -82,6 +82,8 @@ const LIST_TICK: Duration = Duration::from_secs(1);
 /// One explorer and its place in the class.
 pub(super) struct Seat {
     pub ex: Session<FrameBuf>,
+    /// What `ex` writes its frames into.
+    pub out: FrameBuf,
     pub shared: Arc<Shared>,
     pub role: Role,
     pub follow: Follow,
@@ -233,6 +235,7 @@ async fn run(start: Start) {
     let follow = Follow::start(lecturer.borrow_and_update().is_some());
     let mut s = Seat {
         ex,
+        out: buf.clone(),
         shared: Arc::clone(&shared),
         role,
         follow,

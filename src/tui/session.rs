@@ -3,6 +3,7 @@
 //! and each SSH session (`serve`) drive the explorer through this one path.
 
 use std::io::{self, Write};
+use std::sync::Arc;
 
 use crossterm::event::Event;
 use ratatui::backend::{Backend, ClearType, CrosstermBackend};
@@ -22,6 +23,11 @@ use crate::scene::State;
 pub struct Session<W: Write> {
     terminal: Terminal<CrosstermBackend<W>>,
     pub app: App,
+    /// The shared frame the screen shows, while it was the last thing
+    /// drawn: another session that showed it too and went on to the same
+    /// next frame wrote the bytes this one needs (see
+    /// [`Session::draw_frame_as`]).
+    shown: Option<Arc<Buffer>>,
 }
 
 impl<W: Write> Session<W> {
@@ -35,6 +41,7 @@ impl<W: Write> Session<W> {
         Ok(Session {
             terminal,
             app: App::new(state, theme, (w, h)),
+            shown: None,
         })
     }
 
@@ -42,6 +49,7 @@ impl<W: Write> Session<W> {
     /// the terminal besides frames: a question, written before the next
     /// frame).
     pub fn writer(&mut self) -> &mut impl Write {
+        self.shown = None;
         self.terminal.backend_mut()
     }
 
@@ -53,6 +61,9 @@ impl<W: Write> Session<W> {
     /// Applies `msg` (a resize also resizes the frame, which then repaints
     /// in full; so does a redraw, after clearing the screen).
     pub fn update(&mut self, msg: Message) -> io::Result<()> {
+        if matches!(msg, Message::Resize(..) | Message::Redraw) {
+            self.shown = None;
+        }
         match msg {
             Message::Resize(w, h) => self.terminal.resize(Rect::new(0, 0, w, h))?,
             Message::Redraw => {
@@ -70,6 +81,7 @@ impl<W: Write> Session<W> {
     /// the ASCII glyphs, whatever is not ASCII in the frame (nothing the
     /// views draw; a safety net) is sent as its ASCII fallback.
     pub fn draw_with(&mut self, overlay: impl FnOnce(&App, &mut Buffer)) -> io::Result<()> {
+        self.shown = None;
         let app = &self.app;
         self.terminal
             .draw(|f| paint(app, f.buffer_mut(), overlay))?;
@@ -89,10 +101,16 @@ impl<W: Write> Session<W> {
         buf
     }
 
+    /// The shared frame the screen shows, if nothing was drawn since.
+    pub fn shown(&self) -> Option<&Arc<Buffer>> {
+        self.shown.as_ref()
+    }
+
     /// Shows `frame` (drawn by [`Session::render`], here or in another
     /// session at this size): only what differs from the screen before is
     /// sent, as for a frame drawn here.
-    pub fn draw_frame(&mut self, frame: &Buffer) -> io::Result<()> {
+    pub fn draw_frame(&mut self, frame: &Arc<Buffer>) -> io::Result<()> {
+        self.shown = Some(Arc::clone(frame));
         self.terminal.draw(|f| {
             let buf = f.buffer_mut();
             // (A frame's size is part of what it shows, so it fits.)
@@ -102,6 +120,20 @@ impl<W: Write> Session<W> {
             }
         })?;
         Ok(())
+    }
+
+    /// Shows `frame` by writing `bytes`: what [`Session::draw_frame`]
+    /// wrote in a session whose screen showed what this one's shows
+    /// ([`Session::shown`]) — the same change, not worked out again.
+    pub fn draw_frame_as(&mut self, frame: &Arc<Buffer>, bytes: &[u8]) -> io::Result<()> {
+        self.shown = Some(Arc::clone(frame));
+        let t = &mut self.terminal;
+        t.current_buffer_mut()
+            .content
+            .clone_from_slice(&frame.content);
+        t.backend_mut().write_all(bytes)?;
+        t.swap_buffers();
+        Backend::flush(t.backend_mut())
     }
 }
 
