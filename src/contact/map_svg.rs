@@ -22,11 +22,15 @@ fn escape(s: &str) -> String {
         .replace('"', "&quot;")
 }
 
-/// `map` (n × n, row-major, row 0 at the top) under `title`, with a legend
-/// line `note`.
+/// `map` (n × n, row-major, row 0 at the top) under `title`, with the
+/// note `note` under it (a line for each of its "; "-parts, so that it
+/// stays within the picture).
 pub fn map_svg(map: &[Node], n: usize, title: &str, note: &str) -> String {
     let cell = SIDE / n.max(1) as f64;
-    let (w, h) = (SIDE + 2.0 * MARGIN, SIDE + TOP + MARGIN + 30.0);
+    let parts: Vec<&str> = note.split("; ").collect();
+    let last = parts.len() - 1;
+    let top = TOP + 17.0 * last as f64;
+    let (w, h) = (SIDE + 2.0 * MARGIN, SIDE + top + MARGIN + 30.0);
     let mut s = String::new();
     let _ = write!(
         s,
@@ -41,14 +45,18 @@ pub fn map_svg(map: &[Node], n: usize, title: &str, note: &str) -> String {
         r#"<text x="{MARGIN}" y="26" font-family="sans-serif" font-size="16">{}</text>"#,
         escape(title)
     );
+    for (k, part) in parts.iter().enumerate() {
+        let _ = write!(
+            s,
+            r#"<text x="{MARGIN}" y="{}" font-family="sans-serif" font-size="13">{}{}</text>"#,
+            46 + 17 * k,
+            escape(part),
+            if k < last { ";" } else { "" }
+        );
+    }
     let _ = write!(
         s,
-        r#"<text x="{MARGIN}" y="46" font-family="sans-serif" font-size="13">{}</text>"#,
-        escape(note)
-    );
-    let _ = write!(
-        s,
-        r#"<rect x="{MARGIN}" y="{TOP}" width="{SIDE}" height="{SIDE}" fill="white" stroke="black"/>"#
+        r#"<rect x="{MARGIN}" y="{top}" width="{SIDE}" height="{SIDE}" fill="white" stroke="black"/>"#
     );
     if map.len() == n * n {
         for y in 0..n {
@@ -67,7 +75,7 @@ pub fn map_svg(map: &[Node], n: usize, title: &str, note: &str) -> String {
                         s,
                         r#"<rect x="{:.3}" y="{:.3}" width="{:.3}" height="{:.3}" fill="{fill}"/>"#,
                         MARGIN + x as f64 * cell,
-                        TOP + y as f64 * cell,
+                        top + y as f64 * cell,
                         run as f64 * cell,
                         cell
                     );
@@ -76,7 +84,7 @@ pub fn map_svg(map: &[Node], n: usize, title: &str, note: &str) -> String {
             }
         }
     }
-    let ly = TOP + SIDE + 22.0;
+    let ly = top + SIDE + 22.0;
     let _ = write!(
         s,
         r#"<rect x="{MARGIN}" y="{}" width="14" height="14" fill="{ELASTIC}"/><text x="{}" y="{ly}" font-family="sans-serif" font-size="13">elastic (0 &lt; p &lt; H)</text>"#,

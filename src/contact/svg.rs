@@ -79,12 +79,15 @@ pub fn contact(
             ("elastic", ELASTIC, |a| a.elastic, |r| r.elastic_area),
             ("plastic", PLASTIC, |a| a.plastic, |r| r.plastic_area),
         ];
+        // What is drawn, in pixels: the legend goes where none of it is.
+        let mut drawn: Vec<Vec<(i32, i32)>> = Vec::new();
         for (name, colour, pick, pick_sim) in series {
             let line: Vec<(f64, f64)> = theory
                 .iter()
                 .map(|(x, a)| (*x, pick(a)))
                 .filter(|&(_, y)| y > floor)
                 .collect();
+            drawn.push(line.iter().map(|p| chart.backend_coord(p)).collect());
             chart
                 .draw_series(LineSeries::new(line, colour.stroke_width(2)))
                 .map_err(err)?
@@ -95,15 +98,17 @@ pub fn contact(
                 .map(|r| (r.p_over_h, pick_sim(&r.sim)))
                 .filter(|&(_, y)| y > floor)
                 .collect();
+            drawn.extend(pts.iter().map(|p| vec![chart.backend_coord(p)]));
             chart
                 .draw_series(pts.into_iter().map(|p| Circle::new(p, 4, colour.filled())))
                 .map_err(err)?
                 .label(format!("{name}: simulation"))
                 .legend(move |(x, y)| Circle::new((x + 9, y), 4, colour.filled()));
         }
+        let corner = free_corner(&chart, &drawn, (170, 110));
         chart
             .configure_series_labels()
-            .position(SeriesLabelPosition::LowerRight)
+            .position(corner)
             .border_style(BLACK)
             .background_style(WHITE.mix(0.9))
             .draw()
@@ -113,6 +118,50 @@ pub fn contact(
     out.write_all(buf.as_bytes())?;
     out.flush()?;
     Ok(())
+}
+
+/// Where a legend of `size` pixels goes: the first corner of the plot (upper
+/// left, upper right, lower right, lower left) where no line or point of
+/// `drawn` (pixels) comes within 6 px of it, else the one with the fewest.
+fn free_corner<DB: DrawingBackend, CT: CoordTranslate>(
+    chart: &ChartContext<DB, CT>,
+    drawn: &[Vec<(i32, i32)>],
+    (w, h): (i32, i32),
+) -> SeriesLabelPosition {
+    let (xr, yr) = chart.plotting_area().get_pixel_range();
+    let (aw, ah) = (xr.end - xr.start, yr.end - yr.start);
+    let corners = [
+        (5, 5),
+        (aw - w - 5, 5),
+        (aw - w - 5, ah - h - 5),
+        (5, ah - h - 5),
+    ];
+    // Pixels each line passes (its segments sampled every pixel).
+    let pixels: Vec<(i32, i32)> = drawn
+        .iter()
+        .flat_map(|l| {
+            let one = (l.len() == 1).then(|| l[0]);
+            let segs = l.windows(2).flat_map(|s| {
+                let ((x0, y0), (x1, y1)) = (s[0], s[1]);
+                let n = (x1 - x0).abs().max((y1 - y0).abs()).clamp(1, 10_000);
+                (0..=n).map(move |k| (x0 + (x1 - x0) * k / n, y0 + (y1 - y0) * k / n))
+            });
+            one.into_iter().chain(segs)
+        })
+        .collect();
+    let hits = |(x, y): (i32, i32)| {
+        let (x0, y0) = (xr.start + x - 6, yr.start + y - 6);
+        let (x1, y1) = (xr.start + x + w + 6, yr.start + y + h + 6);
+        pixels
+            .iter()
+            .filter(|&&(px, py)| px >= x0 && px <= x1 && py >= y0 && py <= y1)
+            .count()
+    };
+    let best = corners
+        .into_iter()
+        .min_by_key(|&c| hits(c))
+        .unwrap_or((5, 5));
+    SeriesLabelPosition::Coordinate(best.0, best.1)
 }
 
 /// Plastic share of the contact area against ζ at p̄/H = [`SWEEP_LOAD`].

@@ -27,6 +27,13 @@ pub(super) fn caption_lines(
         .collect();
     let text = view_caption(view, state);
     lines.extend(wrap(&text, CAPTION_W).into_iter().map(|l| (l, BLACK)));
+    // The spectrum's fit in full, on lines of its own.
+    if let Some(fit) = (view == View::Spectrum)
+        .then(|| super::spectrum::fit_line(state))
+        .flatten()
+    {
+        lines.extend(wrap(&fit, CAPTION_W).into_iter().map(|l| (l, BLACK)));
+    }
     if !matches!(view, View::Slopes | View::Indices | View::Map) {
         return lines;
     }
