@@ -18,7 +18,13 @@ file), then
 - lines: Rq = `rms_height_from_profile` (m) and RΔq =
   `rms_slope_from_profile`,
 
-all without a window (SurfaceTopography applies none to these).
+all without a window (SurfaceTopography applies none to these), and the
+height parameters of ISO 25178-2 (maps) and ISO 4287 (lines) of the same
+detrended heights h about their mean m: Sa = mean |h - m| (m), Ssk =
+mean (h - m)^3 / Sq^3, Sku = mean (h - m)^4 / Sq^4 with Sq the
+`rms_height_from_area` (`rms_height_from_profile` for lines) above, and Sz =
+`max()` - `min()` (m), SurfaceTopography's own extremes (it computes no Sa,
+Ssk or Sku: those are NumPy's of its heights).
 
 requirements: SurfaceTopography==1.27.1
 """
@@ -60,14 +66,22 @@ def main():
         out.write("# Real-space rms height (m) and rms slope of the surfaces in this folder, by\n")
         out.write(f"# scripts/realspace_reference.py with SurfaceTopography {SurfaceTopography.__version__}"
                   f" (numpy {np.__version__}, scipy {scipy.__version__}).\n")
-        out.write("# file periodic pixel_size kind rms_height rms_slope\n")
+        out.write("# file periodic pixel_size kind rms_height rms_slope mean_abs_height skewness"
+                  " kurtosis max_height\n")
         for name, t, periodic, pixel, scale in cases:
             t = t.detrend("center" if periodic else "height")
             if t.dim == 2:
                 kind, h, s = "map", t.rms_height_from_area(), t.rms_gradient()
             else:
                 kind, h, s = "line", t.rms_height_from_profile(), t.rms_slope_from_profile()
-            out.write(f"{name} {int(periodic)} {r(pixel)} {kind} {r(h * scale)} {r(s)}\n")
+            z = np.ma.compressed(t.heights())
+            d = z - np.mean(z)
+            sa = np.mean(np.abs(d))
+            ssk = np.mean(d ** 3) / h ** 3
+            sku = np.mean(d ** 4) / h ** 4
+            sz = t.max() - t.min()
+            out.write(f"{name} {int(periodic)} {r(pixel)} {kind} {r(h * scale)} {r(s)} "
+                      f"{r(sa * scale)} {r(ssk)} {r(sku)} {r(sz * scale)}\n")
 
 
 if __name__ == "__main__":

@@ -272,6 +272,14 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
             Line::raw(pair(a, len(rs.rms_height), b, num(rs.rms_slope))),
         );
         at += 1;
+        // Where there is room: the height parameters beside Sq (Sa, Ssk,
+        // Sku, Sz; Ra, Rsk, Rku, Rz for a line).
+        if usize::from(area.height) >= lines.len() + 2 {
+            let [sa, ssk, sku, sz] = rs.heights();
+            lines.insert(7, Line::raw(pair(sa.0, len(sa.1), ssk.0, num(ssk.1))));
+            lines.insert(8, Line::raw(pair(sku.0, num(sku.1), sz.0, len(sz.1))));
+            at += 2;
+        }
     }
     // Where there is room: the longest wavelength (the power law's q0,
     // set with q0=… or l=… at the value prompt; a surface's own).
