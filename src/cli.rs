@@ -107,6 +107,12 @@ pub struct Setup {
     /// unit, else its lateral unit (said in a note).
     #[arg(long, value_name = "UNIT", requires = "surface", value_parser = parse_height_unit)]
     pub height_unit: Option<rough_surface::HeightUnit>,
+    /// The form removed from the surface's heights before its spectrum and
+    /// Sq: none, the mean, the least-squares plane (a line scan's line) or
+    /// the least-squares quadratic (curvature), as SurfaceTopography's
+    /// detrend modes [default: plane; mean with --periodic].
+    #[arg(long, value_enum, value_name = "MODE", requires = "surface")]
+    pub detrend: Option<DetrendArg>,
     /// The Hurst fit band of a measured surface: wavevectors in 1/m
     /// (1e6:1e8) or wavelengths with a unit (60nm:6um) [default: the
     /// spectrum's self-affine stretch, found from the data].
@@ -139,6 +145,26 @@ impl From<DirectionArg> for rough_surface::Direction {
     }
 }
 
+/// `--detrend`: the form removed from a measured surface's heights.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum DetrendArg {
+    None,
+    Mean,
+    Plane,
+    Curvature,
+}
+
+impl From<DetrendArg> for rough_surface::Detrend {
+    fn from(d: DetrendArg) -> Self {
+        match d {
+            DetrendArg::None => rough_surface::Detrend::None,
+            DetrendArg::Mean => rough_surface::Detrend::Mean,
+            DetrendArg::Plane => rough_surface::Detrend::Plane,
+            DetrendArg::Curvature => rough_surface::Detrend::Curvature,
+        }
+    }
+}
+
 impl Setup {
     /// How `--surface` is to be read.
     pub fn surface_options(&self) -> rough_surface::Options {
@@ -149,6 +175,7 @@ impl Setup {
             direction: self.direction.map(Into::into),
             channel: self.channel.clone(),
             height_unit: self.height_unit,
+            detrend: self.detrend.map(Into::into),
         }
     }
 }
@@ -163,6 +190,7 @@ impl BenchArgs {
             direction: self.direction.map(Into::into),
             channel: self.channel.clone(),
             height_unit: None,
+            detrend: None,
         }
     }
 }

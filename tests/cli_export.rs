@@ -43,6 +43,7 @@ fn usage_error(args: &[&str], words: &[&str]) {
     let out = run(args);
     let err = String::from_utf8(out.stderr).unwrap();
     assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+    assert_eq!(err.lines().count(), 1, "{args:?}: one line, {err}");
     assert!(out.stdout.is_empty());
     for w in words {
         assert!(err.contains(w), "{args:?}: wants {w:?} in {err}");

@@ -4,7 +4,7 @@
 use std::fmt;
 use std::path::{Path, PathBuf};
 
-use rough_surface::{Direction, Options, Problem, SurfaceError};
+use rough_surface::{Detrend, Direction, Options, Problem, SurfaceError};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
 use crate::surface::{relative_to, SurfaceSource};
@@ -67,6 +67,36 @@ pub struct SurfaceFile {
         deserialize_with = "de_pair"
     )]
     pub fit_band: Option<(f64, f64)>,
+    /// The form removed from the heights (`--detrend`), written plain,
+    /// `detrend: curvature`; absent: the default (the plane, the mean of
+    /// periodic data), so snapshots from before it load unchanged.
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "ser_detrend",
+        deserialize_with = "de_detrend"
+    )]
+    pub detrend: Option<Detrend>,
+}
+
+fn ser_detrend<S: Serializer>(v: &Option<Detrend>, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_unit_variant("Detrend", 0, v.unwrap_or_default().name())
+}
+
+fn de_detrend<'de, D: Deserializer<'de>>(d: D) -> Result<Option<Detrend>, D::Error> {
+    /// The names `detrend:` takes.
+    const MODES: &[&str] = &["none", "mean", "plane", "curvature"];
+    struct Mode;
+    impl serde::de::Visitor<'_> for Mode {
+        type Value = Detrend;
+        fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+            f.write_str("one of none, mean, plane, curvature")
+        }
+        fn visit_str<E: serde::de::Error>(self, v: &str) -> Result<Detrend, E> {
+            Detrend::parse(v).ok_or_else(|| E::unknown_variant(v, MODES))
+        }
+    }
+    d.deserialize_identifier(Mode).map(Some)
 }
 
 fn ser_pair<S: Serializer>(v: &Option<(f64, f64)>, s: S) -> Result<S::Ok, S::Error> {
@@ -218,6 +248,7 @@ pub(super) fn read(sf: &SurfaceFile, base: Option<&Path>) -> Result<SurfaceSourc
         direction: sf.direction.map(Into::into),
         channel: sf.channel.clone(),
         height_unit,
+        detrend: sf.detrend,
     };
     let mut src = SurfaceSource::read(&path, options).map_err(|e| {
         let missing = matches!(&e.problem, Problem::Read(_)) && !path.exists();
@@ -259,5 +290,6 @@ pub(super) fn file_of(src: &SurfaceSource, base: Option<&Path>) -> SurfaceFile {
         channel: src.options.channel.clone(),
         height_unit: src.options.height_unit.map(|u| u.name.to_string()),
         fit_band: src.fit_band,
+        detrend: src.options.detrend,
     }
 }

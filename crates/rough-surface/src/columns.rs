@@ -218,7 +218,7 @@ pub(crate) fn read(
     let (sx, sz, note) = scales(&scan.header, header, opts)?;
     let z: Vec<f64> = y.iter().map(|v| v / sz).collect();
     let l = n as f64 * dx / sx;
-    let mut c = spectrum::line(z, l, opts.periodic).map_err(|p| (None, p))?;
+    let mut c = spectrum::line(z, l, opts.periodic, opts.detrend_mode()).map_err(|p| (None, p))?;
     c.notes.extend(note);
     Ok((Kind::Line { n, l }, c))
 }

@@ -48,6 +48,9 @@ pub enum Problem {
         /// The heights were a tilted plane (line), not a constant.
         plane: bool,
     },
+    /// Nothing left after removing the least-squares quadratic
+    /// (`--detrend curvature`).
+    Quadratic,
     /// A line scan whose x is not uniformly spaced (or does not increase).
     NonUniform {
         x: f64,
@@ -123,6 +126,11 @@ impl fmt::Display for Problem {
                 f,
                 "the surface is flat: nothing is left after removing its tilt \
                  (the heights lie on a plane)"
+            ),
+            Problem::Quadratic => write!(
+                f,
+                "the surface is flat: nothing is left after removing its curvature \
+                 (--detrend curvature; the heights lie on a quadratic)"
             ),
             Problem::NonUniform {
                 x,

@@ -83,9 +83,14 @@ pub(crate) fn compute(
     }
     // Undefined points (NaN) are filled by the map pipeline.
     if let (Some(direction), false) = (opts.direction, g.is_profile()) {
-        let c =
-            crate::profiles::profiles(g.z, (g.nx, g.ny), (g.lx, g.ly), opts.periodic, direction)
-                .map_err(|p| (None, p))?;
+        let c = crate::profiles::profiles(
+            g.z,
+            (g.nx, g.ny),
+            (g.lx, g.ly),
+            (opts.periodic, opts.detrend_mode()),
+            direction,
+        )
+        .map_err(|p| (None, p))?;
         let kind = Kind::Profiles {
             direction,
             nx: g.nx,
@@ -96,9 +101,15 @@ pub(crate) fn compute(
         return Ok((kind, c));
     }
     let c = if g.is_profile() {
-        spectrum::line(g.z, g.lx, opts.periodic)
+        spectrum::line(g.z, g.lx, opts.periodic, opts.detrend_mode())
     } else {
-        spectrum::map(g.z, g.nx, g.ny, g.lx, g.ly, opts.periodic)
+        spectrum::map(
+            g.z,
+            (g.nx, g.ny),
+            (g.lx, g.ly),
+            opts.periodic,
+            opts.detrend_mode(),
+        )
     }
     .map_err(|p| (None, p))?;
     Ok((kind, c))

@@ -15,6 +15,7 @@ mod columns;
 mod colunits;
 mod decimal;
 mod describe;
+mod detrend;
 mod error;
 mod fill;
 mod fit;
@@ -39,6 +40,7 @@ mod units;
 mod x3p;
 
 pub use anisotropy::{Slopes, RATIO as ANISOTROPY_RATIO};
+pub use detrend::Detrend;
 pub use error::{Problem, SurfaceError};
 pub use fill::MAX_UNDEFINED;
 pub use fit::{PowerLawFit, Verdict, MIN_POINTS as MIN_FIT_POINTS};

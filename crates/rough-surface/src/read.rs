@@ -85,7 +85,7 @@ fn read_inner(path: &Path, opts: &Options) -> Result<Measured, SurfaceError> {
                 from_scan(None, rest.scan(&head)?, opts)
             };
             read()
-                .map(|r| measured(r, sha256, Vec::new()))
+                .map(|r| measured(r, sha256, Vec::new(), opts))
                 .map_err(|(line, problem)| fail(line, problem))
         }
     }
@@ -196,7 +196,7 @@ fn parse_file(
                 summary,
                 measurement: None,
             };
-            return Ok(measured(r, sha256, notes));
+            return Ok(measured(r, sha256, notes, opts));
         }
         sniff::Format::Text => {
             let (text, mut assumed) = sniff::text(bytes)?;
@@ -223,6 +223,15 @@ fn parse_file(
         (hash.join().expect("hash thread"), read)
     });
     let r = read?;
+    if let (Kind::Psd { .. }, Some(d)) = (&r.kind, opts.detrend) {
+        return Err((
+            None,
+            Problem::Option(format!(
+                "--detrend {} does not apply to a PSD table: it holds no heights",
+                d.name()
+            )),
+        ));
+    }
     if let (Kind::Psd { .. }, Some(u)) = (&r.kind, opts.height_unit) {
         return Err((
             None,
@@ -231,10 +240,11 @@ fn parse_file(
             )),
         ));
     }
-    Ok(measured(r, sha256, notes))
+    Ok(measured(r, sha256, notes, opts))
 }
 
 fn check_options(opts: &Options) -> Result<(), (Option<usize>, Problem)> {
+    crate::detrend::check_periodic(opts.detrend_mode(), opts.periodic).map_err(|p| (None, p))?;
     match opts.pixel_size {
         Some(p) if !(p.is_finite() && p > 0.0) => Err((
             None,
@@ -259,10 +269,17 @@ fn not_a_download(opts: &Options) -> Result<(), (Option<usize>, Problem)> {
 }
 
 /// The surface from what was read: the reader's `notes` before the
-/// pipeline's, the plausibility warning, the default fit band.
-pub(crate) fn measured(r: Reading, sha256: String, mut notes: Vec<String>) -> Measured {
+/// pipeline's, the form removed where `opts` chose another than the
+/// default, the plausibility warning, the default fit band.
+pub(crate) fn measured(
+    r: Reading,
+    sha256: String,
+    mut notes: Vec<String>,
+    opts: &Options,
+) -> Measured {
     let c = r.computed;
     notes.extend(c.notes);
+    notes.extend(crate::describe::detrend_note(&r.kind, opts));
     let heights = !matches!(r.kind, Kind::Psd { .. });
     notes.extend(units::plausibility(&c.table, heights));
     let band = band::self_affine(r.kind.dim(), &c.spectrum, &c.modes);
