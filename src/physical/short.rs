@@ -27,9 +27,34 @@ pub fn short_number(v: f64) -> String {
     }
 }
 
+/// `v` as the shortest decimal of at most 12 significant digits within
+/// 1e-12 of it (relative), else `v` itself: a ratio that is whole in
+/// exact arithmetic (a line's largest ζ = n/2, 96.00000000000001 after the
+/// rounding of q_max/q0) is 96.
+pub fn clean(v: f64) -> f64 {
+    if v == 0.0 || !v.is_finite() {
+        return v;
+    }
+    (1..=12)
+        .filter_map(|digits| format!("{v:.*e}", digits - 1).parse::<f64>().ok())
+        .find(|r| ((r - v) / v).abs() <= 1e-12)
+        .unwrap_or(v)
+}
+
 #[cfg(test)]
 mod tests {
-    use super::short_number;
+    use super::{clean, short_number};
+
+    #[test]
+    fn clean_numbers_are_the_nearest_short_ones() {
+        assert_eq!(clean(96.00000000000001), 96.0);
+        assert_eq!(clean(95.99999999999999), 96.0);
+        assert_eq!(clean(512.0000000000001), 512.0);
+        // A map's largest ζ, √2 · 96, is no short decimal: kept.
+        assert_eq!(clean(135.76450198781714), 135.76450198781714);
+        assert_eq!(clean(0.1 + 0.2), 0.3);
+        assert_eq!(clean(0.0), 0.0);
+    }
 
     #[test]
     fn four_digits_trimmed() {

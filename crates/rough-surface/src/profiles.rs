@@ -4,6 +4,8 @@
 //! profile along the direction windowed with the periodic Hann window of a
 //! line scan (none if periodic) and transformed; the profile moments and
 //! the display C1D are those of a line scan, averaged over the profiles.
+//! Beside them the real-space Rq and RΔq of the profiles, SurfaceTopography's
+//! `Rq` and `Rdq` of the topography (each profile about its own mean).
 
 use std::f64::consts::PI;
 
@@ -38,6 +40,7 @@ pub(crate) fn profiles(
             (t, ny, nx, ly)
         }
     };
+    let real = crate::realspace::profiles(&h, n, l, periodic);
     let fft = FftPlanner::<f64>::new().plan_fft_forward(n);
     let mut power = vec![0.0; n];
     let mut buf = vec![Complex::new(0.0, 0.0); n];
@@ -73,7 +76,7 @@ pub(crate) fn profiles(
         spectrum: bins.finish(),
         notes,
         slopes: None,
-        real: None,
+        real: Some(real),
         modes: bins.counts(),
         heights: None,
     })

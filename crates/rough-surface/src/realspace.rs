@@ -196,6 +196,38 @@ pub(crate) fn areal(
     sums.finish(true, h.len(), ix * jy)
 }
 
+/// A map's `count` profiles of n detrended heights over l each (rows of
+/// n), as SurfaceTopography's `Rq` and `Rdq` of a topography take them:
+/// each profile about its own mean, the differences along it (n − 1 a
+/// profile, n wrapping around when periodic; its derivative of a map that
+/// is not periodic leaves out the last profile too, as the gradient's
+/// stencil does); Ra, Rsk, Rku about the same means, Rz the profiles' mean
+/// peak-to-valley height.
+pub(crate) fn profiles(h: &[f64], n: usize, l: f64, periodic: bool) -> RealSpace {
+    let dx = l / n as f64;
+    let count = h.len() / n;
+    let (m, sloped) = if periodic {
+        (n, count)
+    } else {
+        (n - 1, count - 1)
+    };
+    let (mut s, mut range) = (Sums::ZERO, 0.0);
+    for (j, row) in h.chunks_exact(n).enumerate() {
+        let mean = row.iter().sum::<f64>() / n as f64;
+        let one = Sums::ZERO.add(row, mean);
+        range += one.max - one.min;
+        s = s.join(one);
+        if j < sloped {
+            s.slope += (0..m)
+                .map(|i| ((row[(i + 1) % n] - row[i]) / dx).powi(2))
+                .sum::<f64>();
+        }
+    }
+    let mut r = s.finish(false, h.len(), m * sloped);
+    r.max_height = range / count as f64;
+    r
+}
+
 /// A line of n detrended heights over l.
 pub(crate) fn profile(h: &[f64], l: f64, periodic: bool) -> RealSpace {
     let n = h.len();
