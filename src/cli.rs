@@ -160,6 +160,8 @@ impl Setup {
             direction: self.direction.map(Into::into),
             channel: self.channel.clone(),
             height_unit: self.height_unit,
+            lateral_unit: None,
+            max_undefined: None,
         }
     }
 }
@@ -174,6 +176,8 @@ impl BenchArgs {
             direction: self.direction.map(Into::into),
             channel: self.channel.clone(),
             height_unit: None,
+            lateral_unit: None,
+            max_undefined: None,
         }
     }
 }

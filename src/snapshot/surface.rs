@@ -218,6 +218,8 @@ pub(super) fn read(sf: &SurfaceFile, base: Option<&Path>) -> Result<SurfaceSourc
         direction: sf.direction.map(Into::into),
         channel: sf.channel.clone(),
         height_unit,
+        lateral_unit: None,
+        max_undefined: None,
     };
     let mut src = SurfaceSource::read(&path, options).map_err(|e| {
         let missing = matches!(&e.problem, Problem::Read(_)) && !path.exists();

@@ -69,6 +69,9 @@ pub enum Problem {
     Undefined {
         count: usize,
         total: usize,
+        /// The share filled at most (0–1): [`crate::MAX_UNDEFINED`] or
+        /// `--max-undefined`'s.
+        allowed: f64,
     },
     /// An undefined value (NaN, an empty cell) where only heights may be
     /// undefined: a position, a wavevector, a PSD value.
@@ -152,13 +155,17 @@ impl fmt::Display for Problem {
                 f,
                 "an undefined {what} (nan or an empty cell): only heights may be undefined"
             ),
-            Problem::Undefined { count, total } => write!(
+            Problem::Undefined {
+                count,
+                total,
+                allowed,
+            } => write!(
                 f,
                 "{count} of {total} points ({}) are undefined (NaN, empty or masked): \
-                 up to {} % are filled, more is refused; crop the data to the part \
-                 that was measured",
+                 up to {} are filled, more is refused; crop the data to the part \
+                 that was measured, or allow more with --max-undefined PERCENT",
                 crate::fill::share(*count, *total),
-                crate::MAX_UNDEFINED * 100.0
+                crate::fill::percent(*allowed)
             ),
             Problem::Format(s) => write!(f, "{s}"),
         }

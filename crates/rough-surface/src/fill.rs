@@ -35,6 +35,12 @@ pub(crate) fn note(count: usize, total: usize) -> String {
     )
 }
 
+/// A share 0–1 as a percentage for people: "35 %", "0.5 %".
+pub(crate) fn percent(share: f64) -> String {
+    let s = format!("{:.4}", share * 100.0);
+    format!("{} %", s.trim_end_matches('0').trim_end_matches('.'))
+}
+
 /// A share of points as a percentage for people: "0.4 %", "0.12 %",
 /// "2.5 %", "12.5 %", "< 0.01 %".
 pub(crate) fn share(count: usize, total: usize) -> String {
@@ -54,7 +60,8 @@ pub(crate) fn share(count: usize, total: usize) -> String {
 
 /// Fills the NaN heights of an nx × ny grid (rows of nx; a line is
 /// ny = 1). Returns the note to show, or `None` when every point was
-/// defined; refuses a grid with more than [`MAX_UNDEFINED`] undefined.
+/// defined; refuses a grid with more than [`MAX_UNDEFINED`] undefined
+/// (or the share `--max-undefined` allows, which the note then names).
 pub(crate) fn fill(
     h: &mut [f64],
     nx: usize,
@@ -67,11 +74,22 @@ pub(crate) fn fill(
         return Ok(None);
     }
     let total = h.len();
-    if count as f64 > MAX_UNDEFINED * total as f64 || count == total {
-        return Err(Problem::Undefined { count, total });
+    let allowed = crate::allow::max_undefined();
+    let limit = allowed.unwrap_or(MAX_UNDEFINED);
+    if count as f64 > limit * total as f64 || count == total {
+        return Err(Problem::Undefined {
+            count,
+            total,
+            allowed: limit,
+        });
     }
     solve(h, nx, ny, periodic);
-    Ok(Some(note(count, total)))
+    let mut note = note(count, total);
+    // Said where the default would have refused.
+    if let Some(a) = allowed.filter(|_| count as f64 > MAX_UNDEFINED * total as f64) {
+        note.push_str(&format!(" (--max-undefined {})", percent(a)));
+    }
+    Ok(Some(note))
 }
 
 /// The neighbours of grid point (i, j) inside the stencil.
@@ -260,8 +278,22 @@ mod tests {
             fill(&mut h, 10, 10, false),
             Err(Problem::Undefined {
                 count: 11,
-                total: 100
+                total: 100,
+                allowed: MAX_UNDEFINED
             })
         );
+        // --max-undefined 12 % fills them and says so.
+        let opts = crate::Options {
+            max_undefined: Some(0.12),
+            ..crate::Options::default()
+        };
+        let note = crate::allow::with(&opts, || fill(&mut h, 10, 10, false));
+        assert_eq!(
+            note,
+            Ok(Some(
+                "11 undefined points (11 %) filled (--max-undefined 12 %)".into()
+            ))
+        );
+        assert_eq!(percent(0.355), "35.5 %");
     }
 }

@@ -6,7 +6,9 @@
 //! contact.engineering), so that its numbers are the reference; docs/model.md,
 //! "Measured surfaces", states them.
 
+mod allow;
 mod anisotropy;
+mod assumed;
 mod band;
 mod bins;
 mod ce;
@@ -24,6 +26,7 @@ mod matrix;
 mod prepare;
 mod profiles;
 mod psd;
+mod readers;
 mod realspace;
 mod sniff;
 mod spectrum;
@@ -77,6 +80,12 @@ pub struct Options {
     pub channel: Option<String>,
     /// The heights' unit, whatever the file says (`--height-unit`).
     pub height_unit: Option<HeightUnit>,
+    /// The lateral unit (sizes, x positions) of a file that gives none
+    /// (`--lateral-unit`).
+    pub lateral_unit: Option<HeightUnit>,
+    /// The largest share of undefined points filled, 0 to 1
+    /// (`--max-undefined PERCENT`); [`MAX_UNDEFINED`] when `None`.
+    pub max_undefined: Option<f64>,
 }
 
 /// A direction on a map: x along its rows, y across them.
@@ -234,7 +243,7 @@ pub fn read_heights(path: &Path, opts: &Options) -> Result<Measured, SurfaceErro
 
 fn read_keeping(path: &Path, opts: &Options, keep: bool) -> Result<Measured, SurfaceError> {
     let before = KEEP_HEIGHTS.with(|k| k.replace(keep));
-    let r = read_inner(path, opts);
+    let r = allow::with(opts, || read_inner(path, opts));
     KEEP_HEIGHTS.with(|k| k.set(before));
     r
 }
@@ -252,10 +261,7 @@ fn read_inner(path: &Path, opts: &Options) -> Result<Measured, SurfaceError> {
     if meta.len() > MAX_BYTES {
         return Err(fail(None, Problem::TooLarge(meta.len())));
     }
-    let ext = path
-        .extension()
-        .map(|e| e.to_string_lossy().to_ascii_lowercase())
-        .unwrap_or_default();
+    let ext = readers::gz::extension(path);
     let whole = |bytes: Vec<u8>| {
         if bytes.len() as u64 > MAX_BYTES {
             return Err(fail(None, Problem::TooLarge(bytes.len() as u64)));
@@ -318,16 +324,42 @@ pub fn sha256_hex(bytes: &[u8]) -> String {
 /// - any other format recognised (NetCDF, HDF5, .npy, TIFF, Zygo, Keyence,
 ///   Nanoscope …) is refused with a line saying how to convert it.
 pub fn parse(bytes: &[u8], opts: &Options) -> Result<Measured, (Option<usize>, Problem)> {
-    parse_file(bytes, opts, "")
+    allow::with(opts, || parse_file(bytes, opts, ""))
 }
 
-/// The heights of an x3p or .gwy file as the file holds them, before any
+/// [`parse`] of a file named `name`: its extension names the formats that
+/// have no magic bytes of their own (Sensofar `.plu`), and a `.gz`'s
+/// inner name the format of what it holds.
+pub fn parse_named(
+    bytes: &[u8],
+    name: &str,
+    opts: &Options,
+) -> Result<Measured, (Option<usize>, Problem)> {
+    let ext = readers::gz::extension(Path::new(name));
+    allow::with(opts, || parse_file(bytes, opts, &ext))
+}
+
+/// The heights of a binary file (x3p, .gwy, an instrument's own format;
+/// gzip-compressed too) as the file holds them, in metres, before any
 /// detrending (undefined points NaN); text and other formats are refused.
 pub fn read_grid(bytes: &[u8], opts: &Options) -> Result<Grid, (Option<usize>, Problem)> {
-    match sniff::format(bytes, "") {
+    if bytes.starts_with(readers::gz::MAGIC) {
+        return read_grid(&readers::gz::unpack(bytes)?, opts);
+    }
+    grid_of(&sniff::format(bytes, ""), bytes, opts)
+}
+
+/// The grid of `bytes` in `format`.
+fn grid_of(
+    format: &sniff::Format,
+    bytes: &[u8],
+    opts: &Options,
+) -> Result<Grid, (Option<usize>, Problem)> {
+    match format {
         sniff::Format::X3p => x3p::read(bytes),
         sniff::Format::Gwy => gwy::read(bytes, opts.channel.as_deref()),
-        sniff::Format::Other(s) => Err((None, Problem::Format(s))),
+        sniff::Format::Native(n) => readers::read(*n, bytes, opts),
+        sniff::Format::Other(s) => Err((None, Problem::Format(s.clone()))),
         sniff::Format::Text => Err((
             None,
             Problem::Format("text: not an x3p or .gwy file".to_string()),
@@ -343,6 +375,18 @@ fn parse_file(
     ext: &str,
 ) -> Result<Measured, (Option<usize>, Problem)> {
     check_options(opts)?;
+    if bytes.starts_with(readers::gz::MAGIC) {
+        let inner = readers::gz::unpack(bytes)?;
+        if inner.starts_with(readers::gz::MAGIC) {
+            return Err((
+                None,
+                Problem::Format("a gzip-compressed file inside a gzip-compressed file".into()),
+            ));
+        }
+        let mut m = parse_file(&inner, opts, readers::gz::inner(ext))?;
+        m.sha256 = sha256_hex(bytes);
+        return Ok(m);
+    }
     let format = sniff::format(bytes, ext);
     let no_channels = || {
         Err((
@@ -357,22 +401,15 @@ fn parse_file(
     if opts.channel.is_some() && format == sniff::Format::X3p {
         return no_channels();
     }
-    if let (Some(u), sniff::Format::X3p | sniff::Format::Gwy) = (opts.height_unit, &format) {
-        return Err((
-            None,
-            Problem::Option(format!(
-                "--height-unit {u} applies to text files: x3p and .gwy files carry their units"
-            )),
-        ));
-    }
     let mut notes = Vec::new();
     let text = match format {
         sniff::Format::Other(s) => return Err((None, Problem::Format(s))),
-        sniff::Format::X3p | sniff::Format::Gwy => {
+        sniff::Format::X3p | sniff::Format::Gwy | sniff::Format::Native(_) => {
             not_a_download(opts)?;
             let (sha256, read) = std::thread::scope(|s| {
                 let hash = s.spawn(|| sha256_hex(bytes));
-                let read = read_grid(bytes, opts).and_then(|g| grid::compute(g, opts, &mut notes));
+                let read =
+                    grid_of(&format, bytes, opts).and_then(|g| grid::compute(g, opts, &mut notes));
                 (hash.join().expect("hash thread"), read)
             });
             let (kind, computed) = read?;
@@ -385,10 +422,10 @@ fn parse_file(
                     )),
                 ));
             }
-            let what = if format == sniff::Format::X3p {
-                "x3p"
-            } else {
-                "Gwyddion .gwy"
+            let what = match format {
+                sniff::Format::X3p => "x3p",
+                sniff::Format::Native(n) => n.name(),
+                _ => "Gwyddion .gwy",
             };
             let summary = format!("{what} {}", describe(&kind, opts, ""));
             let r = Reading {

@@ -494,5 +494,7 @@ pub(crate) fn read(bytes: &[u8]) -> Result<Grid, Failure> {
         ly: if ny == 1 { 0.0 } else { ny as f64 * dy },
         z,
         notes,
+        format: "x3p",
+        assumed: crate::assumed::Assumed::default(),
     })
 }
