@@ -4,7 +4,7 @@
 
 use std::cell::Cell;
 
-use crate::Options;
+use crate::measured::Options;
 
 std::thread_local! {
     /// `--max-undefined` of the read under way on this thread.

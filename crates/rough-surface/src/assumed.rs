@@ -5,8 +5,8 @@
 //! what they are, and are refused where the file gives its units.
 
 use crate::error::{Failure, Problem};
+use crate::measured::Options;
 use crate::units::canonical;
-use crate::Options;
 
 /// What a binary reader assumed; `None` where the file gave the unit.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]

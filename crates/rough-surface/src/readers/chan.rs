@@ -3,7 +3,7 @@
 //! note that lists the others.
 
 use crate::error::{Failure, Problem};
-use crate::header::per_metre;
+use crate::units::per_metre;
 
 /// One channel, as people know it.
 #[derive(Clone, Debug, PartialEq)]

@@ -18,7 +18,7 @@ use super::chan::{self, Chan};
 use crate::assumed::Assumed;
 use crate::error::Failure;
 use crate::grid::Grid;
-use crate::header::per_metre;
+use crate::units::per_metre;
 
 pub(crate) const NAME: &str = "Igor .ibw";
 

@@ -29,7 +29,7 @@ mod sur;
 
 use crate::error::Failure;
 use crate::grid::Grid;
-use crate::Options;
+use crate::measured::Options;
 
 /// The formats read natively.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -15,7 +15,7 @@ use super::bin::{flip_rows, values, Bytes, Order};
 use super::chan::{self, Chan};
 use crate::error::Failure;
 use crate::grid::Grid;
-use crate::header::per_metre;
+use crate::units::per_metre;
 
 pub(crate) const NAME: &str = "Nanosurf .nid";
 pub(crate) const MAGIC: &[u8] = b"[DataSet]\r\n";

@@ -19,7 +19,7 @@ use super::bin::{values, Bytes, Order};
 use super::chan::{self, Chan};
 use crate::error::Failure;
 use crate::grid::Grid;
-use crate::header::per_metre;
+use crate::units::per_metre;
 
 pub(crate) const NAME: &str = "Bruker .opdx";
 pub(crate) const MAGIC: &[u8] = b"VCA DATA\x01\x00\x00\x55";

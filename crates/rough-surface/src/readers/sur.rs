@@ -15,7 +15,7 @@
 use super::bin::{flip_columns, flip_rows, values, Bytes, Order};
 use crate::error::Failure;
 use crate::grid::Grid;
-use crate::header::per_metre;
+use crate::units::per_metre;
 
 pub(crate) const NAME: &str = "Digital Surf .sur";
 pub(crate) const MAGIC: &[u8] = b"DIGITAL SURF";
