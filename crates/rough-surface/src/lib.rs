@@ -49,6 +49,6 @@ pub use grid::Grid;
 pub use limits::MAX_BYTES;
 pub use measured::{Direction, Kind, Measured, Options};
 pub use prepare::Heights;
-pub use read::{parse, parse_named, read, read_grid, read_heights, sha256_hex};
+pub use read::{parse, parse_named, read, read_grid, read_grid_named, read_heights, sha256_hex};
 pub use realspace::RealSpace;
 pub use units::HeightUnit;

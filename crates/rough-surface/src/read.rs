@@ -133,10 +133,31 @@ pub fn parse_named(
 /// gzip-compressed too) as the file holds them, in metres, before any
 /// detrending (undefined points NaN); text and other formats are refused.
 pub fn read_grid(bytes: &[u8], opts: &Options) -> Result<Grid, (Option<usize>, Problem)> {
+    read_grid_named(bytes, "", opts)
+}
+
+/// [`read_grid`] of a file named `name` (as [`parse_named`]).
+pub fn read_grid_named(
+    bytes: &[u8],
+    name: &str,
+    opts: &Options,
+) -> Result<Grid, (Option<usize>, Problem)> {
+    let ext = readers::gz::extension(Path::new(name));
     if bytes.starts_with(readers::gz::MAGIC) {
-        return read_grid(&readers::gz::unpack(bytes)?, opts);
+        let inner = readers::gz::unpack(bytes)?;
+        if inner.starts_with(readers::gz::MAGIC) {
+            return Err((
+                None,
+                Problem::Format("a gzip-compressed file inside a gzip-compressed file".into()),
+            ));
+        }
+        return grid_of(
+            &sniff::format(&inner, readers::gz::inner(&ext)),
+            &inner,
+            opts,
+        );
     }
-    grid_of(&sniff::format(bytes, ""), bytes, opts)
+    grid_of(&sniff::format(bytes, &ext), bytes, opts)
 }
 
 /// The grid of `bytes` in `format`.

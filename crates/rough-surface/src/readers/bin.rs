@@ -59,11 +59,12 @@ impl<'a> Bytes<'a> {
         self.b.len()
     }
 
-    /// A refusal: "FORMAT: s".
+    /// A refusal: "FORMAT: s", on one line whatever names from the file
+    /// it quotes.
     pub fn bad(&self, s: impl AsRef<str>) -> Failure {
         (
             None,
-            Problem::Format(format!("{}: {}", self.format, s.as_ref())),
+            Problem::Format(format!("{}: {}", self.format, printable(s.as_ref(), 400))),
         )
     }
 
@@ -141,6 +142,20 @@ pub(crate) fn values<T: Num>(raw: &[u8], o: Order) -> impl Iterator<Item = T> + 
         Order::Little => T::le(c),
         Order::Big => T::be(c),
     })
+}
+
+/// Text from a file for a message: control characters as `?`, at most
+/// `max` characters (then `…`).
+pub(crate) fn printable(s: &str, max: usize) -> String {
+    let mut out: String = s
+        .chars()
+        .take(max)
+        .map(|c| if c.is_control() { '?' } else { c })
+        .collect();
+    if s.chars().nth(max).is_some() {
+        out.push('…');
+    }
+    out
 }
 
 /// Latin-1 bytes up to the first NUL, trimmed of spaces.

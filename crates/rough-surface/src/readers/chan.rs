@@ -26,7 +26,8 @@ impl Chan {
         } else {
             &self.unit
         };
-        format!("{n} '{}' ({unit})", self.title)
+        let p = |s: &str| super::bin::printable(s, 60);
+        format!("{n} '{}' ({})", p(&self.title), p(unit))
     }
 }
 

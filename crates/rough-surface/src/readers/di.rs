@@ -164,6 +164,10 @@ pub(crate) fn read(bytes: &[u8], choice: Option<&str>) -> Result<Grid, Failure> 
     if bytes.starts_with(b"?*") {
         return Err(b.bad("the data are stored as text: files with binary data are read"));
     }
+    let head: Vec<u8> = bytes.iter().take(18).map(u8::to_ascii_lowercase).collect();
+    if head.starts_with(b"\\*force file list") {
+        return Err(b.bad("a file of force curves, not a topography"));
+    }
     let secs = sections(&b)?;
     match secs.first() {
         Some((n, _)) if FILE_LIST.contains(&n.as_str()) => {}
@@ -325,6 +329,17 @@ pub(crate) fn read(bytes: &[u8], choice: Option<&str>) -> Result<Grid, Failure> 
     }
     if images.is_empty() {
         return Err(b.bad("no image section: nothing to read"));
+    }
+    // Every image in the file, or it was cut short.
+    for (k, im) in images.iter().enumerate() {
+        let end = (im.offset as u64).saturating_add(im.nx * im.ny * im.elsize as u64);
+        if end > bytes.len() as u64 {
+            return Err(b.bad(format!(
+                "image {k} ends at byte {end} but the file holds {} bytes: it is truncated \
+                 or damaged",
+                bytes.len()
+            )));
+        }
     }
     // A channel is heights when its scale is a length (its unit alone may be
     // one without a soft scale to make it so).

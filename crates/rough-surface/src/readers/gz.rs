@@ -46,17 +46,22 @@ fn bad(s: impl AsRef<str>) -> Failure {
 /// The bytes a gzip file holds (several members one after the other, as
 /// `gzip` writes them when files are concatenated, are one file).
 pub(crate) fn unpack(bytes: &[u8]) -> Result<Vec<u8>, Failure> {
+    unpack_up_to(bytes, crate::MAX_BYTES)
+}
+
+/// [`unpack`], refusing more than `limit` bytes (unpacking stops there).
+fn unpack_up_to(bytes: &[u8], limit: u64) -> Result<Vec<u8>, Failure> {
     let mut out = Vec::new();
-    let mut d = flate2::read::MultiGzDecoder::new(bytes).take(crate::MAX_BYTES + 1);
+    let mut d = flate2::read::MultiGzDecoder::new(bytes).take(limit + 1);
     d.read_to_end(&mut out).map_err(|e| {
         bad(format!(
             "cannot be unpacked ({e}): it is truncated or damaged"
         ))
     })?;
-    if out.len() as u64 > crate::MAX_BYTES {
+    if out.len() as u64 > limit {
         return Err(bad(format!(
             "unpacks to more than the {} MB read",
-            crate::MAX_BYTES >> 20
+            limit >> 20
         )));
     }
     if out.is_empty() {
@@ -81,5 +86,22 @@ mod tests {
             .1
             .to_string()
             .contains("truncated"));
+    }
+
+    #[test]
+    fn bombs_are_cut_off() {
+        use std::io::Write;
+        // 3 MB of zeros as three gzip members of 1 MB (3 KB in all): the
+        // unpacking stops past the limit (512 MB for a file; 2 MB here, so
+        // that the test is quick) and says so.
+        let mut e = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::best());
+        e.write_all(&vec![0u8; 1 << 20]).unwrap();
+        let member = e.finish().unwrap();
+        let bomb = member.repeat(3);
+        assert_eq!(unpack_up_to(&bomb, 3 << 20).unwrap().len(), 3 << 20);
+        assert_eq!(
+            unpack_up_to(&bomb, 2 << 20).unwrap_err().1.to_string(),
+            "gzip-compressed file: unpacks to more than the 2 MB read"
+        );
     }
 }

@@ -123,6 +123,13 @@ pub(crate) fn read(bytes: &[u8], choice: Option<&str>) -> Result<Grid, Failure> 
     if sets.is_empty() {
         return Err(b.bad("no data set"));
     }
+    if at > bytes.len() {
+        return Err(b.bad(format!(
+            "the data sets end at byte {at} but the file holds {} bytes: it is truncated \
+             or damaged",
+            bytes.len()
+        )));
+    }
     let chans: Vec<Chan> = sets.iter().map(|s| s.chan.clone()).collect();
     let n = chan::pick(NAME, &chans, choice, false)?;
     let s = &sets[n];

@@ -71,6 +71,13 @@ pub(crate) fn read(bytes: &[u8], choice: Option<&str>) -> Result<Grid, Failure> 
         blocks.push(Block { name, ty, at, len });
         at = at.saturating_add(len);
     }
+    if at > bytes.len() {
+        return Err(b.bad(format!(
+            "the directory lists {at} bytes of blocks where the file holds {}: it is \
+             truncated or damaged",
+            bytes.len()
+        )));
+    }
     let find = |n: &str| blocks.iter().find(|k| k.name == n);
     let value = |n: &str| find(n).and_then(|k| scalar(&b, k));
     let wavelength = value("Wavelength")

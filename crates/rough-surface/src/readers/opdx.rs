@@ -97,7 +97,7 @@ impl<'a> Parser<'a> {
             return Err(self.b.bad(format!("more than {MAX_ITEMS} items")));
         }
         let name = self.name("an item's name")?;
-        let path = format!("{prefix}/{name}");
+        let path = super::bin::printable(&format!("{prefix}/{name}"), 200);
         let ty = self.u8("an item's type")?;
         let v = match ty {
             0x7F => return Ok(false),
@@ -283,7 +283,7 @@ pub(crate) fn read(bytes: &[u8], choice: Option<&str>) -> Result<Grid, Failure> 
         let Value::Data(pos, len) = get(&at("Array"))?.clone() else {
             return Err(b.bad("the profile's 'Array' is not an array"));
         };
-        if len != 8 * points as usize + 5 {
+        if (len as u64).checked_sub(5) != points.checked_mul(8) {
             return Err(b.bad(format!(
                 "the profile's array of {len} bytes does not hold its {points} points"
             )));
@@ -301,7 +301,8 @@ pub(crate) fn read(bytes: &[u8], choice: Option<&str>) -> Result<Grid, Failure> 
         let Value::Matrix(y, x, pos, len) = get(&at("Matrix"))?.clone() else {
             return Err(b.bad("the map's 'Matrix' is not a matrix"));
         };
-        if (x, y) != (px, py) || len as u64 != 4 * x * y {
+        if (x, y) != (px, py) || Some(len as u64) != x.checked_mul(y).and_then(|p| p.checked_mul(4))
+        {
             return Err(b.bad(format!(
                 "the matrix of {x} × {y} points and {len} bytes does not fit the map's {px} × {py}"
             )));
