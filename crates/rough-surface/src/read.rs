@@ -12,6 +12,7 @@ use crate::error::{Problem, SurfaceError};
 use crate::grid::Grid;
 use crate::limits::MAX_BYTES;
 use crate::measured::{Kind, Measured, Options};
+use crate::units::Advice;
 use crate::{
     band, ce, channels, columns, grid, gwy, header, matrix, readers, sniff, spectrum, stream, text,
     units, x3p,
@@ -239,11 +240,18 @@ fn parse_file(
                 _ => "Gwyddion .gwy",
             };
             let summary = format!("{what} {}", describe(&kind, opts, ""));
+            // The file's units, unless the reader said it assumed them.
+            let assumed = notes.iter().any(|n| n.starts_with("heights read in"));
             let r = Reading {
                 kind,
                 computed,
                 summary,
                 measurement: None,
+                advice: if assumed {
+                    Advice::Height
+                } else {
+                    Advice::File(what)
+                },
             };
             return Ok(measured(r, sha256, notes));
         }
@@ -312,8 +320,11 @@ fn not_a_download(opts: &Options) -> Result<(), (Option<usize>, Problem)> {
 pub(crate) fn measured(r: Reading, sha256: String, mut notes: Vec<String>) -> Measured {
     let c = r.computed;
     notes.extend(c.notes);
-    let heights = !matches!(r.kind, Kind::Psd { .. });
-    notes.extend(units::plausibility(&c.table, heights));
+    let advice = match r.kind {
+        Kind::Psd { .. } => Advice::Table,
+        _ => r.advice,
+    };
+    notes.extend(units::plausibility(&c.table, advice));
     let band = band::self_affine(r.kind.dim(), &c.spectrum, &c.modes);
     Measured {
         kind: r.kind,
@@ -337,11 +348,16 @@ pub(crate) struct Reading {
     computed: spectrum::Computed,
     summary: String,
     measurement: Option<String>,
+    /// What the plausibility line may advise.
+    advice: Advice,
 }
 
 fn read_text(text: &str, opts: &Options) -> Result<Reading, (Option<usize>, Problem)> {
     let head = text::head(text)?;
     if ce::is_ce(&head.header) {
+        if let Some(u) = opts.lateral_unit {
+            return Err(no_lateral(u, "a contact.engineering download"));
+        }
         let r = ce::read(text, opts)?;
         let summary = describe(&r.kind, opts, &r.label);
         return Ok(Reading {
@@ -349,6 +365,7 @@ fn read_text(text: &str, opts: &Options) -> Result<Reading, (Option<usize>, Prob
             computed: r.computed,
             summary,
             measurement: r.measurement,
+            advice: Advice::Table,
         });
     }
     not_a_download(opts)?;
@@ -392,10 +409,20 @@ pub(crate) fn from_scan(
             )),
         ));
     }
+    let columns = text.is_some() && !header.is_matrix(scan.cols);
+    if let (Some(u), false) = (opts.lateral_unit, columns) {
+        return Err(no_lateral(
+            u,
+            "a height matrix: its sizes' unit is its header's ('# Width: 12 µm')",
+        ));
+    }
     let (kind, computed) = match text {
-        Some(text) if !header.is_matrix(scan.cols) => columns::read(text, scan, &header, opts)?,
+        Some(text) if columns => columns::read(text, scan, &header, opts)?,
         _ => matrix::read(scan, &header, opts)?,
     };
+    if let (Some(u), Kind::Psd { .. }) = (opts.lateral_unit, kind) {
+        return Err(no_lateral(u, "a PSD table"));
+    }
     if let (Some(d), false) = (opts.direction, matches!(kind, Kind::Profiles { .. })) {
         return Err((
             None,
@@ -415,5 +442,21 @@ pub(crate) fn from_scan(
         computed,
         summary,
         measurement: None,
+        advice: if columns {
+            Advice::HeightOrLateral
+        } else {
+            Advice::Height
+        },
     })
+}
+
+/// `--lateral-unit` on a file whose x unit is not to be said.
+fn no_lateral(u: crate::units::HeightUnit, what: &str) -> (Option<usize>, Problem) {
+    (
+        None,
+        Problem::Option(format!(
+            "--lateral-unit {u} applies to an x z line scan and to files that give no \
+             lateral unit, not to {what}"
+        )),
+    )
 }
