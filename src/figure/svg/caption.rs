@@ -80,10 +80,25 @@ pub(crate) fn view_caption(view: View, state: &State) -> String {
         View::Load => "Contact areas against the load at the parameters above, with the \
                        initial slope drawn from the origin."
             .to_string(),
-        View::Spectrum => "The surface's power spectrum, the power law fitted over its fit \
-                           band (the grey lines: the spectrum's self-affine stretch unless set) \
-                           and the cutoff q1 = ζ q0."
-            .to_string(),
+        View::Spectrum => {
+            let fit = crate::figure::SpectrumSeries::of(state)
+                .ok()
+                .and_then(|s| Some((s.power_law?, s.fit_h_rms)))
+                .map(|(f, h)| {
+                    format!(
+                        " ({}…{} /m): {}",
+                        crate::physical::short_number(f.q_lo),
+                        crate::physical::short_number(f.q_hi),
+                        super::spectrum::fit_words(&f, h)
+                    )
+                })
+                .unwrap_or_default();
+            format!(
+                "The surface's power spectrum, the power law fitted over its fit band{fit} \
+                 (the grey lines: the band's ends, the spectrum's self-affine stretch unless \
+                 set) and the cutoff q1 = ζ q0."
+            )
+        }
         View::Contact => "The boundary-element simulation of the scene's surface beside the \
                           theory's areas."
             .to_string(),

@@ -17,6 +17,10 @@ const PAD: i32 = 6;
 const SAMPLE_W: i32 = 22;
 /// Distance from the plot's edges.
 const INSET: i32 = 8;
+/// Labels longer than this many characters are wrapped onto further
+/// rows, so that no legend grows wider than a third of a picture (a
+/// single 120-character label once squeezed the plot to 15 px).
+const MAX_CHARS: usize = 40;
 
 /// How a legend entry's sample is drawn.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -59,16 +63,26 @@ impl Legend {
         });
     }
 
+    /// Each entry's label in rows of at most [`MAX_CHARS`] characters.
+    fn rows(&self) -> Vec<Vec<String>> {
+        self.entries
+            .iter()
+            .map(|e| super::wrap(&e.label, MAX_CHARS))
+            .collect()
+    }
+
     /// The box's size in pixels.
     pub fn size(&self) -> (i32, i32) {
-        let chars = self
-            .entries
+        let rows = self.rows();
+        let chars = rows
             .iter()
-            .map(|e| e.label.chars().count())
+            .flatten()
+            .map(|l| l.chars().count())
             .max()
             .unwrap_or(0);
         let w = PAD * 3 + SAMPLE_W + (chars as f64 * CHAR_W).ceil() as i32;
-        let h = PAD * 2 + ROW_H * self.entries.len() as i32;
+        let n: usize = rows.iter().map(|r| r.len().max(1)).sum();
+        let h = PAD * 2 + ROW_H * n as i32;
         (w, h)
     }
 
@@ -106,8 +120,9 @@ impl Legend {
         .map_err(plot_err)?;
         root.draw(&Rectangle::new([(bx, by), (bx + w, by + h)], BLACK))
             .map_err(plot_err)?;
-        for (k, e) in self.entries.iter().enumerate() {
-            let y = by + PAD + ROW_H * k as i32 + ROW_H / 2;
+        let mut row = 0;
+        for (e, lines) in self.entries.iter().zip(self.rows()) {
+            let y = by + PAD + ROW_H * row + ROW_H / 2;
             let (sx, ex) = (bx + PAD, bx + PAD + SAMPLE_W);
             match e.sample {
                 Sample::Solid(width) => root
@@ -124,9 +139,13 @@ impl Legend {
                     ))
                     .map_err(plot_err)?,
             }
-            let font = ("sans-serif", 14).into_font();
-            root.draw(&Text::new(e.label.clone(), (ex + PAD, y - 7), font))
-                .map_err(plot_err)?;
+            for (k, l) in lines.iter().enumerate() {
+                let font = ("sans-serif", 14).into_font();
+                let ly = y - 7 + ROW_H * k as i32;
+                root.draw(&Text::new(l.clone(), (ex + PAD, ly), font))
+                    .map_err(plot_err)?;
+            }
+            row += lines.len().max(1) as i32;
         }
         Ok(Placed::Inside)
     }

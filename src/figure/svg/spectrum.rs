@@ -104,12 +104,11 @@ pub(super) fn draw(area: &Area, state: &State, room: Option<u32>) -> anyhow::Res
             .iter()
             .map(|&q| s.fit_at(q).unwrap_or(f64::NAN))
             .collect();
-        let label = format!(
-            "power law fitted over the fit band {}…{} /m: {}",
-            short_number(f.q_lo),
-            short_number(f.q_hi),
-            fit_words(&f, s.fit_h_rms)
-        );
+        // In short; the band, h_rms and the points are in the caption.
+        let label = match f.verdict().words() {
+            Some(w) => format!("power law fit: {w}"),
+            None => format!("power law fit, H = {}", short_number(f.hurst)),
+        };
         line(&mut c, &mut lg, xy, (&qs, &ys), FIT, Stroke::Dashed, &label)?;
         let r = y.range();
         let mut named = false;
@@ -163,8 +162,8 @@ pub fn fit_words(f: &rough_surface::PowerLawFit, h_rms: Option<f64>) -> String {
     match (f.verdict().words(), h_rms) {
         (Some(w), _) => format!("{h} — {w} ({} points)", f.points),
         (None, Some(hr)) => format!(
-            "{h}, h_rms of the fitted power law {} m ({} points)",
-            short_number(hr),
+            "{h}, h_rms of the fitted power law {} ({} points)",
+            short_length(hr),
             f.points
         ),
         (None, None) => format!("{h} ({} points)", f.points),
