@@ -15,6 +15,14 @@ use roughtui::scene::State;
 use roughtui::snapshot::{load_file, save_new};
 use roughtui::surface::SurfaceSource;
 
+fn container() -> String {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("crates/rough-surface/tests/data/instruments/container-2.zip")
+        .to_str()
+        .unwrap()
+        .to_string()
+}
+
 fn data(name: &str) -> String {
     Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("crates/rough-surface/tests/data/instruments")
@@ -155,4 +163,71 @@ fn units_channel_and_share_are_recorded_in_a_snapshot() {
     );
     let back = load_file(&p).unwrap();
     assert_eq!(back.surface.unwrap().options, opts);
+}
+
+#[test]
+fn a_contact_engineering_container_is_read() {
+    let zip = container();
+    // The first topography is a profile of uneven x: the first that reads
+    // is the Nanoscope file, as it reads on its own.
+    let (csv, notes) = moments(&["--surface", &zip]);
+    assert!(
+        notes[0].starts_with(
+            "3 topographies in this contact.engineering container \
+             ('80_Scale10.472_FIXEDv2p1.asc', 'gain_control_uncd_35.001', \
+             'uncd_stylus_300um_5mar_3.txt'): 'gain_control_uncd_35.001' read"
+        ),
+        "{notes:?}"
+    );
+    assert!(
+        notes[1].starts_with("'80_Scale10.472_FIXEDv2p1.asc' not read: x is not uniformly spaced")
+    );
+    let d = tempfile::tempdir().unwrap();
+    let mut z = zip::ZipArchive::new(std::fs::File::open(&zip).unwrap()).unwrap();
+    let mut member = Vec::new();
+    std::io::Read::read_to_end(
+        &mut z.by_name("gain_control_uncd_35_z03tr3R.001").unwrap(),
+        &mut member,
+    )
+    .unwrap();
+    let own = d.path().join("gain.001");
+    std::fs::write(&own, member).unwrap();
+    let (alone, _) = moments(&["--surface", own.to_str().unwrap()]);
+    assert_eq!(csv, alone);
+    // Another by --series, its unit from meta.yml; a name it does not hold.
+    let (_, notes) = moments(&[
+        "--surface",
+        &zip,
+        "--series",
+        "uncd_stylus_300um_5mar_3.txt",
+    ]);
+    assert_eq!(notes[1], "x read in mm (meta.yml's unit)");
+    refused(
+        &["export", "--surface", &zip, "--series", "steel"],
+        &["--series 'steel': the container holds no topography of that name"],
+    );
+    // --channel goes to the topography's file.
+    let (_, notes) = moments(&["--surface", &zip, "--channel", "1"]);
+    assert!(
+        notes
+            .iter()
+            .any(|n| n.starts_with("channel 1 'Height' (nm) read")),
+        "{notes:?}"
+    );
+}
+
+#[test]
+fn a_spreadsheet_is_named() {
+    use std::io::Write;
+    let d = tempfile::tempdir().unwrap();
+    let p = d.path().join("scan.xlsx");
+    let mut w = zip::ZipWriter::new(std::fs::File::create(&p).unwrap());
+    w.start_file("xl/workbook.xml", zip::write::SimpleFileOptions::default())
+        .unwrap();
+    w.write_all(b"<workbook/>").unwrap();
+    w.finish().unwrap();
+    refused(
+        &["export", "--surface", p.to_str().unwrap()],
+        &["looks like an Excel spreadsheet (.xlsx): save the sheet of heights as CSV"],
+    );
 }

@@ -15,6 +15,7 @@ mod ce;
 mod channels;
 mod columns;
 mod colunits;
+mod container;
 mod decimal;
 mod describe;
 mod error;

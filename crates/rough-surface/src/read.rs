@@ -210,12 +210,20 @@ fn parse_file(
             ),
         ))
     };
-    if opts.channel.is_some() && format == sniff::Format::X3p {
+    if opts.channel.is_some()
+        && format == sniff::Format::X3p
+        && !crate::container::is_container(bytes)
+    {
         return no_channels();
     }
     let mut notes = Vec::new();
     let text = match format {
         sniff::Format::Other(s) => return Err((None, Problem::Format(s))),
+        sniff::Format::X3p if crate::container::is_container(bytes) => {
+            let mut m = crate::container::read(bytes, opts, &|b, o, e| parse_file(b, o, e))?;
+            m.sha256 = sha256_hex(bytes);
+            return Ok(m);
+        }
         sniff::Format::X3p | sniff::Format::Gwy | sniff::Format::Native(_) => {
             not_a_download(opts)?;
             let (sha256, read) = std::thread::scope(|s| {

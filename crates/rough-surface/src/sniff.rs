@@ -97,6 +97,19 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
         "mdt" => return other("an NT-MDT .mdt file"),
         _ => {}
     }
+    if starts(b"fileType      ") {
+        return other("an Agilent (Molecular Imaging) PicoView .mi file");
+    }
+    if !binary(bytes) && bytes[..bytes.len().min(1 << 20)].contains(&0) {
+        // Text lines first, binary data after them (the NUL no text has).
+        let first = String::from_utf8_lossy(&bytes[..bytes.len().min(60)]);
+        let first = first.lines().next().unwrap_or("").trim().to_string();
+        return Format::Other(format!(
+            "a binary file whose first lines are text ('{first}'), in a format not read: \
+             open it in Gwyddion (which reads most instruments' files) and save it as .gwy \
+             or .x3p (or File → Save As → ASCII data matrix, .txt)"
+        ));
+    }
     if binary(bytes) {
         return Format::Other(
             "a binary file of a format not read: open it in Gwyddion (which reads most \
@@ -205,6 +218,13 @@ mod tests {
         assert!(native(b"\x88\x1b\x03\x70\0", "dat"));
         assert!(native(b"date 2020\0\0\0", "plu"));
         assert!(native(b"DIGITAL SURF\0", "sur"));
+        let mut mi = b"fileType      Image\nversion PicoView\n".to_vec();
+        mi.extend_from_slice(&[0; 16]);
+        assert!(other(&mi, "mi").contains("PicoView .mi"));
+        let mut head = b"# Width: 1 um\n1 2\n".repeat(300);
+        head.extend_from_slice(&[7, 0, 0, 0]);
+        assert!(other(&head, "")
+            .starts_with("a binary file whose first lines are text ('# Width: 1 um')"));
         assert!(other(b"\xff\xfe1\0 \0", "txt").starts_with("UTF-16 text"));
     }
 

@@ -163,9 +163,14 @@ fn check(prefix: &str, skip: &[&str]) -> usize {
         println!(
             "{who}: {nx} × {ny}, {} undefined; relative to SurfaceTopography: Sq {e_sq:.1e}, \
              Sdq {e_sdq:.1e}, moments {e_m:.1e}, spectrum {e_s:.1e}; read in {:.0} ms \
-             (debug build)",
+             ({} build)",
             c.undefined,
-            took.as_secs_f64() * 1e3
+            took.as_secs_f64() * 1e3,
+            if cfg!(debug_assertions) {
+                "debug"
+            } else {
+                "release"
+            }
         );
     }
     assert!(n > 0, "no reference for {prefix}");
