@@ -117,6 +117,15 @@ pub fn moment_comments(state: &State) -> Vec<String> {
             n(r.rms_height),
             n(r.rms_slope)
         ));
+        let [sa, ssk, sku, sz] = r.amplitude_names();
+        let p = r.amplitude;
+        out.push(format!(
+            "{sa} = {} m, {ssk} = {}, {sku} = {}, {sz} = {} m (the same heights)",
+            n(p.mean_abs),
+            n(p.skewness),
+            n(p.kurtosis),
+            n(p.range)
+        ));
     }
     match src.fit() {
         Some(f) => {

@@ -7,6 +7,7 @@
 //! "Measured surfaces", states them.
 
 mod allow;
+mod amplitude;
 mod anisotropy;
 mod assumed;
 mod band;
@@ -42,6 +43,7 @@ mod threads;
 mod units;
 mod x3p;
 
+pub use amplitude::Amplitude;
 pub use anisotropy::{Slopes, RATIO as ANISOTROPY_RATIO};
 pub use error::{Problem, SurfaceError};
 pub use fill::MAX_UNDEFINED;

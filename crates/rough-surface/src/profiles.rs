@@ -37,6 +37,7 @@ pub(crate) fn profiles(
             (t, ny, nx, ly)
         }
     };
+    let real = crate::realspace::profiles(&h, n, l, periodic);
     let fft = FftPlanner::<f64>::new().plan_fft_forward(n);
     let mut power = vec![0.0; n];
     let mut buf = vec![Complex::new(0.0, 0.0); n];
@@ -72,7 +73,7 @@ pub(crate) fn profiles(
         spectrum: bins.finish(),
         notes,
         slopes: None,
-        real: None,
+        real: Some(real),
         modes: bins.counts(),
         heights: None,
     })

@@ -13,6 +13,8 @@
 //!   `rms_slope_from_profile`, the rms of the same difference (n − 1 of them,
 //!   or n wrapping around when periodic).
 
+use crate::amplitude::Amplitude;
+
 /// Real-space rms height and rms slope (gradient for maps).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RealSpace {
@@ -22,6 +24,8 @@ pub struct RealSpace {
     pub rms_height: f64,
     /// Sdq or RΔq, dimensionless.
     pub rms_slope: f64,
+    /// Sa, Ssk, Sku, Sz (Ra, Rsk, Rku, Rz).
+    pub amplitude: Amplitude,
 }
 
 impl RealSpace {
@@ -31,6 +35,16 @@ impl RealSpace {
             ("Sq", "Sdq")
         } else {
             ("Rq", "RΔq")
+        }
+    }
+
+    /// The amplitude parameters' names: ["Sa", "Ssk", "Sku", "Sz"] or
+    /// ["Ra", "Rsk", "Rku", "Rz"].
+    pub fn amplitude_names(&self) -> [&'static str; 4] {
+        if self.areal {
+            ["Sa", "Ssk", "Sku", "Sz"]
+        } else {
+            ["Ra", "Rsk", "Rku", "Rz"]
         }
     }
 }
@@ -97,6 +111,7 @@ pub(crate) fn areal(
         areal: true,
         rms_height: (squares / n).sqrt(),
         rms_slope: (gradient / (ix * jy) as f64).sqrt(),
+        amplitude: crate::amplitude::of(h, nx, false),
     }
 }
 
@@ -110,6 +125,31 @@ pub(crate) fn profile(h: &[f64], l: f64, periodic: bool) -> RealSpace {
         areal: false,
         rms_height: rms_about_mean(h),
         rms_slope: (sum / m as f64).sqrt(),
+        amplitude: crate::amplitude::of(h, n, false),
+    }
+}
+
+/// A map's profiles, rows of `n` samples over `l` (the map detrended as a
+/// whole): Rq with each profile about its own mean, RΔq of the differences
+/// along them, as SurfaceTopography's `rms_height_from_profile` and
+/// `rms_slope_from_profile` take a map's profiles.
+pub(crate) fn profiles(h: &[f64], n: usize, l: f64, periodic: bool) -> RealSpace {
+    let dx = l / n as f64;
+    let m = if periodic { n } else { n - 1 };
+    let (mut squares, mut slopes) = (0.0, 0.0);
+    for row in h.chunks_exact(n) {
+        let mean = row.iter().sum::<f64>() / n as f64;
+        squares += row.iter().map(|v| (v - mean).powi(2)).sum::<f64>();
+        slopes += (0..m)
+            .map(|i| ((row[(i + 1) % n] - row[i]) / dx).powi(2))
+            .sum::<f64>();
+    }
+    let rows = (h.len() / n) as f64;
+    RealSpace {
+        areal: false,
+        rms_height: (squares / h.len() as f64).sqrt(),
+        rms_slope: (slopes / (m as f64 * rows)).sqrt(),
+        amplitude: crate::amplitude::of(h, n, true),
     }
 }
 

@@ -142,6 +142,26 @@ fn check(prefix: &str, skip: &[&str]) -> usize {
         let (e_sq, e_sdq) = (rel(r.rms_height, c.real[0]), rel(r.rms_slope, c.real[1]));
         assert!(e_sq < 1e-9, "{who}: Sq {} vs {}", r.rms_height, c.real[0]);
         assert!(e_sdq < 1e-9, "{who}: Sdq {} vs {}", r.rms_slope, c.real[1]);
+        // Sa, Ssk, Sku, Sz: numpy on SurfaceTopography's detrended heights
+        // (Ssk and Sku, of order 1, to 1e-9 of 1 where they are smaller:
+        // al3d-1's Ssk of -0.005 is a difference of cubes of heights 76 mm
+        // from zero whose rms is 0.29 µm).
+        let a = r.amplitude;
+        let mut e_a = 0f64;
+        for (k, (got, want)) in [a.mean_abs, a.skewness, a.kurtosis, a.range]
+            .into_iter()
+            .zip(&c.real[2..])
+            .enumerate()
+        {
+            let scale = if k == 1 || k == 2 {
+                want.abs().max(1.0)
+            } else {
+                want.abs()
+            };
+            let e = (got - want).abs() / scale;
+            assert!(e < 1e-9, "{who}: amplitude parameter {got} vs {want}");
+            e_a = e_a.max(e);
+        }
         let mut e_m = 0f64;
         for &[zeta, m0, m2, m4] in &c.moments {
             let got = m.table.at_zeta(zeta);
@@ -162,7 +182,7 @@ fn check(prefix: &str, skip: &[&str]) -> usize {
         }
         println!(
             "{who}: {nx} × {ny}, {} undefined; relative to SurfaceTopography: Sq {e_sq:.1e}, \
-             Sdq {e_sdq:.1e}, moments {e_m:.1e}, spectrum {e_s:.1e}; read in {:.0} ms \
+             Sdq {e_sdq:.1e}, Sa Ssk Sku Sz {e_a:.1e}, moments {e_m:.1e}, spectrum {e_s:.1e}; read in {:.0} ms \
              ({} build)",
             c.undefined,
             took.as_secs_f64() * 1e3,
