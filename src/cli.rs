@@ -8,7 +8,9 @@ use rough_model::Axis;
 pub mod setup;
 mod values;
 pub use values::{parse_duration, parse_fit_band, parse_set, SetKey, MAX_POINTS};
-use values::{parse_grid, parse_height_unit, parse_pixel_size, parse_points, parse_sweep};
+use values::{
+    parse_grid, parse_height_unit, parse_percent, parse_pixel_size, parse_points, parse_sweep,
+};
 
 #[derive(Debug, Parser)]
 #[command(
@@ -97,16 +99,26 @@ pub struct Setup {
     /// every view then shows that direction alone.
     #[arg(long, value_enum, value_name = "x|y", requires = "surface")]
     pub direction: Option<DirectionArg>,
-    /// The channel of a file of several (Gwyddion's .gwy, its ASCII
-    /// exports concatenated): its number or its title (the first channel of
-    /// heights when not given).
+    /// The channel of a file of several (Gwyddion's .gwy, a Nanoscope,
+    /// Nanosurf or Igor file's images, ASCII exports concatenated): its
+    /// number or its title (the first channel of heights when not given).
     #[arg(long, value_name = "N|TITLE", requires = "surface")]
     pub channel: Option<String>,
-    /// The unit of the surface's heights, whatever the file says: m, mm,
-    /// µm (um), nm, Å (A) or pm. Without it heights take the file's value
+    /// The unit of the surface's heights: m, mm, µm (um, microns), nm, Å
+    /// (A) or pm; for a text file whatever it says, for an instrument's
+    /// file where it gives none. Without it heights take the file's value
     /// unit, else its lateral unit (said in a note).
     #[arg(long, value_name = "UNIT", requires = "surface", value_parser = parse_height_unit)]
     pub height_unit: Option<rough_surface::HeightUnit>,
+    /// The lateral unit of a file that gives none: the x column of an
+    /// `x z` line scan, the sizes of an Igor wave without units (heights
+    /// without a unit of their own follow it).
+    #[arg(long, value_name = "UNIT", requires = "surface", value_parser = parse_height_unit)]
+    pub lateral_unit: Option<rough_surface::HeightUnit>,
+    /// The share of undefined (not measured, masked, NaN) points that is
+    /// filled, in percent, e.g. 35 [default: 10]; more is refused.
+    #[arg(long, value_name = "PERCENT", requires = "surface", value_parser = parse_percent)]
+    pub max_undefined: Option<f64>,
     /// The form removed from the surface's heights before its spectrum and
     /// Sq: none, the mean, the least-squares plane (a line scan's line) or
     /// the least-squares quadratic (curvature), as SurfaceTopography's
@@ -175,6 +187,8 @@ impl Setup {
             direction: self.direction.map(Into::into),
             channel: self.channel.clone(),
             height_unit: self.height_unit,
+            lateral_unit: self.lateral_unit,
+            max_undefined: self.max_undefined.map(|p| p / 100.0),
             detrend: self.detrend.map(Into::into),
         }
     }
@@ -190,6 +204,8 @@ impl BenchArgs {
             direction: self.direction.map(Into::into),
             channel: self.channel.clone(),
             height_unit: None,
+            lateral_unit: None,
+            max_undefined: self.max_undefined.map(|p| p / 100.0),
             detrend: None,
         }
     }
@@ -385,6 +401,10 @@ pub struct BenchArgs {
     /// The channel of a file of several (as for the explorer).
     #[arg(long, value_name = "N|TITLE", requires = "surface")]
     pub channel: Option<String>,
+    /// The share of undefined points filled, in percent (as for the
+    /// explorer).
+    #[arg(long, value_name = "PERCENT", requires = "surface", value_parser = parse_percent)]
+    pub max_undefined: Option<f64>,
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]

@@ -306,7 +306,7 @@ fn the_example_spectrum_names_its_fit_in_the_legend_and_in_full_under_it() {
     assert!(
         caption.contains(
             "The power law fitted over the fit band 1.257e5…1.144e7 /m: H = 0.8184 ± \
-             0.02526, h_rms of the fitted power law 3.873e-8 m (27 points)."
+             0.02526, h_rms of the fitted power law 38.73 nm (27 points)."
         ),
         "{caption}"
     );

@@ -28,7 +28,8 @@ pub fn load_base(src: &Source, setup: &Setup) -> anyhow::Result<State> {
         };
         anyhow::bail!(
             "how to read a surface (--periodic, --pixel-size, --series, --direction, \
-             --channel, --height-unit, --detrend) applies to --surface FILE, not to {given}"
+             --channel, --height-unit, --lateral-unit, --max-undefined, --detrend) applies \
+             to --surface FILE, not to {given}"
         );
     }
     Ok(if let Some(path) = &src.load {

@@ -117,22 +117,14 @@ pub fn moment_comments(state: &State) -> Vec<String> {
             n(r.rms_height),
             n(r.rms_slope)
         ));
-        let [sa, ssk, sku, sz] = r.heights();
+        let [sa, ssk, sku, sz] = r.amplitude_names();
+        let p = r.amplitude;
         out.push(format!(
-            "{} = {} m, {} = {}, {} = {}, {} = {} m (the same heights; {})",
-            sa.0,
-            n(sa.1),
-            ssk.0,
-            n(ssk.1),
-            sku.0,
-            n(sku.1),
-            sz.0,
-            n(sz.1),
-            if r.areal {
-                "ISO 25178-2"
-            } else {
-                "ISO 4287, Rz over the whole profile"
-            }
+            "{sa} = {} m, {ssk} = {}, {sku} = {}, {sz} = {} m (the same heights)",
+            n(p.mean_abs),
+            n(p.skewness),
+            n(p.kurtosis),
+            n(p.range)
         ));
     }
     match src.fit() {

@@ -27,17 +27,19 @@ pub fn short_number(v: f64) -> String {
     }
 }
 
-/// `v` as the shortest decimal of at most 12 significant digits within
-/// 1e-12 of it (relative), else `v` itself: a ratio that is whole in
-/// exact arithmetic (a line's largest ζ = n/2, 96.00000000000001 after the
-/// rounding of q_max/q0) is 96.
+/// `v` as the shortest decimal of at most 9 significant digits within
+/// 1e-14 of it (relative: a few roundings), else `v` itself: a ratio that
+/// is whole in exact arithmetic (a line's largest ζ = n/2,
+/// 96.00000000000001 after the rounding of q_max/q0) is 96, and an
+/// irrational one (a map's √2 · 48 = 67.88225099390857) stays (the chance
+/// that it lies that close to a short decimal is some 1e-5).
 pub fn clean(v: f64) -> f64 {
     if v == 0.0 || !v.is_finite() {
         return v;
     }
-    (1..=12)
+    (1..=9)
         .filter_map(|digits| format!("{v:.*e}", digits - 1).parse::<f64>().ok())
-        .find(|r| ((r - v) / v).abs() <= 1e-12)
+        .find(|r| ((r - v) / v).abs() <= 1e-14)
         .unwrap_or(v)
 }
 
@@ -52,6 +54,7 @@ mod tests {
         assert_eq!(clean(512.0000000000001), 512.0);
         // A map's largest ζ, √2 · 96, is no short decimal: kept.
         assert_eq!(clean(135.76450198781714), 135.76450198781714);
+        assert_eq!(clean(67.88225099390857), 67.88225099390857);
         assert_eq!(clean(0.1 + 0.2), 0.3);
         assert_eq!(clean(0.0), 0.0);
     }

@@ -58,6 +58,24 @@ pub struct SurfaceFile {
         deserialize_with = "de_text"
     )]
     pub height_unit: Option<String>,
+    /// The lateral unit given with `--lateral-unit` ("µm") for a file that
+    /// gives none, if any.
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "ser_text",
+        deserialize_with = "de_text"
+    )]
+    pub lateral_unit: Option<String>,
+    /// The share of undefined points filled at most, in percent
+    /// (`--max-undefined`), when it is not the default 10 %.
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "ser_number",
+        deserialize_with = "de_number"
+    )]
+    pub max_undefined: Option<f64>,
     /// The Hurst fit band set by hand, (q_lo, q_hi) in 1/m; absent: the
     /// self-affine stretch found from the data.
     #[serde(
@@ -187,6 +205,10 @@ pub enum SurfaceProblem {
     PixelSize(f64),
     /// `height_unit` is not a length unit.
     HeightUnit(String),
+    /// `lateral_unit` is not a length unit.
+    LateralUnit(String),
+    /// `max_undefined` is not a percentage in (0, 100).
+    MaxUndefined(f64),
     /// `fit_band` is not two wavevectors 0 < q_lo < q_hi.
     FitBand(f64, f64),
 }
@@ -213,6 +235,15 @@ impl fmt::Display for SurfaceProblem {
             SurfaceProblem::HeightUnit(u) => write!(
                 f,
                 "surface.height_unit = {u:?} is not a length unit: m, mm, µm, nm, Å or pm"
+            ),
+            SurfaceProblem::LateralUnit(u) => write!(
+                f,
+                "surface.lateral_unit = {u:?} is not a length unit: m, mm, µm, nm, Å or pm"
+            ),
+            SurfaceProblem::MaxUndefined(v) => write!(
+                f,
+                "surface.max_undefined = {v} is out of range: a percentage above 0 and \
+                 below 100"
             ),
         }
     }
@@ -241,6 +272,18 @@ pub(super) fn read(sf: &SurfaceFile, base: Option<&Path>) -> Result<SurfaceSourc
         ),
         None => None,
     };
+    let lateral_unit = match &sf.lateral_unit {
+        Some(u) => Some(
+            rough_surface::HeightUnit::parse(u)
+                .ok_or_else(|| SurfaceProblem::LateralUnit(u.clone()))?,
+        ),
+        None => None,
+    };
+    if let Some(v) = sf.max_undefined {
+        if !(v > 0.0 && v < 100.0) {
+            return Err(SurfaceProblem::MaxUndefined(v));
+        }
+    }
     let options = Options {
         periodic: sf.periodic,
         pixel_size: sf.pixel_size,
@@ -248,6 +291,8 @@ pub(super) fn read(sf: &SurfaceFile, base: Option<&Path>) -> Result<SurfaceSourc
         direction: sf.direction.map(Into::into),
         channel: sf.channel.clone(),
         height_unit,
+        lateral_unit,
+        max_undefined: sf.max_undefined.map(|p| p / 100.0),
         detrend: sf.detrend,
     };
     let mut src = SurfaceSource::read(&path, options).map_err(|e| {
@@ -289,6 +334,8 @@ pub(super) fn file_of(src: &SurfaceSource, base: Option<&Path>) -> SurfaceFile {
         direction: src.options.direction.map(Into::into),
         channel: src.options.channel.clone(),
         height_unit: src.options.height_unit.map(|u| u.name.to_string()),
+        lateral_unit: src.options.lateral_unit.map(|u| u.name.to_string()),
+        max_undefined: src.options.max_undefined.map(|s| s * 100.0),
         fit_band: src.fit_band,
         detrend: src.options.detrend,
     }

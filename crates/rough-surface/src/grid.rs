@@ -2,6 +2,7 @@
 //! Gwyddion's .gwy): sizes in metres, undefined points as NaN, and the
 //! step from them to the moment table.
 
+use crate::assumed::Assumed;
 use crate::error::{Failure, Problem};
 use crate::measured::{Kind, Options};
 use crate::spectrum::{self, Computed};
@@ -23,6 +24,11 @@ pub struct Grid {
     /// What the reader assumed, one line each (they go to
     /// [`crate::Measured::notes`]).
     pub notes: Vec<String>,
+    /// The file's format for people: "x3p", "Digital Surf .sur".
+    pub format: &'static str,
+    /// Units the file does not give (`--height-unit`, `--lateral-unit`
+    /// then say them); the default where it gives every unit.
+    pub assumed: Assumed,
 }
 
 impl Grid {
@@ -62,6 +68,14 @@ pub(crate) fn compute(
     notes: &mut Vec<String>,
 ) -> Result<(Kind, Computed), Failure> {
     notes.append(&mut g.notes);
+    let format = g.format;
+    notes.extend(crate::assumed::apply(
+        g.assumed,
+        format,
+        &mut g.z,
+        (&mut g.lx, &mut g.ly),
+        opts,
+    )?);
     if let Some(p) = opts.pixel_size {
         return Err((
             None,

@@ -6,13 +6,17 @@
 //! contact.engineering), so that its numbers are the reference; docs/model.md,
 //! "Measured surfaces", states them.
 
+mod allow;
+mod amplitude;
 mod anisotropy;
+mod assumed;
 mod band;
 mod bins;
 mod ce;
 mod channels;
 mod columns;
 mod colunits;
+mod container;
 mod decimal;
 mod describe;
 mod detrend;
@@ -30,6 +34,7 @@ mod prepare;
 mod profiles;
 mod psd;
 mod read;
+mod readers;
 mod realspace;
 mod sniff;
 mod spectrum;
@@ -39,6 +44,7 @@ mod threads;
 mod units;
 mod x3p;
 
+pub use amplitude::Amplitude;
 pub use anisotropy::{Slopes, RATIO as ANISOTROPY_RATIO};
 pub use detrend::Detrend;
 pub use error::{Problem, SurfaceError};
@@ -48,6 +54,6 @@ pub use grid::Grid;
 pub use limits::MAX_BYTES;
 pub use measured::{Direction, Kind, Measured, Options};
 pub use prepare::Heights;
-pub use read::{parse, read, read_grid, read_heights, sha256_hex};
+pub use read::{parse, parse_named, read, read_grid, read_grid_named, read_heights, sha256_hex};
 pub use realspace::RealSpace;
 pub use units::HeightUnit;

@@ -32,6 +32,12 @@ pub struct Options {
     pub channel: Option<String>,
     /// The heights' unit, whatever the file says (`--height-unit`).
     pub height_unit: Option<HeightUnit>,
+    /// The lateral unit (sizes, x positions) of a file that gives none
+    /// (`--lateral-unit`).
+    pub lateral_unit: Option<HeightUnit>,
+    /// The largest share of undefined points filled, 0 to 1
+    /// (`--max-undefined PERCENT`); [`crate::MAX_UNDEFINED`] when `None`.
+    pub max_undefined: Option<f64>,
     /// The form removed before anything is computed (`--detrend`); `None`:
     /// the plane, or the mean of periodic data ([`Options::detrend_mode`]).
     pub detrend: Option<Detrend>,

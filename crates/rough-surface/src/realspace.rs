@@ -12,16 +12,10 @@
 //! - line scans: Rq = `rms_height_from_profile`, Rq about the mean; RΔq =
 //!   `rms_slope_from_profile`, the rms of the same difference (n − 1 of them,
 //!   or n wrapping around when periodic).
-//!
-//! Beside them the ISO 25178-2 (maps) and ISO 4287 (profiles) height
-//! parameters of the same heights h about their mean m, over the N points:
-//! Sa = Σ|h − m|/N, Ssk = Σ(h − m)³/(N Sq³), Sku = Σ(h − m)⁴/(N Sq⁴) and
-//! Sz = max h − min h (Ra, Rsk, Rku, Rz for a line, Rz over the whole
-//! profile as one sampling length). SurfaceTopography computes Sq and the
-//! heights' `min` and `max`; the others are its detrended heights' moments.
 
-/// Real-space rms height and rms slope (gradient for maps), and the
-/// height parameters beside them.
+use crate::amplitude::Amplitude;
+
+/// Real-space rms height and rms slope (gradient for maps).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RealSpace {
     /// A map's (Sq, Sdq) rather than a line's (Rq, RΔq).
@@ -30,14 +24,8 @@ pub struct RealSpace {
     pub rms_height: f64,
     /// Sdq or RΔq, dimensionless.
     pub rms_slope: f64,
-    /// Sa or Ra: the mean absolute height about the mean, m.
-    pub mean_abs_height: f64,
-    /// Ssk or Rsk: the skewness of the heights.
-    pub skewness: f64,
-    /// Sku or Rku: the kurtosis of the heights (3 for Gaussian ones).
-    pub kurtosis: f64,
-    /// Sz or Rz: the highest peak to the lowest valley, m.
-    pub max_height: f64,
+    /// Sa, Ssk, Sku, Sz (Ra, Rsk, Rku, Rz).
+    pub amplitude: Amplitude,
 }
 
 impl RealSpace {
@@ -51,95 +39,39 @@ impl RealSpace {
     }
 
     /// The height parameters' names and values: Sa, Ssk, Sku, Sz (maps)
-    /// or Ra, Rsk, Rku, Rz (lines).
+    /// or Ra, Rsk, Rku, Rz (lines, profiles).
     pub fn heights(&self) -> [(&'static str, f64); 4] {
-        let n = if self.areal {
+        let [a, sk, ku, z] = self.amplitude_names();
+        let p = self.amplitude;
+        [
+            (a, p.mean_abs),
+            (sk, p.skewness),
+            (ku, p.kurtosis),
+            (z, p.range),
+        ]
+    }
+
+    /// The amplitude parameters' names: ["Sa", "Ssk", "Sku", "Sz"] or
+    /// ["Ra", "Rsk", "Rku", "Rz"].
+    pub fn amplitude_names(&self) -> [&'static str; 4] {
+        if self.areal {
             ["Sa", "Ssk", "Sku", "Sz"]
         } else {
             ["Ra", "Rsk", "Rku", "Rz"]
-        };
-        [
-            (n[0], self.mean_abs_height),
-            (n[1], self.skewness),
-            (n[2], self.kurtosis),
-            (n[3], self.max_height),
-        ]
-    }
-}
-
-/// Sums of the heights' deviations from their mean and their extremes.
-#[derive(Clone, Copy)]
-struct Sums {
-    abs: f64,
-    squares: f64,
-    cubes: f64,
-    fourths: f64,
-    min: f64,
-    max: f64,
-    /// Σ of the squared differences (the slope's sum).
-    slope: f64,
-}
-
-impl Sums {
-    const ZERO: Sums = Sums {
-        abs: 0.0,
-        squares: 0.0,
-        cubes: 0.0,
-        fourths: 0.0,
-        min: f64::INFINITY,
-        max: f64::NEG_INFINITY,
-        slope: 0.0,
-    };
-
-    /// The deviations of `h` from `mean` added.
-    fn add(mut self, h: &[f64], mean: f64) -> Sums {
-        for &v in h {
-            let d = v - mean;
-            let d2 = d * d;
-            self.abs += d.abs();
-            self.squares += d2;
-            self.cubes += d2 * d;
-            self.fourths += d2 * d2;
-            self.min = self.min.min(v);
-            self.max = self.max.max(v);
-        }
-        self
-    }
-
-    fn join(self, o: Sums) -> Sums {
-        Sums {
-            abs: self.abs + o.abs,
-            squares: self.squares + o.squares,
-            cubes: self.cubes + o.cubes,
-            fourths: self.fourths + o.fourths,
-            min: self.min.min(o.min),
-            max: self.max.max(o.max),
-            slope: self.slope + o.slope,
-        }
-    }
-
-    /// The numbers of `n` heights whose slope sum has `pairs` terms.
-    fn finish(self, areal: bool, n: usize, pairs: usize) -> RealSpace {
-        let n = n as f64;
-        let var = self.squares / n;
-        RealSpace {
-            areal,
-            rms_height: var.sqrt(),
-            rms_slope: (self.slope / pairs as f64).sqrt(),
-            mean_abs_height: self.abs / n,
-            skewness: self.cubes / n / (var * var.sqrt()),
-            kurtosis: self.fourths / n / (var * var),
-            max_height: self.max - self.min,
         }
     }
 }
 
-/// `f` over blocks of the rows 0..ny, each block on a thread of its own,
-/// the blocks' results joined.
-fn rows_fold<T, F>(ny: usize, f: F, join: fn(T, T) -> T) -> Option<T>
+fn rms_about_mean(h: &[f64]) -> f64 {
+    let n = h.len() as f64;
+    let mean = h.iter().sum::<f64>() / n;
+    (h.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / n).sqrt()
+}
+
+/// Σ f over blocks of the rows 0..ny, each block on a thread of its own.
+fn rows_sum<F>(ny: usize, f: F) -> (f64, f64)
 where
-    T: Send,
-    F: Fn(std::ops::Range<usize>) -> T + Sync,
+    F: Fn(std::ops::Range<usize>) -> (f64, f64) + Sync,
 {
     let per = ny.div_ceil(crate::threads::count()).max(1);
     std::thread::scope(|s| {
@@ -151,7 +83,7 @@ where
         parts
             .into_iter()
             .map(|p| p.join().expect("real-space sums"))
-            .reduce(join)
+            .fold((0.0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1))
     })
 }
 
@@ -166,43 +98,57 @@ pub(crate) fn areal(
 ) -> RealSpace {
     let (dx, dy) = (lx / nx as f64, ly / ny as f64);
     let (ix, jy) = if periodic { (nx, ny) } else { (nx - 1, ny - 1) };
-    let sum = rows_fold(
-        ny,
-        |r| h[r.start * nx..r.end * nx].iter().sum::<f64>(),
-        |a, b| a + b,
-    )
-    .unwrap_or(0.0);
-    let mean = sum / h.len() as f64;
-    let sums = rows_fold(
-        ny,
-        |r| {
-            let mut s = Sums::ZERO.add(&h[r.start * nx..r.end * nx], mean);
-            for j in r.start..r.end.min(jy) {
-                let row = &h[j * nx..(j + 1) * nx];
-                let next = &h[((j + 1) % ny) * nx..((j + 1) % ny + 1) * nx];
-                for i in 0..ix {
-                    let v = row[i];
-                    let right = if i + 1 == nx { row[0] } else { row[i + 1] };
-                    let gx = (right - v) / dx;
-                    let gy = (next[i] - v) / dy;
-                    s.slope += gx * gx + gy * gy;
-                }
+    let n = h.len() as f64;
+    let (sum, _) = rows_sum(ny, |r| (h[r.start * nx..r.end * nx].iter().sum(), 0.0));
+    let mean = sum / n;
+    let (squares, gradient) = rows_sum(ny, |r| {
+        let squares = h[r.start * nx..r.end * nx]
+            .iter()
+            .map(|v| (v - mean).powi(2))
+            .sum();
+        let mut sum = 0.0;
+        for j in r.start..r.end.min(jy) {
+            let row = &h[j * nx..(j + 1) * nx];
+            let next = &h[((j + 1) % ny) * nx..((j + 1) % ny + 1) * nx];
+            for i in 0..ix {
+                let v = row[i];
+                let right = if i + 1 == nx { row[0] } else { row[i + 1] };
+                let gx = (right - v) / dx;
+                let gy = (next[i] - v) / dy;
+                sum += gx * gx + gy * gy;
             }
-            s
-        },
-        Sums::join,
-    )
-    .unwrap_or(Sums::ZERO);
-    sums.finish(true, h.len(), ix * jy)
+        }
+        (squares, sum)
+    });
+    RealSpace {
+        areal: true,
+        rms_height: (squares / n).sqrt(),
+        rms_slope: (gradient / (ix * jy) as f64).sqrt(),
+        amplitude: crate::amplitude::of(h, nx, false),
+    }
 }
 
-/// A map's `count` profiles of n detrended heights over l each (rows of
-/// n), as SurfaceTopography's `Rq` and `Rdq` of a topography take them:
-/// each profile about its own mean, the differences along it (n − 1 a
-/// profile, n wrapping around when periodic; its derivative of a map that
-/// is not periodic leaves out the last profile too, as the gradient's
-/// stencil does); Ra, Rsk, Rku about the same means, Rz the profiles' mean
-/// peak-to-valley height.
+/// A line of n detrended heights over l.
+pub(crate) fn profile(h: &[f64], l: f64, periodic: bool) -> RealSpace {
+    let n = h.len();
+    let dx = l / n as f64;
+    let m = if periodic { n } else { n - 1 };
+    let sum: f64 = (0..m).map(|i| ((h[(i + 1) % n] - h[i]) / dx).powi(2)).sum();
+    RealSpace {
+        areal: false,
+        rms_height: rms_about_mean(h),
+        rms_slope: (sum / m as f64).sqrt(),
+        amplitude: crate::amplitude::of(h, n, false),
+    }
+}
+
+/// A map's profiles, rows of `n` samples over `l` (the map detrended as a
+/// whole), as SurfaceTopography's `Rq` and `Rdq` of a topography
+/// (`rms_height_from_profile`, `rms_slope_from_profile`) take them: each
+/// profile about its own mean, the differences along it (n − 1 a profile,
+/// n wrapping around when periodic; its derivative of a map that is not
+/// periodic leaves out the last profile too, as the gradient's stencil
+/// does).
 pub(crate) fn profiles(h: &[f64], n: usize, l: f64, periodic: bool) -> RealSpace {
     let dx = l / n as f64;
     let count = h.len() / n;
@@ -211,32 +157,22 @@ pub(crate) fn profiles(h: &[f64], n: usize, l: f64, periodic: bool) -> RealSpace
     } else {
         (n - 1, count - 1)
     };
-    let (mut s, mut range) = (Sums::ZERO, 0.0);
+    let (mut squares, mut slopes) = (0.0, 0.0);
     for (j, row) in h.chunks_exact(n).enumerate() {
         let mean = row.iter().sum::<f64>() / n as f64;
-        let one = Sums::ZERO.add(row, mean);
-        range += one.max - one.min;
-        s = s.join(one);
+        squares += row.iter().map(|v| (v - mean).powi(2)).sum::<f64>();
         if j < sloped {
-            s.slope += (0..m)
+            slopes += (0..m)
                 .map(|i| ((row[(i + 1) % n] - row[i]) / dx).powi(2))
                 .sum::<f64>();
         }
     }
-    let mut r = s.finish(false, h.len(), m * sloped);
-    r.max_height = range / count as f64;
-    r
-}
-
-/// A line of n detrended heights over l.
-pub(crate) fn profile(h: &[f64], l: f64, periodic: bool) -> RealSpace {
-    let n = h.len();
-    let dx = l / n as f64;
-    let m = if periodic { n } else { n - 1 };
-    let mean = h.iter().sum::<f64>() / n as f64;
-    let mut s = Sums::ZERO.add(h, mean);
-    s.slope = (0..m).map(|i| ((h[(i + 1) % n] - h[i]) / dx).powi(2)).sum();
-    s.finish(false, n, m)
+    RealSpace {
+        areal: false,
+        rms_height: (squares / h.len() as f64).sqrt(),
+        rms_slope: (slopes / (m * sloped) as f64).sqrt(),
+        amplitude: crate::amplitude::of(h, n, true),
+    }
 }
 
 #[cfg(test)]
@@ -257,10 +193,10 @@ mod tests {
         let r = areal(&h, nx, ny, 1.0, 1.0, true);
         assert!((r.rms_height - a / 2f64.sqrt()).abs() < 1e-15);
         assert_eq!(r.names(), ("Sq", "Sdq"));
-        // Its height parameters: Sa = 2a/π, no skew, Sku = 3/2, Sz = 2a.
+        // Its height parameters: Sa = a · mean |cos|, no skew, Sku = 3/2,
+        // Sz = 2a.
         let [sa, ssk, sku, sz] = r.heights();
         assert_eq!((sa.0, ssk.0, sku.0, sz.0), ("Sa", "Ssk", "Sku", "Sz"));
-        // The mean of |cos| over the 16 samples.
         let mean_abs = (0..nx)
             .map(|i| {
                 (2.0 * std::f64::consts::PI * i as f64 / nx as f64)

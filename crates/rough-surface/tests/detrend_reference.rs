@@ -42,7 +42,7 @@ fn each_mode_matches_surfacetopography() {
         for (got, want) in [
             (r.rms_height, num(3)),
             (r.rms_slope, num(4)),
-            (r.max_height, num(5)),
+            (r.amplitude.range, num(5)),
         ] {
             let e = rel(got, want);
             assert!(e < 1e-11, "{what}: {got} vs {want} ({e:.1e})");

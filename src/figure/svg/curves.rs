@@ -199,10 +199,7 @@ pub(super) fn load(
     .map_err(plot_err)?;
     lg.paths.push(vec![(0.0, 0.0), (tx, ty)]);
     lg.add(
-        format!(
-            "initial slope S_tot = {} (from the origin)",
-            short_number(l.slopes.total)
-        ),
+        format!("initial slope S_tot = {}", short_number(l.slopes.total)),
         RGBColor(255, 128, 128),
         Sample::Solid(1),
     );

@@ -180,15 +180,16 @@ fn hurst_words(f: &rough_surface::PowerLawFit) -> String {
     }
 }
 
-/// "H = 0.81 ± 0.03, h_rms of the fitted power law 12 nm (18 points)", or
+/// "H = 0.81 ± 0.03, h_rms of the fitted power law 12 nm (18 points)" (a
+/// length as the scene line prints one), or
 /// why the band is not self-affine.
 pub fn fit_words(f: &rough_surface::PowerLawFit, h_rms: Option<f64>) -> String {
     let h = hurst_words(f);
     match (f.verdict().words(), h_rms) {
         (Some(w), _) => format!("{h} — {w} ({} points)", f.points),
         (None, Some(hr)) => format!(
-            "{h}, h_rms of the fitted power law {} m ({} points)",
-            short_number(hr),
+            "{h}, h_rms of the fitted power law {} ({} points)",
+            short_length(hr),
             f.points
         ),
         (None, None) => format!("{h} ({} points)", f.points),

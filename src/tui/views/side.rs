@@ -272,12 +272,15 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
             Line::raw(pair(a, len(rs.rms_height), b, num(rs.rms_slope))),
         );
         at += 1;
-        // Where there is room: the height parameters beside Sq (Sa, Ssk,
-        // Sku, Sz; Ra, Rsk, Rku, Rz for a line).
-        if usize::from(area.height) >= lines.len() + 2 {
-            let [sa, ssk, sku, sz] = rs.heights();
-            lines.insert(7, Line::raw(pair(sa.0, len(sa.1), ssk.0, num(ssk.1))));
-            lines.insert(8, Line::raw(pair(sku.0, num(sku.1), sz.0, len(sz.1))));
+        // Where there is room: Sa and Sz, Ssk and Sku beside them.
+        if usize::from(area.height) > lines.len() + 2 {
+            let [sa, ssk, sku, sz] = rs.amplitude_names();
+            let p = rs.amplitude;
+            lines.insert(7, Line::raw(pair(sa, len(p.mean_abs), sz, len(p.range))));
+            lines.insert(
+                8,
+                Line::raw(pair(ssk, num(p.skewness), sku, num(p.kurtosis))),
+            );
             at += 2;
         }
     }
