@@ -7,7 +7,9 @@
 //!
 //! The fit is weighted least squares of ln C against ln q, each bin
 //! weighted by the number of Fourier modes it averages (the scatter of a
-//! bin's ln C falls as 1/√modes; a PSD table's points weigh the same). The
+//! bin's ln C falls as 1/√modes; a PSD table's points weigh the same);
+//! whether it is a power law at all is judged by the points' plain rms
+//! distance from the line, each point as it is drawn. The
 //! standard error of H combines the regression's, σ̂/√S_xx/2 with σ̂² the
 //! weighted residual sum over n − 2, with the band's: the rms change of H
 //! when the band loses one or two points at either end (a choice of band
@@ -43,8 +45,14 @@ pub struct PowerLawFit {
     /// combined (NaN with fewer than three points).
     pub hurst_se: f64,
     /// The weighted rms distance of the points from the line, in decades
-    /// of C.
+    /// of C (each point weighted by its modes, as the line is fitted).
     pub rms_decades: f64,
+    /// The plain rms distance of the points from the line, in decades of C,
+    /// every point shown counting the same: what the verdict rests on (the
+    /// mode weighting gives the few-mode bins at small q almost no weight,
+    /// so a weighted rms of 0.08 decades can hide first bins 1.0–1.6
+    /// decades off the line).
+    pub rms_decades_unweighted: f64,
 }
 
 /// Whether a fit describes a self-affine surface over its band.
@@ -79,13 +87,14 @@ impl Verdict {
 }
 
 impl PowerLawFit {
-    /// Whether the fit is self-affine over its band ([`Verdict`]).
+    /// Whether the fit is self-affine over its band ([`Verdict`]); a poor
+    /// fit is judged by the points as drawn, unweighted.
     pub fn verdict(&self) -> Verdict {
         if self.points < MIN_POINTS || (self.q_hi / self.q_lo).log10() < MIN_DECADES {
             Verdict::TooShort
         } else if !(self.hurst > 0.0 && self.hurst <= 1.0) {
             Verdict::OutOfRange
-        } else if self.rms_decades > POOR_DECADES {
+        } else if self.rms_decades_unweighted > POOR_DECADES {
             Verdict::Poor
         } else {
             Verdict::SelfAffine
@@ -203,6 +212,11 @@ pub(crate) fn fit(
     };
     let hurst_se = (regression * regression + band * band).sqrt();
     let (lo, hi) = (pts[0].0.exp(), pts[n - 1].0.exp());
+    let plain = pts
+        .iter()
+        .map(|p| (p.1 - my - slope * (p.0 - mx)).powi(2))
+        .sum::<f64>()
+        / n as f64;
     Some(PowerLawFit {
         dim,
         hurst: crate::band::hurst(dim, slope),
@@ -214,5 +228,6 @@ pub(crate) fn fit(
         points: n,
         hurst_se,
         rms_decades: (ssr / w).sqrt() / std::f64::consts::LN_10,
+        rms_decades_unweighted: plain.sqrt() / std::f64::consts::LN_10,
     })
 }
