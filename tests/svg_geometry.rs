@@ -295,24 +295,25 @@ fn the_example_spectrum_names_its_fit_in_the_legend_and_in_full_under_it() {
     let texts: Vec<&str> = g.texts.iter().map(|(t, _)| t.as_str()).collect();
     // The legend names the fit in short, the caption says it in full.
     assert!(
-        texts.contains(&"power law fit: H = 0.8184 ± 0.02526"),
+        texts.contains(&"power law fit: H = 0.7915 ± 0.02313"),
         "{texts:?}"
     );
     assert!(
-        texts.contains(&"the fit band 1.257e5…1.144e7 /m"),
+        texts.contains(&"the fit band 7.658e5…9.777e6 /m"),
         "{texts:?}"
     );
     let caption = texts.join(" ");
     assert!(
         caption.contains(
-            "The power law fitted over the fit band 1.257e5…1.144e7 /m: H = 0.8184 ± \
-             0.02526, h_rms of the fitted power law 38.73 nm (27 points)."
+            "The power law fitted over the fit band 7.658e5…9.777e6 /m: H = 0.7915 ± \
+             0.02313, h_rms of the fitted power law 35.82 nm (17 points)."
         ),
         "{caption}"
     );
-    // Legend in the plot's top right corner, the plot across the page.
-    let (l, t, r, _) = g.plot;
+    // The legend in a corner of the plot (the lower left: the data run
+    // from the top left), the plot across the page.
+    let (l, _, r, b) = g.plot;
     let lg = g.legend.unwrap();
     assert!(l <= 90.0 && r - l >= 790.0, "{:?}", g.plot);
-    assert!(lg.0 > (l + r) / 2.0 && lg.1 < t + 20.0, "{lg:?}");
+    assert!(lg.0 < l + 20.0 && lg.3 > b - 20.0, "{lg:?} in {:?}", g.plot);
 }

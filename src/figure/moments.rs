@@ -137,14 +137,14 @@ pub fn moment_comments(state: &State) -> Vec<String> {
             };
             out.push(format!(
                 "fit: H = {}, standard error {}, band {}…{} /m ({how}; {} points, \
-                 rms {} decades mode-weighted, {} unweighted): {verdict}",
+                 rms {} decades unweighted, {} weighted by modes): {verdict}",
                 n(f.hurst),
                 n(f.hurst_se),
                 n(f.q_lo),
                 n(f.q_hi),
                 f.points,
-                n(f.rms_decades),
-                n(f.rms_decades_unweighted)
+                n(f.rms_decades_unweighted),
+                n(f.rms_decades)
             ));
             if let Some((_, h)) = crate::surface::fit_amplitude(&f) {
                 out.push(format!("h_rms of the fitted power law = {} m", n(h)));

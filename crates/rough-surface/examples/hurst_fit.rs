@@ -14,8 +14,7 @@ fn main() {
         match read(std::path::Path::new(&a), &opts) {
             Ok(m) => match m.default_fit() {
                 Some(f) => println!(
-                    "{a}: H {:.4} ± {:.4} over q {:.4e}…{:.4e} 1/m ({} points, rms {:.3} decades \
-                     mode-weighted, {:.3} unweighted, {:?})",
+                    "{a}: H {:.4} ± {:.4} over q {:.4e}…{:.4e} 1/m ({} points, rms {:.3} decades, {:.3} unweighted, {:?})",
                     f.hurst,
                     f.hurst_se,
                     f.q_lo,

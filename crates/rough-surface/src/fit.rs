@@ -7,7 +7,9 @@
 //!
 //! The fit is weighted least squares of ln C against ln q, each bin
 //! weighted by the number of Fourier modes it averages (the scatter of a
-//! bin's ln C falls as 1/√modes; a PSD table's points weigh the same). The
+//! bin's ln C falls as 1/√modes; a PSD table's points weigh the same);
+//! whether it is a power law at all is judged by the points' plain rms
+//! distance from the line, each point as it is drawn. The
 //! standard error of H combines the regression's, σ̂/√S_xx/2 with σ̂² the
 //! weighted residual sum over n − 2, with the band's: the rms change of H
 //! when the band loses one or two points at either end (a choice of band
@@ -17,13 +19,11 @@
 //! How far the points lie from the line is said twice: weighted by their
 //! modes, as the fit sees them, and unweighted, as the spectrum view shows
 //! them. A few-mode bin at small q can lie a decade off and barely move the
-//! weighted rms (a Zygo MetroPro map: 0.077 decades weighted, 0.689
-//! unweighted, its first bins 1.0–1.6 decades off); the verdict "not a
-//! power law" rests on the unweighted one, the distance a reader sees, past
-//! [`POOR_UNWEIGHTED`]: a self-affine surface's few-mode bins scatter by
-//! themselves (SurfaceTopography's fourier_synthesis maps of
-//! scripts/hurst_surfaces.py: up to 0.21 decades unweighted; a line scan
-//! 0.28), and the weighted rms still past [`POOR_DECADES`].
+//! weighted rms (a Zygo MetroPro map over its former default band: 0.077
+//! decades weighted, 0.689 unweighted, its first bins 1.0–1.6 decades
+//! off); the verdict "not a power law" rests on the unweighted one past
+//! [`POOR_DECADES`], and the default band ([`crate::band`]) loses the
+//! points farthest off its line until it passes.
 
 use std::f64::consts::PI;
 
@@ -53,11 +53,14 @@ pub struct PowerLawFit {
     /// The standard error of H, the regression's and the band's choice's
     /// combined (NaN with fewer than three points).
     pub hurst_se: f64,
-    /// The mode-weighted rms distance of the points from the line, in
-    /// decades of C.
+    /// The weighted rms distance of the points from the line, in decades
+    /// of C (each point weighted by its modes, as the line is fitted).
     pub rms_decades: f64,
-    /// The unweighted rms distance of the same points from the same line,
-    /// in decades of C: the one the verdict rests on.
+    /// The plain rms distance of the points from the line, in decades of C,
+    /// every point shown counting the same: what the verdict rests on (the
+    /// mode weighting gives the few-mode bins at small q almost no weight,
+    /// so a weighted rms of 0.08 decades can hide first bins 1.0–1.6
+    /// decades off the line).
     pub rms_decades_unweighted: f64,
 }
 
@@ -69,21 +72,17 @@ pub enum Verdict {
     SelfAffine,
     /// H outside (0, 1].
     OutOfRange,
-    /// The points stray from the line by more than [`POOR_UNWEIGHTED`] rms
-    /// unweighted, or [`POOR_DECADES`] weighted by their modes.
+    /// The points stray from the line by more than [`POOR_DECADES`] rms,
+    /// unweighted.
     Poor,
     /// Fewer than [`MIN_POINTS`] points, or a band under [`MIN_DECADES`].
     TooShort,
 }
 
-/// A fit whose points lie further than this from its line, unweighted rms
-/// in decades of C (a factor 2), is not a power law over the band.
-pub const POOR_UNWEIGHTED: f64 = 0.3;
-
-/// Fewest points of a fit that says anything.
-pub const MIN_POINTS: usize = 4;
 /// The narrowest band, decades of q, a fit is judged over.
-pub const MIN_DECADES: f64 = 0.5;
+pub use crate::limits::MIN_FIT_DECADES as MIN_DECADES;
+/// Fewest points of a fit that says anything.
+pub use crate::limits::MIN_FIT_POINTS as MIN_POINTS;
 
 impl Verdict {
     /// In words, for the screen: `None` for a self-affine fit.
@@ -98,13 +97,14 @@ impl Verdict {
 }
 
 impl PowerLawFit {
-    /// Whether the fit is self-affine over its band ([`Verdict`]).
+    /// Whether the fit is self-affine over its band ([`Verdict`]); a poor
+    /// fit is judged by the points as drawn, unweighted.
     pub fn verdict(&self) -> Verdict {
         if self.points < MIN_POINTS || (self.q_hi / self.q_lo).log10() < MIN_DECADES {
             Verdict::TooShort
         } else if !(self.hurst > 0.0 && self.hurst <= 1.0) {
             Verdict::OutOfRange
-        } else if self.rms_decades_unweighted > POOR_UNWEIGHTED || self.rms_decades > POOR_DECADES {
+        } else if self.rms_decades_unweighted > POOR_DECADES {
             Verdict::Poor
         } else {
             Verdict::SelfAffine
@@ -222,7 +222,7 @@ pub(crate) fn fit(
     };
     let hurst_se = (regression * regression + band * band).sqrt();
     let (lo, hi) = (pts[0].0.exp(), pts[n - 1].0.exp());
-    let unweighted = pts
+    let plain = pts
         .iter()
         .map(|p| (p.1 - my - slope * (p.0 - mx)).powi(2))
         .sum::<f64>()
@@ -238,7 +238,7 @@ pub(crate) fn fit(
         points: n,
         hurst_se,
         rms_decades: (ssr / w).sqrt() / std::f64::consts::LN_10,
-        rms_decades_unweighted: unweighted.sqrt() / std::f64::consts::LN_10,
+        rms_decades_unweighted: plain.sqrt() / std::f64::consts::LN_10,
     })
 }
 
