@@ -5,6 +5,7 @@
 
 mod caption;
 mod curves;
+mod fine;
 mod legend;
 mod map;
 mod moments;
@@ -130,6 +131,7 @@ fn render_once(
     room: Option<u32>,
 ) -> anyhow::Result<(String, Placed)> {
     let mut buf = String::new();
+    fine::start();
     let placed = {
         let root = SVGBackend::with_string(&mut buf, SIZE).into_drawing_area();
         root.fill(&WHITE).map_err(plot_err)?;
@@ -140,7 +142,7 @@ fn render_once(
         root.present().map_err(plot_err)?;
         placed
     };
-    Ok((buf, placed))
+    Ok((fine::apply(&buf), placed))
 }
 
 /// `text` with XML's special characters escaped, for element content.
@@ -369,8 +371,9 @@ fn line(
     // added by colour in `render_svg`): smooth dashes, not pixel-rounded
     // pieces.
     debug_assert!(stroke == Stroke::Solid || DASHED.contains(&colour));
-    c.draw_series(segs.into_iter().map(move |s| PathElement::new(s, style)))
-        .map_err(plot_err)?;
+    for s in segs {
+        fine::path(c, s, style)?;
+    }
     let sample = match stroke {
         Stroke::Dashed => Sample::Dashed,
         Stroke::Solid => Sample::Solid(2),
