@@ -164,7 +164,7 @@ fn the_spectrum_view_as_csv_and_svg() {
         "exact · measured moments · size effect on",
         "C^iso (m⁴)",
         "power law fitted over the fit band 1e5…1e9 /m: H = 0.8 ± ",
-        "h_rms of the fitted power law 1.982e-8 m (5 points)",
+        "h_rms of the fitted power law 19.82 nm (5 points)",
         "cutoff q1 = ζ q0 = 1e9 /m (ζ = 1e4)",
     ] {
         assert!(svg.contains(w), "{w}");

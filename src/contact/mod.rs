@@ -10,19 +10,14 @@
 //! so the cap is H_use/E*.
 
 pub mod engine;
-pub mod map_svg;
 pub mod measured;
 pub mod scene;
-pub mod svg;
-
-use std::io::Write;
 
 use anyhow::{bail, Context};
 use rough_contact::{Contact, LoadResult, Options};
 use rough_model::{areas, Areas};
 use scene::SceneKey;
 
-use crate::physical::csv_number;
 use crate::scene::State;
 
 /// Largest grid side the scene solves (ζ ≤ 128).
@@ -35,13 +30,6 @@ pub const DEFAULT_SEED: u64 = 1;
 pub const DEFAULT_LOADS: usize = 13;
 /// The load of the ζ sweep, p̄/H.
 pub const SWEEP_LOAD: f64 = 0.01;
-
-/// The contact view's CSV header.
-pub const CONTACT_HEADER: &str = "p_over_h,area,elastic_area,plastic_area,mean_gap,iterations,\
-residual,theory_area,theory_elastic_area,theory_plastic_area";
-/// The ζ sweep's CSV header.
-pub const SWEEP_HEADER: &str = "zeta,p_over_h,plastic_share,theory_plastic_share,area,\
-theory_area,grid,iterations,residual";
 
 /// The grid side for magnification `zeta`: 8 nodes per shortest wavelength.
 pub fn grid_for(zeta: f64) -> anyhow::Result<usize> {
@@ -120,6 +108,16 @@ impl Simulation {
     }
 }
 
+/// The side of the square the scene's simulation solves (m): the periodic
+/// cell 2π/q0 of a power law, a measured map's solved square.
+pub fn solved_side(state: &State) -> anyhow::Result<f64> {
+    let p = &state.params;
+    Ok(match measured::heights_of(state)? {
+        Some((_, h)) => measured::plan(&h, p.zeta() * p.q0())?.length,
+        None => std::f64::consts::TAU / p.q0(),
+    })
+}
+
 /// `points` loads p̄/H, log-spaced from 1e-3 to 1.
 pub fn loads(points: usize) -> Vec<f64> {
     let k = points.max(2) - 1;
@@ -137,60 +135,6 @@ pub fn loads(points: usize) -> Vec<f64> {
 /// ζ values of the sweep: powers of two from 1 to what the grid allows.
 pub fn sweep_zetas() -> Vec<f64> {
     (0..=7).map(|k| 2f64.powi(k)).collect()
-}
-
-fn comments(out: &mut impl Write, state: &State, sim: &Simulation) -> anyhow::Result<()> {
-    let p = &state.params;
-    // A sweep's first point solves another ζ than the scene's.
-    let p = &p.with(rough_model::Axis::Zeta, sim.zeta).unwrap_or(*p);
-    writeln!(out, "# scene: {}", state.name)?;
-    if let Some(m) = &sim.measured {
-        writeln!(
-            out,
-            "# simulation: elastic–perfectly-plastic BEM (rough-contact), {m}, wavevectors \
-             q ≤ zeta q0 = {} 1/m kept",
-            csv_number::format(p.zeta() * p.q0())
-        )?;
-    } else {
-        writeln!(
-            out,
-            "# simulation: elastic–perfectly-plastic BEM (rough-contact), periodic {n} × {n} grid \
-         of side 2π/q0, power-law Gaussian surface, seed {}",
-            sim.seed,
-            n = sim.contact.n()
-        )?;
-    }
-    writeln!(
-        out,
-        "# h0_over_e = {}, hardness_in_use_over_e = {}, zeta = {}, hurst = {}, h_rms = {} m, \
-         q0 = {} 1/m, rms_slope = {}, size_effect = {}",
-        csv_number::format(p.h0_over_e()),
-        csv_number::format(sim.hardness),
-        csv_number::format(p.zeta()),
-        csv_number::format(p.hurst()),
-        csv_number::format(p.h_rms()),
-        csv_number::format(p.q0()),
-        csv_number::format(sim.rms_slope),
-        if state.size_effect { "on" } else { "off" }
-    )?;
-    writeln!(
-        out,
-        "# theory: {:?} model, index in use {}; areas as fractions of A0, mean_gap in m; \
-         residual: rms violation of the contact conditions over h_rms",
-        state.model,
-        csv_number::format(sim.psi.to_f64())
-    )?;
-    Ok(())
-}
-
-fn push_row(buf: &mut String, fields: &[f64]) {
-    for (k, v) in fields.iter().enumerate() {
-        if k > 0 {
-            buf.push(',');
-        }
-        csv_number::push(buf, *v);
-    }
-    buf.push('\n');
 }
 
 /// One load of the contact view.
@@ -281,71 +225,6 @@ pub fn sweep_rows(state: &State, seed: u64) -> anyhow::Result<(Simulation, Vec<S
     }
     let first = first.ok_or_else(|| anyhow::anyhow!("no ζ to sweep"))?;
     Ok((first, rows))
-}
-
-/// The contact view as CSV.
-pub fn write_contact(
-    out: &mut impl Write,
-    state: &State,
-    points: usize,
-    seed: u64,
-) -> anyhow::Result<()> {
-    let (sim, rows) = load_rows(state, points, seed)?;
-    let mut buf = String::new();
-    for r in &rows {
-        push_row(
-            &mut buf,
-            &[
-                r.p_over_h,
-                r.sim.area,
-                r.sim.elastic_area,
-                r.sim.plastic_area,
-                r.sim.mean_gap,
-                r.sim.iterations as f64,
-                r.sim.residual,
-                r.theory.total,
-                r.theory.elastic,
-                r.theory.plastic,
-            ],
-        );
-    }
-    comments(out, state, &sim)?;
-    writeln!(out, "{CONTACT_HEADER}")?;
-    out.write_all(buf.as_bytes())?;
-    out.flush()?;
-    Ok(())
-}
-
-/// The ζ sweep as CSV.
-pub fn write_contact_sweep(out: &mut impl Write, state: &State, seed: u64) -> anyhow::Result<()> {
-    let (sim, rows) = sweep_rows(state, seed)?;
-    let mut buf = String::new();
-    for r in &rows {
-        push_row(
-            &mut buf,
-            &[
-                r.zeta,
-                SWEEP_LOAD,
-                r.share(),
-                r.theory_share(),
-                r.sim.area,
-                r.theory.total,
-                r.grid as f64,
-                r.sim.iterations as f64,
-                r.sim.residual,
-            ],
-        );
-    }
-    comments(out, state, &sim)?;
-    writeln!(
-        out,
-        "# zeta swept over 1, 2, 4, …, 128 (a measured map's: those it resolves) at p_over_h = {SWEEP_LOAD}, each on its own grid \
-         (column grid); the lines above are the first point's"
-    )?;
-    writeln!(out, "{SWEEP_HEADER}")?;
-    out.write_all(buf.as_bytes())?;
-    out.flush()?;
-    Ok(())
 }
 
 /// Most loads the contact view solves in one export.

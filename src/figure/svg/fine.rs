@@ -13,17 +13,33 @@ use std::fmt::Write as _;
 
 use plotters::prelude::*;
 
-use super::{plot_err, Chart};
+use super::{plot_err, Area, Chart};
 
 thread_local! {
     /// The polylines of the picture being drawn, in drawing order: the
     /// rounded `points` attribute plotters writes and the exact one.
     static FINE: RefCell<Vec<(String, String)>> = const { RefCell::new(Vec::new()) };
+    /// What replaces each placeholder rectangle, in drawing order.
+    static RAW: RefCell<Vec<String>> = const { RefCell::new(Vec::new()) };
 }
+
+/// The fill of a placeholder rectangle: a colour no picture uses.
+const PLACEHOLDER: RGBColor = RGBColor(1, 2, 3);
 
 /// Forgets what an earlier drawing recorded (a picture drawn again).
 pub(super) fn start() {
     FINE.with(|f| f.borrow_mut().clear());
+    RAW.with(|f| f.borrow_mut().clear());
+}
+
+/// Draws a placeholder over `corners` (pixels of `area`) that [`apply`]
+/// replaces by `content`, SVG elements in the document's coordinates:
+/// shapes plotters would round to whole pixels (a contact map's nodes,
+/// smaller than a pixel on a fine grid).
+pub(super) fn raw(area: &Area, corners: [(i32, i32); 2], content: String) -> anyhow::Result<()> {
+    RAW.with(|f| f.borrow_mut().push(content));
+    area.draw(&Rectangle::new(corners, PLACEHOLDER.filled()))
+        .map_err(plot_err)
 }
 
 /// The exact backend coordinates of drawn point `(u, v)` on `c`: plotters'
@@ -105,6 +121,16 @@ pub(super) fn apply(svg: &str) -> String {
         rest = &rest[start + len..];
     }
     out.push_str(rest);
+    let fill = format!(
+        "fill=\"#{:02X}{:02X}{:02X}\"",
+        PLACEHOLDER.0, PLACEHOLDER.1, PLACEHOLDER.2
+    );
+    for content in RAW.with(|f| std::mem::take(&mut *f.borrow_mut())) {
+        let Some(at) = out.find(&fill) else { break };
+        let start = out[..at].rfind("<rect").unwrap_or(at);
+        let end = out[at..].find("/>").map_or(at, |e| at + e + 2);
+        out.replace_range(start..end, &content);
+    }
     out
 }
 

@@ -23,6 +23,8 @@ const INSET: i32 = 8;
 pub(crate) enum Sample {
     Solid(u32),
     Dashed,
+    /// A filled dot of this radius (a simulation's points).
+    Dot(u32),
 }
 
 #[derive(Clone, Debug)]
@@ -39,6 +41,8 @@ pub(crate) struct Legend {
     pub entries: Vec<Entry>,
     /// Drawn coordinates (log10 on log axes) of every line drawn.
     pub paths: Vec<Vec<(f64, f64)>>,
+    /// Drawn coordinates of every dot drawn, with its radius in pixels.
+    pub dots: Vec<((f64, f64), i32)>,
 }
 
 /// Where the legend went.
@@ -123,6 +127,9 @@ impl Legend {
                         e.colour.stroke_width(2),
                     ))
                     .map_err(plot_err)?,
+                Sample::Dot(r) => root
+                    .draw(&Circle::new(((sx + ex) / 2, y), r, e.colour.filled()))
+                    .map_err(plot_err)?,
             }
             let font = ("sans-serif", 14).into_font();
             root.draw(&Text::new(e.label.clone(), (ex + PAD, y - 7), font))
@@ -150,6 +157,11 @@ impl Legend {
             .iter()
             .map(|p| p.iter().map(|q| c.backend_coord(q)).collect())
             .collect();
+        let dots: Vec<((i32, i32), i32)> = self
+            .dots
+            .iter()
+            .map(|(q, r)| (c.backend_coord(q), *r))
+            .collect();
         [
             (l, t),
             (r, t),
@@ -162,9 +174,11 @@ impl Legend {
         ]
         .into_iter()
         .find(|&(x0, y0)| {
-            !pixels
-                .iter()
-                .any(|p| enters(p, (x0 - 2, y0 - 2, x0 + w + 2, y0 + h + 2)))
+            let clear = (x0 - 2, y0 - 2, x0 + w + 2, y0 + h + 2);
+            !pixels.iter().any(|p| enters(p, clear))
+                && !dots.iter().any(|&((x, y), r)| {
+                    x + r >= clear.0 && x - r <= clear.2 && y + r >= clear.1 && y - r <= clear.3
+                })
         })
     }
 }

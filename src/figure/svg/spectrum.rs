@@ -163,8 +163,8 @@ pub fn fit_words(f: &rough_surface::PowerLawFit, h_rms: Option<f64>) -> String {
     match (f.verdict().words(), h_rms) {
         (Some(w), _) => format!("{h} — {w} ({} points)", f.points),
         (None, Some(hr)) => format!(
-            "{h}, h_rms of the fitted power law {} m ({} points)",
-            short_number(hr),
+            "{h}, h_rms of the fitted power law {} ({} points)",
+            short_length(hr),
             f.points
         ),
         (None, None) => format!("{h} ({} points)", f.points),
