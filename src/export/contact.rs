@@ -240,7 +240,7 @@ fn sweep_svg(state: &State, seed: u64) -> anyhow::Result<String> {
     let (sim, rows) = sweep_rows(state, seed)?;
     let (surface, _) = surface_words(&sim);
     let surface = match &sim.measured {
-        Some(_) => "of the measured map".to_string(),
+        Some(_) => "the measured map".to_string(),
         None => surface
             .split_once(", ")
             .map_or(surface.clone(), |(_, s)| s.to_string()),

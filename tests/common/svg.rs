@@ -110,19 +110,22 @@ impl Picture {
                         Some("end") => x - w,
                         _ => x,
                     };
+                    // The box from the cap height to the descenders:
+                    // 0.95 em, the line's own height less its leading.
+                    let h = 0.95 * size;
                     let top = match n.attribute("dy") {
                         Some("0.76em") => y,
-                        Some("0.5ex") => y - size / 2.0,
-                        Some("-0.5ex") => y - size,
+                        Some("0.5ex") => y - h / 2.0,
+                        Some("-0.5ex") => y - h,
                         // No dy: y is the baseline.
-                        _ => y - 0.8 * size,
+                        _ => y - 0.76 * size,
                     };
                     let turned = n.attribute("transform").is_some();
                     let (x0, y0, x1, y1) = if turned {
                         // Turned a quarter about (x, y): the box stands.
                         (x - size, y - w / 2.0, x, y + w / 2.0)
                     } else {
-                        (x0, top, x0 + w, top + size)
+                        (x0, top, x0 + w, top + h)
                     };
                     p.texts.push(Text {
                         text: t,
@@ -167,7 +170,7 @@ impl Picture {
                         x + num(&n, "width"),
                         y + num(&n, "height"),
                         n.attribute("fill").unwrap_or("").to_string(),
-                        n.attribute("opacity").unwrap_or("1").to_string(),
+                        n.attribute("opacity").unwrap_or("").to_string(),
                     ));
                 }
                 _ => {}
@@ -208,6 +211,46 @@ impl Picture {
             .iter()
             .find(|r| r.5 == "0.9")
             .map(|r| (r.0, r.1, r.2, r.3))
+    }
+
+    /// The plot's frame (x0, y0, x1, y1): where the grid lines run (the
+    /// union of all panels' on a picture of several).
+    pub fn frame(&self) -> (f64, f64, f64, f64) {
+        let grid: Vec<&Line> = self
+            .lines
+            .iter()
+            .filter(|l| {
+                (l.stroke == "#E1E1E1" || l.stroke == "#FFFFFF")
+                    && l.points.len() == 2
+                    && l.width == 1.0
+            })
+            .collect();
+        assert!(!grid.is_empty(), "no grid lines");
+        let pts = grid.iter().flat_map(|l| l.points.iter());
+        pts.fold(
+            (f64::MAX, f64::MAX, f64::MIN, f64::MIN),
+            |(a, b, c, d), &(x, y)| (a.min(x), b.min(y), c.max(x), d.max(y)),
+        )
+    }
+
+    /// The tick labels left of `x` (the y axis') or under `y` (the x
+    /// axis'): short texts beside the frame.
+    pub fn tick_labels(&self) -> (Vec<&Text>, Vec<&Text>) {
+        let (x0, _, _, y1) = self.frame();
+        let short = |t: &&Text| t.text.chars().count() <= 6 && !t.turned;
+        let ys = self
+            .texts
+            .iter()
+            .filter(short)
+            .filter(|t| t.x1 <= x0 && t.x1 >= x0 - 20.0)
+            .collect();
+        let xs = self
+            .texts
+            .iter()
+            .filter(short)
+            .filter(|t| t.y0 >= y1 && t.y0 <= y1 + 20.0)
+            .collect();
+        (ys, xs)
     }
 
     /// The lines drawn in `stroke` at width 2 (the curves).

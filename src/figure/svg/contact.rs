@@ -122,7 +122,7 @@ pub fn render_contact(state: &State, d: &ContactLoads) -> anyhow::Result<String>
     let title = super::title(state, what);
     let draw = |area: &super::Area, room| plot::draw(area, &title, (&x, &y), &series, room);
     let short = format!(
-        "loads p̄/{h} {} … {} · simulation {}",
+        "p̄/{h} {} … {} · {}",
         short_number(plo),
         short_number(phi),
         d.surface
@@ -175,7 +175,7 @@ pub fn render_contact_sweep(state: &State, d: &ContactSweep) -> anyhow::Result<S
     let title = super::title(state, &what);
     let draw = |area: &super::Area, room| plot::draw(area, &title, (&x, &y), &series, room);
     let short = format!(
-        "ζ {} … {} at p̄ = {load} {h} · simulation {}",
+        "ζ {} … {} at p̄ = {load} {h} · {}",
         short_number(zlo),
         short_number(zhi),
         d.surface

@@ -204,10 +204,7 @@ pub fn render_contact_map(state: &State, m: &ContactMap, span: String) -> anyhow
             "the periodic cell of side L = 2π/q0 = {}",
             short_length(m.side)
         ),
-        None => format!(
-            "the measured map's square of side {} (its crop: export --view contact)",
-            short_length(m.side)
-        ),
+        None => format!("the measured map's square of side {}", short_length(m.side)),
     };
     let caption = format!(
         "The contact at p̄ = {load} {hy} seen from the half-space, one node a square: white \

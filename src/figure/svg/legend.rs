@@ -1,8 +1,9 @@
 //! The pictures' legend: it lists what is drawn and nothing else, and it
 //! never covers data. Every line a view draws is recorded here (in drawn
 //! coordinates) as it is drawn; the legend box then goes to the first
-//! place inside the plot where no recorded line passes (the corners, then
-//! the middles of the edges), or, where there is none, right of the plot,
+//! place inside the plot where no recorded line passes (the corners, the
+//! middles of the edges, then a grid over the plot), or, where there is
+//! none, right of the plot,
 //! which the view then draws narrower ([`Legend::room`]).
 
 use plotters::prelude::*;
@@ -162,6 +163,11 @@ impl Legend {
             .iter()
             .map(|(q, r)| (c.backend_coord(q), *r))
             .collect();
+        // The corners and the middles of the edges first, then anywhere on
+        // a 7 × 7 grid over the plot, from the top (a load view whose
+        // curves fill every corner still has its middle free).
+        let grid =
+            (0..7).flat_map(|j| (0..7).map(move |i| (l + (r - l) * i / 6, t + (b - t) * j / 6)));
         [
             (l, t),
             (r, t),
@@ -173,6 +179,7 @@ impl Legend {
             (r, cy),
         ]
         .into_iter()
+        .chain(grid)
         .find(|&(x0, y0)| {
             let clear = (x0 - 2, y0 - 2, x0 + w + 2, y0 + h + 2);
             !pixels.iter().any(|p| enters(p, clear))

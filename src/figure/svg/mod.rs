@@ -101,9 +101,15 @@ pub fn render_moments_svg(state: &State, points: usize) -> anyhow::Result<String
     let mut desc = scene_text::full_lines_of(state, "moments", span);
     desc.extend(crate::figure::moment_comments(state));
     let short = format!("moments at ζ {} … {}", short_number(from), short_number(to));
-    let what = "The spectrum's moments against the cutoff ζ: h_rms = √m0, the rms slope \
-                h′ = √(2 m2) and the rms curvature h″ = √(8 m4/3); on a measured surface \
-                the real-space Sq and Sdq (Rq and RΔq) beside them.";
+    let what = if state.is_measured() {
+        "The spectrum's moments against the cutoff ζ, summed from the PSD up to ζ (after the \
+         detrend and window): h_rms = √m0, the rms slope h′ = √(2 m2) and the rms curvature \
+         h″ = √(8 m4/3), each in its own panel and unit; dashed, the real-space Sq and Sdq \
+         (Rq and RΔq of a line scan; after the detrend, no window)."
+    } else {
+        "The spectrum's moments against the cutoff ζ: h_rms = √m0, the rms slope h′ = √(2 m2) \
+         and the rms curvature h″ = √(8 m4/3), each in its own panel and unit."
+    };
     let lines = under(state, Some(short), what);
     render(&draw, &lines, &format!("{} — moments", state.name), &desc)
 }
@@ -309,18 +315,14 @@ fn chart_with_top<'a, 'b>(
     room: Option<u32>,
     top: u32,
 ) -> anyhow::Result<Chart<'a, 'b>> {
-    let mut builder = ChartBuilder::on(area);
-    if top == 0 {
-        let max = ((f64::from(area.dim_in_pixel().0) - 30.0) / TITLE_CHAR_W) as usize;
-        builder.caption(fit_title(title, max), ("sans-serif", 20));
-    } else {
-        // Room above the plot for a second axis: the title drawn here,
-        // above that room (plotters would label the q axis there too).
-        top_title(area, title)?;
-    }
-    let mut c = builder
+    // The title centred on the picture, not on the plot (which a legend
+    // right of it makes narrower): drawn here, where plotters' caption
+    // would go; with `top`, above the room kept for a second axis
+    // (plotters would label the q axis there too).
+    top_title(area, title)?;
+    let mut c = ChartBuilder::on(area)
         .margin(15)
-        .margin_top(if top == 0 { 15 } else { 15 + 30 + top })
+        .margin_top(if top == 0 { TITLE_H } else { 15 + 30 + top })
         .margin_right(15 + room.unwrap_or(0))
         .x_label_area_size(50)
         .y_label_area_size(70)
@@ -329,6 +331,10 @@ fn chart_with_top<'a, 'b>(
     mesh(&mut c, (x, y))?;
     Ok(c)
 }
+
+/// Pixels from the picture's top to the plot's, under the title (where
+/// plotters' own caption would put the plot).
+const TITLE_H: u32 = 41;
 
 /// `title` centred at the top of `area`, where plotters puts a chart's
 /// caption, cut to fit as [`fit_title`] cuts it.

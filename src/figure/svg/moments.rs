@@ -43,17 +43,10 @@ pub(super) fn draw(
 ) -> anyhow::Result<Placed> {
     let s = MomentSeries::of(state, points)?;
     let real = state.surface.as_ref().and_then(|src| src.measured.real);
-    let spectral = if state.is_measured() {
-        " from the PSD up to ζ"
-    } else {
-        ""
-    };
+    // Where the numbers come from is said under the chart: the labels
+    // stay short, so that each panel's legend finds room inside it.
     let level = |colour, name: &str, v: f64, text: String| {
-        Some((
-            colour,
-            format!("{name} = {text} (real space, no window)"),
-            v,
-        ))
+        Some((colour, format!("{name} = {text} (real space)"), v))
     };
     let names = real.map(|r| r.names());
     let panels = [
@@ -61,7 +54,7 @@ pub(super) fn draw(
             values: &s.h_rms,
             desc: "h_rms (m)",
             colour: H,
-            label: format!("h_rms = √m0{spectral}"),
+            label: "h_rms = √m0".into(),
             level: real.and_then(|r| {
                 let n = names.map_or("Sq", |n| n.0);
                 level(SQ, n, r.rms_height, short_length(r.rms_height))
@@ -71,7 +64,7 @@ pub(super) fn draw(
             values: &s.h_prime,
             desc: "h′ (1)",
             colour: SLOPE,
-            label: format!("h′ = √(2 m2){spectral}"),
+            label: "h′ = √(2 m2)".into(),
             level: real.and_then(|r| {
                 let n = names.map_or("Sdq", |n| n.1);
                 level(SDQ, n, r.rms_slope, short_number(r.rms_slope))
