@@ -93,7 +93,7 @@ fn simulation_lines(state: &State, sim: &Simulation) -> Vec<String> {
     } else {
         "psi_p"
     };
-    let h = if state.size_effect { "H_y" } else { "H0" };
+    let h = state.hardness_name();
     vec![
         format!(
             "simulation = elastic–perfectly-plastic BEM (rough-contact), pressures capped at \
@@ -299,7 +299,7 @@ pub fn map_picture(
 
 /// What the contact map spans, in full.
 fn map_span(state: &State, n: usize, side: f64, load: f64, seed: Option<u64>) -> String {
-    let h = if state.size_effect { "H_y" } else { "H0" };
+    let h = state.hardness_name();
     let what = match seed {
         Some(s) => format!("periodic Gaussian surface, seed {s}"),
         None => "the measured map".into(),
@@ -345,7 +345,7 @@ fn export_map(args: &ExportArgs, out: &mut impl std::io::Write) -> anyhow::Resul
             out.write_all(map_picture(&state, (&map, n), SWEEP_LOAD, areas, seed)?.as_bytes())?
         }
         FormatArg::Csv => {
-            let hy = if state.size_effect { "H_y" } else { "H0" };
+            let hy = state.hardness_name();
             let side = contact::solved_side(&state)?;
             let mut s = String::new();
             let span = map_span(&state, n, side, SWEEP_LOAD, seed);

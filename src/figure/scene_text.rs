@@ -100,7 +100,7 @@ fn span_full(state: &State, view: View, opts: &FigureOptions) -> String {
         },
         View::Load => format!(
             "load = pbar/{} from 0 to 1, {} points, at the parameters above",
-            if state.size_effect { "H_y" } else { "H0" },
+            state.hardness_name(),
             opts.points
         ),
         View::Spectrum => match state.surface.as_ref().and_then(|s| s.fit()) {
@@ -238,7 +238,7 @@ pub fn columns_line(state: &State, view: View) -> Option<String> {
     } else {
         ("psi_p, with the size effect off", "1")
     };
-    let h = if state.size_effect { "H_y" } else { "H0" };
+    let h = state.hardness_name();
     let swept = state.sweep.axis().field();
     Some(match view {
         View::Slopes => format!(

@@ -8,7 +8,7 @@
 use plotters::prelude::*;
 
 use super::plot::{self, Mark, Series};
-use super::{hardness_symbol, render, under, Scale, Stroke, ELASTIC, PLASTIC, TOTAL};
+use super::{render, under, Scale, Stroke, ELASTIC, PLASTIC, TOTAL};
 use crate::physical::short_number;
 use crate::scene::State;
 
@@ -51,7 +51,7 @@ pub struct ContactSweep {
 
 /// The index in use by its name: "Ψ_P = 0.4901".
 fn psi_text(state: &State, psi: f64) -> String {
-    let name = if state.size_effect { "Ψ*" } else { "Ψ_P" };
+    let name = state.index_name();
     format!("{name} = {}", short_number(psi))
 }
 
@@ -61,7 +61,7 @@ pub fn contact_span(state: &State, loads: &[f64], surface: &str) -> String {
     let full = |v: f64| crate::physical::csv_number::format(v);
     format!(
         "contact = p_over_h = pbar/{} from {} to {}, {} loads (log-spaced); simulation: {surface}",
-        hardness_symbol(state),
+        state.hardness_name(),
         full(loads.first().copied().unwrap_or(f64::NAN)),
         full(loads.last().copied().unwrap_or(f64::NAN)),
         loads.len()
@@ -76,7 +76,7 @@ pub fn sweep_span(state: &State, zetas: &[f64], load: f64, surface: &str) -> Str
         "contact-sweep = zeta over {}, at p_over_h = pbar/{} = {}; simulation: {surface}, \
          each zeta on its own grid",
         list.join(", "),
-        hardness_symbol(state),
+        state.hardness_name(),
         full(load)
     )
 }
@@ -84,7 +84,7 @@ pub fn sweep_span(state: &State, zetas: &[f64], load: f64, surface: &str) -> Str
 /// A/A0 against p̄/H_use, both log: the simulation's points beside the
 /// theory's curves.
 pub fn render_contact(state: &State, d: &ContactLoads) -> anyhow::Result<String> {
-    let h = hardness_symbol(state);
+    let h = state.hardness_name();
     let sim = d.area.iter().flatten();
     // The floor: the least simulated area or theoretical total; the
     // theory's elastic and plastic parts are cut there.
@@ -147,7 +147,7 @@ pub fn render_contact(state: &State, d: &ContactLoads) -> anyhow::Result<String>
 /// The plastic share of the contact area against ζ at one load: the
 /// simulation's points beside the theory's line.
 pub fn render_contact_sweep(state: &State, d: &ContactSweep) -> anyhow::Result<String> {
-    let h = hardness_symbol(state);
+    let h = state.hardness_name();
     let (zlo, zhi) = super::positive_span(d.zeta.iter().chain(&d.theory_zeta));
     let x = Scale::padded(true, zlo, zhi, 0.03, "ζ = q1/q0".into());
     let y = Scale::padded(false, 0.0, 1.0, 0.04, "plastic share A_pl/A".into());

@@ -14,7 +14,7 @@ use plotters::prelude::*;
 use super::caption::wrap;
 use super::contact::NODE_ELASTIC;
 use super::legend::Placed;
-use super::{fine, hardness_symbol, plot_err, render, under, Area, PLASTIC};
+use super::{fine, plot_err, render, under, Area, PLASTIC};
 use crate::physical::{short_length, short_number};
 use crate::scene::State;
 
@@ -135,7 +135,7 @@ fn draw(area: &Area, state: &State, m: &ContactMap, title: &str) -> anyhow::Resu
     .map_err(plot_err)?;
 
     // The legend and the numbers right of the map.
-    let hy = hardness_symbol(state);
+    let hy = state.hardness_name();
     let x0 = LEFT + side + 30;
     let mut y = TOP + 4;
     for (fill, label) in [
@@ -190,7 +190,7 @@ fn draw(area: &Area, state: &State, m: &ContactMap, title: &str) -> anyhow::Resu
 
 /// The contact map of `state` as an SVG document.
 pub fn render_contact_map(state: &State, m: &ContactMap, span: String) -> anyhow::Result<String> {
-    let hy = hardness_symbol(state);
+    let hy = state.hardness_name();
     let load = short_number(m.load);
     let what = format!("contact map at p̄ = {load} {hy}");
     let title = super::title(state, &what);

@@ -58,7 +58,7 @@ pub(super) fn slopes(
             .filter(|v| **v >= hi * 1e-4),
     );
     // The hardness by its own name (H alone is the Hurst exponent).
-    let norm = if state.size_effect { "H_y" } else { "H0" };
+    let norm = state.hardness_name();
     let y = Scale::around(true, lo, hi, format!("initial slope {norm}·dA/(A0·dp̄)"));
     let mut c = chart(area, &title(state, "initial slopes"), (&x, &y), room)?;
     let mut lg = Legend::default();
@@ -83,7 +83,7 @@ pub(super) fn slopes(
     let persson = (&s.x[..], &s.persson_elastic[..]);
     let dashed = Stroke::Dashed;
     // ψ by its name: the index in use.
-    let psi = if state.size_effect { "Ψ*" } else { "Ψ_P" };
+    let psi = state.index_name();
     line(
         &mut c,
         &mut lg,
@@ -177,7 +177,7 @@ pub(super) fn load(
 ) -> anyhow::Result<Placed> {
     let l = LoadCurve::compute(state, opts.points)?;
     // The hardness by its own name (H alone is the Hurst exponent).
-    let h = if state.size_effect { "H_y" } else { "H0" };
+    let h = state.hardness_name();
     let x = Scale {
         log: false,
         lo: 0.0,
@@ -190,7 +190,7 @@ pub(super) fn load(
         hi: 1.0,
         desc: "contact area A/A0".into(),
     };
-    let psi = if state.size_effect { "Ψ*" } else { "Ψ_P" };
+    let psi = state.index_name();
     let what = format!("areas against load at {psi} = {}", short_number(l.psi));
     let mut c = chart(area, &title(state, &what), (&x, &y), room)?;
     let mut lg = Legend::default();

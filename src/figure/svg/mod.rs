@@ -127,16 +127,6 @@ fn under(state: &State, span: Option<String>, what: &str) -> Vec<(String, RGBCol
     lines
 }
 
-/// The hardness in use by its own name (H alone is the Hurst exponent):
-/// H_y with the size effect, H0 without.
-pub(crate) fn hardness_symbol(state: &State) -> &'static str {
-    if state.size_effect {
-        "H_y"
-    } else {
-        "H0"
-    }
-}
-
 /// A picture: `draw` fills the chart (the legend inside the plot where no
 /// line passes, else the picture is drawn again with the plot narrower
 /// and the legend right of it), `lines` go under it, `title` and `desc`

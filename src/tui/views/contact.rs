@@ -184,7 +184,7 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
     let w = usize::from(area.width);
     let n = pane.tasks.first().map(|t| t.scene.n);
     // The hardness in use by its own name (H alone is the Hurst exponent).
-    let h = if app.state.size_effect { "H_y" } else { "H0" };
+    let h = app.state.hardness_name();
     let head = if pane.sweep {
         format!(
             "plastic share vs ζ at p̄ = {} {h} · seed {}",

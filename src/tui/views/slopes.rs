@@ -20,7 +20,7 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         return;
     }
     let p = &app.plot;
-    let norm = if app.state.size_effect { "H_y" } else { "H0" };
+    let norm = app.state.hardness_name();
     let title = vec![Span::styled(
         format!("slope {norm}·dA/dp̄/A0 vs {}", axis.symbol()),
         t.title,
@@ -151,7 +151,7 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
 /// program's reading of the paper's Appendix A, docs/model.md): the
 /// longest form that fits `row`.
 fn reading_line(app: &App, row: Rect, buf: &mut Buffer) {
-    let h = if app.state.size_effect { "H_y" } else { "H0" };
+    let h = app.state.hardness_name();
     let forms = [
         format!(
             "shares: elastic area = Appendix A's mass on [0, {h}], plastic the rest \
