@@ -285,11 +285,19 @@ impl From<AxisArg> for Axis {
     }
 }
 
+/// `serve`'s SSH address when neither `--listen` nor `--web` is given.
+pub const DEFAULT_LISTEN: &str = "127.0.0.1:2222";
+
 #[derive(Debug, Args)]
 pub struct ServeArgs {
-    /// Address and port to listen on (loopback unless given).
-    #[arg(long, default_value = "127.0.0.1:2222", value_name = "ADDR:PORT")]
-    pub listen: std::net::SocketAddr,
+    /// Address and port of the SSH server [default: 127.0.0.1:2222, loopback;
+    /// none with --web alone].
+    #[arg(long, value_name = "ADDR:PORT")]
+    pub listen: Option<std::net::SocketAddr>,
+    /// Also serve the class to browsers: a page and a WebSocket on this
+    /// address and port (plain HTTP; put it behind a TLS proxy off campus).
+    #[arg(long, value_name = "ADDR:PORT")]
+    pub web: Option<std::net::SocketAddr>,
     /// The host key (OpenSSH Ed25519, mode 0600), made if absent [default:
     /// $XDG_CONFIG_HOME/roughtui/host_ed25519 or ~/.config/roughtui/host_ed25519].
     #[arg(long, value_name = "PATH")]

@@ -72,7 +72,12 @@ fn run(cli: Cli) -> anyhow::Result<()> {
                 return Ok(());
             }
             roughtui::serve::run(roughtui::serve::Options {
-                listen: a.listen,
+                // SSH on its default address unless only the web is asked.
+                listen: match (a.listen, a.web) {
+                    (None, None) => Some(roughtui::cli::DEFAULT_LISTEN.parse()?),
+                    (l, _) => l,
+                },
+                web: a.web,
                 host_key: a.host_key,
                 lecturer_keys: a.lecturer_keys,
                 state,

@@ -35,12 +35,10 @@ use crate::tui::app::{Message, Mode};
 use crate::tui::glyphs::Glyphs;
 use crate::tui::session::Session;
 
-/// What a shell request hands over.
+/// What a shell request (or a browser's WebSocket) hands over.
 pub struct Start {
     pub shared: Arc<Shared>,
-    pub channel: Channel<Msg>,
-    pub conn: russh::server::Handle,
-    pub kill: Kill,
+    pub wire: Wire,
     pub role: Role,
     pub size: (u16, u16),
     /// The SSH user name (a student's name in the class).
@@ -48,6 +46,70 @@ pub struct Start {
     pub addr: IpAddr,
     /// The client's TERM and locale: the session's glyphs and colours.
     pub client: ClientTerm,
+}
+
+/// The bytes and sizes that come in from a client, whatever carries them.
+pub enum WireIn {
+    /// Keys (and terminal answers), as a terminal sends them.
+    Data(Vec<u8>),
+    /// A new terminal size, clamped.
+    Resize(u16, u16),
+}
+
+/// Where a session's input comes from: an SSH channel, or a WebSocket's
+/// reader task.
+pub enum Input {
+    Ssh(russh::ChannelReadHalf),
+    Web(tokio::sync::mpsc::Receiver<WireIn>),
+}
+
+impl Input {
+    /// The next input; `None` when the client is gone.
+    async fn next(&mut self) -> Option<WireIn> {
+        match self {
+            Input::Web(rx) => rx.recv().await,
+            Input::Ssh(read) => loop {
+                match read.wait().await? {
+                    ChannelMsg::Data { data } => return Some(WireIn::Data(data.to_vec())),
+                    ChannelMsg::WindowChange {
+                        col_width,
+                        row_height,
+                        ..
+                    } => {
+                        let (w, h) = clamp_size(col_width, row_height);
+                        return Some(WireIn::Resize(w, h));
+                    }
+                    ChannelMsg::Eof | ChannelMsg::Close => return None,
+                    _ => {}
+                }
+            },
+        }
+    }
+}
+
+/// A session's transport: its input, the one-frame slot its writer takes
+/// frames from, the goodbye that writer sends, and how the console names
+/// it (`""` for SSH, `" over the web"`).
+pub struct Wire {
+    pub input: Input,
+    pub slot: output::Slot,
+    pub bye: output::Bye,
+    pub via: &'static str,
+}
+
+impl Wire {
+    /// An SSH channel's wire: its writer started.
+    pub fn ssh(channel: Channel<Msg>, conn: russh::server::Handle, kill: Kill) -> Wire {
+        let (read, write) = channel.split();
+        let bye = output::Bye::default();
+        let slot = output::spawn(write, conn, kill, bye.clone());
+        Wire {
+            input: Input::Ssh(read),
+            slot,
+            bye,
+            via: "",
+        }
+    }
 }
 
 pub fn spawn(start: Start) {
@@ -134,18 +196,19 @@ impl Seat {
 async fn run(start: Start) {
     let Start {
         shared,
-        channel,
-        conn,
-        kill,
+        wire,
         role,
         size,
         name,
         addr,
         client,
     } = start;
-    let (mut read, write) = channel.split();
-    let bye = output::Bye::default();
-    let slot = output::spawn(write, conn, kill, bye.clone());
+    let Wire {
+        input: mut read,
+        slot,
+        bye,
+        via,
+    } = wire;
     let buf = FrameBuf::default();
     let mut prelude = Vec::new();
     let _ = crossterm::execute!(prelude, EnterAlternateScreen, Hide);
@@ -164,7 +227,10 @@ async fn run(start: Start) {
     ex.app.contact.engine = Arc::clone(&shared.contact);
     // The first screen's line on switching the drawing, until the first
     // key or HINT_FOR.
-    let mut hint = Some(term::hint(caps.glyphs, why.as_deref()));
+    // (Not in a browser: xterm.js draws braille, and M is in the help.)
+    let mut hint = via
+        .is_empty()
+        .then(|| term::hint(caps.glyphs, why.as_deref()));
     let hint_until = Instant::now() + term::HINT_FOR;
     let mut lecturer = shared.follow.subscribe();
     let follow = Follow::start(lecturer.borrow_and_update().is_some());
@@ -181,19 +247,13 @@ async fn run(start: Start) {
     s.ex.app.student = !is_lecturer;
     s.ex.app.lecturer_keys = shared.lecturer_keys.any();
     s.ex.app.lecturer_here = s.lecturer.borrow().is_some();
-    let name = clean_name(&name);
+    let mut name = clean_name(&name);
     let joined = Instant::now();
     let mut marker = s.marker();
-    shared.log.line(&format!(
-        "join  {name}{} from {addr}, {}x{}, {}",
-        if is_lecturer { " (lecturer)" } else { "" },
-        size.0,
-        size.1,
-        marker.name()
-    ));
     let mut roster = shared.class.watch_roster();
     let mut polls = shared.class.watch_poll();
     if is_lecturer {
+        s.ex.app.class.join_url.clone_from(&shared.join_url);
         shared.lecturer_joined(&mut s.ex.app);
         s.ex.app.class.view = Some(shared.class.view());
         roster.mark_unchanged();
@@ -201,15 +261,34 @@ async fn run(start: Start) {
         if s.follow.following() {
             s.catch_up();
             s.ex.app.set_status(FOLLOWING, false);
+        } else if let Some(lesson) = &shared.lesson {
+            // Before the lecturer comes: the lesson's first step, its
+            // claims hidden as the lesson says (they may answer a poll).
+            let at = crate::lesson::LessonAt {
+                lesson: Arc::clone(lesson),
+                at: 0,
+            };
+            s.ex.app.class.step = Some(at.line());
         }
         let following = s.follow.following();
-        s.seat = Some(
-            shared
-                .class
-                .join(&name, addr, size, marker.name(), following),
-        );
+        let id = shared
+            .class
+            .join(&name, addr, size, marker.name(), following);
+        s.seat = Some(id);
+        // Two of one name are told apart (ada, ada-2).
+        if let Some(n) = shared.class.name(id) {
+            name = n;
+        }
         polls.mark_changed();
     }
+    shared.log.line(&format!(
+        "join  {name}{} from {addr}{}, {}x{}, {}",
+        if is_lecturer { " (lecturer)" } else { "" },
+        via,
+        size.0,
+        size.1,
+        marker.name()
+    ));
     let mut decoder = Decoder::new();
     let mut panel: Option<Panel> = None;
     // Bytes for the terminal besides frames (the snapshot panel's).
@@ -235,10 +314,10 @@ async fn run(start: Start) {
             deadline = Instant::now() + idle;
         }
         tokio::select! {
-            msg = read.wait() => {
+            msg = read.next() => {
                 let Some(msg) = msg else { break };
                 match msg {
-                    ChannelMsg::Data { data } => {
+                    WireIn::Data(data) => {
                         deadline = Instant::now() + idle;
                         s.note(Note::Key);
                         let events = decoder.feed(&data[..data.len().min(input::MAX_READ)]);
@@ -268,6 +347,7 @@ async fn run(start: Start) {
                                     PanelKey::Close(b) => {
                                         raw.extend(b);
                                         panel = None;
+                                        bye.normal_screen(false);
                                         // The explorer whole again.
                                         if s.ex.update(Message::Redraw).is_err() {
                                             s.ex.app.quit = true;
@@ -284,6 +364,8 @@ async fn run(start: Start) {
                             if on_key(&mut s, &mut panel, &mut raw, key) {
                                 dirty = true;
                             }
+                            // The snapshot printed: a goodbye now stays below it.
+                            bye.normal_screen(panel.is_some());
                             if s.ex.app.quit {
                                 break;
                             }
@@ -310,16 +392,13 @@ async fn run(start: Start) {
                             poll::after_lecturer_keys(&mut s);
                         }
                     }
-                    ChannelMsg::WindowChange { col_width, row_height, .. } => {
-                        let (w, h) = clamp_size(col_width, row_height);
+                    WireIn::Resize(w, h) => {
                         if s.ex.update(Message::Resize(w, h)).is_err() {
                             break;
                         }
                         s.note(Note::Size(w, h));
                         dirty = true;
                     }
-                    ChannelMsg::Eof | ChannelMsg::Close => break,
-                    _ => {}
                 }
             }
             changed = s.lecturer.changed(), if !is_lecturer => {
@@ -348,6 +427,7 @@ async fn run(start: Start) {
                     // A question or a reveal closes the snapshot's text.
                     if let Some(p) = panel.take() {
                         raw.extend(p.close());
+                        bye.normal_screen(false);
                         if s.ex.update(Message::Redraw).is_err() {
                             break;
                         }
@@ -440,7 +520,7 @@ async fn run(start: Start) {
         shared.lecturer_left();
     }
     shared.log.line(&format!(
-        "leave {name}{} from {addr} after {}",
+        "leave {name}{} from {addr}{via} after {}",
         if is_lecturer { " (lecturer)" } else { "" },
         class::duration(joined.elapsed())
     ));
@@ -470,7 +550,12 @@ fn on_key(s: &mut Seat, panel: &mut Option<Panel>, raw: &mut Vec<u8>, key: KeyEv
             s.ex.app.set_status("everyone follows you now", false);
             return true;
         }
-        Message::Poll | Message::SavePoll | Message::Answer | Message::CancelPoll => {
+        Message::Poll
+        | Message::SavePoll
+        | Message::Answer
+        | Message::AnswerNowhere
+        | Message::ShareAnswers
+        | Message::CancelPoll => {
             poll::on_key(s, msg);
             return true;
         }

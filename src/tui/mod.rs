@@ -19,6 +19,7 @@ pub mod measured;
 pub mod message;
 pub mod plots;
 pub mod prompt;
+pub mod qr;
 pub mod readout;
 pub mod scenes;
 pub mod session;

@@ -114,8 +114,14 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     chart::axes(t, (&x, &y), axis.symbol(), (area, g), buf);
     // Where the regime changes along the sweep, on the x axis line; a mark
     // whose cell is taken by another sits in the nearest free one beside it.
+    // Not while a poll's answer is hidden: the marks bracket it.
     let mut taken: Vec<u16> = Vec::new();
-    for (v, mark) in &p.regime_marks {
+    let marks = if app.class.marks_hidden() {
+        &[][..]
+    } else {
+        &p.regime_marks[..]
+    };
+    for (v, mark) in marks {
         let Some(col) = chart::col_of(g, t.glyphs.dots(), p.x_bounds, *v) else {
             continue;
         };
