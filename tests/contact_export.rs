@@ -40,16 +40,20 @@ fn contact_view_csv() {
     ] {
         assert!(comments.contains(&want), "{want} not in {comments:#?}");
     }
-    assert!(
-        comments.iter().any(|c| c.starts_with(
-            "# contact = p_over_h = pbar/H0 from 0.001 to 1, 13 loads (log-spaced); simulation: \
-         periodic 128 × 128 grid of side 2π/q0, power-law Gaussian surface, seed 1"
-        )),
-        "{comments:#?}"
+    // The span where every view has it (after the parameters), then the
+    // simulation's lines after the scene's.
+    let at = |line: &str| comments.iter().position(|c| c.starts_with(line));
+    let span = at("# contact = p_over_h = pbar/H0 from 0.001 to 1, 13 loads (log-spaced)");
+    let sim = at(
+        "# simulation = elastic–perfectly-plastic BEM (rough-contact), periodic 128 × 128 \
+         grid of side 2π/q0, power-law Gaussian surface, seed 1",
     );
+    let model = at("# model = closed form");
+    assert!(span.is_some() && sim.is_some(), "{comments:#?}");
+    assert!(span < model && model < sim, "{comments:#?}");
     assert!(comments
         .iter()
-        .any(|c| c.contains("hardness_in_use_over_e = 0.01 (H0/E*)")));
+        .any(|c| c.starts_with("# hardness_in_use_over_e = 0.01 (H0/E*, the pressure cap)")));
     assert!(comments.iter().any(|c| c.starts_with(
         "# theory = the closed form model's finite-load areas at the index in use psi_p = "
     )));
@@ -90,7 +94,8 @@ fn contact_sweep_csv_and_svg() {
     assert!(header.starts_with("zeta,p_over_h,plastic_share,theory_plastic_share,"));
     assert!(
         comments.iter().any(|c| c.starts_with(
-            "# contact-sweep = zeta over 1, 2, 4, 8, 16, 32, 64, 128, at p_over_h = pbar/H0 = 0.01"
+            "# contact-sweep = zeta = 1, 2, 4, …, 128 (a measured map: those it resolves), each \
+             on its own grid, at p_over_h = pbar/H0 = 0.01"
         )),
         "{comments:#?}"
     );

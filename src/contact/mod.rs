@@ -13,11 +13,14 @@ pub mod engine;
 pub mod measured;
 pub mod scene;
 
+use std::io::Write;
+
 use anyhow::{bail, Context};
 use rough_contact::{Contact, LoadResult, Options};
 use rough_model::{areas, Areas};
 use scene::SceneKey;
 
+use crate::physical::csv_number;
 use crate::scene::State;
 
 /// Largest grid side the scene solves (ζ ≤ 128).
@@ -30,6 +33,13 @@ pub const DEFAULT_SEED: u64 = 1;
 pub const DEFAULT_LOADS: usize = 13;
 /// The load of the ζ sweep, p̄/H.
 pub const SWEEP_LOAD: f64 = 0.01;
+
+/// The contact view's CSV header.
+pub const CONTACT_HEADER: &str = "p_over_h,area,elastic_area,plastic_area,mean_gap,iterations,\
+residual,theory_area,theory_elastic_area,theory_plastic_area";
+/// The ζ sweep's CSV header.
+pub const SWEEP_HEADER: &str = "zeta,p_over_h,plastic_share,theory_plastic_share,area,\
+theory_area,grid,iterations,residual";
 
 /// The grid side for magnification `zeta`: 8 nodes per shortest wavelength.
 pub fn grid_for(zeta: f64) -> anyhow::Result<usize> {
@@ -137,6 +147,73 @@ pub fn sweep_zetas() -> Vec<f64> {
     (0..=7).map(|k| 2f64.powi(k)).collect()
 }
 
+/// The `#` lines of a contact CSV: `scene` (the scene as every view's CSV
+/// has it, made by export), then what the simulation adds.
+fn comments(
+    out: &mut impl Write,
+    scene: &[String],
+    state: &State,
+    sim: &Simulation,
+) -> anyhow::Result<()> {
+    for l in scene {
+        writeln!(out, "# {l}")?;
+    }
+    let p = &state.params;
+    // A sweep's first point solves another ζ than the scene's.
+    let p = &p.with(rough_model::Axis::Zeta, sim.zeta).unwrap_or(*p);
+    if let Some(m) = &sim.measured {
+        writeln!(
+            out,
+            "# simulation = elastic–perfectly-plastic BEM (rough-contact), {m}, wavevectors \
+             q ≤ zeta q0 = {} 1/m kept",
+            csv_number::format(p.zeta() * p.q0())
+        )?;
+    } else {
+        writeln!(
+            out,
+            "# simulation = elastic–perfectly-plastic BEM (rough-contact), periodic {n} × {n} grid \
+             of side 2π/q0, power-law Gaussian surface, seed {}",
+            sim.seed,
+            n = sim.contact.n()
+        )?;
+    }
+    writeln!(
+        out,
+        "# hardness_in_use_over_e = {} ({}/E*, the pressure cap); rms_slope = {} (the \
+         surface rescaled to the scene's sqrt(2 m2))",
+        csv_number::format(sim.hardness),
+        state.hardness_name(),
+        csv_number::format(sim.rms_slope)
+    )?;
+    writeln!(
+        out,
+        "# theory = the {} model's finite-load areas at the index in use {} = {}",
+        state.model.label(),
+        if state.size_effect {
+            "psi_star"
+        } else {
+            "psi_p"
+        },
+        csv_number::format(sim.psi.to_f64())
+    )?;
+    writeln!(
+        out,
+        "# units: areas as fractions of A0, mean_gap in m; residual: rms violation of the \
+         contact conditions over h_rms"
+    )?;
+    Ok(())
+}
+
+fn push_row(buf: &mut String, fields: &[f64]) {
+    for (k, v) in fields.iter().enumerate() {
+        if k > 0 {
+            buf.push(',');
+        }
+        csv_number::push(buf, *v);
+    }
+    buf.push('\n');
+}
+
 /// One load of the contact view.
 pub struct LoadRow {
     pub p_over_h: f64,
@@ -225,6 +302,77 @@ pub fn sweep_rows(state: &State, seed: u64) -> anyhow::Result<(Simulation, Vec<S
     }
     let first = first.ok_or_else(|| anyhow::anyhow!("no ζ to sweep"))?;
     Ok((first, rows))
+}
+
+/// The contact view as CSV, `scene` its first `#` lines.
+pub fn write_contact(
+    out: &mut impl Write,
+    state: &State,
+    points: usize,
+    seed: u64,
+    scene: &[String],
+) -> anyhow::Result<()> {
+    let (sim, rows) = load_rows(state, points, seed)?;
+    let mut buf = String::new();
+    for r in &rows {
+        push_row(
+            &mut buf,
+            &[
+                r.p_over_h,
+                r.sim.area,
+                r.sim.elastic_area,
+                r.sim.plastic_area,
+                r.sim.mean_gap,
+                r.sim.iterations as f64,
+                r.sim.residual,
+                r.theory.total,
+                r.theory.elastic,
+                r.theory.plastic,
+            ],
+        );
+    }
+    comments(out, scene, state, &sim)?;
+    writeln!(out, "{CONTACT_HEADER}")?;
+    out.write_all(buf.as_bytes())?;
+    out.flush()?;
+    Ok(())
+}
+
+/// The ζ sweep as CSV, `scene` its first `#` lines.
+pub fn write_contact_sweep(
+    out: &mut impl Write,
+    state: &State,
+    seed: u64,
+    scene: &[String],
+) -> anyhow::Result<()> {
+    let (sim, rows) = sweep_rows(state, seed)?;
+    let mut buf = String::new();
+    for r in &rows {
+        push_row(
+            &mut buf,
+            &[
+                r.zeta,
+                SWEEP_LOAD,
+                r.share(),
+                r.theory_share(),
+                r.sim.area,
+                r.theory.total,
+                r.grid as f64,
+                r.sim.iterations as f64,
+                r.sim.residual,
+            ],
+        );
+    }
+    comments(out, scene, state, &sim)?;
+    writeln!(
+        out,
+        "# the simulation and theory lines above are the first zeta's; each zeta solves its own \
+         grid (column grid) and hardness"
+    )?;
+    writeln!(out, "{SWEEP_HEADER}")?;
+    out.write_all(buf.as_bytes())?;
+    out.flush()?;
+    Ok(())
 }
 
 /// Most loads the contact view solves in one export.

@@ -13,17 +13,11 @@ use crate::contact::scene::{classify, SceneKey};
 use crate::contact::{
     self, load_rows, sweep_rows, Simulation, DEFAULT_LOADS, DEFAULT_SEED, MAX_LOADS, SWEEP_LOAD,
 };
+pub use crate::contact::{CONTACT_HEADER, SWEEP_HEADER};
 use crate::figure::scene_text::full_lines_of;
 use crate::figure::{self, ContactLoads, ContactMap, ContactSweep};
 use crate::physical::csv_number;
 use crate::scene::State;
-
-/// The contact view's CSV header.
-pub const CONTACT_HEADER: &str = "p_over_h,area,elastic_area,plastic_area,mean_gap,iterations,\
-residual,theory_area,theory_elastic_area,theory_plastic_area";
-/// The ζ sweep's CSV header.
-pub const SWEEP_HEADER: &str = "zeta,p_over_h,plastic_share,theory_plastic_share,area,\
-theory_area,grid,iterations,residual";
 
 /// `roughtui export --view contact|contact-sweep`.
 pub fn export(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
@@ -56,146 +50,35 @@ pub fn export(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
     }
     let state = super::state_of(args)?;
     let seed = args.seed.or(state.seed).unwrap_or(DEFAULT_SEED);
-    let text = match (args.format, sweep) {
-        (FormatArg::Csv, false) => contact_csv(&state, points, seed)?,
-        (FormatArg::Csv, true) => sweep_csv(&state, seed)?,
-        (FormatArg::Svg, false) => contact_svg(&state, points, seed)?,
-        (FormatArg::Svg, true) => sweep_svg(&state, seed)?,
-    };
-    out.write_all(text.as_bytes())?;
+    match (args.format, sweep) {
+        (FormatArg::Csv, false) => {
+            let span = figure::contact_span(&state, &contact::loads(points));
+            let scene = full_lines_of(&state, "contact", span);
+            contact::write_contact(out, &state, points, seed, &scene)
+        }
+        (FormatArg::Csv, true) => {
+            let span = figure::sweep_span(&state, SWEEP_LOAD);
+            let scene = full_lines_of(&state, "contact-sweep", span);
+            contact::write_contact_sweep(out, &state, seed, &scene)
+        }
+        (FormatArg::Svg, false) => write_svg(out, &contact_svg(&state, points, seed)?),
+        (FormatArg::Svg, true) => write_svg(out, &sweep_svg(&state, seed)?),
+    }
+}
+
+fn write_svg(out: &mut impl Write, svg: &str) -> anyhow::Result<()> {
+    out.write_all(svg.as_bytes())?;
     out.flush()?;
     Ok(())
 }
 
-/// The solved surface in words, for the pictures ("128 × 128 nodes, seed
-/// 1") and for the `#` lines (how it was made, every number).
-fn surface_words(sim: &Simulation) -> (String, String) {
+/// The solved surface in words, for the pictures: "128×128 nodes, seed 1".
+fn surface_words(sim: &Simulation) -> String {
     let n = sim.contact.n();
     match &sim.measured {
-        Some(m) => (
-            format!("{n}×{n} nodes of the measured map"),
-            format!("{m}, wavevectors q ≤ zeta q0 kept"),
-        ),
-        None => (
-            format!("{n}×{n} nodes, seed {}", sim.seed),
-            format!(
-                "periodic {n} × {n} grid of side 2π/q0, power-law Gaussian surface, seed {}",
-                sim.seed
-            ),
-        ),
+        Some(_) => format!("{n}×{n} nodes of the measured map"),
+        None => format!("{n}×{n} nodes, seed {}", sim.seed),
     }
-}
-
-/// What the simulation adds to the scene's `#` lines.
-fn simulation_lines(state: &State, sim: &Simulation) -> Vec<String> {
-    let psi = if state.size_effect {
-        "psi_star"
-    } else {
-        "psi_p"
-    };
-    let h = state.hardness_name();
-    vec![
-        format!(
-            "simulation = elastic–perfectly-plastic BEM (rough-contact), pressures capped at \
-             hardness_in_use_over_e = {} ({h}/E*); the surface rescaled to rms_slope = {} \
-             (the scene's sqrt(2 m2))",
-            csv_number::format(sim.hardness),
-            csv_number::format(sim.rms_slope)
-        ),
-        format!(
-            "theory = the {} model's finite-load areas at the index in use {psi} = {}",
-            state.model.label(),
-            csv_number::format(sim.psi.to_f64())
-        ),
-        "units: areas as fractions of A0, mean_gap in m; residual: rms violation of the \
-         contact conditions over h_rms"
-            .to_string(),
-    ]
-}
-
-fn comment_lines(out: &mut String, lines: &[String]) {
-    for l in lines {
-        out.push_str("# ");
-        out.push_str(l);
-        out.push('\n');
-    }
-}
-
-fn push_row(buf: &mut String, fields: &[f64]) {
-    for (k, v) in fields.iter().enumerate() {
-        if k > 0 {
-            buf.push(',');
-        }
-        csv_number::push(buf, *v);
-    }
-    buf.push('\n');
-}
-
-/// The contact view as CSV.
-fn contact_csv(state: &State, points: usize, seed: u64) -> anyhow::Result<String> {
-    let (sim, rows) = load_rows(state, points, seed)?;
-    let loads: Vec<f64> = rows.iter().map(|r| r.p_over_h).collect();
-    let (_, made) = surface_words(&sim);
-    let mut out = String::new();
-    comment_lines(
-        &mut out,
-        &full_lines_of(state, "contact", figure::contact_span(state, &loads, &made)),
-    );
-    comment_lines(&mut out, &simulation_lines(state, &sim));
-    out.push_str(CONTACT_HEADER);
-    out.push('\n');
-    for r in &rows {
-        push_row(
-            &mut out,
-            &[
-                r.p_over_h,
-                r.sim.area,
-                r.sim.elastic_area,
-                r.sim.plastic_area,
-                r.sim.mean_gap,
-                r.sim.iterations as f64,
-                r.sim.residual,
-                r.theory.total,
-                r.theory.elastic,
-                r.theory.plastic,
-            ],
-        );
-    }
-    Ok(out)
-}
-
-/// The ζ sweep as CSV.
-fn sweep_csv(state: &State, seed: u64) -> anyhow::Result<String> {
-    let (sim, rows) = sweep_rows(state, seed)?;
-    let zetas: Vec<f64> = rows.iter().map(|r| r.zeta).collect();
-    let (_, made) = surface_words(&sim);
-    let mut out = String::new();
-    let span = figure::sweep_span(state, &zetas, SWEEP_LOAD, &made);
-    comment_lines(&mut out, &full_lines_of(state, "contact-sweep", span));
-    comment_lines(&mut out, &simulation_lines(state, &sim));
-    out.push_str(
-        "# the simulation and theory lines above are the first zeta's; each zeta solves its \
-         own grid (column grid) and hardness\n",
-    );
-    out.push_str(SWEEP_HEADER);
-    out.push('\n');
-    for r in &rows {
-        push_row(
-            &mut out,
-            &[
-                r.zeta,
-                SWEEP_LOAD,
-                r.share(),
-                r.theory_share(),
-                r.sim.area,
-                r.theory.total,
-                r.grid as f64,
-                r.sim.iterations as f64,
-                r.sim.residual,
-            ],
-        );
-    }
-    Ok(out)
 }
 
 /// `n` loads log-spaced from `from` to `to`.
@@ -209,7 +92,7 @@ fn log_points(from: f64, to: f64, n: usize) -> Vec<f64> {
 /// theory's at 120 loads between the same ends.
 fn contact_svg(state: &State, points: usize, seed: u64) -> anyhow::Result<String> {
     let (sim, rows) = load_rows(state, points, seed)?;
-    let (surface, _) = surface_words(&sim);
+    let surface = surface_words(&sim);
     let p_over_h: Vec<f64> = rows.iter().map(|r| r.p_over_h).collect();
     let (from, to) = (p_over_h[0], p_over_h[p_over_h.len() - 1]);
     let mut d = ContactLoads {
@@ -238,7 +121,7 @@ fn contact_svg(state: &State, points: usize, seed: u64) -> anyhow::Result<String
 /// theory's at 100 ζ between the same ends.
 fn sweep_svg(state: &State, seed: u64) -> anyhow::Result<String> {
     let (sim, rows) = sweep_rows(state, seed)?;
-    let (surface, _) = surface_words(&sim);
+    let surface = surface_words(&sim);
     let surface = match &sim.measured {
         Some(_) => "the measured map".to_string(),
         None => surface
@@ -349,7 +232,9 @@ fn export_map(args: &ExportArgs, out: &mut impl std::io::Write) -> anyhow::Resul
             let side = contact::solved_side(&state)?;
             let mut s = String::new();
             let span = map_span(&state, n, side, SWEEP_LOAD, seed);
-            comment_lines(&mut s, &full_lines_of(&state, "contact-map", span));
+            for l in full_lines_of(&state, "contact-map", span) {
+                s.push_str(&format!("# {l}\n"));
+            }
             let share = if r.area > 0.0 {
                 r.plastic_area / r.area
             } else {

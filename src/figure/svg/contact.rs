@@ -55,12 +55,13 @@ fn psi_text(state: &State, psi: f64) -> String {
     format!("{name} = {}", short_number(psi))
 }
 
-/// What the contact picture spans, in full (its `<desc>` and its CSV's `#`
-/// lines): "contact = p_over_h from 0.001 to 1, 13 loads (log-spaced) …".
-pub fn contact_span(state: &State, loads: &[f64], surface: &str) -> String {
+/// What the contact view spans, in full (its pictures' `<desc>` and its
+/// CSV's `#` lines): "contact = p_over_h = pbar/H0 from 0.001 to 1, 13
+/// loads (log-spaced)".
+pub fn contact_span(state: &State, loads: &[f64]) -> String {
     let full = |v: f64| crate::physical::csv_number::format(v);
     format!(
-        "contact = p_over_h = pbar/{} from {} to {}, {} loads (log-spaced); simulation: {surface}",
+        "contact = p_over_h = pbar/{} from {} to {}, {} loads (log-spaced)",
         state.hardness_name(),
         full(loads.first().copied().unwrap_or(f64::NAN)),
         full(loads.last().copied().unwrap_or(f64::NAN)),
@@ -69,15 +70,12 @@ pub fn contact_span(state: &State, loads: &[f64], surface: &str) -> String {
 }
 
 /// What the ζ sweep spans, in full.
-pub fn sweep_span(state: &State, zetas: &[f64], load: f64, surface: &str) -> String {
-    let full = |v: f64| crate::physical::csv_number::format(v);
-    let list: Vec<String> = zetas.iter().map(|&z| full(z)).collect();
+pub fn sweep_span(state: &State, load: f64) -> String {
     format!(
-        "contact-sweep = zeta over {}, at p_over_h = pbar/{} = {}; simulation: {surface}, \
-         each zeta on its own grid",
-        list.join(", "),
+        "contact-sweep = zeta = 1, 2, 4, …, 128 (a measured map: those it resolves), each on \
+         its own grid, at p_over_h = pbar/{} = {}",
         state.hardness_name(),
-        full(load)
+        crate::physical::csv_number::format(load)
     )
 }
 
@@ -136,11 +134,12 @@ pub fn render_contact(state: &State, d: &ContactLoads) -> anyhow::Result<String>
         psi_text(state, d.psi)
     );
     let lines = under(state, Some(short), &caption);
-    let desc = crate::figure::scene_text::full_lines_of(
+    let mut desc = crate::figure::scene_text::full_lines_of(
         state,
         "contact",
-        contact_span(state, &d.p_over_h, &d.surface),
+        contact_span(state, &d.p_over_h),
     );
+    desc.push(format!("simulation = {}", d.surface));
     render(&draw, &lines, &format!("{} — {what}", state.name), &desc)
 }
 
@@ -192,11 +191,9 @@ pub fn render_contact_sweep(state: &State, d: &ContactSweep) -> anyhow::Result<S
         state.model.label()
     );
     let lines = under(state, Some(short), &caption);
-    let desc = crate::figure::scene_text::full_lines_of(
-        state,
-        "contact-sweep",
-        sweep_span(state, &d.zeta, d.load, &d.surface),
-    );
+    let mut desc =
+        crate::figure::scene_text::full_lines_of(state, "contact-sweep", sweep_span(state, d.load));
+    desc.push(format!("simulation = {}", d.surface));
     render(&draw, &lines, &format!("{} — {what}", state.name), &desc)
 }
 
