@@ -29,6 +29,9 @@ use crate::presets;
 use crate::scene::State;
 use crate::snapshot;
 
+mod look;
+pub use look::Look;
+
 #[derive(Clone, Debug, PartialEq)]
 pub enum Mode {
     Main,

@@ -214,6 +214,13 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
     if area.height < 8 {
         return;
     }
+    // The simulation and the theory beside it are at the marker (and the
+    // sweep's chart is the share itself): while a claim's poll is open
+    // they wait, as the readout's values do.
+    let rest = Rect::new(area.x, area.y + 1, area.width, area.height - 1);
+    if chart::withheld(app, "the simulation and the theory's areas", rest, buf) {
+        return;
+    }
     let row1 = Rect::new(area.x, area.y + 1, area.width, 1);
     let mut top = 2;
     if pane.sweep {
