@@ -2,7 +2,7 @@
 """Exact bivariate Taylor series of the closed-form (three-Gaussian) elastic area.
 
 Normalized units: H = 1, x = 1/psi = H/sqrt(V), rho = pbar/H, tau = rho (1 - rho).
-With a, b of MODEL.md (y = 2x^2: a = (1-e^{-(1-rho)y})/(1-e^{-y}), b = (1-e^{-rho y})/(1-e^{-y})),
+With a, b of docs/model.md (y = 2x^2: a = (1-e^{-(1-rho)y})/(1-e^{-y}), b = (1-e^{-rho y})/(1-e^{-y})),
 
     A_el = M(rho) - a M(-rho) - b M(2-rho)
          = x^5/sqrt(2 pi) * tau * sum_{j>=2} x^(2(j-2)) R_j(tau),

@@ -6,11 +6,11 @@ switch points of the Rust forms (exact: psi^2 = 1/pi; closed: x = 1/psi = 0.8;
 interval masses: 2 k rho / psi^2 = 1), loads next to 0 and 1, psi at the
 underflow edges, and a seeded log-uniform sample.
 
-Every value comes from MODEL.md's definitions evaluated verbatim (differences
+Every value comes from docs/model.md's definitions evaluated verbatim (differences
 and all), not from the cancellation-free forms of the Rust code:
   exact:  A_el = sum_n [M(rho+2n) - M(-rho+2n)] (images, psi < 0.6) or the sine
           series (psi >= 0.6); A_pl = rho - int_0^1 p P dp; A_tot = A_el + A_pl
-  closed: a, b from MODEL.md's P0 ratios (normalized: D' = -expm1(-2x^2), ...),
+  closed: a, b from docs/model.md's P0 ratios (normalized: D' = -expm1(-2x^2), ...),
           A_tot = ((1+a)/2) erf(rho/r) + (b/2) erf((rho-2)/r) + (1-a+b)/2,
           A_el = M(rho) - a M(-rho) - b M(2-rho), A_pl = A_tot - A_el
 with M(c) the mass of N(c, psi^2) on [0, 1], r = sqrt(2) psi.
@@ -180,7 +180,7 @@ def points():
 def main():
     lines = [
         "# generator: scripts/gen_areas_extra.py (python3 scripts/gen_areas_extra.py from the repository root)",
-        f"# mpmath {mpmath.__version__}; model: MODEL.md definitions evaluated verbatim (see the script's doc)",
+        f"# mpmath {mpmath.__version__}; model: docs/model.md definitions evaluated verbatim (see the script's doc)",
         "# precision: each row at D and D+40 digits, D = 60, 140, ... until all outputs agree to 28",
         "#   significant digits and are resolved (|v| > 10^(35-D)); printed from the D+40 run;",
         "#   a value below 1e-340 at D >= 420 is printed as 0; 'inf' = +infinity.",

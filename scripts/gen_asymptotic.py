@@ -7,7 +7,7 @@ Run from the repository root:
 
 It rewrites, deterministically, crates/rough-study/data/params_asymptotic.csv:
 the columns of params.csv (spectrum, hardness, indices, slopes at the indices)
-with the moments of eq. 10 (MODEL.md, "Asymptotic"):
+with the moments of eq. 10 (docs/model.md, "Asymptotic"):
 
     m0 = (pi Z/H) q0^(-2H)
     m2 = pi Z q0^(2-2H) zeta^(2-2H)/(2-2H)
@@ -26,7 +26,7 @@ from mpmath import mp, mpf
 
 import gen_reference as ref
 
-# h_rms of the paper's Z = 1e-8 m^0.4 at q0 = 1e5 1/m, H = 0.8 (MODEL.md)
+# h_rms of the paper's Z = 1e-8 m^0.4 at q0 = 1e5 1/m, H = 0.8 (docs/model.md)
 H_RMS_PAPER = 19.816636488030044e-9
 
 
@@ -60,11 +60,11 @@ def params_row_asymptotic(h0_over_e, h_rms, zeta, hurst, r_star, q0):
 
 
 def check():
-    """MODEL.md's check value and the paper's h_rms."""
+    """docs/model.md's check value and the paper's h_rms."""
     with mp.workdps(60):
         pi = mpmath.pi
         h = mpmath.sqrt(pi * mpf("1e-8") * mpf("1e5") ** mpf("-1.6") / mpf("0.8"))
-        # MODEL.md's 19.816636488030044 nm is the double of an f64 evaluation;
+        # docs/model.md's 19.816636488030044 nm is the double of an f64 evaluation;
         # the correctly rounded value is 19.816636488030055 nm (2.5 ulp away)
         assert abs(h / mpf(H_RMS_PAPER) - 1) < mpf(10) ** -15, h
         psi_p = params_row_asymptotic(1e-2, H_RMS_PAPER, 128.0, 0.8, 0.0, 1e5)[11]
@@ -114,7 +114,7 @@ def main():
         rows.append([ref.fmt_in(v) for v in inp] + [ref.fmt_out(v) for v in vals])
     hdr = [line.replace(ref.SCRIPT, "scripts/gen_asymptotic.py") for line in ref.header_common(ad)] + [
         "# the columns of params.csv (see scripts/gen_reference.py) with the asymptotic",
-        "#   moments of eq. 10 (MODEL.md): m0 = (pi z/hurst) q0^(-2hurst),",
+        "#   moments of eq. 10 (docs/model.md): m0 = (pi z/hurst) q0^(-2hurst),",
         "#   m2 = pi z q0^e2 zeta^e2/e2, m4 = (3pi/4) z q0^e4 zeta^e4/e4, e_n = n - 2 hurst;",
         "#   r_s = (3/8) sqrt(pi/m4) (finite at zeta = 1); hardness_ratio = sqrt(1 + r_star/(1.2 r_s));",
         "#   psi_gw = sqrt(sqrt(m0)/r_s)/h0_over_e; psi_p = sqrt(m2/2)/h0_over_e;",

@@ -8,7 +8,7 @@ Run from the repository root:
 It rewrites, deterministically, crates/rough-model/src/slopes/closed_fits.rs.
 Only python3 and mpmath (1.3.0) are needed.
 
-The closed form of MODEL.md (x = 1/psi, u = x^2, z = x/sqrt2):
+The closed form of docs/model.md (x = 1/psi, u = x^2, z = x/sqrt2):
 
     S_tot = sqrt(2/pi) x + u/(e^{2u} - 1) + u erfc(sqrt2 x)/(1 - e^{-2u})
     S_pl  = sqrt(2/pi) x e^{-u/2} + u erfc(x/sqrt2) coth u

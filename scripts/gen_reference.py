@@ -12,7 +12,7 @@ It rewrites, deterministically, every file in crates/rough-study/data/:
     params.csv         spectrum moments, indices and the slopes at the indices
     closed_series.txt  Taylor coefficients of the closed-form elastic slope
 
-Every formula follows /work/shared/MODEL.md (the project's contract). Only
+Every formula follows docs/model.md (the project's contract). Only
 python3 and mpmath are needed; sympy, if installed, is used for one extra
 cross-check of the series coefficients.
 
@@ -156,7 +156,7 @@ def _eps():
 
 
 # ---------------------------------------------------------------------------
-# exact two-barrier slopes (MODEL.md "initial slopes"), x = 1/psi
+# exact two-barrier slopes (docs/model.md "initial slopes"), x = 1/psi
 # ---------------------------------------------------------------------------
 # Large-x forms (x^2 >= switch):   S_tot = K x theta3(0, e^{-2x^2})
 #                                  S_pl  = K x theta2(0, e^{-2x^2})
@@ -236,7 +236,7 @@ def exact_slopes(psi):
 
 
 # ---------------------------------------------------------------------------
-# closed-form (three Gaussians) slopes, MODEL.md, x = 1/psi
+# closed-form (three Gaussians) slopes, docs/model.md, x = 1/psi
 # ---------------------------------------------------------------------------
 #   S_tot = K x + x^2/(e^{2x^2}-1) + x^2 erfc(sqrt2 x)/(1-e^{-2x^2})
 #   S_pl  = K x e^{-x^2/2} + x^2 erfc(x/sqrt2) coth(x^2)
@@ -309,7 +309,7 @@ def exact_areas_images(psi, rho, n_images=None):
 
 
 def exact_pl_load_balance(psi, rho, n_images):
-    """A_pl = rho - int_0^1 p P dp by images (MODEL.md's definition; check only)."""
+    """A_pl = rho - int_0^1 p P dp by images (docs/model.md's definition; check only)."""
     s = psi
     phi = lambda u: mpmath.exp(-u * u / 2) / mpmath.sqrt(2 * mpmath.pi)
 
@@ -369,7 +369,7 @@ def closed_abD(psi, rho):
 def closed_areas(psi, rho):
     """(A_el, A_pl, A_tot) of the closed form, rho = pbar/H, psi = sqrt(V)/H.
     A_tot = ((1+a)/2) erf(rho x/sqrt2) + (b/2)[e^{-2(1-rho)x^2} + erfc((2-rho)x/sqrt2)]
-    (MODEL.md's formula with 1 - a = b e^{-2(1-rho)x^2}; all terms >= 0)."""
+    (docs/model.md's formula with 1 - a = b e^{-2(1-rho)x^2}; all terms >= 0)."""
     x = 1 / psi
     x2 = x * x
     a, b = closed_abD(psi, rho)
@@ -390,7 +390,7 @@ def closed_areas(psi, rho):
 
 
 def closed_areas_raw(psi, rho):
-    """MODEL.md's formulas verbatim (H = 1, V = psi^2); check only."""
+    """docs/model.md's formulas verbatim (H = 1, V = psi^2); check only."""
     V = psi * psi
 
     def P0(u):
@@ -406,7 +406,7 @@ def closed_areas_raw(psi, rho):
 
 
 # ---------------------------------------------------------------------------
-# spectrum, hardness, indices (MODEL.md)
+# spectrum, hardness, indices (docs/model.md)
 # ---------------------------------------------------------------------------
 
 def _g(lnz, e):
@@ -577,7 +577,7 @@ def check_all(series_r):
                 z = mpf(z)
                 assert rel(erfc_(z), mpmath.erfc(z)) < mpf(10) ** -60, z
     with mp.workdps(60):
-        # MODEL.md check values at psi = 1 (15 digits given)
+        # docs/model.md check values at psi = 1 (15 digits given)
         el, pl, tot = exact_slopes(mpf(1))
         cel, cpl, ctot = closed_slopes(mpf(1))
         for got, want in [(el, "0.0287675334233055"), (pl, "0.985616238638923"),
@@ -592,7 +592,7 @@ def check_all(series_r):
                           (hr, "6.58413978635223"), (pp, "0.488442606919953"),
                           (pst, "0.0741847261402938"), (pgw, "3.18779778457193")]:
             assert rel(got, mpf(want)) < mpf(10) ** -13, (got, want)
-        # closed-form normalized a, b and A_tot against MODEL.md's raw formulas
+        # closed-form normalized a, b and A_tot against docs/model.md's raw formulas
         for psi in ["0.1", "0.3", "0.5", "1", "2", "5"]:
             for rho in ["1e-6", "0.05", "0.25", "0.5", "0.9", "1"]:
                 psi_m, rho_m = mpf(float(psi)), mpf(float(rho))
@@ -753,7 +753,7 @@ def params_grid():
 def header_common(adaptive):
     return [
         "# generator: %s (python3 %s from the repository root)" % (SCRIPT, SCRIPT),
-        "# mpmath %s; model: /work/shared/MODEL.md" % mpmath.__version__,
+        "# mpmath %s; model: docs/model.md" % mpmath.__version__,
         "# precision: every row is evaluated at D and D+%d decimal digits, D starting at %d"
         % (STEP_DPS, BASE_DPS),
         "#   (plus the digits a known cancellation loses), D raised by %d until every output"
@@ -798,7 +798,7 @@ def gen_slopes():
         "#     S_tot = sqrt(2/pi) x sum_n exp(-2 n^2 x^2), S_pl = sqrt(2/pi) x sum_n exp(-(2n+1)^2 x^2/2),",
         "#     S_el = S_tot - S_pl (computed cancellation-free: sqrt(2/pi) x theta4(0,e^{-x^2/2})",
         "#     or 4 sum_{k odd} exp(-pi^2 k^2/(2x^2)))",
-        "#   closed_elastic, closed_plastic, closed_total: three-Gaussian closed form (MODEL.md),",
+        "#   closed_elastic, closed_plastic, closed_total: three-Gaussian closed form (docs/model.md),",
         "#     closed_elastic = closed_total - closed_plastic at raised precision",
         "#   persson_elastic: sqrt(2/pi)/psi",
         "#   psi = 0: exact/closed elastic and total = inf, plastic = 0, persson = inf",
@@ -826,7 +826,7 @@ def gen_areas():
         "#     exact_elastic = int_0^H P dp, exact_plastic = (pbar - int_0^H p P dp)/H",
         "#     (= probability of absorption at H), exact_total = sum.  Images for psi < 0.6,",
         "#     sine series otherwise (both checked against each other in the script).",
-        "#   closed_*: three-Gaussian closed form (MODEL.md), closed_plastic = total - elastic, summed as positive terms;",
+        "#   closed_*: three-Gaussian closed form (docs/model.md), closed_plastic = total - elastic, summed as positive terms;",
         "#     with x = 1/psi: D' = -expm1(-2x^2), a = -expm1(-2(1-rho)x^2)/D',",
         "#     b = -expm1(-2 rho x^2)/D'.  closed_elastic may be negative (the closed form is",
         "#     not an exact solution); it is printed as computed.",
@@ -880,7 +880,7 @@ def gen_series(r):
         % mpmath.__version__,
         "#   printed with 40 significant digits (evaluated at 80 digits).",
         "# Taylor series around x = 0 of the closed-form elastic slope, x = 1/psi:",
-        "#   S_el(x) = S_tot(x) - S_pl(x) = sum_k coefficient_k x^k  (MODEL.md three-Gaussian form)",
+        "#   S_el(x) = S_tot(x) - S_pl(x) = sum_k coefficient_k x^k  (docs/model.md three-Gaussian form)",
         "#   = sqrt(2/pi) x (1 - e^{-x^2/2}) - x^2 erf(sqrt2 x)/(1 - e^{-2x^2}) + x^2 erf(x/sqrt2) coth(x^2)",
         "#   (the even parts cancel exactly).  Only odd powers occur and the first is x^5;",
         "#   powers not listed (0..4 and every even power) have coefficient exactly 0.",

@@ -338,7 +338,7 @@ def gen_claims():
             rows.append([str(k), str(kind), str(rising), ref.fmt_out(y), ref.fmt_out(w)])
     lines = [
         "# generator: %s (python3 %s from the repository root)" % (SCRIPT, SCRIPT),
-        "# mpmath %s; model: /work/shared/MODEL.md" % mpmath.__version__,
+        "# mpmath %s; model: docs/model.md" % mpmath.__version__,
         "# precision: each root by bisection in ln x to 1e-40 at 60 and at 100 digits,",
         "#   the two agreeing to 1e-30; printed from the 100-digit run, 25 digits.",
         "# columns: case (the export arguments below: a preset with its own model, moments",
@@ -393,7 +393,7 @@ def gen_quoted():
         again = quoted_values()
     lines = [
         "# generator: %s (python3 %s from the repository root)" % (SCRIPT, SCRIPT),
-        "# mpmath %s; model: /work/shared/MODEL.md" % mpmath.__version__,
+        "# mpmath %s; model: docs/model.md" % mpmath.__version__,
         "# precision: at 60 and at 100 digits, the two agreeing to 1e-30 (roots by",
         "#   bisection to 1e-40 in ln psi); printed from the 100-digit run, 25 digits.",
         "# columns: id (below), x = the swept value it is at (0: none), value.",
@@ -407,7 +407,7 @@ def gen_quoted():
 
 
 def check():
-    """The grid rule against hand values, and one index against MODEL.md."""
+    """The grid rule against hand values, and one index against docs/model.md."""
     assert grid("zeta", 1.0, 1e4, 5) == [1.0, 10.0, 100.0, 1000.0, 1e4]
     assert grid("hurst", 0.1, 0.9, 3)[1] == 0.5
     with mpmath.workdps(60):

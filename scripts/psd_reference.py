@@ -25,7 +25,7 @@ Writes to crates/rough-surface/tests/data/:
   cutoffs: areal M_α(q1) = (1/2π) ∫_{q0}^{q1} q^(α+1) C dq with m0 = M0,
   m2 = M2/2, m4 = 3 M4/8; profile m_α = (1/π) ∫_{q0}^{q1} q^α C1D dq;
   by mpmath.quad with the knee as a breakpoint, 50 digits; for fig2 also
-  MODEL.md's truncated closed forms, which must agree.
+  docs/model.md's truncated closed forms, which must agree.
 
 The nodes are the doubles written to the files; the function is evaluated
 at them exactly.
@@ -129,7 +129,7 @@ def main():
                 q1 = min(z * q0, qend)
                 m = moments(c, dim, q0, q1, QR if c is not fig2 else None)
                 if c is fig2:
-                    # MODEL.md's truncated moments must agree.
+                    # docs/model.md's truncated moments must agree.
                     zz = mp.mpf(q1) / q0
                     g = lambda e: mp.expm1(e * mp.log(zz)) / e
                     closed = [mp.pi * Z / H * mp.mpf(q0) ** (-2 * H) * -mp.expm1(-2 * H * mp.log(zz)),

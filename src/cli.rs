@@ -5,6 +5,7 @@ use std::path::PathBuf;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use rough_model::Axis;
 
+pub mod setup;
 mod values;
 pub use values::{parse_duration, parse_fit_band, parse_set, SetKey, MAX_POINTS};
 use values::{parse_grid, parse_height_unit, parse_pixel_size, parse_points, parse_sweep};
@@ -47,18 +48,6 @@ pub enum MarkerArg {
     Half,
     Block,
     Ascii,
-}
-
-impl From<MarkerArg> for crate::tui::glyphs::Glyphs {
-    fn from(m: MarkerArg) -> Self {
-        use crate::tui::glyphs::Glyphs;
-        match m {
-            MarkerArg::Braille => Glyphs::Braille,
-            MarkerArg::Half => Glyphs::Half,
-            MarkerArg::Block => Glyphs::Block,
-            MarkerArg::Ascii => Glyphs::Ascii,
-        }
-    }
 }
 
 #[derive(Debug, Subcommand)]

@@ -28,7 +28,7 @@ use rough_model::Axis;
 use serde::Deserialize;
 
 use crate::figure::{claims, View};
-use crate::snapshot::State;
+use crate::scene::State;
 use crate::tui::app::App;
 use crate::tui::class::{Ask, Question};
 
@@ -198,7 +198,7 @@ fn read_step(s: StepFile, base: &Path) -> anyhow::Result<Step> {
     };
     match s.caption {
         Some(c) => {
-            crate::snapshot::check_caption(&c).map_err(|e| anyhow!("caption: {e}"))?;
+            crate::scene::check_caption(&c).map_err(|e| anyhow!("caption: {e}"))?;
             state.caption = Some(c);
         }
         // A poll's step shows only a caption of its own: a preset's may

@@ -6,8 +6,9 @@ use std::process::ExitCode;
 
 use anyhow::Context;
 use clap::Parser;
+use roughtui::cli::setup::load_source;
 use roughtui::cli::{Cli, Command};
-use roughtui::{export, load_source, tui};
+use roughtui::{export, tui};
 
 fn main() -> ExitCode {
     let cli = Cli::parse();

@@ -1,6 +1,6 @@
 //! The paper's four figures as snapshots, built into the binary.
 
-use crate::snapshot::State;
+use crate::scene::State;
 
 /// (name, RON text) of every preset, in key order 1–4.
 pub const PRESETS: [(&str, &str); 4] = [

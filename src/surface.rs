@@ -11,10 +11,8 @@
 use std::path::{Component, Path, PathBuf};
 use std::sync::Arc;
 
-use rough_model::{Axis, Dim, Model, Moments, ParamValues, Params, Sweep};
+use rough_model::{Dim, ParamValues};
 use rough_surface::{Kind, Measured, Options, PowerLawFit, SurfaceError};
-
-use crate::snapshot::{State, MAX_CAPTION_CHARS, MAX_NAME_CHARS};
 
 /// A measured surface, read from a file.
 #[derive(Clone, Debug)]
@@ -75,14 +73,15 @@ impl SurfaceSource {
         })
     }
 
-    /// The file's name without its extension: the scene's name.
+    /// The file's name without its extension, printable: the scene's name
+    /// (which the scene cuts to its length).
     pub fn stem(&self) -> String {
         let stem = self
             .path
             .file_stem()
             .map(|s| s.to_string_lossy().into_owned())
             .unwrap_or_else(|| "surface".into());
-        printable(&stem, MAX_NAME_CHARS)
+        printable(&stem, usize::MAX)
     }
 
     /// The file's name, printable.
@@ -131,7 +130,7 @@ impl SurfaceSource {
 
     /// What the file held, in words: "a 512 × 512 map of 10 µm × 10 µm".
     pub fn describe(&self) -> String {
-        use crate::tui::fmt::fmt_len;
+        use crate::physical::print::fmt_len;
         match self.measured.kind {
             Kind::Map { nx, ny, lx, ly } => {
                 format!("a {nx} × {ny} map of {} × {}", fmt_len(lx), fmt_len(ly))
@@ -164,14 +163,6 @@ impl SurfaceSource {
     }
 }
 
-/// `text` without control characters, at most `max` characters.
-fn printable(text: &str, max: usize) -> String {
-    text.chars()
-        .map(|c| if c.is_control() { '_' } else { c })
-        .take(max)
-        .collect()
-}
-
 /// The paper's amplitude of a fitted power law: Z (m^(2−2H)) of
 /// C_Persson = Z q^(−2(1+H)) and the h_rms of that spectrum from q0 to
 /// infinity, √(π Z q0^(−2H)/H) (`PowerLawFit::persson_z`: areal C^iso is
@@ -183,31 +174,6 @@ pub fn fit_amplitude(fit: &PowerLawFit) -> Option<(f64, f64)> {
     }
     let (z, h_rms) = (fit.persson_z()?, fit.h_rms()?);
     (h_rms > 0.0).then_some((z, h_rms))
-}
-
-/// The self-affine parameters of the power law fitted over `state`'s band:
-/// the fit's H and h_rms, the data's q0, the state's H0/E, ζ and R*.
-pub fn fitted_params(state: &State) -> Result<Params, String> {
-    let src = state
-        .surface
-        .as_ref()
-        .ok_or("no measured surface: the fit is of one")?;
-    let fit = src
-        .fit()
-        .ok_or("fewer than two spectrum points in the fit band: no power-law fit")?;
-    let (_, h_rms) = fit_amplitude(&fit).ok_or_else(|| {
-        format!(
-            "the fit's H = {:.3} is outside (0, 1]: no self-affine power law to compare",
-            fit.hurst
-        )
-    })?;
-    Params::new(ParamValues {
-        h_rms,
-        hurst: fit.hurst,
-        q0: src.q0(),
-        ..state.params.values()
-    })
-    .map_err(|e| e.to_string())
 }
 
 /// The values a measured state holds for the parameters the data fixes:
@@ -230,72 +196,6 @@ pub fn fixed_values(src: &SurfaceSource, mut v: ParamValues) -> ParamValues {
         0.8
     };
     v
-}
-
-impl State {
-    /// Sets the measured surface's Hurst fit band (`None`: the one found
-    /// from the data) and the H the scene records with it.
-    pub fn set_fit_band(&mut self, band: Option<(f64, f64)>) -> Result<(), String> {
-        let src = self
-            .surface
-            .as_mut()
-            .ok_or("the fit band is a measured surface's: give one with --surface FILE")?;
-        src.fit_band = band;
-        let values = fixed_values(src, self.params.values());
-        self.params = Params::new(values).map_err(|e| e.to_string())?;
-        Ok(())
-    }
-
-    /// The scene a surface opens on: the paper's material (H0/E = 0.01,
-    /// R* = 1 mm, size effect on), the sweep over ζ from 1 to the largest ζ
-    /// the data allows and the marker there, the exact model (the data
-    /// deserve the exact solution; the paper's closed form is a key away).
-    pub fn measured(src: SurfaceSource) -> anyhow::Result<State> {
-        let zeta_max = src.zeta_max();
-        if !(zeta_max > 1.0 && zeta_max.is_finite()) {
-            anyhow::bail!(
-                "surface {}: its spectrum spans no band (largest ζ {zeta_max}): \
-                 nothing to sweep",
-                src.path.display()
-            );
-        }
-        let values = fixed_values(
-            &src,
-            ParamValues {
-                h0_over_e: 1e-2,
-                h_rms: 1e-8,
-                zeta: zeta_max,
-                hurst: 0.8,
-                r_star: 1e-3,
-                q0: 1.0,
-            },
-        );
-        let params = Params::new(values)?;
-        let caption = printable(
-            &format!(
-                "{}: {}, q0 = {} /m, ζ up to {}; the paper's material H0/E = 0.01, R* = 1 mm.",
-                src.file_name(),
-                src.describe(),
-                crate::figure::short_number(src.q0()),
-                crate::figure::short_number(zeta_max)
-            ),
-            MAX_CAPTION_CHARS,
-        );
-        let state = State {
-            name: src.stem(),
-            caption: Some(caption),
-            params,
-            size_effect: true,
-            sweep: Sweep::new(Axis::Zeta, 1.0, zeta_max)?,
-            model: Model::Exact,
-            moments: Moments::Truncated,
-            surface: Some(src),
-            seed: None,
-            shown: Default::default(),
-        };
-        state.check()?;
-        Ok(state)
-    }
 }
 
 /// `path` relative to the folder `base` where both are absolute and share
@@ -323,6 +223,14 @@ pub fn relative_to(path: &Path, base: &Path) -> PathBuf {
         out.push(c);
     }
     out
+}
+
+/// `text` without control characters, at most `max` characters.
+pub fn printable(text: &str, max: usize) -> String {
+    text.chars()
+        .map(|c| if c.is_control() { '_' } else { c })
+        .take(max)
+        .collect()
 }
 
 #[cfg(test)]

@@ -14,7 +14,7 @@ mod common;
 use common::cli::{run, stdout};
 use rough_model::Axis;
 use roughtui::contact::Simulation;
-use roughtui::snapshot::State;
+use roughtui::scene::State;
 use roughtui::surface::SurfaceSource;
 use std::path::{Path, PathBuf};
 

@@ -165,7 +165,7 @@ fn results_are_cached_and_shared_between_explorers() {
     assert!(a.modified);
     let ron = a.state.to_ron();
     assert!(ron.contains("seed: 2"), "{ron}");
-    let back = roughtui::snapshot::State::from_ron(&ron).unwrap();
+    let back = roughtui::scene::State::from_ron(&ron).unwrap();
     assert_eq!(back.seed, Some(2));
     assert!(!presets::load("fig2").unwrap().to_ron().contains("seed"));
 }
@@ -286,7 +286,7 @@ fn a_measured_maps_heights_are_read_for_the_contact_view_alone() {
         ..Default::default()
     };
     let src = roughtui::surface::SurfaceSource::read(&path, opts).unwrap();
-    let state = roughtui::snapshot::State::measured(src).unwrap();
+    let state = roughtui::scene::State::measured(src).unwrap();
     // Gone from the disk: a view that read the file again would fail.
     std::fs::remove_file(&path).unwrap();
     let mut a = App::new(state, Theme::colored(), (120, 36));
@@ -328,7 +328,7 @@ fn the_contact_view_waits_on_a_slow_file_without_the_explorer() {
         ..Default::default()
     };
     let src = roughtui::surface::SurfaceSource::read(&path, opts).unwrap();
-    let mut state = roughtui::snapshot::State::measured(src).unwrap();
+    let mut state = roughtui::scene::State::measured(src).unwrap();
     state.params = state.params.with(Axis::Zeta, 4.0).unwrap();
     // The file becomes a pipe: reading it waits until the text is written.
     std::fs::remove_file(&path).unwrap();

@@ -5,7 +5,7 @@
 mod common;
 
 use common::app::{ch, screen};
-use roughtui::snapshot::State;
+use roughtui::scene::State;
 use roughtui::surface::SurfaceSource;
 use roughtui::tui::app::App;
 use roughtui::tui::theme::Theme;

@@ -9,7 +9,8 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
 use common::cli::{noted, BIN};
-use roughtui::snapshot::{load_file, save_new, State};
+use roughtui::scene::State;
+use roughtui::snapshot::{load_file, save_new};
 use roughtui::surface::SurfaceSource;
 
 fn data(name: &str) -> String {

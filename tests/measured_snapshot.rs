@@ -7,7 +7,8 @@ mod common;
 
 use std::path::{Path, PathBuf};
 
-use roughtui::snapshot::{load_file, save_new, State};
+use roughtui::scene::State;
+use roughtui::snapshot::{load_file, save_new};
 use roughtui::surface::SurfaceSource;
 use roughtui::tui::app::App;
 use roughtui::tui::theme::Theme;
@@ -34,8 +35,8 @@ fn a_surface_snapshot_loads_back_exactly() {
     let d = tempfile::tempdir().unwrap();
     let t = fig2_table(d.path());
     let mut s = surface_state(&t, Default::default());
-    roughtui::set(&mut s, rough_model::Axis::H0OverE, "0.003").unwrap();
-    roughtui::set(&mut s, rough_model::Axis::Zeta, "300").unwrap();
+    roughtui::scene::set(&mut s, rough_model::Axis::H0OverE, "0.003").unwrap();
+    roughtui::scene::set(&mut s, rough_model::Axis::Zeta, "300").unwrap();
     let p = save_new(d.path(), "mine", &s).unwrap();
     let text = std::fs::read_to_string(&p).unwrap();
     let sha = &s.surface.as_ref().unwrap().measured.sha256;

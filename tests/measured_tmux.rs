@@ -38,7 +38,10 @@ fn the_explorer_opens_a_surface_steps_zeta_and_shows_its_spectrum() {
         &[],
         &["--surface", "fig2-psd.txt", "--set", "r-star=0.5mm"],
     );
-    let s = p.wait_text("Readout");
+    // The whole first frame: a capture can come while it is being written.
+    let s = p.wait_for("the first screen", |s| {
+        s.contains("Readout") && !zeta(s).is_empty() && braille(s) > 50
+    });
     assert!(s.contains("[fig2-psd]"), "{s}");
     assert!(s.contains("measured moments"), "{s}");
     assert!(s.contains("√m0 at ζ") && s.contains("H fit"), "{s}");

@@ -248,8 +248,8 @@ fn a_minimum_on_steps_is_where_the_slope_drops_to_it() {
         "/crates/rough-surface/tests/data/line_xz.txt"
     );
     let src = roughtui::surface::SurfaceSource::read(p.as_ref(), Default::default()).unwrap();
-    let mut s = roughtui::snapshot::State::measured(src).unwrap();
-    roughtui::set(&mut s, Axis::RStar, "10um").unwrap();
+    let mut s = roughtui::scene::State::measured(src).unwrap();
+    roughtui::scene::set(&mut s, Axis::RStar, "10um").unwrap();
     let c = claims(&s);
     let min = c
         .iter()
@@ -366,7 +366,7 @@ fn a_lay_says_so_on_the_spectrum_view() {
     let lay = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("crates/rough-surface/tests/data/map_lay.txt");
     let src = roughtui::surface::SurfaceSource::read(&lay, Default::default()).unwrap();
-    let state = roughtui::snapshot::State::measured(src).unwrap();
+    let state = roughtui::scene::State::measured(src).unwrap();
     let mut a = App::new(state, Theme::colored(), (160, 48));
     press(&mut a, KeyCode::BackTab, KeyModifiers::SHIFT);
     press(&mut a, KeyCode::BackTab, KeyModifiers::SHIFT);

@@ -563,13 +563,13 @@ fn thirty_students_predict_then_the_model_answers() {
     // v again: the model's answer reaches everyone, with their own.
     room.keys("lect", &["v"]);
     let truth = roughtui::figure::claims(&roughtui::presets::load("fig2").unwrap())[0].at;
-    let shown = roughtui::figure::short_number(truth);
+    let shown = roughtui::physical::short_number(truth);
     assert_eq!(shown, "321.5");
     let revealed = room.wait_all(&names, "the reveal", 60, |s| {
         s.contains(&format!("the model: ζ = {shown} · you: "))
     });
     for (i, s) in revealed.iter().enumerate() {
-        let mine = roughtui::figure::short_number(want[i]);
+        let mine = roughtui::physical::short_number(want[i]);
         let line = s.lines().find(|l| l.contains("the model:")).unwrap();
         assert!(line.contains(&format!("you: {mine} · ")), "{i}: {line}");
         let off = if want[i] > truth { " high" } else { " low" };
@@ -692,7 +692,7 @@ fn fig3_polls_its_minimum_and_then_a_value_the_lecturer_types() {
         s.contains("1 student · 1/1 answered")
     });
     room.keys("lect", &["v"]);
-    let want = roughtui::figure::short_number(stepped(
+    let want = roughtui::physical::short_number(stepped(
         roughtui::presets::load("fig3").unwrap().params.zeta(),
         1,
     ));

@@ -114,7 +114,7 @@ fn a_poll_holds_never_leaks_and_ends_as_the_lecturer_says() {
     // Bob walks the marker across the answer: the readout hides the share.
     for k in 1..=3 {
         room.keys("bob", &["Right"]);
-        let want = roughtui::tui::fmt::fmt_param(Axis::Zeta, stepped(128.0, k));
+        let want = roughtui::physical::print::fmt_param(Axis::Zeta, stepped(128.0, k));
         let s = room.wait("bob", "the marker moved", 20, |s| {
             s.contains(&format!("ζ    ↔ {want:>9}"))
         });
@@ -160,7 +160,7 @@ fn a_poll_holds_never_leaks_and_ends_as_the_lecturer_says() {
     room.keys("lect2", &["v"]);
     let truth = roughtui::figure::claims(&roughtui::presets::load("fig2").unwrap())[0].at;
     let (a, b) = (stepped(128.0, 1), stepped(128.0, 3));
-    let short = roughtui::figure::short_number;
+    let short = roughtui::physical::short_number;
     let line = |s: &str| {
         s.lines()
             .find(|l| l.contains("the model:"))
@@ -215,7 +215,7 @@ fn a_poll_holds_never_leaks_and_ends_as_the_lecturer_says() {
         "question,quantity,unit,truth,name,answer,offset"
     );
     rows.sort();
-    let num = roughtui::csv_number::format;
+    let num = roughtui::physical::csv_number::format;
     assert_eq!(
         rows,
         [

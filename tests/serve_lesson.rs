@@ -78,7 +78,7 @@ fn a_lesson_steps_polls_into_one_csv_and_everyone_follows() {
             s.contains(&format!("step {step}/7 · "))
         });
         // Before the poll opens no screen gives its answer away.
-        let shown = roughtui::figure::short_number(truth);
+        let shown = roughtui::physical::short_number(truth);
         for (i, s) in screens.iter().enumerate() {
             assert!(!s.contains(&shown), "{shown}:\n{s}");
             // (Bob has not dismissed the last reveal: it stays.)

@@ -14,7 +14,7 @@ use common::lecture::modes;
 use common::room::Room;
 use common::serve::{have_ssh, Server};
 use common::tmux::have_tmux;
-use roughtui::snapshot::State;
+use roughtui::scene::State;
 
 /// The RON between the panel's first and last lines in a copy of the
 /// whole pane, its wrapped lines joined.

@@ -7,7 +7,8 @@ use common::GOOD;
 use std::path::{Path, PathBuf};
 
 use rough_model::Moments;
-use roughtui::snapshot::{load_file, read_file, LoadProblem, SnapshotError, State, MAX_BYTES};
+use roughtui::scene::State;
+use roughtui::snapshot::{load_file, read_file, LoadProblem, SnapshotError, MAX_BYTES};
 
 fn write(dir: &Path, bytes: &[u8]) -> PathBuf {
     let p = dir.join("case.ron");

@@ -4,7 +4,8 @@
 use proptest::prelude::*;
 use proptest::sample::select;
 use rough_model::{Axis, Model, Moments, ParamValues, Params, Sweep};
-use roughtui::snapshot::{load_file, save_new, State};
+use roughtui::scene::State;
+use roughtui::snapshot::{load_file, save_new};
 
 /// Positive finite values, subnormals and extremes included.
 fn positive() -> impl Strategy<Value = f64> {

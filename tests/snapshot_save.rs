@@ -8,7 +8,8 @@ use std::path::Path;
 use std::time::{Duration, UNIX_EPOCH};
 
 use roughtui::presets;
-use roughtui::snapshot::{default_stem, load_file, save_new, State};
+use roughtui::scene::State;
+use roughtui::snapshot::{default_stem, load_file, save_new};
 
 fn fig(n: &str) -> State {
     presets::load(n).unwrap()

@@ -9,7 +9,8 @@ use common::app::{ch, fig, press};
 use crossterm::event::{KeyCode, KeyModifiers};
 use rough_model::Axis;
 use roughtui::figure::View;
-use roughtui::snapshot::{self, GhostOf};
+use roughtui::scene::GhostOf;
+use roughtui::snapshot;
 use roughtui::tui::app::{update, App, Message};
 use roughtui::tui::theme::Theme;
 
@@ -74,7 +75,7 @@ fn a_snapshot_reloads_on_its_view_with_its_ghost() {
     assert_eq!(ghost.state.params, pinned.state.params);
     assert_eq!(ghost.plot.total, pinned.plot.total, "recomputed the same");
     // The explorer holds the view; the state keeps none of it.
-    assert_eq!(b.state.shown, snapshot::Shown::default());
+    assert_eq!(b.state.shown, roughtui::scene::Shown::default());
 }
 
 #[test]
@@ -110,8 +111,8 @@ fn s_then_p_names_the_picture_once() {
 
 #[test]
 fn older_snapshots_load_on_the_slopes_view() {
-    let s = roughtui::snapshot::State::from_ron(common::GOOD).unwrap();
-    assert_eq!(s.shown, snapshot::Shown::default());
+    let s = roughtui::scene::State::from_ron(common::GOOD).unwrap();
+    assert_eq!(s.shown, roughtui::scene::Shown::default());
     let a = App::new(s.clone(), Theme::colored(), (80, 24));
     assert_eq!(a.view, View::Slopes);
     assert!(a.ghost.is_none());
@@ -124,7 +125,7 @@ fn older_snapshots_load_on_the_slopes_view() {
 fn a_view_the_scene_cannot_show_is_refused_by_name() {
     let with = |extra: &str| {
         let text = common::GOOD.replace("model: Exact,", &format!("model: Exact, {extra}"));
-        roughtui::snapshot::State::from_ron(&text).map_err(|e| e.to_string())
+        roughtui::scene::State::from_ron(&text).map_err(|e| e.to_string())
     };
     assert_eq!(with("view: Load,").unwrap().shown.view, View::Load);
     let e = with("view: Spectrum,").unwrap_err();

@@ -337,7 +337,7 @@ fn the_regime_word_is_bold_without_colour() {
 
 #[test]
 fn the_share_shown_agrees_with_the_regime_word() {
-    use roughtui::tui::fmt::fmt_share;
+    use roughtui::physical::print::fmt_share;
     assert_eq!(fmt_share(0.09996), "9.996%");
     assert_eq!(fmt_share(0.1), "10.0%");
     assert_eq!(fmt_share(0.294), "29.4%");

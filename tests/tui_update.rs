@@ -8,12 +8,12 @@ use common::key;
 use crossterm::event::{KeyCode, KeyEventKind, KeyModifiers};
 use proptest::prelude::*;
 use rough_model::{Axis, Model, Moments};
+use roughtui::physical::print as fmt;
 use roughtui::presets;
 use roughtui::snapshot::check_stem;
 use roughtui::tui::app::{
     step_value, update, App, Message, Mode, HURST_ONE_ASYMPTOTIC, PROMPT_MAX_CHARS,
 };
-use roughtui::tui::fmt;
 use roughtui::tui::keys::{self, message_for_key};
 use roughtui::tui::layout::Regions;
 use roughtui::tui::line_edit::{Edit, LineEdit};

@@ -106,7 +106,7 @@ fn load_matches_the_reference() {
 
 /// The preset and overrides of a `# case` line (`--preset`, `--model`,
 /// `--moments`), as the explorer would hold them.
-fn state_of(args: &[String]) -> roughtui::snapshot::State {
+fn state_of(args: &[String]) -> roughtui::scene::State {
     use rough_model::{Model, Moments};
     assert_eq!(args[0], "--preset");
     let mut state = roughtui::presets::load(&args[1]).unwrap();

@@ -7,15 +7,14 @@
 //! memory: the moment table's share of the work, no reading or FFT).
 
 use std::fmt::Write as _;
-use std::sync::Arc;
 use std::time::Instant;
 
 use ratatui::backend::TestBackend;
 use ratatui::Terminal;
-use rough_model::{Dim, MomentTable};
-use rough_surface::{Kind, Measured, Options};
 
-use crate::snapshot::State;
+use rough_surface::Options;
+
+use crate::scene::State;
 use crate::surface::SurfaceSource;
 use crate::tui::app::{update, App, Message};
 use crate::tui::theme::Theme;
@@ -100,59 +99,10 @@ fn nodes(state: &State) -> usize {
         .map_or(0, |s| s.measured.table.nodes().len())
 }
 
-/// A synthetic n × n map's spectrum: every FFT wavevector of a 10 µm
-/// square but the mean, with a power-law term (H = 0.8), tabulated as a
-/// map's would be.
-pub fn synthetic(n: usize) -> anyhow::Result<State> {
-    let l = 1e-5;
-    let dq = std::f64::consts::TAU / l;
-    let half = (n / 2) as i64;
-    let mut terms = Vec::with_capacity(n * n);
-    for i in -half..(n as i64 - half) {
-        for j in -half..(n as i64 - half) {
-            if i == 0 && j == 0 {
-                continue;
-            }
-            let q = dq * ((i * i + j * j) as f64).sqrt();
-            terms.push((q, 1e-28 * (q / dq).powf(-3.6)));
-        }
-    }
-    let spectrum: Vec<(f64, f64)> = (1..=half)
-        .map(|k| (k as f64 * dq, 1e-28 * (k as f64).powf(-3.6) * l * l))
-        .collect();
-    let table = MomentTable::from_discrete(Dim::Areal, dq, terms)?;
-    let measured = Measured {
-        kind: Kind::Map {
-            nx: n,
-            ny: n,
-            lx: l,
-            ly: l,
-        },
-        table: Arc::new(table),
-        sha256: "0".repeat(64),
-        summary: format!("synthetic map {n} × {n}"),
-        notes: Vec::new(),
-        measurement: None,
-        slopes: None,
-        real: None,
-        band: Measured::find_band(Dim::Areal, &spectrum, &[]),
-        modes: Vec::new(),
-        heights: None,
-        spectrum,
-    };
-    State::measured(SurfaceSource {
-        path: std::path::PathBuf::from(format!("synthetic-{n}x{n}.txt")),
-        options: Options::default(),
-        measured: Arc::new(measured),
-        recorded_sha256: None,
-        fit_band: None,
-    })
-}
-
 /// Times the synthetic n × n grid.
 pub fn time_synthetic(n: usize, steps: usize) -> anyhow::Result<SurfaceTimes> {
     let t = Instant::now();
-    let state = synthetic(n)?;
+    let state = crate::scene::synthetic(n)?;
     let read_ms = t.elapsed().as_secs_f64() * 1e3;
     let nodes = nodes(&state);
     let (first_frame_ms, zeta_step_us, h0_step_us) = time_frames(state, steps)?;

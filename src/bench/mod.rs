@@ -22,7 +22,7 @@ use rough_study::compare::{accurate_range, max_error, methods, shipped_closed};
 use rough_study::{rel_err, slopes_reference, SLOPES_CSV};
 
 use crate::cli::BenchArgs;
-use crate::figure::short_number;
+use crate::physical::short_number;
 pub use table::{fmt_err, render_table, Row, HEADER};
 
 /// Median nanoseconds per point of `f` over `grid`, from `passes` timed

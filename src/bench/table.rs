@@ -4,7 +4,7 @@ use std::fmt::Write as _;
 
 use rough_study::compare::ErrorStat;
 
-use crate::figure::short_number;
+use crate::physical::short_number;
 
 /// The table's header, fixed by the command's contract.
 pub const HEADER: &str = "| method | terms | ns/point | max rel error | worst psi |";

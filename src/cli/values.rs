@@ -9,7 +9,7 @@ use super::AxisArg;
 
 /// `--pixel-size`: a length > 0.
 pub(crate) fn parse_pixel_size(s: &str) -> Result<f64, String> {
-    let v = crate::tui::value_input::parse_value(Axis::HRms, s)?;
+    let v = crate::physical::value::parse_value(Axis::HRms, s)?;
     if v > 0.0 {
         Ok(v)
     } else {
@@ -40,7 +40,7 @@ pub fn parse_fit_band(s: &str) -> Result<(f64, f64), String> {
     let q = |v: &str| -> Result<(f64, bool), String> {
         let v = v.trim();
         if v.ends_with(|c: char| c.is_alphabetic()) {
-            let l = crate::tui::value_input::parse_value(Axis::HRms, v)?;
+            let l = crate::physical::value::parse_value(Axis::HRms, v)?;
             Ok((std::f64::consts::TAU / l, true))
         } else {
             v.parse::<f64>().map(|q| (q, false)).map_err(|_| bad())
@@ -129,13 +129,13 @@ pub fn parse_set(s: &str) -> Result<(SetKey, String), String> {
     let key = SetKey::parse(key)?;
     match key {
         SetKey::Param(axis) => {
-            crate::tui::value_input::parse_value(axis, value)?;
+            crate::physical::value::parse_value(axis, value)?;
         }
         SetKey::Q0 => {
             crate::physical::parse_q0_number(value)?;
         }
         SetKey::L => {
-            crate::tui::value_input::parse_value(Axis::HRms, value)?;
+            crate::physical::value::parse_value(Axis::HRms, value)?;
         }
         SetKey::E | SetKey::H0 => {
             crate::physical::parse_pressure(value)?;

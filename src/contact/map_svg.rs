@@ -6,11 +6,7 @@
 
 use std::fmt::Write as _;
 
-use anyhow::bail;
-
-use super::scene::{classify, Node, SceneKey};
-use super::{DEFAULT_SEED, SWEEP_LOAD};
-use crate::cli::{ExportArgs, FormatArg};
+use super::scene::Node;
 
 /// Side of the map in the picture, px.
 const SIDE: f64 = 600.0;
@@ -118,7 +114,7 @@ pub fn caption(
     (
         format!(
             "{name}: contact map at p̄ = {} H, {n}×{n}, {what}",
-            crate::tui::views::contact::load_text(p_over_h)
+            crate::physical::print::load_text(p_over_h)
         ),
         format!(
             "A/A0 = {:.4} %, {:.1} % of it at the hardness; {cell}",
@@ -126,55 +122,6 @@ pub fn caption(
             100.0 * share
         ),
     )
-}
-
-/// `roughtui export --view contact-map`: the scene's surface at
-/// p̄ = 0.01 H, as SVG or as CSV digits.
-pub fn export(args: &ExportArgs, out: &mut impl std::io::Write) -> anyhow::Result<()> {
-    for (given, opt) in [
-        (args.grid.is_some(), "--grid"),
-        (args.map_y.is_some(), "--map-y"),
-        (args.sweep.is_some(), "--sweep"),
-        (args.points.is_some(), "--points"),
-    ] {
-        if given {
-            bail!(
-                "{opt} does not apply to --view contact-map: it solves the scene's surface at \
-                 p̄ = {SWEEP_LOAD} H (--seed picks the surface)"
-            );
-        }
-    }
-    let state = crate::export::state_of(args)?;
-    let seed = args.seed.or(state.seed).unwrap_or(DEFAULT_SEED);
-    let key = SceneKey::of(&state, seed)?;
-    let mut c = key.build()?;
-    let h = key.hardness();
-    let r = c.solve(SWEEP_LOAD * h, h, &rough_contact::Options::default())?;
-    let map = classify(c.pressure(), h);
-    let n = key.n;
-    let seed = key.surface.is_none().then_some(seed);
-    let (title, note) = caption(&state.name, n, seed, SWEEP_LOAD, r.area, r.plastic_area);
-    match args.format {
-        FormatArg::Svg => out.write_all(map_svg(&map, n, &title, &note).as_bytes())?,
-        FormatArg::Csv => {
-            let mut s = format!(
-                "# {title}\n# {note}\n# one line per grid row (y), one value per node (x): \
-                 0 out of contact, 1 elastic (0 < p < H), 2 at the hardness\n"
-            );
-            for row in map.chunks(n) {
-                for (i, v) in row.iter().enumerate() {
-                    if i > 0 {
-                        s.push(',');
-                    }
-                    s.push(char::from(b'0' + *v as u8));
-                }
-                s.push('\n');
-            }
-            out.write_all(s.as_bytes())?;
-        }
-    }
-    out.flush()?;
-    Ok(())
 }
 
 #[cfg(test)]

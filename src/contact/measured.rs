@@ -29,7 +29,7 @@ use rough_surface::Heights;
 
 use super::engine::Waker;
 use super::{MAX_GRID, MIN_GRID};
-use crate::snapshot::State;
+use crate::scene::State;
 
 /// SHA-256 of the file and a hash of the reading options.
 pub type SurfaceId = ([u8; 32], u64);

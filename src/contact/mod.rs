@@ -13,7 +13,7 @@ pub mod engine;
 pub mod map_svg;
 pub mod measured;
 pub mod scene;
-mod svg;
+pub mod svg;
 
 use std::io::Write;
 
@@ -22,9 +22,8 @@ use rough_contact::{Contact, LoadResult, Options};
 use rough_model::{areas, Areas};
 use scene::SceneKey;
 
-use crate::cli::{ExportArgs, FormatArg};
-use crate::csv_number;
-use crate::snapshot::State;
+use crate::physical::csv_number;
+use crate::scene::State;
 
 /// Largest grid side the scene solves (ζ ≤ 128).
 pub const MAX_GRID: usize = 1024;
@@ -351,42 +350,3 @@ pub fn write_contact_sweep(out: &mut impl Write, state: &State, seed: u64) -> an
 
 /// Most loads the contact view solves in one export.
 pub const MAX_LOADS: usize = 64;
-
-/// `roughtui export --view contact|contact-sweep`.
-pub fn export(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
-    if args.view == crate::cli::ViewArg::ContactMap {
-        return map_svg::export(args, out);
-    }
-    let sweep = args.view == crate::cli::ViewArg::ContactSweep;
-    let name = if sweep { "contact-sweep" } else { "contact" };
-    for (given, opt) in [
-        (args.grid.is_some(), "--grid"),
-        (args.map_y.is_some(), "--map-y"),
-        (args.sweep.is_some(), "--sweep"),
-        (sweep && args.points.is_some(), "--points"),
-    ] {
-        if given {
-            bail!(
-                "{opt} does not apply to --view {name}: it solves the scene's surface at \
-                 {} (--seed picks the surface)",
-                if sweep {
-                    "ζ = 1, 2, …, 128 and p̄/H = 0.01"
-                } else {
-                    "--points loads from 1e-3 H to H"
-                }
-            );
-        }
-    }
-    let points = args.points.unwrap_or(DEFAULT_LOADS);
-    if points > MAX_LOADS {
-        bail!("--points {points} is too many for --view contact: at most {MAX_LOADS} loads (each is a solution)");
-    }
-    let state = crate::export::state_of(args)?;
-    let seed = args.seed.or(state.seed).unwrap_or(DEFAULT_SEED);
-    match (args.format, sweep) {
-        (FormatArg::Csv, false) => write_contact(out, &state, points, seed),
-        (FormatArg::Csv, true) => write_contact_sweep(out, &state, seed),
-        (FormatArg::Svg, false) => svg::contact(out, &state, points, seed),
-        (FormatArg::Svg, true) => svg::sweep(out, &state, seed),
-    }
-}

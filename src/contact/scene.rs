@@ -6,7 +6,7 @@
 use rough_contact::{moments, synthesise, Boundary, Contact, PowerLaw};
 
 use super::{grid_for, measured, MAX_GRID};
-use crate::snapshot::State;
+use crate::scene::State;
 
 /// The surface and cap of one simulation; every field is an input of
 /// [`Surface::build`].
@@ -39,7 +39,7 @@ pub fn unsolvable(state: &State) -> Option<String> {
         format!(
             "ζ = {} needs a grid of {} nodes a side (8 per shortest wavelength); the \
              simulation solves up to {MAX_GRID} (ζ ≤ {}): lower ζ to compare",
-            crate::tui::fmt::fmt_num(zeta),
+            crate::physical::print::fmt_num(zeta),
             (8.0 * zeta).ceil(),
             MAX_GRID / 8
         )

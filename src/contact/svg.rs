@@ -7,7 +7,7 @@ use plotters::prelude::*;
 use rough_model::areas;
 
 use super::{load_rows, sweep_rows, SWEEP_LOAD};
-use crate::snapshot::State;
+use crate::scene::State;
 
 const SIZE: (u32, u32) = (900, 600);
 const ELASTIC: RGBColor = RGBColor(0, 0, 0);

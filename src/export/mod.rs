@@ -6,6 +6,7 @@
 //! or scene are refused, so that a mistyped command never silently prints
 //! something else.
 
+mod contact;
 mod moments;
 mod slopes;
 mod views;
@@ -24,7 +25,7 @@ pub use views::{
 
 use crate::cli::{ExportArgs, FormatArg, OnOff, ViewArg};
 use crate::figure::{render_svg, FigureOptions, View, DEFAULT_GRID};
-use crate::snapshot::State;
+use crate::scene::State;
 
 /// Points along a curve when `--points` is not given.
 pub const DEFAULT_POINTS: usize = 200;
@@ -37,7 +38,7 @@ pub const MAX_SVG_POINTS: usize = 20_000;
 /// (model, moments, size effect and sweep first, so that `--set hurst=1
 /// --moments truncated` works), checked.
 pub fn state_of(args: &ExportArgs) -> anyhow::Result<State> {
-    let mut state = crate::load_base(&args.source, &args.setup)?;
+    let mut state = crate::cli::setup::load_base(&args.source, &args.setup)?;
     let scene = (state.model, state.moments, state.size_effect, state.sweep);
     if let Some(w) = state.surface_warning() {
         // The export goes on with the file as it is now; the user is told.
@@ -69,7 +70,7 @@ pub fn state_of(args: &ExportArgs) -> anyhow::Result<State> {
     }
     if let Some((axis, from, to)) = args.sweep {
         for v in [from, to] {
-            crate::physical::check(axis, v, &crate::figure::short_number(v))
+            crate::physical::check(axis, v, &crate::physical::short_number(v))
                 .map_err(|e| anyhow::anyhow!("--sweep: {e}"))?;
         }
         state.sweep = Sweep::new(axis, from, to).map_err(|e| anyhow::anyhow!("--sweep: {e}"))?;
@@ -80,7 +81,7 @@ pub fn state_of(args: &ExportArgs) -> anyhow::Result<State> {
         // it (the scene line under the chart names the settings).
         state.caption = None;
     }
-    crate::apply_setup(&mut state, &args.setup)?;
+    crate::cli::setup::apply_setup(&mut state, &args.setup)?;
     state.check()?;
     Ok(state)
 }
@@ -146,7 +147,7 @@ pub fn run(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
         return moments::run(args.format, &state, points, out);
     }
     if args.view.figure().is_none() {
-        return crate::contact::export(args, out);
+        return contact::export(args, out);
     }
     let (view, opts) = options_of(args)?;
     let state = state_of(args)?;
@@ -174,6 +175,6 @@ pub fn run(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
         View::Map => write_map(out, &state, &opts),
         View::Load => write_load(out, &state, opts.points),
         View::Spectrum => write_spectrum(out, &state),
-        View::Contact => crate::contact::export(args, out),
+        View::Contact => contact::export(args, out),
     }
 }

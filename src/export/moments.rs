@@ -9,9 +9,9 @@ use anyhow::bail;
 
 use super::MAX_SVG_POINTS;
 use crate::cli::{ExportArgs, FormatArg};
-use crate::csv_number;
 use crate::figure::{moment_comments, render_moments_svg, scene_text, MomentSeries};
-use crate::snapshot::State;
+use crate::physical::csv_number;
+use crate::scene::State;
 
 /// The moments view's CSV header: ζ, q1 (1/m), λ1 (m), the profile moments
 /// m0 (m²), m2, m4 (1/m²), h_rms (m), h′, h″ (1/m) and R_s (m).

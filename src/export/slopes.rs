@@ -6,10 +6,10 @@ use std::sync::mpsc;
 
 use rough_model::{Curves, Scene, SceneSpec};
 
-use crate::csv_number;
 use crate::figure::scene_text::csv_comments;
 use crate::figure::{FigureOptions, View};
-use crate::snapshot::State;
+use crate::physical::csv_number;
+use crate::scene::State;
 
 /// The CSV header after the first column, which is named after the swept
 /// parameter (`zeta`, `h0_over_e`, `h_rms`, `hurst`, `r_star`).

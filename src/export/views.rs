@@ -1,16 +1,16 @@
 //! CSV of the index, map and load views. Each starts with the scene in `#`
 //! lines (pandas' `comment='#'` skips them), then the header. Undefined
 //! values (eq. 13 at R* = 0) are empty fields; numbers are in
-//! [`crate::csv_number`]'s form.
+//! [`crate::physical::csv_number`]'s form.
 
 use std::io::Write;
 
-use crate::csv_number;
 use crate::figure::scene_text::csv_comments;
 use crate::figure::{
     FigureOptions, IndexSeries, LoadCurve, MapSpec, RegimeMap, SpectrumSeries, View,
 };
-use crate::snapshot::State;
+use crate::physical::csv_number;
+use crate::scene::State;
 
 /// The index view's CSV header after the first column, which is named
 /// after the swept parameter (`zeta`, `h0_over_e`, …).

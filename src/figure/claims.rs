@@ -11,9 +11,9 @@
 use rough_model::{slopes, Axis};
 
 use super::minimum::{bracketed, refine};
-use super::number::short_number;
 use super::series::at;
-use crate::snapshot::State;
+use crate::physical::short_number;
+use crate::scene::State;
 
 /// Which quantity does what.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -11,7 +11,7 @@ use rough_model::{
 };
 
 use super::series::at;
-use crate::snapshot::State;
+use crate::scene::State;
 
 /// `export --view map`'s default grid, cells across × up.
 pub const DEFAULT_GRID: (usize, usize) = (50, 30);

@@ -127,7 +127,7 @@ fn scaled_rows_agree_with_pointwise_values() {
         ("measured", Model::ClosedForm, Moments::Truncated),
     ] {
         let mut s = if name == "measured" {
-            crate::bench::measured::synthetic(32).unwrap()
+            crate::scene::synthetic(32).unwrap()
         } else {
             fig(name)
         };

@@ -9,7 +9,7 @@
 
 use rough_model::Axis;
 
-use crate::snapshot::State;
+use crate::scene::State;
 
 /// The moments at `points` cutoffs ζ, log-spaced over the sweep when it is
 /// over ζ, else from 1 to the state's ζ.

@@ -8,13 +8,14 @@
 
 use rough_model::Axis;
 
-use super::{axis_unit, short_number, FigureOptions, MapSpec, View};
-use crate::snapshot::State;
+use super::{axis_unit, FigureOptions, MapSpec, View};
+use crate::physical::short_number;
+use crate::scene::State;
 
 /// A number as the CSV prints it: the shortest digits that read back.
 fn full(v: f64) -> String {
     let mut s = String::new();
-    crate::csv_number::push(&mut s, v);
+    crate::physical::csv_number::push(&mut s, v);
     s
 }
 

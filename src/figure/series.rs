@@ -4,7 +4,7 @@ use std::ops::Range;
 
 use rough_model::{areas, slopes, Params, Slopes, SweepError};
 
-use crate::snapshot::State;
+use crate::scene::State;
 
 /// The plasticity indices along the state's sweep (all dimensionless).
 #[derive(Clone, Debug, Default, PartialEq)]

@@ -7,7 +7,7 @@ use std::fmt;
 use rough_model::Dim;
 use rough_surface::PowerLawFit;
 
-use crate::snapshot::State;
+use crate::scene::State;
 use crate::surface::fit_amplitude;
 
 /// The spectrum of the state's measured surface at its current cutoff.

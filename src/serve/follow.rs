@@ -5,7 +5,7 @@
 use rough_model::Axis;
 
 use crate::figure::View;
-use crate::snapshot::State;
+use crate::scene::State;
 use crate::tui::app::{App, Message};
 
 /// What a lecturer's explorer shows: the scene (parameters, sweep, model,

@@ -34,7 +34,7 @@ use russh::{MethodKind, MethodSet};
 use tokio::net::TcpListener;
 use tokio::sync::{watch, Notify};
 
-use crate::snapshot::State;
+use crate::scene::State;
 use auth::LecturerKeys;
 use class::Class;
 use code::{ClassCode, WrongCodes};

@@ -96,6 +96,6 @@ mod tests {
         let a = ascii(&s.to_ron());
         assert!(a.is_ascii());
         assert!(a.contains("\\u{3b6}"), "ζ escaped");
-        assert_eq!(crate::snapshot::State::from_ron(&a).unwrap(), s);
+        assert_eq!(crate::scene::State::from_ron(&a).unwrap(), s);
     }
 }

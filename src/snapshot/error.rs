@@ -11,9 +11,11 @@ use std::io;
 use std::path::{Path, PathBuf};
 
 use ron::error::SpannedError;
-use rough_model::{Axis, Model, Moments, ParamError, ParamValues, RoughnessError, SweepError};
+use rough_model::{Axis, Model, Moments, ParamValues};
 use serde::de::DeserializeOwned;
 use serde_path_to_error::Segment;
+
+use crate::scene::Invalid;
 
 use super::{SnapshotFile, SurfaceFile, SurfaceProblem, SweepFile, MAX_BYTES, MAX_DEPTH, VERSION};
 
@@ -97,34 +99,6 @@ pub enum Expected {
     Group(&'static [&'static str]),
     /// One of these names.
     OneOf(&'static [&'static str]),
-}
-
-/// A value that parsed but is not acceptable.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Invalid {
-    /// A parameter outside its domain (the model's validation).
-    Params(ParamError),
-    /// Moments that cannot be computed at these parameters (H = 1 with
-    /// asymptotic moments).
-    Moments(ParamError),
-    /// An empty sweep or one outside its axis' domain.
-    Sweep(SweepError),
-    /// A sweep or value a measured surface does not have (h_rms or H, ζ
-    /// beyond the data).
-    Surface(RoughnessError),
-    /// A view, map axis or ghost the scene cannot show (`shown.rs`).
-    Shown(String),
-    /// `name` or `caption` is too long or not printable.
-    Text {
-        field: &'static str,
-        problem: TextProblem,
-    },
-}
-
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum TextProblem {
-    TooLong { chars: usize, max: usize },
-    Control(char),
 }
 
 impl From<Invalid> for SnapshotError {
@@ -227,11 +201,11 @@ fn shape_at(path: &str) -> Option<Expected> {
         "sweep.axis" => Expected::OneOf(variants::<Axis>()),
         "model" => Expected::OneOf(variants::<Model>()),
         "moments" | "ghost.moments" => Expected::OneOf(variants::<Moments>()),
-        "view" => Expected::OneOf(variants::<crate::figure::View>()),
+        "view" => Expected::OneOf(variants::<crate::scene::View>()),
         "map_y" => Expected::OneOf(variants::<Axis>()),
         "ghost" => Expected::Group(fields::<super::GhostFile>()),
         "ghost.params" => Expected::Group(fields::<ParamValues>()),
-        "ghost.kind" => Expected::OneOf(variants::<super::GhostOf>()),
+        "ghost.kind" => Expected::OneOf(variants::<crate::scene::GhostOf>()),
         "ghost.model" => Expected::OneOf(variants::<Model>()),
         _ => return None,
     })
@@ -374,35 +348,6 @@ impl fmt::Display for ParseProblem {
         }
     }
 }
-
-impl fmt::Display for Invalid {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Invalid::Params(e) => write!(f, "params: {e}"),
-            Invalid::Moments(e) => write!(f, "{e}"),
-            Invalid::Sweep(e) => write!(f, "{e}"),
-            Invalid::Surface(e) => write!(f, "{e}"),
-            Invalid::Shown(e) => write!(f, "{e}"),
-            Invalid::Text {
-                field,
-                problem: TextProblem::TooLong { chars, max },
-            } => write!(
-                f,
-                "{field} is {chars} characters long: it must be at most {max}"
-            ),
-            Invalid::Text {
-                field,
-                problem: TextProblem::Control(c),
-            } => write!(
-                f,
-                "{field} contains the control character U+{:04X}: it must be printable text",
-                u32::from(*c)
-            ),
-        }
-    }
-}
-
-impl std::error::Error for Invalid {}
 
 impl fmt::Display for SnapshotError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {

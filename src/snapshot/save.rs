@@ -12,7 +12,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::{SystemTime, UNIX_EPOCH};
 
 use super::error::shown;
-use super::{State, MAX_NAME_CHARS};
+use crate::scene::{State, MAX_NAME_CHARS};
 
 /// Longest accepted file stem for [`save_new`], in bytes.
 pub const MAX_STEM_BYTES: usize = 200;

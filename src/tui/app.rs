@@ -26,7 +26,8 @@ use super::theme::Theme;
 use super::views::overlap::Cover;
 use crate::figure::{render_svg, shown_claims, Claim, FigureOptions, MapCache, MapSpec, View};
 use crate::presets;
-use crate::snapshot::{self, State};
+use crate::scene::State;
+use crate::snapshot;
 
 #[derive(Clone, Debug, PartialEq)]
 pub enum Mode {

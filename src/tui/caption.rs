@@ -5,7 +5,7 @@
 
 use rough_model::{Model, Moments, Params, Sweep};
 
-use crate::snapshot::State;
+use crate::scene::State;
 
 /// What a caption describes: the parameters, the size effect, the sweep,
 /// the model and the moments (its numbers are theirs: after `a` the

@@ -8,7 +8,8 @@ use std::time::Duration;
 
 use rough_model::Axis;
 
-use crate::figure::{short_number, Claim, ClaimKind, View};
+use crate::figure::{Claim, ClaimKind, View};
+use crate::physical::short_number;
 
 /// A value of `axis` to four digits, lengths in a readable unit: `321.5`,
 /// `20 nm`, `0.85`.

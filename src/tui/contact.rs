@@ -13,7 +13,7 @@ use crate::contact::engine::{Engine, Outcome, Progress, Task, Ticket, Waker};
 use crate::contact::measured::{self, Fetch};
 use crate::contact::scene::{unsolvable, SceneKey};
 use crate::contact::{grid_for, DEFAULT_SEED, MAX_GRID};
-use crate::snapshot::State;
+use crate::scene::State;
 
 /// Loads of the contact view, p̄/H_use: 1e-3 to 1, four per decade.
 pub const LOADS: usize = 13;

@@ -7,9 +7,9 @@
 use rough_model::{Axis, Curves};
 
 use super::app::App;
-use super::fmt::{fmt_len, fmt_param};
 use super::plots::{compute_plot, Plot};
-use crate::snapshot::{GhostOf, GhostScene, Shown, State};
+use crate::physical::print::{fmt_len, fmt_param};
+use crate::scene::{GhostOf, GhostScene, Shown, State};
 
 /// What a ghost shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

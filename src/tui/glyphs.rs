@@ -19,6 +19,8 @@ use std::borrow::Cow;
 
 use ratatui::symbols::{border, Marker};
 
+use crate::cli::MarkerArg;
+
 /// A set of characters to draw with.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum Glyphs {
@@ -392,6 +394,18 @@ pub fn to_ascii(text: &str) -> String {
         }
     }
     out
+}
+
+/// `--marker`'s choice.
+impl From<MarkerArg> for Glyphs {
+    fn from(m: MarkerArg) -> Self {
+        match m {
+            MarkerArg::Braille => Glyphs::Braille,
+            MarkerArg::Half => Glyphs::Half,
+            MarkerArg::Block => Glyphs::Block,
+            MarkerArg::Ascii => Glyphs::Ascii,
+        }
+    }
 }
 
 #[cfg(test)]

@@ -7,9 +7,9 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Clear, Paragraph, Widget};
 
 use super::app::App;
-use super::fmt::wrap;
 use super::keys::{self, Context};
 use super::views::claims_line;
+use super::wrap::wrap;
 
 /// What each symbol on the screen means.
 pub const SYMBOLS: &[(&str, &str)] = &[

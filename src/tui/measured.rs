@@ -10,7 +10,7 @@ use super::ghost::{Ghost, GhostKind};
 use super::plots::compute_plot;
 use super::status::Hint;
 use crate::figure::View;
-use crate::surface::fitted_params;
+use crate::scene::fitted_params;
 
 /// What `a` says on a measured surface.
 pub const MOMENTS_DO_NOT_APPLY: &str =

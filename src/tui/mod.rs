@@ -9,7 +9,6 @@ pub mod caps;
 pub mod caption;
 pub mod class;
 pub mod contact;
-pub mod fmt;
 pub mod ghost;
 pub mod glyphs;
 pub mod help;
@@ -27,15 +26,15 @@ pub mod status;
 pub mod steps;
 pub mod term;
 pub mod theme;
-pub mod value_input;
 pub mod views;
+pub mod wrap;
 
 use std::io::Write;
 use std::time::Instant;
 
 use crossterm::event::{self, Event, KeyCode};
 
-use crate::snapshot::State;
+use crate::scene::State;
 use caps::Caps;
 use session::Session;
 

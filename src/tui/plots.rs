@@ -7,7 +7,7 @@ use rough_model::{Scene, SceneSpec};
 
 use super::glyphs::Mark;
 use crate::figure::{IndexSeries, LoadCurve};
-use crate::snapshot::State;
+use crate::scene::State;
 
 /// The curves as the chart draws them: transformed to the plot's axes
 /// (log10 of both values; Hurst stays linear), non-finite and non-positive

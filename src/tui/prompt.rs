@@ -3,8 +3,8 @@
 //! lecturer's truth prompt hands a poll's typed true value to the server.
 
 use super::app::{App, Hint, Mode};
-use super::fmt::{fmt_param, fmt_short};
-use super::value_input;
+use crate::physical::print::{fmt_param, fmt_short};
+use crate::physical::value;
 use crate::snapshot;
 
 /// `KEY=VALUE …` typed at the value prompt: any of `--set`'s keys (q0,
@@ -17,7 +17,7 @@ fn set_pairs(app: &mut App, text: &str) {
         .collect();
     let mut next = app.state.clone();
     let applied = pairs.and_then(|p| {
-        crate::apply_sets(&mut next, &p).map_err(|(at, e)| match at {
+        crate::cli::setup::apply_sets(&mut next, &p).map_err(|(at, e)| match at {
             Some(k) => format!("{}: {e}", text.split_whitespace().nth(k).unwrap_or("")),
             None => e,
         })
@@ -32,7 +32,7 @@ fn set_pairs(app: &mut App, text: &str) {
             }
         }
         // In the explorer's words: the key that helps is `a`.
-        Err(e) if e.ends_with(crate::HURST_ONE_SET) => {
+        Err(e) if e.ends_with(crate::scene::HURST_ONE_SET) => {
             app.set_status(super::app::HURST_ONE_ASYMPTOTIC, true)
         }
         Err(e) => app.set_status(e, true),
@@ -50,13 +50,13 @@ pub fn accept(app: &mut App) {
                 app.mode = Mode::Main;
                 return;
             }
-            match value_input::apply_value(&app.state.params, axis, &text) {
+            match value::apply_value(&app.state.params, axis, &text) {
                 Ok(p) => {
                     let mut next = app.state.clone();
                     next.params = p;
                     if let Err(e) = next.check() {
                         let text = match e {
-                            snapshot::Invalid::Moments(_) => {
+                            crate::scene::Invalid::Moments(_) => {
                                 super::app::HURST_ONE_ASYMPTOTIC.into()
                             }
                             e => e.to_string(),
@@ -111,7 +111,7 @@ pub fn accept(app: &mut App) {
                 return;
             }
             let sweep = app.state.sweep;
-            match value_input::parse_value(axis, &text) {
+            match value::parse_value(axis, &text) {
                 Ok(v) if sweep.axis() == axis && (sweep.from()..=sweep.to()).contains(&v) => {
                     app.mode = Mode::Main;
                     app.status = None;

@@ -5,7 +5,7 @@
 use rough_model::{persson_elastic, slopes, Slopes, Surface};
 use rough_surface::PowerLawFit;
 
-use crate::snapshot::State;
+use crate::scene::State;
 use crate::surface::fit_amplitude;
 
 /// Everything the readout shows, at the current parameters.

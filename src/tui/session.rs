@@ -14,7 +14,7 @@ use super::app::{update, App, Message};
 use super::glyphs::ascii_name;
 use super::keys;
 use super::theme::Theme;
-use crate::snapshot::State;
+use crate::scene::State;
 
 /// An explorer drawing into `W` at a fixed size that only [`Session::resize`]
 /// changes (nothing asks a terminal for its size).

@@ -9,11 +9,11 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Clear, Widget};
 
 use super::app::{App, Message, Mode, Status};
-use super::fmt::{fmt_param, fmt_short};
 use super::glyphs::Glyphs;
 use super::line_edit::LineEdit;
-use super::value_input;
-use crate::snapshot::State;
+use crate::physical::print::{fmt_param, fmt_short};
+use crate::physical::value;
+use crate::scene::State;
 use rough_model::Axis;
 
 /// Advice that holds only in some states.
@@ -135,7 +135,7 @@ pub fn render_status(app: &App, status: Rect, below: Rect, buf: &mut Buffer) {
             let name = gl.text(axis.symbol()).into_owned();
             let mut spans = vec![Span::styled(format!("{name} = "), t.title)];
             spans.extend(field(line, usize::from(status.width) / 3, gl));
-            let units = if value_input::is_length(*axis) {
+            let units = if value::is_length(*axis) {
                 "units m cm mm µm nm pm · "
             } else {
                 ""

@@ -6,7 +6,7 @@ use std::sync::Arc;
 
 use rough_model::{Dim, MomentTable};
 use rough_surface::{Kind, Measured, Options};
-use roughtui::snapshot::State;
+use roughtui::scene::State;
 use roughtui::surface::SurfaceSource;
 
 /// fig2's spectrum in SurfaceTopography's convention, C^iso = (2π)² Z

@@ -16,6 +16,7 @@ pub mod roughness;
 pub mod scene;
 pub mod slopes;
 pub mod spectrum;
+mod sweep;
 
 pub use areas::{areas, closed_form_areas, exact_areas, AreaError, Areas};
 pub use dd::Dd;
@@ -23,6 +24,7 @@ pub use indices::{psi_in_use, Indices, Surface};
 pub use measured::{Dim, MomentTable, ProfileMoments, TableError};
 pub use params::{Axis, ParamError, ParamValues, Params};
 pub use roughness::{Roughness, RoughnessError};
-pub use scene::{Curves, Scene, SceneSpec, Sweep, SweepError};
+pub use scene::{Curves, Scene, SceneSpec};
 pub use slopes::{closed_form, exact, persson_elastic, slopes, Model, Regime, Slopes};
 pub use spectrum::{Moments, Spectrum};
+pub use sweep::{Sweep, SweepError};

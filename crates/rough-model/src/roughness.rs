@@ -15,8 +15,8 @@ use crate::dd::{Dd, PI};
 use crate::indices::{Indices, Surface};
 use crate::measured::{MomentTable, ProfileMoments};
 use crate::params::{Axis, Params, Shown};
-use crate::scene::Sweep;
 use crate::spectrum::{Moments, Spectrum};
+use crate::sweep::Sweep;
 
 /// R_p/R_s of the hardness law times (3/8): R*/(1.2 R_s) = R*·√(m4/π)/0.45.
 const RP_COEF: f64 = 0.45;

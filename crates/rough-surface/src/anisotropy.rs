@@ -33,7 +33,7 @@ impl Slopes {
     }
 
     /// Ψ_P of the profiles along x and along y: (E/H0) √(m2/2) with m2
-    /// the mean-square slope of those profiles (MODEL.md, eq. 11).
+    /// the mean-square slope of those profiles (docs/model.md, eq. 11).
     pub fn psi_p(&self) -> (f64, f64) {
         let psi = |s: f64| s / std::f64::consts::SQRT_2 / H0_OVER_E;
         (psi(self.x), psi(self.y))

@@ -10,7 +10,7 @@
 //! many-mode bins at large q, bent slightly by the window, outweigh a
 //! roll-off plateau of a few bins at small q. The band is the longest
 //! piece (in decades of q) that is straight (its points within
-//! [`crate::fit::POOR_DECADES`] rms of its line) and whose slope is that
+//! [`POOR_DECADES`] rms of its line) and whose slope is that
 //! of a self-affine surface, 0 ≤ H ≤ 1 widened by [`H_SLACK`] on both
 //! sides: a roll-off plateau (slope 0: H = −1 for areal data) and a noise
 //! floor are not, and neither is the steep fall past a short cutoff or the
@@ -21,6 +21,10 @@
 //! generated with a short cutoff has nothing but rounding past it).
 
 use rough_model::Dim;
+
+/// A fit whose points lie further than this from its line, rms in decades
+/// of C (a factor 1.26), is not a power law over the band.
+pub const POOR_DECADES: f64 = 0.1;
 
 /// Most straight pieces the spectrum is cut into.
 const MAX_SEGMENTS: usize = 5;
@@ -192,7 +196,7 @@ pub(crate) fn self_affine(dim: Dim, spectrum: &[(f64, f64)], modes: &[f64]) -> O
     }
     let straight = |&(i, j): &(usize, usize)| {
         let s = full[j].minus(&full[i]);
-        (s.line().1 / s.w).sqrt() / std::f64::consts::LN_10 <= crate::fit::POOR_DECADES
+        (s.line().1 / s.w).sqrt() / std::f64::consts::LN_10 <= POOR_DECADES
     };
     let (mut i, mut j) = longest(&mut pieces.iter().filter(|p| plausible(p) && straight(p)))
         .or_else(|| longest(&mut pieces.iter().filter(|p| plausible(p))))

@@ -22,11 +22,11 @@
 use rough_model::Dim;
 
 use crate::error::{Failure, Problem};
-use crate::header::per_metre;
+use crate::measured::{Kind, Options};
 use crate::psd;
 use crate::spectrum::Computed;
 use crate::text::defined;
-use crate::{Kind, Options};
+use crate::units::per_metre;
 
 const AREAL: &str = "q/π × 2D PSD";
 const PROFILE: &str = "1D PSD along x";

@@ -5,7 +5,8 @@
 //! others (phase, voltage …) left aside; `--channel N|TITLE` picks another.
 
 use crate::error::{Failure, Problem};
-use crate::header::{per_metre, Header};
+use crate::header::Header;
+use crate::units::per_metre;
 
 /// One channel's lines.
 pub(crate) struct Block<'a> {

@@ -27,9 +27,10 @@ use rough_model::Dim;
 
 use crate::error::{Failure, Problem};
 use crate::header::Header;
+use crate::measured::{Kind, Options};
+use crate::psd;
 use crate::spectrum::{self, Computed};
 use crate::text::Scan;
-use crate::{psd, Kind, Options};
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Hint {
@@ -233,7 +234,7 @@ fn scales(
 ) -> Result<(f64, f64, Option<String>), Failure> {
     use crate::units::{heights, Source};
     let unit = |u: &str, line: usize| {
-        crate::header::per_metre(u).ok_or((Some(line), Problem::UnknownUnit(u.to_string())))
+        crate::units::per_metre(u).ok_or((Some(line), Problem::UnknownUnit(u.to_string())))
     };
     let Some((line, x, z)) = crate::colunits::scan_units(lines) else {
         let source = match (&header.value_unit, &header.x_unit) {

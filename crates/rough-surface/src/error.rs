@@ -11,7 +11,7 @@ pub enum Problem {
     /// The file could not be read (the system's reason).
     Read(String),
     IsDir,
-    /// Larger than [`crate::MAX_BYTES`].
+    /// Larger than [`crate::limits::MAX_BYTES`].
     TooLarge(u64),
     /// Not UTF-8 text.
     NotText,
@@ -86,7 +86,7 @@ impl fmt::Display for Problem {
             Problem::TooLarge(n) => write!(
                 f,
                 "{n} bytes is too large: surface files are read up to {} MB",
-                crate::MAX_BYTES >> 20
+                crate::limits::MAX_BYTES >> 20
             ),
             Problem::NotText => write!(f, "not UTF-8 text"),
             Problem::Empty => write!(f, "no data rows (the file is empty or all comments)"),
@@ -157,7 +157,7 @@ impl fmt::Display for Problem {
                 "{count} of {total} points ({}) are undefined (NaN, empty or masked): \
                  up to {} % are filled, more is refused; crop the data to the part \
                  that was measured",
-                crate::fill::share(*count, *total),
+                share(*count, *total),
                 crate::MAX_UNDEFINED * 100.0
             ),
             Problem::Format(s) => write!(f, "{s}"),
@@ -188,3 +188,20 @@ impl std::error::Error for SurfaceError {}
 
 /// A problem and the 1-based line it is about, if any.
 pub(crate) type Failure = (Option<usize>, Problem);
+
+/// A share of points as a percentage for people: "0.4 %", "0.12 %",
+/// "2.5 %", "12.5 %", "< 0.01 %".
+pub(crate) fn share(count: usize, total: usize) -> String {
+    let p = 100.0 * count as f64 / total as f64;
+    if p < 0.01 {
+        return "< 0.01 %".to_string();
+    }
+    let digits = if p < 1.0 { 2 } else { 1 };
+    let s = format!("{p:.digits$}");
+    let s = if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        &s
+    };
+    format!("{s} %")
+}

@@ -16,7 +16,7 @@
 //! point is defined, so the system is never singular below the share
 //! refused.
 
-use crate::error::Problem;
+use crate::error::{share, Problem};
 
 /// The largest share of undefined points filled; above it the file is
 /// refused ([`Problem::Undefined`]).
@@ -33,23 +33,6 @@ pub(crate) fn note(count: usize, total: usize) -> String {
         if count == 1 { "" } else { "s" },
         share(count, total)
     )
-}
-
-/// A share of points as a percentage for people: "0.4 %", "0.12 %",
-/// "2.5 %", "12.5 %", "< 0.01 %".
-pub(crate) fn share(count: usize, total: usize) -> String {
-    let p = 100.0 * count as f64 / total as f64;
-    if p < 0.01 {
-        return "< 0.01 %".to_string();
-    }
-    let digits = if p < 1.0 { 2 } else { 1 };
-    let s = format!("{p:.digits$}");
-    let s = if s.contains('.') {
-        s.trim_end_matches('0').trim_end_matches('.')
-    } else {
-        &s
-    };
-    format!("{s} %")
 }
 
 /// Fills the NaN heights of an nx × ny grid (rows of nx; a line is

@@ -18,6 +18,8 @@ use std::f64::consts::PI;
 
 use rough_model::Dim;
 
+use crate::band::POOR_DECADES;
+
 /// C ≈ A q^slope over [q_lo, q_hi], read as a self-affine surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PowerLawFit {
@@ -59,9 +61,6 @@ pub enum Verdict {
     TooShort,
 }
 
-/// A fit whose points lie further than this from its line, rms in decades
-/// of C (a factor 1.26), is not a power law over the band.
-pub const POOR_DECADES: f64 = 0.1;
 /// Fewest points of a fit that says anything.
 pub const MIN_POINTS: usize = 4;
 /// The narrowest band, decades of q, a fit is judged over.

@@ -3,8 +3,8 @@
 //! step from them to the moment table.
 
 use crate::error::{Failure, Problem};
+use crate::measured::{Kind, Options};
 use crate::spectrum::{self, Computed};
-use crate::{Kind, Options};
 
 /// Heights on a regular grid, read from a binary file.
 #[derive(Clone, Debug, PartialEq)]

@@ -23,7 +23,7 @@ use std::collections::BTreeMap;
 
 use crate::error::{Failure, Problem};
 use crate::grid::Grid;
-use crate::header::per_metre;
+use crate::units::per_metre;
 
 /// The magic at the start of a .gwy file.
 pub(crate) const MAGIC: &[u8] = b"GWYP";

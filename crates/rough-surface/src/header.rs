@@ -68,21 +68,6 @@ const CHANNEL: &[&str] = &[
 const X_UNIT: &[&str] = &["x-unit", "Lateral units"];
 const Y_UNIT: &[&str] = &["y-unit"];
 
-/// How many of a length unit make a metre (SurfaceTopography's
-/// spellings). Values are divided by it: x / 1e6 is the correctly rounded
-/// metres of x µm, x · 1e-6 need not be.
-pub(crate) fn per_metre(u: &str) -> Option<f64> {
-    Some(match u {
-        "m" => 1.0,
-        "mm" => 1e3,
-        "µm" | "μm" | "um" | "~m" => 1e6,
-        "nm" => 1e9,
-        "Å" | "A" => 1e10,
-        "pm" => 1e12,
-        _ => return None,
-    })
-}
-
 /// A size as written, with the line it is on.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct Size {
@@ -138,6 +123,12 @@ fn first_word(s: &str) -> String {
 }
 
 impl Header {
+    /// Whether rows of `cols` numbers under this header are a height
+    /// matrix (else a two-column table).
+    pub fn is_matrix(&self, cols: usize) -> bool {
+        self.has_size() || cols != 2
+    }
+
     /// Reads the labels this module knows from header and comment lines;
     /// other lines are left alone.
     pub fn read(lines: &[(usize, &str)]) -> Result<Header, Failure> {
@@ -245,7 +236,7 @@ impl Header {
 }
 
 fn unit(u: &str, line: usize) -> Result<f64, Failure> {
-    per_metre(u).ok_or_else(|| (Some(line), Problem::UnknownUnit(u.to_string())))
+    crate::units::per_metre(u).ok_or_else(|| (Some(line), Problem::UnknownUnit(u.to_string())))
 }
 
 #[cfg(test)]

@@ -4,9 +4,10 @@
 
 use crate::error::{Failure, Problem};
 use crate::header::Header;
+use crate::measured::{Kind, Options};
+use crate::profiles;
 use crate::spectrum::{self, Computed};
 use crate::text::Scan;
-use crate::{profiles, Kind, Options};
 
 pub(crate) fn read(
     scan: Scan<'_>,

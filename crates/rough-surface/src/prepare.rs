@@ -8,11 +8,14 @@
 use std::f64::consts::PI;
 
 use crate::error::Problem;
-use crate::spectrum::FLAT;
+
+/// The residual rms below which detrended heights count as nothing left
+/// (relative to the heights' rms about their mean): rounding leaves ~1e-16.
+pub(crate) const FLAT: f64 = 1e-10;
 
 /// Rows per thread's block.
 fn per(ny: usize) -> usize {
-    ny.div_ceil(crate::threads()).max(1)
+    ny.div_ceil(crate::threads::count()).max(1)
 }
 
 /// Pass one, per block of rows from `j0`: Σh, Σ(i − cx)h, Σ(j − cy)h and
@@ -180,4 +183,14 @@ impl std::fmt::Debug for Heights {
             self.nx, self.ny, self.lx, self.ly, self.periodic
         )
     }
+}
+
+std::thread_local! {
+    /// Set while [`crate::read_heights`] reads on this thread.
+    pub(crate) static KEEP_HEIGHTS: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Whether the read under way keeps a map's heights ([`crate::read_heights`]).
+pub(crate) fn keeping_heights() -> bool {
+    KEEP_HEIGHTS.with(|k| k.get())
 }

@@ -14,8 +14,8 @@ use rustfft::FftPlanner;
 use crate::bins::Bins;
 use crate::error::Problem;
 use crate::fill;
+use crate::measured::Direction;
 use crate::spectrum::{detrend, freq, window_1d, Computed};
-use crate::Direction;
 
 /// The nx × ny map `h` (rows of nx along x) over lx × ly as its profiles
 /// along `direction`; undefined points are filled first, on the map.

@@ -6,8 +6,8 @@
 use rough_model::{Dim, MomentTable, TableError};
 
 use crate::error::{Failure, Problem};
+use crate::measured::Kind;
 use crate::spectrum::Computed;
-use crate::Kind;
 
 /// The table of `q` and `c`, whose point i came from 1-based line
 /// `lines[i]` (for refusals).

@@ -46,7 +46,7 @@ fn rows_sum<F>(ny: usize, f: F) -> (f64, f64)
 where
     F: Fn(std::ops::Range<usize>) -> (f64, f64) + Sync,
 {
-    let per = ny.div_ceil(crate::threads()).max(1);
+    let per = ny.div_ceil(crate::threads::count()).max(1);
     std::thread::scope(|s| {
         let f = &f;
         let parts: Vec<_> = (0..ny)

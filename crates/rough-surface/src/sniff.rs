@@ -5,20 +5,7 @@
 use std::borrow::Cow;
 
 use crate::error::{Failure, Problem};
-
-/// What to do with a point cloud.
-pub(crate) const XYZ_HINT: &str = "a regular grid of heights is needed: open it in \
-    Gwyddion as XYZ data, rasterize it (XYZ Data → Rasterize) and save it as .gwy or .x3p \
-    (or File → Save As → ASCII data matrix)";
-
-/// The line for a file of a format that Gwyddion reads and roughtui does
-/// not.
-pub(crate) fn hint(what: &str) -> String {
-    format!(
-        "looks like {what}: open it in Gwyddion and save it as .gwy or .x3p \
-         (or File → Save As → ASCII data matrix, .txt)"
-    )
-}
+use crate::hints::hint;
 
 /// The formats told apart.
 #[derive(Debug, PartialEq)]

@@ -48,10 +48,6 @@ pub(crate) struct Computed {
     pub heights: Option<Arc<prepare::Heights>>,
 }
 
-/// The residual rms below which detrended heights count as nothing left
-/// (relative to the heights' rms about their mean): rounding leaves ~1e-16.
-pub(crate) const FLAT: f64 = 1e-10;
-
 /// Refuses constant heights; returns their mean and variance.
 fn moments(h: &[f64]) -> Result<(f64, f64), Problem> {
     if h.iter().all(|&v| v == h[0]) {
@@ -100,7 +96,7 @@ pub(crate) fn detrend(h: &mut [f64], nx: usize, ny: usize, periodic: bool) -> Re
     }
     remove_plane(h, nx, ny, mean);
     let rest = h.iter().map(|v| v * v).sum::<f64>() / h.len() as f64;
-    if rest <= FLAT * FLAT * var {
+    if rest <= crate::prepare::FLAT * crate::prepare::FLAT * var {
         return Err(Problem::Flat { plane: true });
     }
     Ok(())
@@ -133,7 +129,7 @@ fn rows_half(h: &[f64], nx: usize, ny: usize, fft: &Arc<dyn Fft<f64>>) -> Vec<Co
     let nh = nx / 2 + 1;
     let mut out = vec![Complex::new(0.0, 0.0); ny * nh];
     let pairs = ny.div_ceil(2);
-    let per = pairs.div_ceil(crate::threads()).max(1);
+    let per = pairs.div_ceil(crate::threads::count()).max(1);
     std::thread::scope(|s| {
         for (t, block) in out.chunks_mut(2 * per * nh).enumerate() {
             let fft = Arc::clone(fft);
@@ -195,7 +191,7 @@ pub(crate) fn map(
     // 128 MiB, which the explorer does not hold unless the contact
     // simulation wants them. Periodic maps are not windowed: their buffer
     // is kept after the FFT; other maps' are copied before the window.
-    let wanted = crate::keeping_heights();
+    let wanted = crate::prepare::keeping_heights();
     let copy = (wanted && !periodic).then(|| keep(h.clone()));
     let s2 = if periodic {
         1.0
@@ -230,7 +226,7 @@ pub(crate) fn map(
     let my = ny / 2 + 1;
     // Every (kx, ky) of the half grid; (0, 0), the mean, is dropped below.
     let mut terms = vec![(0.0, 0.0); nh * my];
-    let per = nh.div_ceil(crate::threads()).max(1);
+    let per = nh.div_ceil(crate::threads::count()).max(1);
     // The column FFTs a few columns at a time, gathered from the row-major
     // half spectrum (no transposed copy), each column's terms made at once.
     const COLS: usize = 8;

@@ -106,7 +106,8 @@ fn read_in(
 ) -> Result<Streamed, Failure> {
     let mut first = Vec::with_capacity(if len < from { len as usize + 1 } else { block });
     if len < from {
-        fill(&mut file, &mut first, crate::MAX_BYTES as usize + 1).map_err(|p| (None, p))?;
+        fill(&mut file, &mut first, crate::limits::MAX_BYTES as usize + 1)
+            .map_err(|p| (None, p))?;
         return Ok(Streamed::Whole(first));
     }
     // The first blocks, up to a line end past the first data row: the
@@ -149,7 +150,7 @@ fn read_in(
         return whole(first, file);
     };
     let matrix = match h.first {
-        Some((_, _, cols)) => !crate::ce::is_ce(&h.header) && crate::is_matrix(&header, cols),
+        Some((_, _, cols)) => !crate::ce::is_ce(&h.header) && header.is_matrix(cols),
         None => false,
     };
     if !matrix {
@@ -186,7 +187,7 @@ fn read_in(
 
 /// The rest of `file` after `first` (read), whole.
 fn whole(mut first: Vec<u8>, mut file: impl Read) -> Result<Streamed, Failure> {
-    fill(&mut file, &mut first, crate::MAX_BYTES as usize + 1).map_err(|p| (None, p))?;
+    fill(&mut file, &mut first, crate::limits::MAX_BYTES as usize + 1).map_err(|p| (None, p))?;
     Ok(Streamed::Whole(first))
 }
 
@@ -203,7 +204,7 @@ fn stream(
     hasher: &mut Sha256,
     (first_line, cols, per_value): (usize, usize, usize),
 ) -> Result<Rest, Failure> {
-    let workers = crate::threads();
+    let workers = crate::threads::count();
     // Room for every height, from the first row's bytes per number (with a
     // margin; pages never written cost no memory).
     let estimate = (len as usize / per_value) * 5 / 4 + cols;
@@ -315,16 +316,17 @@ fn stream(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{parse, Options};
+    use crate::measured::Options;
+    use crate::read::{from_scan, measured, parse, sha256_hex};
 
-    fn streamed(text: &str, block: usize) -> Result<crate::Measured, Failure> {
+    fn streamed(text: &str, block: usize) -> Result<crate::measured::Measured, Failure> {
         let bytes = text.as_bytes();
         match read_in(bytes, (bytes.len() as u64, ""), 0, block)? {
             Streamed::Whole(_) => panic!("not streamed"),
             Streamed::Matrix { head, rest, sha256 } => {
-                assert_eq!(sha256, crate::sha256_hex(bytes));
-                let r = crate::from_scan(None, rest.scan(&head)?, &Options::default())?;
-                Ok(crate::measured(r, sha256, Vec::new()))
+                assert_eq!(sha256, sha256_hex(bytes));
+                let r = from_scan(None, rest.scan(&head)?, &Options::default())?;
+                Ok(measured(r, sha256, Vec::new()))
             }
         }
     }

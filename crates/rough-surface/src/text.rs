@@ -258,7 +258,7 @@ pub(crate) fn scan<'a>(text: &'a str, head: Head<'a>) -> Result<Scan<'a>, Failur
     };
     let body = &text[start..];
     let threads = if body.len() >= PARALLEL_FROM {
-        crate::threads()
+        crate::threads::count()
     } else {
         1
     };

@@ -7,7 +7,21 @@
 use rough_model::MomentTable;
 
 use crate::error::{Failure, Problem};
-use crate::header::per_metre;
+
+/// How many of a length unit make a metre (SurfaceTopography's
+/// spellings). Values are divided by it: x / 1e6 is the correctly rounded
+/// metres of x µm, x · 1e-6 need not be.
+pub(crate) fn per_metre(u: &str) -> Option<f64> {
+    Some(match u {
+        "m" => 1.0,
+        "mm" => 1e3,
+        "µm" | "μm" | "um" | "~m" => 1e6,
+        "nm" => 1e9,
+        "Å" | "A" => 1e10,
+        "pm" => 1e12,
+        _ => return None,
+    })
+}
 
 /// A length unit for heights (`--height-unit`), spelled canonically.
 #[derive(Clone, Copy, Debug, PartialEq)]

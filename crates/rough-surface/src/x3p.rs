@@ -17,7 +17,7 @@
 //! Invalid points, NaN and infinities are undefined points (NaN). A
 //! checksum that does not match is refused; a missing one is not checked.
 //! Every size is checked before it is used: members unpack to no more than
-//! [`crate::MAX_BYTES`] and to exactly what `main.xml` says.
+//! [`crate::limits::MAX_BYTES`] and to exactly what `main.xml` says.
 
 use std::io::{Cursor, Read};
 
@@ -74,13 +74,13 @@ fn other_zip(zip: &Zip<'_>) -> String {
         .collect();
     let has = |f: &dyn Fn(&str) -> bool| names.iter().any(|n| f(n));
     if has(&|n| n == "Vk4File") {
-        crate::sniff::hint("a Keyence .vk6/.vk7 file")
+        crate::hints::hint("a Keyence .vk6/.vk7 file")
     } else if has(&|n| n.ends_with(".npy")) {
         "looks like a NumPy .npz archive: save one height array as text with \
          numpy.savetxt (rows of heights) and add '# Width:' and '# Height:' lines"
             .to_string()
     } else if has(&|n| n.eq_ignore_ascii_case("index.xml")) {
-        crate::sniff::hint("a Sensofar .plux file")
+        crate::hints::hint("a Sensofar .plux file")
     } else {
         "a zip archive without main.xml: not an x3p file (an x3p holds main.xml \
          and bindata/data.bin)"
@@ -170,7 +170,7 @@ fn stream(
     mut each: impl FnMut(&[u8]),
 ) -> Result<String, Failure> {
     const PIECE: usize = 1 << 20;
-    let (mut f, declared) = open(zip, name, crate::MAX_BYTES, Some(expected))?;
+    let (mut f, declared) = open(zip, name, crate::limits::MAX_BYTES, Some(expected))?;
     let (tx, rx) = std::sync::mpsc::sync_channel::<Vec<u8>>(8);
     std::thread::scope(|s| {
         let sum = s.spawn(move || {
@@ -362,7 +362,7 @@ pub(crate) fn read(bytes: &[u8]) -> Result<Grid, Failure> {
     let irregular = || {
         bad(format!(
             "a point cloud (irregular x and y): {}",
-            crate::sniff::XYZ_HINT
+            crate::hints::XYZ_HINT
         ))
     };
     if feature == "PCL" || child(record3, "ListDimension").is_some() {
@@ -392,7 +392,10 @@ pub(crate) fn read(bytes: &[u8]) -> Result<Grid, Failure> {
     let points = nx
         .checked_mul(ny)
         .and_then(|n| n.checked_mul(layers))
-        .filter(|&n| (n as u64) <= crate::MAX_BYTES && 8 * (nx * ny) as u64 <= crate::MAX_BYTES)
+        .filter(|&n| {
+            (n as u64) <= crate::limits::MAX_BYTES
+                && 8 * (nx * ny) as u64 <= crate::limits::MAX_BYTES
+        })
         .ok_or_else(|| {
             bad(format!(
                 "main.xml says {nx} × {ny} × {layers} points: more than a file is read with"
@@ -459,7 +462,12 @@ pub(crate) fn read(bytes: &[u8]) -> Result<Grid, Failure> {
             let vpath = link(&dir, vpath)?;
             let need = points.div_ceil(8) as u64;
             let says = || format!("main.xml's {nx} × {ny} × {layers} validity bits");
-            let valid = member(&mut zip, &vpath, crate::MAX_BYTES, Some((need, &says)))?;
+            let valid = member(
+                &mut zip,
+                &vpath,
+                crate::limits::MAX_BYTES,
+                Some((need, &says)),
+            )?;
             check_md5(
                 &vpath,
                 &valid,

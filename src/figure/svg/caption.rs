@@ -5,7 +5,7 @@ use plotters::prelude::*;
 
 use super::{plot_err, Area, CAPTION_W, CLAIMS, LINE_H};
 use crate::figure::{scene_text, FigureOptions, View};
-use crate::snapshot::State;
+use crate::scene::State;
 
 /// The scene's colour under the chart: dark grey, so that the caption and
 /// the claims stand out.

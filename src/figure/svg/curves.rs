@@ -9,8 +9,9 @@ use super::{
     chart, coincide, guide, line, plot_err, positive_span, title, x_scale, Area, Chart, Scale,
     Stroke, ELASTIC, GREY, PERSSON, PLASTIC, PSI_ASY, PSI_GW, TOTAL,
 };
-use crate::figure::{short_number, FigureOptions, IndexSeries, LoadCurve};
-use crate::snapshot::State;
+use crate::figure::{FigureOptions, IndexSeries, LoadCurve};
+use crate::physical::short_number;
+use crate::scene::State;
 
 /// A vertical guide at the current value of the swept parameter, named
 /// in the legend ("ζ = 128, the marker") when it is on the chart.

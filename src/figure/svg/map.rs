@@ -8,7 +8,7 @@ use super::{axis_desc, chart, plot_err, title, Area, Scale};
 use crate::figure::{
     share_colour, FigureOptions, MapSpec, RegimeMap, ELASTIC_BELOW, PLASTIC_ABOVE,
 };
-use crate::snapshot::State;
+use crate::scene::State;
 
 /// Width of the legend panel right of the map.
 const LEGEND_W: u32 = 230;

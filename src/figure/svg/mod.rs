@@ -16,8 +16,9 @@ use plotters::prelude::*;
 use rough_model::Axis;
 
 use super::{axis_unit, FigureOptions, View};
-use crate::figure::{scene_text, short_number};
-use crate::snapshot::State;
+use crate::figure::scene_text;
+use crate::physical::short_number;
+use crate::scene::State;
 use caption::{caption, caption_lines, wrap, SCENE};
 use legend::{Legend, Placed, Sample};
 

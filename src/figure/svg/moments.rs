@@ -5,8 +5,9 @@
 
 use super::legend::{Legend, Placed};
 use super::{chart, line, positive_span, title, Area, Scale, Stroke};
-use crate::figure::{short_number, MomentSeries};
-use crate::snapshot::State;
+use crate::figure::MomentSeries;
+use crate::physical::short_number;
+use crate::scene::State;
 use plotters::prelude::RGBColor;
 
 const H: RGBColor = RGBColor(0, 0, 0);

@@ -12,8 +12,8 @@ use ratatui::widgets::{Chart, Dataset, GraphType, Widget};
 
 use rough_model::Axis;
 
+use crate::physical::print::{fmt_decade, fmt_param, fmt_short};
 use crate::tui::app::App;
-use crate::tui::fmt::{fmt_decade, fmt_param, fmt_short};
 use crate::tui::layout::Y_LABEL_W;
 use crate::tui::plots::to_plot;
 use crate::tui::theme::{CurveStyle, Theme};

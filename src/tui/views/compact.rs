@@ -9,9 +9,10 @@ use ratatui::text::Line;
 use ratatui::widgets::{Paragraph, Widget};
 
 use super::side::slider_bar;
+use crate::physical::print::{fmt_param, fmt_short};
 use crate::tui::app::App;
 use crate::tui::class::UNICODE;
-use crate::tui::fmt::{fmt_param, fmt_short, wrap};
+use crate::tui::wrap::wrap;
 
 /// The smallest terminal the compact screen draws in.
 pub const MIN: (u16, u16) = (40, 10);

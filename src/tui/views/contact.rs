@@ -15,9 +15,9 @@ use ratatui::widgets::{Dataset, GraphType, Paragraph, Widget, Wrap};
 
 use super::chart::{self, Scale};
 use crate::contact::scene::Node;
+use crate::physical::print::{fmt_num, load_text};
 use crate::tui::app::App;
 use crate::tui::contact::{load_value, ContactPane, LOADS};
-use crate::tui::fmt::fmt_num;
 use crate::tui::glyphs::Glyphs;
 use crate::tui::layout::Y_LABEL_W;
 use crate::tui::theme::{CurveStyle, Theme};
@@ -58,18 +58,6 @@ pub fn share_pct(plastic: f64, total: f64) -> String {
         format!("{s:.0}")
     } else {
         format!("{s:.1}")
-    }
-}
-
-/// The load p̄/H as the readout writes it.
-pub fn load_text(v: f64) -> String {
-    // Four significant digits, trailing zeros dropped (0.01778, 0.01, 1).
-    let decimals = (3 - v.log10().floor() as i32).max(0) as usize;
-    let s = format!("{v:.decimals$}");
-    if s.contains('.') {
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        s
     }
 }
 

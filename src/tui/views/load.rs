@@ -7,8 +7,8 @@ use ratatui::layout::Rect;
 use ratatui::text::Span;
 
 use super::chart::{self, Scale};
+use crate::physical::print::fmt_num;
 use crate::tui::app::App;
-use crate::tui::fmt::fmt_num;
 
 /// The chart panel `area` with its graph `g`.
 pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {

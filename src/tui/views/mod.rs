@@ -23,12 +23,13 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Widget, Wrap};
 
 use super::app::{App, Mode};
-use super::fmt::{fmt_short, wrap};
 use super::glyphs::Glyphs;
 use super::keys;
 use super::layout::{Regions, MIN_SIZE};
 use super::{help, status};
 use crate::figure::{Claim, View};
+use crate::physical::print::fmt_short;
+use crate::tui::wrap::wrap;
 
 impl Widget for &App {
     fn render(self, area: Rect, buf: &mut Buffer) {

@@ -8,10 +8,10 @@ use ratatui::widgets::{Paragraph, Widget};
 
 use rough_model::Axis;
 
-use crate::figure::short_number;
+use crate::physical::print::{fmt_len, fmt_num, fmt_param, fmt_rel, fmt_share, fmt_short};
+use crate::physical::short_number;
 use crate::tui::app::App;
 use crate::tui::class::Ask;
-use crate::tui::fmt::{fmt_len, fmt_num, fmt_param, fmt_rel, fmt_share, fmt_short};
 use crate::tui::glyphs::SliderBar;
 use crate::tui::theme::CurveStyle;
 

@@ -7,8 +7,8 @@ use ratatui::text::Span;
 
 use super::chart::{self, Scale};
 use super::overlap;
+use crate::physical::print::fmt_decade;
 use crate::tui::app::App;
-use crate::tui::fmt::fmt_decade;
 use crate::tui::theme::CurveStyle;
 
 /// The chart panel `area` with its graph `g`.

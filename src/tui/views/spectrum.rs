@@ -10,8 +10,8 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::Widget;
 
 use super::chart::{self, Scale};
+use crate::physical::print::{fmt_decade, fmt_num};
 use crate::tui::app::App;
-use crate::tui::fmt::{fmt_decade, fmt_num};
 use crate::tui::theme::CurveStyle;
 
 /// The chart panel `area` with its graph `g`.

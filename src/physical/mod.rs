@@ -1,3 +1,15 @@
+//! The ground floor: physical values as people type and read them, used by
+//! every layer above (the scene, snapshots, pictures, export, the
+//! simulation, the terminal) and using none of them.
+//!
+//! - [`value`]: what the value prompt and `--set` accept for a parameter
+//!   (lengths with units);
+//! - [`print`]: numbers, lengths, shares and parameters for the screen;
+//! - [`short_number`]: four significant digits for claims, labels and tables;
+//! - [`csv_number`]: numbers for CSV, every digit;
+//! - this module: each parameter's physical range, and the material values
+//!   (pressures, q0, L) in physical units.
+//!
 //! The values a physicist would accept: each parameter's physical range,
 //! narrower than the model's mathematical domain (which takes H0/E = 5 or
 //! H = 1e-300 and computes something meaningless), and the material values
@@ -8,9 +20,15 @@
 //! load. Every refusal names the parameter as the screen shows it and
 //! states the range, in at most 80 characters.
 
+pub mod csv_number;
+pub mod print;
+mod short;
+pub mod value;
+
 use rough_model::Axis;
 
-use crate::tui::value_input::parse_value;
+pub use short::short_number;
+use value::parse_value;
 
 /// A closed range of accepted values with its words.
 #[derive(Clone, Copy, Debug, PartialEq)]

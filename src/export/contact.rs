@@ -1,0 +1,99 @@
+//! `roughtui export --view contact|contact-sweep|contact-map`: the scene's
+//! surface solved by the boundary-element contact (`crate::contact`).
+
+use std::io::Write;
+
+use anyhow::bail;
+
+use crate::cli::{ExportArgs, FormatArg};
+use crate::contact::map_svg::{caption, map_svg};
+use crate::contact::scene::{classify, SceneKey};
+use crate::contact::{self, DEFAULT_LOADS, DEFAULT_SEED, MAX_LOADS, SWEEP_LOAD};
+
+/// `roughtui export --view contact|contact-sweep`.
+pub fn export(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
+    if args.view == crate::cli::ViewArg::ContactMap {
+        return export_map(args, out);
+    }
+    let sweep = args.view == crate::cli::ViewArg::ContactSweep;
+    let name = if sweep { "contact-sweep" } else { "contact" };
+    for (given, opt) in [
+        (args.grid.is_some(), "--grid"),
+        (args.map_y.is_some(), "--map-y"),
+        (args.sweep.is_some(), "--sweep"),
+        (sweep && args.points.is_some(), "--points"),
+    ] {
+        if given {
+            bail!(
+                "{opt} does not apply to --view {name}: it solves the scene's surface at \
+                 {} (--seed picks the surface)",
+                if sweep {
+                    "ζ = 1, 2, …, 128 and p̄/H = 0.01"
+                } else {
+                    "--points loads from 1e-3 H to H"
+                }
+            );
+        }
+    }
+    let points = args.points.unwrap_or(DEFAULT_LOADS);
+    if points > MAX_LOADS {
+        bail!("--points {points} is too many for --view contact: at most {MAX_LOADS} loads (each is a solution)");
+    }
+    let state = super::state_of(args)?;
+    let seed = args.seed.or(state.seed).unwrap_or(DEFAULT_SEED);
+    match (args.format, sweep) {
+        (FormatArg::Csv, false) => contact::write_contact(out, &state, points, seed),
+        (FormatArg::Csv, true) => contact::write_contact_sweep(out, &state, seed),
+        (FormatArg::Svg, false) => contact::svg::contact(out, &state, points, seed),
+        (FormatArg::Svg, true) => contact::svg::sweep(out, &state, seed),
+    }
+}
+
+/// `roughtui export --view contact-map`: the scene's surface at
+/// p̄ = 0.01 H, as SVG or as CSV digits.
+fn export_map(args: &ExportArgs, out: &mut impl std::io::Write) -> anyhow::Result<()> {
+    for (given, opt) in [
+        (args.grid.is_some(), "--grid"),
+        (args.map_y.is_some(), "--map-y"),
+        (args.sweep.is_some(), "--sweep"),
+        (args.points.is_some(), "--points"),
+    ] {
+        if given {
+            bail!(
+                "{opt} does not apply to --view contact-map: it solves the scene's surface at \
+                 p̄ = {SWEEP_LOAD} H (--seed picks the surface)"
+            );
+        }
+    }
+    let state = super::state_of(args)?;
+    let seed = args.seed.or(state.seed).unwrap_or(DEFAULT_SEED);
+    let key = SceneKey::of(&state, seed)?;
+    let mut c = key.build()?;
+    let h = key.hardness();
+    let r = c.solve(SWEEP_LOAD * h, h, &rough_contact::Options::default())?;
+    let map = classify(c.pressure(), h);
+    let n = key.n;
+    let seed = key.surface.is_none().then_some(seed);
+    let (title, note) = caption(&state.name, n, seed, SWEEP_LOAD, r.area, r.plastic_area);
+    match args.format {
+        FormatArg::Svg => out.write_all(map_svg(&map, n, &title, &note).as_bytes())?,
+        FormatArg::Csv => {
+            let mut s = format!(
+                "# {title}\n# {note}\n# one line per grid row (y), one value per node (x): \
+                 0 out of contact, 1 elastic (0 < p < H), 2 at the hardness\n"
+            );
+            for row in map.chunks(n) {
+                for (i, v) in row.iter().enumerate() {
+                    if i > 0 {
+                        s.push(',');
+                    }
+                    s.push(char::from(b'0' + *v as u8));
+                }
+                s.push('\n');
+            }
+            out.write_all(s.as_bytes())?;
+        }
+    }
+    out.flush()?;
+    Ok(())
+}

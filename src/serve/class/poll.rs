@@ -1,0 +1,185 @@
+//! The class's poll: the question as students read it, their answers, the
+//! reveal, and the answers as CSV.
+
+use std::collections::BTreeMap;
+use std::sync::Arc;
+
+use super::{Class, Inner, SeatId};
+use crate::physical::csv_number;
+use crate::serve::csv::{csv_field, CSV_HEADER};
+use crate::serve::follow::Shown;
+use crate::tui::class::Question;
+
+/// The poll as students read it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Poll {
+    pub id: u64,
+    pub question: Question,
+    /// The lecturer's scene when the poll opened: every student answers on it.
+    pub scene: Shown,
+    pub revealed: bool,
+}
+
+/// Why an answer was not taken.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Refused {
+    /// The answers were revealed (or another poll opened) before it came.
+    Closed,
+    /// No poll is on.
+    NoPoll,
+}
+
+impl Refused {
+    pub fn text(self) -> &'static str {
+        match self {
+            Refused::Closed => "too late: the answers were already revealed",
+            Refused::NoPoll => "no poll is on",
+        }
+    }
+}
+
+/// The last poll: open, or revealed (kept until the next opens, for `S`).
+#[derive(Debug)]
+pub(super) struct Open {
+    pub(super) poll: Arc<Poll>,
+    /// By seat: the name then, and the answer.
+    pub(super) answers: BTreeMap<u64, (String, f64)>,
+    /// The students who were here at the reveal without an answer.
+    pub(super) silent: Vec<String>,
+}
+
+impl Class {
+    /// Opens a poll on `scene`, replacing any other (and the last one's
+    /// answers); its id.
+    pub fn open(&self, question: Question, scene: Shown) -> u64 {
+        let mut c = self.lock();
+        c.next_poll += 1;
+        let poll = Arc::new(Poll {
+            id: c.next_poll,
+            question,
+            scene,
+            revealed: false,
+        });
+        c.poll = Some(Open {
+            poll: Arc::clone(&poll),
+            answers: BTreeMap::new(),
+            silent: Vec::new(),
+        });
+        drop(c);
+        self.poll.send_replace(Some(poll.clone()));
+        self.changed();
+        poll.id
+    }
+
+    /// Reveals the open poll's answer; whether there was one to reveal.
+    pub fn reveal(&self) -> bool {
+        let mut c = self.lock();
+        let Inner { seats, poll, .. } = &mut *c;
+        let Some(open) = poll.as_mut().filter(|o| !o.poll.revealed) else {
+            return false;
+        };
+        let mut p = (*open.poll).clone();
+        p.revealed = true;
+        open.poll = Arc::new(p);
+        open.silent = seats
+            .iter()
+            .filter(|(id, _)| !open.answers.contains_key(id))
+            .map(|(_, s)| s.name.clone())
+            .collect();
+        let poll = Arc::clone(&open.poll);
+        drop(c);
+        self.poll.send_replace(Some(poll));
+        self.changed();
+        true
+    }
+
+    /// Cancels the open poll (its answers are dropped); whether one was
+    /// open. A revealed poll is not cancelled: it stays for `S`.
+    pub fn cancel(&self) -> bool {
+        let mut c = self.lock();
+        if c.poll.as_ref().is_none_or(|o| o.poll.revealed) {
+            return false;
+        }
+        c.poll = None;
+        drop(c);
+        self.poll.send_replace(None);
+        self.changed();
+        true
+    }
+
+    /// How many polls were opened.
+    pub fn polls(&self) -> u64 {
+        self.lock().next_poll
+    }
+
+    /// The poll, if one is on.
+    pub fn poll(&self) -> Option<Arc<Poll>> {
+        self.lock().poll.as_ref().map(|o| Arc::clone(&o.poll))
+    }
+
+    /// A student's answer to poll `poll`: taken (replacing their earlier
+    /// one) while that poll is open; refused, changing nothing, after its
+    /// reveal.
+    pub fn answer(&self, id: SeatId, poll: u64, value: f64) -> Result<(), Refused> {
+        let mut c = self.lock();
+        let Some(name) = c.seats.get(&id).map(|s| s.name.clone()) else {
+            return Err(Refused::Closed);
+        };
+        let Some(open) = c.poll.as_mut() else {
+            return Err(Refused::NoPoll);
+        };
+        if open.poll.id != poll || open.poll.revealed || !value.is_finite() {
+            return Err(Refused::Closed);
+        }
+        open.answers.insert(id, (name, value));
+        drop(c);
+        self.changed();
+        Ok(())
+    }
+
+    /// The last poll's answers as CSV: [`CSV_HEADER`], then a row per
+    /// answer in the order students came, then a `no answer` row for each
+    /// student here (at the reveal, or now while the poll is open) who
+    /// did not answer. Values in the model's units (metres for lengths);
+    /// `offset` is the answer minus the truth.
+    pub fn csv(&self) -> Option<String> {
+        self.csv_rows().map(|rows| format!("{CSV_HEADER}\n{rows}"))
+    }
+
+    /// The same without the header (a lesson's polls go to one file).
+    pub fn csv_rows(&self) -> Option<String> {
+        let c = self.lock();
+        let o = c.poll.as_ref()?;
+        let q = &o.poll.question;
+        let ascii = crate::tui::glyphs::Glyphs::Ascii;
+        let head = [
+            csv_field(&ascii.text(&q.text(&crate::tui::class::ASCII))),
+            csv_field(&ascii.text(q.axis.symbol())),
+            q.unit().to_string(),
+            csv_number::format(q.truth),
+        ]
+        .join(",");
+        let mut s = String::new();
+        for (name, v) in o.answers.values() {
+            s.push_str(&format!(
+                "{head},{},{},{}\n",
+                csv_field(name),
+                csv_number::format(*v),
+                csv_number::format(*v - q.truth)
+            ));
+        }
+        let silent: Vec<String> = if o.poll.revealed {
+            o.silent.clone()
+        } else {
+            c.seats
+                .iter()
+                .filter(|(id, _)| !o.answers.contains_key(id))
+                .map(|(_, st)| st.name.clone())
+                .collect()
+        };
+        for name in silent {
+            s.push_str(&format!("{head},{},no answer,\n", csv_field(&name)));
+        }
+        Some(s)
+    }
+}
