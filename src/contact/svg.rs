@@ -6,7 +6,7 @@ use std::io::Write;
 use plotters::prelude::*;
 use rough_model::areas;
 
-use super::{load_rows, sweep_rows, SWEEP_LOAD};
+use super::{load_rows, sweep_rows, Spec, Stat, SWEEP_LOAD};
 use crate::scene::State;
 
 const SIZE: (u32, u32) = (900, 600);
@@ -24,21 +24,32 @@ fn log_points(from: f64, to: f64, n: usize) -> Vec<f64> {
         .collect()
 }
 
-/// A/A0 against p̄/H (both log): simulation points, theory curves.
+/// Vertical bars from mean − sd to mean + sd (clipped at `floor`), where
+/// there is a spread.
+fn bars(points: &[(f64, Stat)], floor: f64) -> Vec<Vec<(f64, f64)>> {
+    points
+        .iter()
+        .filter(|(_, s)| s.sd.is_finite() && s.sd > 0.0 && s.mean > floor)
+        .map(|(x, s)| vec![(*x, (s.mean - s.sd).max(floor)), (*x, s.mean + s.sd)])
+        .collect()
+}
+
+/// A/A0 against p̄/H (both log): the simulation's means over the seeds as
+/// points with bars of ± one standard deviation, the theory as curves.
 pub fn contact(
     out: &mut impl Write,
     state: &State,
     points: usize,
-    seed: u64,
+    spec: &Spec,
 ) -> anyhow::Result<()> {
-    let (sim, rows) = load_rows(state, points, seed)?;
+    let (sim, rows, _) = load_rows(state, points, spec)?;
     let theory: Vec<(f64, rough_model::Areas)> = log_points(1e-3, 1.0, 120)
         .into_iter()
         .filter_map(|x| areas(sim.model, sim.psi, x).ok().map(|a| (x, a)))
         .collect();
     let floor = rows
         .iter()
-        .flat_map(|r| [r.sim.area, r.sim.elastic_area, r.sim.plastic_area])
+        .flat_map(|r| [r.area.mean, r.elastic.mean, r.plastic.mean])
         .chain(theory.iter().map(|(_, a)| a.total))
         .filter(|&v| v > 0.0)
         .fold(1.0, f64::min)
@@ -50,7 +61,10 @@ pub fn contact(
         root.fill(&WHITE).map_err(err)?;
         let what = match sim.measured {
             Some(_) => "measured map".to_string(),
-            None => format!("seed {}", sim.seed),
+            None if spec.seeds.count > 1 => {
+                format!("mean ± sd over {}", spec.seeds.words())
+            }
+            None => spec.seeds.words(),
         };
         let title = format!(
             "{}: simulation (points, {n}×{n}, {what}) and theory (lines)",
@@ -73,11 +87,11 @@ pub fn contact(
             .draw()
             .map_err(err)?;
         type Pick = fn(&rough_model::Areas) -> f64;
-        type PickSim = fn(&rough_contact::LoadResult) -> f64;
+        type PickSim = fn(&super::LoadRow) -> Stat;
         let series: [(&str, RGBColor, Pick, PickSim); 3] = [
             ("total", TOTAL, |a| a.total, |r| r.area),
-            ("elastic", ELASTIC, |a| a.elastic, |r| r.elastic_area),
-            ("plastic", PLASTIC, |a| a.plastic, |r| r.plastic_area),
+            ("elastic", ELASTIC, |a| a.elastic, |r| r.elastic),
+            ("plastic", PLASTIC, |a| a.plastic, |r| r.plastic),
         ];
         for (name, colour, pick, pick_sim) in series {
             let line: Vec<(f64, f64)> = theory
@@ -90,9 +104,15 @@ pub fn contact(
                 .map_err(err)?
                 .label(format!("{name}: theory"))
                 .legend(move |(x, y)| PathElement::new([(x, y), (x + 18, y)], colour));
-            let pts: Vec<(f64, f64)> = rows
+            let stats: Vec<(f64, Stat)> = rows.iter().map(|r| (r.p_over_h, pick_sim(r))).collect();
+            for bar in bars(&stats, floor) {
+                chart
+                    .draw_series(LineSeries::new(bar, colour.stroke_width(1)))
+                    .map_err(err)?;
+            }
+            let pts: Vec<(f64, f64)> = stats
                 .iter()
-                .map(|r| (r.p_over_h, pick_sim(&r.sim)))
+                .map(|(x, s)| (*x, s.mean))
                 .filter(|&(_, y)| y > floor)
                 .collect();
             chart
@@ -115,16 +135,18 @@ pub fn contact(
     Ok(())
 }
 
-/// Plastic share of the contact area against ζ at p̄/H = [`SWEEP_LOAD`].
-pub fn sweep(out: &mut impl Write, state: &State, seed: u64) -> anyhow::Result<()> {
-    let (_, rows) = sweep_rows(state, seed)?;
+/// Plastic share of the contact area against ζ at p̄/H = [`SWEEP_LOAD`]:
+/// the mean over the seeds with bars of ± one standard deviation.
+pub fn sweep(out: &mut impl Write, state: &State, spec: &Spec) -> anyhow::Result<()> {
+    let (_, rows, _) = sweep_rows(state, spec)?;
     let mut buf = String::new();
     {
         let root = SVGBackend::with_string(&mut buf, SIZE).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
         let what = match state.is_measured() {
             true => "measured map".to_string(),
-            false => format!("seed {seed}"),
+            false if spec.seeds.count > 1 => format!("mean ± sd over {}", spec.seeds.words()),
+            false => spec.seeds.words(),
         };
         let title = format!(
             "{}: plastic share of the contact area at p̄/H = {SWEEP_LOAD}, {what}",
@@ -153,9 +175,15 @@ pub fn sweep(out: &mut impl Write, state: &State, seed: u64) -> anyhow::Result<(
             .map_err(err)?
             .label("theory")
             .legend(|(x, y)| PathElement::new([(x, y), (x + 18, y)], PLASTIC));
-        let pts: Vec<(f64, f64)> = rows
+        let stats: Vec<(f64, Stat)> = rows.iter().map(|r| (r.zeta, r.share())).collect();
+        for bar in bars(&stats, 0.0) {
+            chart
+                .draw_series(LineSeries::new(bar, PLASTIC.stroke_width(1)))
+                .map_err(err)?;
+        }
+        let pts: Vec<(f64, f64)> = stats
             .iter()
-            .map(|r| (r.zeta, r.share()))
+            .map(|(z, s)| (*z, s.mean))
             .filter(|p| p.1.is_finite())
             .collect();
         chart

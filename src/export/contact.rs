@@ -8,7 +8,52 @@ use anyhow::bail;
 use crate::cli::{ExportArgs, FormatArg};
 use crate::contact::map_svg::{caption, map_svg};
 use crate::contact::scene::{classify, SceneKey};
-use crate::contact::{self, DEFAULT_LOADS, DEFAULT_SEED, MAX_LOADS, SWEEP_LOAD};
+use crate::contact::{
+    self, Grid, Sampling, Seeds, Spec, DEFAULT_LOADS, DEFAULT_SEED, MAX_LOADS, SWEEP_LOAD,
+};
+use crate::scene::State;
+
+/// The options of the contact views only.
+pub fn contact_options(args: &ExportArgs) -> [(bool, &'static str); 4] {
+    [
+        (args.seeds.is_some(), "--seeds"),
+        (args.cell.is_some(), "--cell"),
+        (args.contact_grid.is_some(), "--contact-grid"),
+        (args.per_wavelength.is_some(), "--per-wavelength"),
+    ]
+}
+
+/// What `args` ask to simulate of `state`: the sampling and the seeds
+/// (the snapshot's seed first when --seed is not given).
+pub fn spec_of(args: &ExportArgs, state: &State) -> anyhow::Result<Spec> {
+    if state.is_measured() {
+        for (given, opt) in contact_options(args).into_iter().skip(1) {
+            if given {
+                bail!(
+                    "{opt} does not apply to a measured map: it is solved on its own heights, \
+                     its square and grid set by the data and ζ"
+                );
+            }
+        }
+    }
+    let mut sampling = Sampling::default();
+    if let Some(k) = args.cell {
+        sampling.cell = k;
+    }
+    if let Some(n) = args.contact_grid {
+        sampling.grid = Grid::Side(n);
+    }
+    if let Some(k) = args.per_wavelength {
+        sampling.grid = Grid::PerWavelength(k);
+    }
+    Ok(Spec {
+        sampling,
+        seeds: Seeds {
+            first: args.seed.or(state.seed).unwrap_or(DEFAULT_SEED),
+            count: args.seeds.unwrap_or(1),
+        },
+    })
+}
 
 /// `roughtui export --view contact|contact-sweep`.
 pub fn export(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
@@ -40,12 +85,12 @@ pub fn export(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
         bail!("--points {points} is too many for --view contact: at most {MAX_LOADS} loads (each is a solution)");
     }
     let state = super::state_of(args)?;
-    let seed = args.seed.or(state.seed).unwrap_or(DEFAULT_SEED);
+    let spec = spec_of(args, &state)?;
     match (args.format, sweep) {
-        (FormatArg::Csv, false) => contact::write_contact(out, &state, points, seed),
-        (FormatArg::Csv, true) => contact::write_contact_sweep(out, &state, seed),
-        (FormatArg::Svg, false) => contact::svg::contact(out, &state, points, seed),
-        (FormatArg::Svg, true) => contact::svg::sweep(out, &state, seed),
+        (FormatArg::Csv, false) => contact::write_contact(out, &state, points, &spec),
+        (FormatArg::Csv, true) => contact::write_contact_sweep(out, &state, &spec),
+        (FormatArg::Svg, false) => contact::svg::contact(out, &state, points, &spec),
+        (FormatArg::Svg, true) => contact::svg::sweep(out, &state, &spec),
     }
 }
 
@@ -65,9 +110,13 @@ fn export_map(args: &ExportArgs, out: &mut impl std::io::Write) -> anyhow::Resul
             );
         }
     }
+    if args.seeds.is_some() {
+        bail!("--seeds does not apply to --view contact-map: it draws one realisation's map (--seed picks it)");
+    }
     let state = super::state_of(args)?;
-    let seed = args.seed.or(state.seed).unwrap_or(DEFAULT_SEED);
-    let key = SceneKey::of(&state, seed)?;
+    let spec = spec_of(args, &state)?;
+    let seed = spec.seeds.first;
+    let key = SceneKey::with(&state, seed, &spec.sampling)?;
     let mut c = key.build()?;
     let h = key.hardness();
     let r = c.solve(SWEEP_LOAD * h, h, &rough_contact::Options::default())?;

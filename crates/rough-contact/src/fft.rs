@@ -501,7 +501,10 @@ mod tests {
                         v += k_real[k] * f[yy * n + xx];
                     }
                 }
-                assert!((got[y * n + x] - v).abs() < 1e-12 * (1.0 + v.abs()), "{x},{y}");
+                assert!(
+                    (got[y * n + x] - v).abs() < 1e-12 * (1.0 + v.abs()),
+                    "{x},{y}"
+                );
                 want_dot += v * f[y * n + x];
             }
         }

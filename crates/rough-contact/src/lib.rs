@@ -16,7 +16,9 @@
 //! Memory: about ten N² arrays of f64 (periodic), forty for the free
 //! boundary's padded grid.
 
+mod cap;
 mod fft;
+mod load;
 mod multigrid;
 mod par;
 mod solver;
@@ -26,6 +28,12 @@ use std::fmt;
 
 pub use multigrid::{prolong, restrict};
 pub use surface::{low_pass, moments, resample, synthesise, Moments, PowerLaw};
+
+/// Threads a solve's passes run on (rayon's pool: the machine's cores, or
+/// `RAYON_NUM_THREADS`).
+pub fn threads() -> usize {
+    rayon::current_num_threads()
+}
 
 /// How the grid meets what lies beyond it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -251,7 +259,7 @@ impl Contact {
         self.check(p_mean, hardness, opts)?;
         self.run(
             p_mean.min(hardness),
-            &solver::Uniform(hardness),
+            &cap::Uniform(hardness),
             opts,
             progress,
         )
@@ -285,7 +293,7 @@ impl Contact {
         let mean = caps.iter().sum::<f64>() / caps.len() as f64;
         let max = caps.iter().cloned().fold(0.0, f64::max);
         self.check(p_mean, mean, opts)?;
-        let cap = solver::PerNode { caps, max, mean };
+        let cap = cap::PerNode { caps, max, mean };
         self.run(p_mean.min(mean), &cap, opts, progress)
     }
 
@@ -309,7 +317,7 @@ impl Contact {
         Ok(())
     }
 
-    fn run<C: solver::Cap>(
+    fn run<C: cap::Cap>(
         &mut self,
         p_mean: f64,
         cap: &C,
