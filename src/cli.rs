@@ -232,6 +232,10 @@ pub struct ExportArgs {
     /// the power of two giving as many (contact views; default 8).
     #[arg(long, value_name = "K", value_parser = parse_per_wavelength)]
     pub per_wavelength: Option<u32>,
+    /// Where the size effect's hardness applies in the simulation: one cap
+    /// everywhere (default), or each contact patch that of its asperity.
+    #[arg(long, value_enum)]
+    pub hardness: Option<HardnessArg>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -280,6 +284,16 @@ pub enum FormatArg {
 pub enum OnOff {
     On,
     Off,
+}
+
+/// Where the simulation's hardness applies (contact views).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum HardnessArg {
+    /// One cap everywhere: the scene's H_use, as the theory uses it.
+    Global,
+    /// Each contact patch the size effect's H_y of the asperity under it
+    /// (its curvature radius in place of R_s; needs the size effect on).
+    Asperity,
 }
 
 /// A parameter on the command line.

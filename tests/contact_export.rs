@@ -245,3 +245,49 @@ fn contact_map_csv_and_svg() {
     assert!(String::from_utf8_lossy(&out.stderr)
         .contains("--points does not apply to --view contact-map"));
 }
+
+/// The size effect per asperity: the elastic contact's patches give each
+/// node its asperity's curvature radius and H_y; refused without the size
+/// effect.
+#[test]
+fn contact_hardness_per_asperity() {
+    let base = [
+        "export",
+        "--view",
+        "contact-sweep",
+        "--preset",
+        "fig2",
+        "--set",
+        "h0-over-e=0.001",
+        "--size-effect",
+        "on",
+        "--cell",
+        "1",
+    ];
+    let global = stdout(&base);
+    let text = stdout(&[&base[..], &["--hardness", "asperity"]].concat());
+    let (comments, header, rows) = parse(&text);
+    assert!(header.ends_with("hardness_over_e,theory_hardness_over_e,patches,patch_radius"));
+    assert!(comments
+        .iter()
+        .any(|c| c.contains("# hardness per asperity: each node capped")));
+    let (_, _, g) = parse(&global);
+    for (a, g) in rows.iter().zip(&g) {
+        // The global cap is the theory's; per asperity the load-weighted
+        // cap is H0 at least and the patches' radii are finite.
+        assert_eq!(g[12], g[13], "{g:?}");
+        assert!(a[12] >= 0.001 * (1.0 - 1e-12), "{a:?}");
+        assert!(a[14] >= 1.0 && a[15] > 0.0, "{a:?}");
+    }
+    let out = common::cli::run(&[
+        "export",
+        "--view",
+        "contact",
+        "--preset",
+        "fig2",
+        "--hardness",
+        "asperity",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("switch it on"));
+}

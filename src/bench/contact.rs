@@ -56,7 +56,12 @@ fn key(zeta: f64, grid: Grid) -> anyhow::Result<SceneKey> {
         .params
         .with(Axis::Zeta, zeta)
         .map_err(|e| anyhow::anyhow!("{e}"))?;
-    SceneKey::with(&state, DEFAULT_SEED, &Sampling { cell: 1, grid })
+    let sampling = Sampling {
+        cell: 1,
+        grid,
+        ..Sampling::default()
+    };
+    SceneKey::with(&state, DEFAULT_SEED, &sampling)
 }
 
 /// fig2 at `zeta`, `samples` cold solves.

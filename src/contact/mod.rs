@@ -15,6 +15,7 @@
 
 pub mod engine;
 pub mod ensemble;
+pub mod local;
 pub mod map_svg;
 pub mod measured;
 mod rows;
@@ -30,7 +31,7 @@ use scene::SceneKey;
 
 pub use ensemble::{Seeds, Stat};
 pub use rows::{load_rows, sweep_rows, LoadRow, SweepRow};
-pub use sampling::{Grid, Sampling, MAX_GRID, MIN_GRID};
+pub use sampling::{Grid, Hardness, Sampling, MAX_GRID, MIN_GRID};
 
 use crate::physical::csv_number;
 use crate::scene::State;
@@ -52,7 +53,8 @@ residual,theory_area,theory_elastic_area,theory_plastic_area,area_sd,elastic_are
 plastic_area_sd,seeds";
 /// The ζ sweep's CSV header.
 pub const SWEEP_HEADER: &str = "zeta,p_over_h,plastic_share,theory_plastic_share,area,\
-theory_area,grid,iterations,residual,plastic_share_sd,area_sd,seeds";
+theory_area,grid,iterations,residual,plastic_share_sd,area_sd,seeds,hardness_over_e,\
+theory_hardness_over_e,patches,patch_radius";
 
 /// What is simulated of a scene: how its surface is sampled and over which
 /// seeds.
@@ -88,6 +90,9 @@ pub struct Simulation {
     pub rms_slope: f64,
     /// A measured map: how it is cropped, sampled and bounded.
     pub measured: Option<String>,
+    /// A hardness per asperity: its law, and what the last solve found.
+    pub local: Option<local::Law>,
+    pub last_local: Option<local::Local>,
 }
 
 impl Simulation {
@@ -124,6 +129,8 @@ impl Simulation {
             seed,
             cell: key.cell,
             rms_slope: key.rms_slope(),
+            local: key.local(),
+            last_local: None,
         })
     }
 
@@ -133,12 +140,26 @@ impl Simulation {
         p_over_h: f64,
         progress: &mut dyn FnMut(usize, f64) -> bool,
     ) -> anyhow::Result<(LoadResult, Areas)> {
-        let r = self.contact.solve_with_progress(
-            p_over_h * self.hardness,
-            self.hardness,
-            &Options::default(),
-            progress,
-        )?;
+        let p_mean = p_over_h * self.hardness;
+        let r = match &self.local {
+            Some(law) => {
+                let (r, _, info) = local::solve(
+                    &mut self.contact,
+                    p_mean,
+                    law,
+                    &Options::default(),
+                    progress,
+                )?;
+                self.last_local = Some(info);
+                r
+            }
+            None => self.contact.solve_with_progress(
+                p_mean,
+                self.hardness,
+                &Options::default(),
+                progress,
+            )?,
+        };
         let t = areas(self.model, self.psi, p_over_h)
             .map_err(|e| anyhow::anyhow!("theory at p̄/H = {p_over_h}: {e}"))?;
         Ok((r, t))
@@ -235,6 +256,19 @@ fn comments(
             csv_number::format(p.h_rms()),
         )?;
     }
+    if let Some(law) = &sim.local {
+        writeln!(
+            out,
+            "# hardness per asperity: each node capped at H0 sqrt(1 + R*/(1.2 R)) with R the \
+             curvature radius of its asperity, the paraboloid fitted to the surface under its \
+             patch (H0/E* = {}, \
+             R* = {} m): the asperities are the patches of the purely elastic contact at the \
+             same load, a node outside them takes its nearest patch's, a patch spanning the cell \
+             H0; hardness_in_use_over_e, the loads' unit, is the theory's H_y at R_s",
+            csv_number::format(law.h0),
+            csv_number::format(law.r_star)
+        )?;
+    }
     writeln!(
         out,
         "# h0_over_e = {}, hardness_in_use_over_e = {}, zeta = {}, hurst = {}, h_rms = {} m, \
@@ -327,10 +361,22 @@ pub fn write_contact_sweep(out: &mut impl Write, state: &State, spec: &Spec) -> 
                 share.sd,
                 area.sd,
                 r.runs.len() as f64,
+                Stat::of(r.hardness.iter().copied()).mean,
+                r.theory_hardness,
+                Stat::of(r.asperities.iter().map(|a| a.0 as f64)).mean,
+                Stat::of(r.asperities.iter().map(|a| a.1)).mean,
             ],
         );
     }
     comments(out, state, &sim, spec, &heights)?;
+    if sim.local.is_some() {
+        writeln!(
+            out,
+            "# hardness_over_e: the load-weighted mean cap of the solution (with a hardness per \
+             asperity; theory_hardness_over_e: the theory's H_y at R_s); patches: the elastic \
+             contact's, the asperities in contact, with their median curvature radius in m"
+        )?;
+    }
     writeln!(
         out,
         "# zeta swept over 1, 2, 4, …, 128 (a measured map's: those it resolves) at p_over_h = \

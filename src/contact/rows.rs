@@ -100,6 +100,14 @@ pub struct SweepRow {
     pub grid: usize,
     pub runs: Vec<LoadResult>,
     pub theory: Areas,
+    /// The load-weighted hardness of each run, H/E* (the cap itself without
+    /// a hardness per asperity).
+    pub hardness: Vec<f64>,
+    /// With a hardness per asperity, each run's asperities in contact: how
+    /// many, and their median curvature radius (m).
+    pub asperities: Vec<(usize, f64)>,
+    /// The scene's cap at this ζ, H_use/E* (the theory's).
+    pub theory_hardness: f64,
 }
 
 impl SweepRow {
@@ -151,6 +159,7 @@ pub fn sweep_rows(state: &State, spec: &Spec) -> anyhow::Result<(Simulation, Vec
             .with(rough_model::Axis::Zeta, zeta)
             .map_err(|e| anyhow::anyhow!("ζ = {zeta}: {e}"))?;
         let (mut runs, mut theory, mut grid) = (vec![], None, 0);
+        let (mut hardness, mut asperities) = (vec![], vec![]);
         let first_zeta = first.is_none();
         for seed in spec.seeds.iter() {
             let mut sim = Simulation::with(&s, seed, &spec.sampling)?;
@@ -160,6 +169,13 @@ pub fn sweep_rows(state: &State, spec: &Spec) -> anyhow::Result<(Simulation, Vec
             runs.push(r);
             theory = Some(t);
             grid = sim.contact.n();
+            match &sim.last_local {
+                Some(l) => {
+                    hardness.push(l.mean_hardness);
+                    asperities.push((l.patches, l.radius[0]));
+                }
+                None => hardness.push(sim.hardness),
+            }
             if first_zeta {
                 heights.push(sim.contact.h_rms());
                 first.get_or_insert(sim);
@@ -171,6 +187,13 @@ pub fn sweep_rows(state: &State, spec: &Spec) -> anyhow::Result<(Simulation, Vec
             grid,
             runs,
             theory,
+            hardness,
+            asperities,
+            theory_hardness: s.params.h0_over_e()
+                * s.roughness()
+                    .surface(&s.params, s.moments)
+                    .indices
+                    .hardness_in_use(s.size_effect),
         });
     }
     let first = first.ok_or_else(|| anyhow::anyhow!("no ζ to sweep"))?;

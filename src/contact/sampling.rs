@@ -34,12 +34,25 @@ pub enum Grid {
     Side(usize),
 }
 
-/// The cell and the grid of a power-law scene's simulation.
+/// Where the size effect's hardness applies.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Hardness {
+    /// One cap for every node: the scene's H_use (H_y at the mean summit
+    /// radius R_s with the size effect), as the theory uses it.
+    #[default]
+    Global,
+    /// Each contact patch its own H_y from the curvature radius of the
+    /// asperity under it (see `crate::contact::local`).
+    Asperity,
+}
+
+/// The cell, the grid and the hardness of a power-law scene's simulation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Sampling {
     /// The cell side in longest wavelengths 2π/q0.
     pub cell: u32,
     pub grid: Grid,
+    pub hardness: Hardness,
 }
 
 impl Default for Sampling {
@@ -47,6 +60,7 @@ impl Default for Sampling {
         Sampling {
             cell: DEFAULT_CELL,
             grid: Grid::PerWavelength(DEFAULT_PER_WAVELENGTH),
+            hardness: Hardness::Global,
         }
     }
 }
@@ -143,7 +157,11 @@ mod tests {
 
     #[test]
     fn the_grid_follows_the_cell_and_the_nodes_per_wavelength() {
-        let s = |cell, grid| Sampling { cell, grid };
+        let s = |cell, grid| Sampling {
+            cell,
+            grid,
+            ..Sampling::default()
+        };
         let per = Grid::PerWavelength;
         assert_eq!(s(1, per(8)).side(128.0).unwrap(), 1024);
         assert_eq!(s(2, per(8)).side(128.0).unwrap(), 2048);

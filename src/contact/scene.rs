@@ -5,8 +5,10 @@
 
 use rough_contact::{moments, synthesise, Boundary, Contact, PowerLaw};
 
+use anyhow::bail;
+
 use super::measured;
-use super::sampling::Sampling;
+use super::sampling::{Hardness, Sampling};
 use crate::scene::State;
 
 /// The surface and cap of one simulation; every field is an input of
@@ -26,6 +28,9 @@ pub struct SceneKey {
     pub n: usize,
     /// The cell side in longest wavelengths (1 for a measured map).
     pub cell: u32,
+    /// A hardness per asperity: H0/E* and R* (m) of the size-effect law, as
+    /// f64 bits; `None`: the cap [`SceneKey::hardness`] everywhere.
+    pub local: Option<(u64, u64)>,
     pub seed: u64,
     /// A measured map: its file's SHA-256 and how it was read
     /// ([`super::measured`]); `None`: the power law.
@@ -58,6 +63,14 @@ impl SceneKey {
         let surface = state.roughness().surface(p, state.moments);
         let ix = surface.indices;
         let hardness = p.h0_over_e() * ix.hardness_in_use(state.size_effect);
+        let local = match sampling.hardness {
+            Hardness::Global => None,
+            Hardness::Asperity if !state.size_effect => bail!(
+                "a hardness per asperity is the size effect's: switch it on (--size-effect on, \
+                 e in the explorer)"
+            ),
+            Hardness::Asperity => Some((p.h0_over_e().to_bits(), p.r_star().to_bits())),
+        };
         if let Some((id, h)) = measured::heights_of(state)? {
             let plan = measured::plan(&h, p.zeta() * p.q0())?;
             return Ok(SceneKey {
@@ -69,6 +82,7 @@ impl SceneKey {
                 hardness: hardness.to_bits(),
                 n: plan.n,
                 cell: 1,
+                local,
                 seed: 0,
                 surface: Some(id),
             });
@@ -82,6 +96,7 @@ impl SceneKey {
             hardness: hardness.to_bits(),
             n: sampling.side(p.zeta())?,
             cell: sampling.cell,
+            local,
             seed,
             surface: None,
         })
@@ -90,6 +105,14 @@ impl SceneKey {
     /// H_use/E*.
     pub fn hardness(&self) -> f64 {
         f64::from_bits(self.hardness)
+    }
+
+    /// The size-effect law of a hardness per asperity, if the key has one.
+    pub fn local(&self) -> Option<super::local::Law> {
+        self.local.map(|(h0, r)| super::local::Law {
+            h0: f64::from_bits(h0),
+            r_star: f64::from_bits(r),
+        })
     }
 
     pub fn zeta(&self) -> f64 {
@@ -166,6 +189,23 @@ pub fn classify(pressure: &[f64], hardness: f64) -> Vec<Node> {
             if p <= 0.0 {
                 Node::Out
             } else if p >= hardness {
+                Node::Plastic
+            } else {
+                Node::Elastic
+            }
+        })
+        .collect()
+}
+
+/// The contact map of a pressure field under a cap per node.
+pub fn classify_capped(pressure: &[f64], caps: &[f64]) -> Vec<Node> {
+    pressure
+        .iter()
+        .zip(caps)
+        .map(|(&p, &c)| {
+            if p <= 0.0 {
+                Node::Out
+            } else if p >= c {
                 Node::Plastic
             } else {
                 Node::Elastic

@@ -14,9 +14,10 @@ use crate::contact::{
 use crate::scene::State;
 
 /// The options of the contact views only.
-pub fn contact_options(args: &ExportArgs) -> [(bool, &'static str); 4] {
+pub fn contact_options(args: &ExportArgs) -> [(bool, &'static str); 5] {
     [
         (args.seeds.is_some(), "--seeds"),
+        (args.hardness.is_some(), "--hardness"),
         (args.cell.is_some(), "--cell"),
         (args.contact_grid.is_some(), "--contact-grid"),
         (args.per_wavelength.is_some(), "--per-wavelength"),
@@ -27,7 +28,7 @@ pub fn contact_options(args: &ExportArgs) -> [(bool, &'static str); 4] {
 /// (the snapshot's seed first when --seed is not given).
 pub fn spec_of(args: &ExportArgs, state: &State) -> anyhow::Result<Spec> {
     if state.is_measured() {
-        for (given, opt) in contact_options(args).into_iter().skip(1) {
+        for (given, opt) in contact_options(args).into_iter().skip(2) {
             if given {
                 bail!(
                     "{opt} does not apply to a measured map: it is solved on its own heights, \
@@ -45,6 +46,9 @@ pub fn spec_of(args: &ExportArgs, state: &State) -> anyhow::Result<Spec> {
     }
     if let Some(k) = args.per_wavelength {
         sampling.grid = Grid::PerWavelength(k);
+    }
+    if args.hardness == Some(crate::cli::HardnessArg::Asperity) {
+        sampling.hardness = contact::Hardness::Asperity;
     }
     Ok(Spec {
         sampling,

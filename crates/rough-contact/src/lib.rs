@@ -16,6 +16,7 @@
 //! Memory: about ten N² arrays of f64 (periodic), forty for the free
 //! boundary's padded grid.
 
+pub mod asperity;
 mod cap;
 mod fft;
 mod load;
