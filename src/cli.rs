@@ -7,8 +7,11 @@ use rough_model::Axis;
 
 pub mod setup;
 mod values;
+use values::{
+    parse_cell, parse_contact_grid, parse_grid, parse_height_unit, parse_per_wavelength,
+    parse_percent, parse_pixel_size, parse_points, parse_seeds, parse_sweep,
+};
 pub use values::{parse_duration, parse_fit_band, parse_set, SetKey, MAX_POINTS};
-use values::{parse_grid, parse_height_unit, parse_pixel_size, parse_points, parse_sweep};
 
 #[derive(Debug, Parser)]
 #[command(
@@ -97,16 +100,32 @@ pub struct Setup {
     /// every view then shows that direction alone.
     #[arg(long, value_enum, value_name = "x|y", requires = "surface")]
     pub direction: Option<DirectionArg>,
-    /// The channel of a file of several (Gwyddion's .gwy, its ASCII
-    /// exports concatenated): its number or its title (the first channel of
-    /// heights when not given).
+    /// The channel of a file of several (Gwyddion's .gwy, a Nanoscope,
+    /// Nanosurf or Igor file's images, ASCII exports concatenated): its
+    /// number or its title (the first channel of heights when not given).
     #[arg(long, value_name = "N|TITLE", requires = "surface")]
     pub channel: Option<String>,
-    /// The unit of the surface's heights, whatever the file says: m, mm,
-    /// µm (um), nm, Å (A) or pm. Without it heights take the file's value
+    /// The unit of the surface's heights: m, mm, µm (um, microns), nm, Å
+    /// (A) or pm; for a text file whatever it says, for an instrument's
+    /// file where it gives none. Without it heights take the file's value
     /// unit, else its lateral unit (said in a note).
     #[arg(long, value_name = "UNIT", requires = "surface", value_parser = parse_height_unit)]
     pub height_unit: Option<rough_surface::HeightUnit>,
+    /// The lateral unit of a file that gives none: the x column of an
+    /// `x z` line scan, the sizes of an Igor wave without units (heights
+    /// without a unit of their own follow it).
+    #[arg(long, value_name = "UNIT", requires = "surface", value_parser = parse_height_unit)]
+    pub lateral_unit: Option<rough_surface::HeightUnit>,
+    /// The share of undefined (not measured, masked, NaN) points that is
+    /// filled, in percent, e.g. 35 [default: 10]; more is refused.
+    #[arg(long, value_name = "PERCENT", requires = "surface", value_parser = parse_percent)]
+    pub max_undefined: Option<f64>,
+    /// The form removed from the surface's heights before its spectrum and
+    /// Sq: none, the mean, the least-squares plane (a line scan's line) or
+    /// the least-squares quadratic (curvature), as SurfaceTopography's
+    /// detrend modes [default: plane; mean with --periodic].
+    #[arg(long, value_enum, value_name = "MODE", requires = "surface")]
+    pub detrend: Option<DetrendArg>,
     /// The Hurst fit band of a measured surface: wavevectors in 1/m
     /// (1e6:1e8) or wavelengths with a unit (60nm:6um) [default: the
     /// spectrum's self-affine stretch, found from the data].
@@ -139,6 +158,26 @@ impl From<DirectionArg> for rough_surface::Direction {
     }
 }
 
+/// `--detrend`: the form removed from a measured surface's heights.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum DetrendArg {
+    None,
+    Mean,
+    Plane,
+    Curvature,
+}
+
+impl From<DetrendArg> for rough_surface::Detrend {
+    fn from(d: DetrendArg) -> Self {
+        match d {
+            DetrendArg::None => rough_surface::Detrend::None,
+            DetrendArg::Mean => rough_surface::Detrend::Mean,
+            DetrendArg::Plane => rough_surface::Detrend::Plane,
+            DetrendArg::Curvature => rough_surface::Detrend::Curvature,
+        }
+    }
+}
+
 impl Setup {
     /// How `--surface` is to be read.
     pub fn surface_options(&self) -> rough_surface::Options {
@@ -149,6 +188,9 @@ impl Setup {
             direction: self.direction.map(Into::into),
             channel: self.channel.clone(),
             height_unit: self.height_unit,
+            lateral_unit: self.lateral_unit,
+            max_undefined: self.max_undefined.map(|p| p / 100.0),
+            detrend: self.detrend.map(Into::into),
         }
     }
 }
@@ -163,6 +205,9 @@ impl BenchArgs {
             direction: self.direction.map(Into::into),
             channel: self.channel.clone(),
             height_unit: None,
+            lateral_unit: None,
+            max_undefined: self.max_undefined.map(|p| p / 100.0),
+            detrend: None,
         }
     }
 }
@@ -210,9 +255,29 @@ pub struct ExportArgs {
     #[arg(long, value_name = "AXIS:FROM:TO", value_parser = parse_sweep)]
     pub sweep: Option<(Axis, f64, f64)>,
     /// Seed of the simulated surface's random phases (contact views only;
-    /// default 1).
+    /// default 1), the first of --seeds.
     #[arg(long, value_name = "N")]
     pub seed: Option<u64>,
+    /// Realisations to average (contact views): seeds --seed, --seed + 1, …;
+    /// the CSV gives means and sample standard deviations (default 1).
+    #[arg(long, value_name = "N", value_parser = parse_seeds)]
+    pub seeds: Option<u32>,
+    /// The simulated cell's side in longest wavelengths 2π/q0, the spectrum
+    /// flat below q0 (contact views; default 2).
+    #[arg(long, value_name = "K", value_parser = parse_cell)]
+    pub cell: Option<u32>,
+    /// The simulation's grid, nodes a side, a power of two (contact views;
+    /// default: 8 nodes per shortest wavelength).
+    #[arg(long, value_name = "N", value_parser = parse_contact_grid, conflicts_with = "per_wavelength")]
+    pub contact_grid: Option<usize>,
+    /// The simulation's nodes per shortest wavelength 2π/(ζ q0), the grid
+    /// the power of two giving as many (contact views; default 8).
+    #[arg(long, value_name = "K", value_parser = parse_per_wavelength)]
+    pub per_wavelength: Option<u32>,
+    /// Where the size effect's hardness applies in the simulation: one cap
+    /// everywhere (default), or each contact patch that of its asperity.
+    #[arg(long, value_enum)]
+    pub hardness: Option<HardnessArg>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -261,6 +326,16 @@ pub enum FormatArg {
 pub enum OnOff {
     On,
     Off,
+}
+
+/// Where the simulation's hardness applies (contact views).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum HardnessArg {
+    /// One cap everywhere: the scene's H_use, as the theory uses it.
+    Global,
+    /// Each contact patch the size effect's H_y of the asperity under it
+    /// (its curvature radius in place of R_s; needs the size effect on).
+    Asperity,
 }
 
 /// A parameter on the command line.
@@ -365,6 +440,10 @@ pub struct BenchArgs {
     /// The channel of a file of several (as for the explorer).
     #[arg(long, value_name = "N|TITLE", requires = "surface")]
     pub channel: Option<String>,
+    /// The share of undefined points filled, in percent (as for the
+    /// explorer).
+    #[arg(long, value_name = "PERCENT", requires = "surface", value_parser = parse_percent)]
+    pub max_undefined: Option<f64>,
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]

@@ -155,7 +155,7 @@ fn the_cli_solves_a_non_square_map_on_the_free_boundary() {
     let r = rows(&csv);
     assert_eq!(r.len(), 4);
     for row in &r {
-        assert_eq!(row.len(), 10);
+        assert_eq!(row.len(), 14);
         // Contact grows with the load; parts add up; the solver converged.
         assert!((row[1] - row[2] - row[3]).abs() < 1e-12);
         assert!(row[6] <= 1e-10, "residual {}", row[6]);
@@ -275,7 +275,10 @@ fn the_explorer_solves_a_measured_map_in_its_contact_view() {
     assert!((s.result.area - area).abs() <= 1.01 / (N * N) as f64);
     let text = common::app::screen(&a);
     assert!(text.contains("simulation 64² · measured map"), "{text}");
-    assert!(text.contains("simulation at p̄ = 0.01 H: contact"), "{text}");
+    assert!(
+        text.contains("simulation at p̄ = 0.01 H0: contact"),
+        "{text}"
+    );
     // No seed to change.
     update(&mut a, Message::ContactSeed);
     let st = a.status.clone().unwrap();

@@ -27,6 +27,19 @@ pub(crate) fn parse_height_unit(s: &str) -> Result<rough_surface::HeightUnit, St
     })
 }
 
+/// `--max-undefined PERCENT`: a percentage above 0 and below 100 (`35`,
+/// `35%`, `35 %`).
+pub(crate) fn parse_percent(s: &str) -> Result<f64, String> {
+    let t = s.trim().trim_end_matches('%').trim_end();
+    match t.parse::<f64>() {
+        Ok(v) if v > 0.0 && v < 100.0 => Ok(v),
+        _ => Err(format!(
+            "\"{}\" is not a percentage above 0 and below 100 (e.g. 35)",
+            s.trim()
+        )),
+    }
+}
+
 /// `--fit-band FROM:TO`: two wavevectors in 1/m, or two wavelengths with
 /// a unit (q = 2π/λ), as (q_lo, q_hi).
 pub fn parse_fit_band(s: &str) -> Result<(f64, f64), String> {
@@ -159,6 +172,38 @@ pub(crate) fn parse_points(s: &str) -> Result<usize, String> {
         Ok(n) if (2..=MAX_POINTS).contains(&n) => Ok(n),
         _ => Err(format!("must be a whole number from 2 to {MAX_POINTS}")),
     }
+}
+
+/// A whole number from `lo` to `hi`, or the refusal.
+fn whole_in(s: &str, lo: u64, hi: u64) -> Result<u64, String> {
+    match s.trim().parse::<u64>() {
+        Ok(n) if (lo..=hi).contains(&n) => Ok(n),
+        _ => Err(format!("must be a whole number from {lo} to {hi}")),
+    }
+}
+
+/// `--seeds N`: realisations to average, 1 … [`crate::contact::MAX_SEEDS`].
+pub(crate) fn parse_seeds(s: &str) -> Result<u32, String> {
+    whole_in(s, 1, u64::from(crate::contact::MAX_SEEDS)).map(|n| n as u32)
+}
+
+/// `--cell K`: longest wavelengths a side, 1 … [`crate::contact::sampling::MAX_CELL`].
+pub(crate) fn parse_cell(s: &str) -> Result<u32, String> {
+    whole_in(s, 1, u64::from(crate::contact::sampling::MAX_CELL)).map(|n| n as u32)
+}
+
+/// `--contact-grid N`: a power of two from 8 (the memory is checked when
+/// the grid is built).
+pub(crate) fn parse_contact_grid(s: &str) -> Result<usize, String> {
+    match s.trim().parse::<usize>() {
+        Ok(n) if n >= 8 && n.is_power_of_two() => Ok(n),
+        _ => Err("must be a power of two, 8 or more (nodes a side: 256, 512, 1024, …)".into()),
+    }
+}
+
+/// `--per-wavelength K`: nodes per shortest wavelength, 2 … 64.
+pub(crate) fn parse_per_wavelength(s: &str) -> Result<u32, String> {
+    whole_in(s, 2, 64).map(|n| n as u32)
 }
 
 /// `--grid COLSxROWS`, each side a whole number (checked against the map's

@@ -14,13 +14,16 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Dataset, GraphType, Paragraph, Widget, Wrap};
 
 use super::chart::{self, Scale};
-use crate::contact::scene::Node;
 use crate::physical::print::{fmt_num, load_text};
 use crate::tui::app::App;
 use crate::tui::contact::{load_value, ContactPane, LOADS};
 use crate::tui::glyphs::Glyphs;
 use crate::tui::layout::Y_LABEL_W;
 use crate::tui::theme::{CurveStyle, Theme};
+
+mod map;
+pub use map::{dithered, map_scale};
+use map::{draw_map, map_legend};
 
 /// The map's colours: elastic light grey, at the hardness blue (the
 /// paper's plastic colour); out of contact the terminal's background.
@@ -61,9 +64,12 @@ pub fn share_pct(plastic: f64, total: f64) -> String {
     }
 }
 
-/// The readout's line at the chosen load, the longest form that fits
-/// `width`.
-pub fn readout(pane: &ContactPane, width: usize, g: Glyphs) -> (String, bool) {
+/// The readout at the chosen load: one line, the longest form that fits
+/// `width`, or where none does (an 80-column screen leaves the panel 46)
+/// two, the simulation's and the theory's, so that nothing is cut. `h`
+/// names the hardness in use (H0, or H_y with the size effect: H alone is
+/// the Hurst exponent). The flag: the line is an error.
+pub fn readout(pane: &ContactPane, width: usize, g: Glyphs, h: &str) -> (Vec<String>, bool) {
     let at = load_text(load_value(pane.load));
     let theory = pane
         .theory
@@ -78,38 +84,55 @@ pub fn readout(pane: &ContactPane, width: usize, g: Glyphs) -> (String, bool) {
         Some(Err(e)) => Err(e.clone()),
         None => Err(String::new()),
     };
-    let (th_full, th_short) = match &theory {
-        Some((a, s)) => (
-            format!("theory: {a} %, {s} % plastic"),
-            format!("th. {a}% {s}%pl"),
+    let th_full = match &theory {
+        Some((a, s)) => format!("theory: {a} %, {s} % plastic"),
+        None => "theory: —".into(),
+    };
+    let th_short = match &theory {
+        Some((a, s)) => format!("th. {a}% {s}%pl"),
+        None => "th. —".into(),
+    };
+    let (forms, split): (Vec<String>, Vec<String>) = match &sim {
+        Ok((a, s)) => (
+            vec![
+                format!("simulation at p̄ = {at} {h}: contact {a} %, {s} % plastic · {th_full}"),
+                format!("p̄ = {at} {h}: sim {a} %, {s} % plastic · {th_full}"),
+                format!("{at} {h}: sim {a}% {s}%pl · {th_short}"),
+            ],
+            vec![
+                format!("p̄ = {at} {h} · sim {a} %, {s} % plastic"),
+                format!("{at} {h} · sim {a}%, {s}% pl"),
+            ],
         ),
-        None => ("theory: —".into(), "th. —".into()),
+        Err(e) if e.is_empty() => (
+            vec![
+                format!("simulation at p̄ = {at} {h}: solving… · {th_full}"),
+                format!("{at} {h}: sim … · {th_short}"),
+            ],
+            vec![format!("p̄ = {at} {h} · sim solving…")],
+        ),
+        Err(e) if e == "-" => (
+            vec![
+                format!("at p̄ = {at} {h}: no simulation · {th_full}"),
+                format!("{at} {h}: no sim. · {th_short}"),
+            ],
+            vec![format!("p̄ = {at} {h} · no simulation")],
+        ),
+        Err(e) => (vec![format!("at p̄ = {at} {h}: {e}")], vec![]),
     };
-    let forms: Vec<String> = match &sim {
-        Ok((a, s)) => vec![
-            format!("simulation at p̄ = {at} H: contact {a} %, {s} % plastic · {th_full}"),
-            format!("p̄ = {at} H: sim {a} %, {s} % plastic · {th_full}"),
-            format!("{at} H: sim {a}% {s}%pl · {th_short}"),
-        ],
-        Err(e) if e.is_empty() => vec![
-            format!("simulation at p̄ = {at} H: solving… · {th_full}"),
-            format!("{at} H: sim … · {th_short}"),
-        ],
-        Err(e) if e == "-" => vec![
-            format!("at p̄ = {at} H: no simulation · {th_full}"),
-            format!("{at} H: no sim. · {th_short}"),
-        ],
-        Err(e) => vec![format!("at p̄ = {at} H: {e}")],
-    };
-    let forms: Vec<String> = forms.iter().map(|f| g.text(f).into_owned()).collect();
+    let text = |f: &String| g.text(f).into_owned();
     let fits = |s: &String| Span::raw(s.as_str()).width() <= width;
-    let line = forms
-        .iter()
-        .find(|s| fits(s))
-        .or(forms.last())
-        .cloned()
-        .unwrap_or_default();
-    (line, matches!(sim, Err(ref e) if !e.is_empty() && e != "-"))
+    let error = matches!(sim, Err(ref e) if !e.is_empty() && e != "-");
+    let first = |forms: &[String]| forms.iter().map(text).find(|s| fits(s));
+    if let Some(line) = first(&forms) {
+        return (vec![line], error);
+    }
+    if let (Some(a), Some(b)) = (first(&split), first(&[th_full.clone(), th_short.clone()])) {
+        return (vec![a, b], error);
+    }
+    // Nothing fits (a very narrow panel): the shortest, cut by the screen.
+    let last = forms.last().map(text).unwrap_or_default();
+    (vec![last], error)
 }
 
 /// The title's right part: the progress bar while solving, else what was
@@ -163,9 +186,11 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
     let pane = &app.contact;
     let w = usize::from(area.width);
     let n = pane.tasks.first().map(|t| t.scene.n);
+    // The hardness in use by its own name (H alone is the Hurst exponent).
+    let h = app.state.hardness_name();
     let head = if pane.sweep {
         format!(
-            "plastic share vs ζ at p̄ = {} H · seed {}",
+            "plastic share vs ζ at p̄ = {} {h} · seed {}",
             load_text(load_value(pane.load)),
             pane.seed
         )
@@ -200,15 +225,20 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
         return;
     }
     let row1 = Rect::new(area.x, area.y + 1, area.width, 1);
+    let mut top = 2;
     if pane.sweep {
         let text = "simulation points · theory S_pl/S_tot lines · b: areas vs load";
         Line::styled(gl.text(text).into_owned(), t.dim).render(row1, buf);
     } else {
-        let (line, error) = readout(pane, w, gl);
+        let (lines, error) = readout(pane, w, gl, h);
         let style = if error { t.error } else { Style::new() };
-        Line::styled(line, style).render(row1, buf);
+        for (k, line) in lines.into_iter().enumerate() {
+            let row = Rect::new(area.x, area.y + 1 + k as u16, area.width, 1);
+            Line::styled(line, style).render(row, buf);
+            top = 2 + k as u16;
+        }
     }
-    let body = Rect::new(area.x, area.y + 2, area.width, area.height - 2);
+    let body = Rect::new(area.x, area.y + top, area.width, area.height - top);
     if pane.sweep {
         sweep_chart(app, body, buf);
         return;
@@ -224,7 +254,15 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
         body.width.saturating_sub(side + 1),
         body.height,
     );
-    map_legend(t, Rect::new(body.x, body.y, side, 1), buf);
+    let half = t.color && !t.glyphs.ascii_only();
+    let scale = map_scale(n.unwrap_or(0), usize::from(side));
+    // Without half blocks a character is one point across and two up.
+    let scale = if half {
+        scale
+    } else {
+        format!("{scale} across")
+    };
+    map_legend(t, h, &scale, Rect::new(body.x, body.y, side, 1), buf);
     if let Some(why) = &pane.why_not {
         let text = gl.text(why).into_owned();
         Paragraph::new(text)
@@ -236,113 +274,6 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
         draw_map(t, &s.map, nn, map, buf);
     }
     load_chart(app, chart, buf);
-}
-
-/// The map's legend in `area` (one row).
-fn map_legend(t: &Theme, area: Rect, buf: &mut Buffer) {
-    let (e, p) = node_look(t, Node::Elastic, Node::Plastic);
-    let spans = vec![
-        Span::styled(e.0, e.1),
-        Span::raw(" elastic "),
-        Span::styled(p.0, p.1),
-        Span::raw(" at H"),
-    ];
-    Line::from(spans).render(area, buf);
-}
-
-/// A one-point swatch of each of two node kinds (legend).
-fn node_look(t: &Theme, a: Node, b: Node) -> ((&'static str, Style), (&'static str, Style)) {
-    let one = |k: Node| -> (&'static str, Style) {
-        if t.color {
-            let c = if k == Node::Plastic { PLASTIC } else { ELASTIC };
-            if t.glyphs.ascii_only() {
-                (" ", Style::new().bg(c))
-            } else {
-                ("█", Style::new().fg(c))
-            }
-        } else {
-            (plain_char(t, k), Style::new())
-        }
-    };
-    (one(a), one(b))
-}
-
-/// A node's character without colour.
-fn plain_char(t: &Theme, k: Node) -> &'static str {
-    match (k, t.glyphs.ascii_only()) {
-        (Node::Out, _) => " ",
-        (Node::Elastic, true) => "o",
-        (Node::Plastic, true) => "#",
-        (Node::Elastic, false) => "░",
-        (Node::Plastic, false) => "█",
-    }
-}
-
-/// The most loaded node of the block of `map` (n × n) under point
-/// (`px`, `py`) of a `side` × `side` picture.
-fn block(map: &[Node], n: usize, side: usize, px: usize, py: usize) -> Node {
-    let span = |i: usize| {
-        (
-            i * n / side,
-            ((i + 1) * n / side).max(i * n / side + 1).min(n),
-        )
-    };
-    let (x0, x1) = span(px);
-    let (y0, y1) = span(py);
-    let mut best = Node::Out;
-    for y in y0..y1 {
-        for &v in &map[y * n + x0..y * n + x1] {
-            best = best.max(v);
-            if best == Node::Plastic {
-                return best;
-            }
-        }
-    }
-    best
-}
-
-/// The whole periodic cell, each point the most loaded node it covers:
-/// half blocks (two points a cell) in colour, one character a cell (the
-/// more loaded of its two points) without colour or in ASCII.
-fn draw_map(t: &Theme, map: &[Node], n: usize, area: Rect, buf: &mut Buffer) {
-    if n == 0 || map.len() != n * n || area.width == 0 || area.height == 0 {
-        return;
-    }
-    let side = usize::from(area.width);
-    let colour = |k: Node| match k {
-        Node::Out => Color::Reset,
-        Node::Elastic => ELASTIC,
-        Node::Plastic => PLASTIC,
-    };
-    for r in 0..usize::from(area.height) {
-        for c in 0..side {
-            let up = block(map, n, side, c, 2 * r);
-            let low = block(map, n, side, c, (2 * r + 1).min(side - 1));
-            let cell = &mut buf[(area.x + c as u16, area.y + r as u16)];
-            if !t.color {
-                cell.set_symbol(plain_char(t, up.max(low)));
-            } else if t.glyphs.ascii_only() {
-                cell.set_symbol(" ")
-                    .set_style(Style::new().bg(colour(up.max(low))));
-            } else {
-                match (up, low) {
-                    (Node::Out, Node::Out) => {
-                        cell.set_symbol(" ");
-                    }
-                    (Node::Out, l) => {
-                        cell.set_symbol("▄").set_style(Style::new().fg(colour(l)));
-                    }
-                    (u, Node::Out) => {
-                        cell.set_symbol("▀").set_style(Style::new().fg(colour(u)));
-                    }
-                    (u, l) => {
-                        cell.set_symbol("▀")
-                            .set_style(Style::new().fg(colour(u)).bg(colour(l)));
-                    }
-                }
-            }
-        }
-    }
 }
 
 /// A point style of the simulation: the curve's colour, a dot; without
@@ -418,10 +349,15 @@ fn load_chart(app: &App, area: Rect, buf: &mut Buffer) {
         label(" simulation (T E P)"),
     ]);
     legend.render(Rect { height: 1, ..area }, buf);
+    let h = if app.state.size_effect {
+        "p̄/H_y"
+    } else {
+        "p̄/H0"
+    };
     chart::axes(
         t,
         (&Scale::decades(xb), &Scale::decades(yb)),
-        "p̄/H",
+        h,
         (area, g),
         buf,
     );

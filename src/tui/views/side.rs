@@ -273,6 +273,17 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
             Line::raw(pair(a, len(rs.rms_height), b, num(rs.rms_slope))),
         );
         at += 1;
+        // Where there is room: Sa and Sz, Ssk and Sku beside them.
+        if usize::from(area.height) > lines.len() + 2 {
+            let [sa, ssk, sku, sz] = rs.amplitude_names();
+            let p = rs.amplitude;
+            lines.insert(7, Line::raw(pair(sa, len(p.mean_abs), sz, len(p.range))));
+            lines.insert(
+                8,
+                Line::raw(pair(ssk, num(p.skewness), sku, num(p.kurtosis))),
+            );
+            at += 2;
+        }
     }
     // Where there is room: the longest wavelength (the power law's q0,
     // set with q0=… or l=… at the value prompt; a surface's own).
