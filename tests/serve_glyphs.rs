@@ -61,7 +61,7 @@ fn a_c_locale_vt100_client_gets_only_ascii_on_every_screen() {
         (&["Tab"], "plasticity indices vs zeta"),
         (&["Tab"], "plastic share over zeta x H0/E"),
         (&["Tab"], "A/A0 vs pbar/H_y"),
-        (&["Tab"], "(zeta <= 128)"),
+        (&["Tab"], "lower zeta to"),
         (&["Tab"], "slope H_y*dA/dpbar/A0 vs zeta"),
         (&["?"], "help 1/"),
         (&["Right"], "help 2/"),

@@ -4,8 +4,10 @@
 //! poll line, …) and the same first-screen line show the same screen: the
 //! first of them to draw renders it, the others take that frame. Each
 //! still sends its own client only what differs from what that client
-//! shows. A follower does not even bring its explorer up to the scene
-//! until it needs to (a key, a miss): taking a frame costs a copy.
+//! shows, and where that client showed a shared frame too, the bytes are
+//! those the first session to make the same change wrote. A follower does
+//! not even bring its explorer up to the scene until it needs to (a key,
+//! a miss): taking a frame costs a copy.
 
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex, OnceLock};
