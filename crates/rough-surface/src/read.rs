@@ -425,6 +425,10 @@ pub(crate) fn from_scan(
             Problem::Several("several channels: one channel per file, please".to_string()),
         ));
     }
+    let mut scan = scan;
+    if text.is_some() {
+        crate::validity::as_profile(&mut scan, &header)?;
+    }
     if scan.cols == 3 && scan.rows() >= 4 && !header.has_size() {
         return Err((
             scan.row_lines.first().copied(),

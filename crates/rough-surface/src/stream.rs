@@ -150,7 +150,13 @@ fn read_in(
         return whole(first, file);
     };
     let matrix = match h.first {
-        Some((_, _, cols)) => !crate::ce::is_ce(&h.header) && header.is_matrix(cols),
+        // Three columns without a size are a profile or a point cloud,
+        // read whole.
+        Some((_, _, cols)) => {
+            !crate::ce::is_ce(&h.header)
+                && header.is_matrix(cols)
+                && (cols != 3 || header.has_size())
+        }
         None => false,
     };
     if !matrix {

@@ -163,7 +163,7 @@ fn non_uniform_line_scans() {
     assert_eq!(
         refuse(t),
         "bad surface FILE, line 5: x is not uniformly spaced: x = 0.0000035 where \
-         the spacing 0.000001 from the first and last x puts 0.000003 (a line scan \
+         the least-squares spacing 0.00000105 puts 0.00000305 (a line scan \
          needs uniform x, to 1% of the spacing beyond the rounding of the printed digits)"
     );
     // Without the header line the content says it is a scan.
