@@ -114,9 +114,38 @@ pub struct Step {
 pub struct LessonAt {
     pub lesson: Arc<Lesson>,
     pub at: usize,
+    /// Which steps' polls were revealed (in this run of the lesson).
+    revealed: Vec<bool>,
 }
 
 impl LessonAt {
+    /// `lesson` at step `at` (from 0), no poll revealed yet.
+    pub fn new(lesson: Arc<Lesson>, at: usize) -> LessonAt {
+        let revealed = vec![false; lesson.steps.len()];
+        LessonAt {
+            lesson,
+            at,
+            revealed,
+        }
+    }
+
+    /// The step's poll was revealed: the claims a step hid for it show
+    /// from now on.
+    pub fn mark_revealed(&mut self) {
+        if let Some(r) = self.revealed.get_mut(self.at) {
+            *r = true;
+        }
+    }
+
+    /// Whether the step's claims wait: it hides them (`claims: Hidden`)
+    /// and the lesson's next poll (its own, or a later step's) has not
+    /// been revealed.
+    fn claims_wait(&self) -> bool {
+        let steps = &self.lesson.steps;
+        let next = (self.at..steps.len()).find(|i| steps[*i].poll.is_some());
+        self.step().claims_hidden && next.is_none_or(|i| !self.revealed[i])
+    }
+
     pub fn step(&self) -> &Step {
         &self.lesson.steps[self.at.min(self.lesson.steps.len() - 1)]
     }
@@ -128,7 +157,7 @@ impl LessonAt {
             of: self.lesson.steps.len(),
             title: self.step().title.clone(),
             pending: self.step().poll,
-            claims_hidden: self.step().claims_hidden,
+            claims_hidden: self.claims_wait(),
             left: None,
         }
     }
@@ -144,7 +173,8 @@ pub struct StepLine {
     /// The step's poll, until it is revealed: what would answer it stays
     /// off every screen.
     pub pending: Option<Question>,
-    /// The step hides its claims (`claims: Hidden`).
+    /// The step hides its claims (`claims: Hidden`), until the lesson's
+    /// next poll is revealed.
     pub claims_hidden: bool,
     /// The scene the lecturer loaded with `o`, away from the lesson's
     /// step (`n` returns to it).
@@ -392,11 +422,37 @@ mod tests {
         );
         assert_eq!(l.steps[1].state.caption.as_deref(), Some("mine"));
         assert_eq!(l.steps[2].poll.unwrap().truth, 100.0);
-        let at = LessonAt {
-            lesson: Arc::new(l),
-            at: 1,
-        };
+        let at = LessonAt::new(Arc::new(l), 1);
         assert_eq!(at.line().text(), "step 2/3 · two");
+    }
+
+    #[test]
+    fn hidden_claims_wait_for_the_lessons_next_poll() {
+        let l = parse_here(
+            r#"(title: "t", steps: [
+                (title: "one", scene: Preset("fig1"), claims: Hidden),
+                (title: "two", scene: Preset("fig1"), poll: Claim, claims: Hidden),
+                (title: "three", scene: Preset("fig2")),
+                (title: "four", scene: Preset("fig2"), claims: Hidden),
+            ])"#,
+        )
+        .unwrap();
+        let mut at = LessonAt::new(Arc::new(l), 0);
+        let hides = |at: &mut LessonAt, i: usize| {
+            at.at = i;
+            at.line().hides_claims()
+        };
+        assert!(hides(&mut at, 0) && hides(&mut at, 1));
+        assert!(!hides(&mut at, 2));
+        // Step two's poll revealed: one's and two's claims show (two's
+        // question is asked again if the lecturer comes back to it).
+        at.at = 1;
+        at.mark_revealed();
+        assert!(!hides(&mut at, 0));
+        at.at = 1;
+        assert!(!at.line().claims_hidden && at.line().pending.is_some());
+        // No poll after step four: its claims wait for good.
+        assert!(hides(&mut at, 3));
     }
 
     #[test]

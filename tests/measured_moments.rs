@@ -249,9 +249,10 @@ fn the_moments_view_as_a_picture_and_its_options() {
     for w in [
         "map_windowed — moments",
         "exact · measured moments · size effect on",
-        "h_rms = √m0 from the PSD up to ζ",
-        "Sq = 7.07e-8 (real space, no window)",
-        "Sdq = 0.153 (real space, no window)",
+        "h_rms = √m0",
+        "summed from the PSD up to ζ",
+        "Sq = 70.7 nm (real space)",
+        "Sdq = 0.153 (real space)",
     ] {
         assert!(svg.contains(w), "{w}");
     }

@@ -75,11 +75,28 @@ fn a_lesson_steps_polls_into_one_csv_and_everyone_follows() {
             nowhere,
         ),
     ];
+    // The step before each poll hides its claims (and the readout's
+    // values at the marker) on every screen.
+    let hidden = "(this step's claims show after the lesson's next poll)";
+    let before = |step: usize| {
+        let screens = room.wait_all(&all, "the step before a poll", 30, |s| {
+            s.contains(&format!("step {step}/8 · "))
+        });
+        for s in screens {
+            assert!(s.contains("Ψ_P    ?"), "{s}");
+            // (Bob has not dismissed the last reveal: it stands in.)
+            assert!(s.contains(hidden) || s.contains("the model"), "{s}");
+        }
+    };
+    before(1);
     let mut at = 1;
     for (step, question, truth) in polls {
         while at < step {
             room.keys("lect", &["n"]);
             at += 1;
+            if at + 1 == step {
+                before(at);
+            }
         }
         let screens = room.wait_all(&all, "the step", 30, |s| {
             s.contains(&format!("step {step}/8 · "))

@@ -4,12 +4,16 @@
 //! (25 each way), 30 who answer a poll all at once (15 each way), 220 idle
 //! (160 SSH, 60 web). 5 s in, the lecturer opens a poll (`v`); 3 s later
 //! the 30 press Enter together; 4 s later the lecturer reveals (`v`); at
-//! the end saves the answers (`S`), which must count 30. Reports
+//! the end saves the answers (`S`), which must count 30; then leads the
+//! 250 who follow, a key every 250 ms (`lead.rs`). Reports
 //! key-to-frame p50/p99 of the typing students (in all, over SSH, over
 //! the web, with the bytes of frames per key), the poll's delivery times,
 //! the server's RSS (per idle session, SSH and web apart), its CPU, and
 //! the bytes sent to idle sessions (outside the poll's question and reveal
-//! and within them). Stops by itself: the whole run is bounded (two and a
+//! and within them), and the lecturer's keys to the followers: their
+//! key-to-frame, bytes, the server's CPU and frames rendered per key.
+//! `ROUGHTUI_SHARED_FRAMES=off` (passed on to the server) makes every
+//! follower render its own frame, to compare. Stops by itself: the whole run is bounded (two and a
 //! half minutes), and the server is killed however the run ends.
 //!
 //! ```sh
@@ -39,6 +43,7 @@ const REVEAL: Duration = Duration::from_secs(12);
 
 #[path = "../../tests/common/client.rs"]
 mod client;
+mod lead;
 mod student;
 
 /// Logs `n` students in at once (`web` or SSH), each drained of its first
@@ -126,13 +131,10 @@ async fn run() -> anyhow::Result<()> {
             .arg(dir.path().join("host_key"))
             .arg("--lecturer-keys")
             .arg(&keys)
-            .args([
-                "--max-sessions",
-                "400",
-                "--max-per-address",
-                "400",
-                "--quiet",
-            ])
+            .args(["--max-sessions", "400", "--max-per-address", "400"])
+            // The console's summary (with its frames: line) five times a
+            // second.
+            .env("ROUGHTUI_SUMMARY_MS", "200")
             .stdout(Stdio::piped())
             .spawn()
             .map_err(|e| anyhow::anyhow!("cannot run {bin} ({e}): cargo build --release first"))?,
@@ -154,8 +156,18 @@ async fn run() -> anyhow::Result<()> {
         }
     }
     anyhow::ensure!(port != 0 && web != 0, "the server printed no addresses");
-    // The rest of the console (nothing, with --quiet) is read away.
-    std::thread::spawn(move || out.for_each(drop));
+    // The rest of the console is read away, its latest frames: line kept.
+    let counts: lead::Counts = Arc::default();
+    {
+        let counts = Arc::clone(&counts);
+        std::thread::spawn(move || {
+            for line in out.map_while(Result::ok) {
+                if line.contains("frames: ") {
+                    *counts.lock().unwrap() = Some(line);
+                }
+            }
+        });
+    }
     tokio::time::sleep(Duration::from_millis(200)).await;
 
     let (_lh, mut lch) = client::lecturer(port, key, 100, 30).await?;
@@ -318,6 +330,16 @@ async fn run() -> anyhow::Result<()> {
     );
     let lecturer_bytes: usize = lect_frames.lock().unwrap().iter().map(|f| f.1).sum();
 
+    // The lecturer leads the idle and the pollers, who follow again.
+    let polled: Vec<_> = keep.into_iter().map(Student::record).collect();
+    let followers: Vec<student::Frames> = idle
+        .iter()
+        .chain(&polled)
+        .map(|(_, f)| Arc::clone(f))
+        .collect();
+    let led_from = Instant::now();
+    let led = lead::run(&lect, pid, &followers, &counts).await?;
+
     // Idle sessions: bytes outside the poll's two moments, and within.
     let poll_window = |t: Instant| {
         let near = |at: Instant| t >= at && t < at + Duration::from_secs(1);
@@ -325,7 +347,8 @@ async fn run() -> anyhow::Result<()> {
     };
     let (mut outside, mut within, mut frames) = (0usize, 0usize, 0usize);
     for (_, f) in &idle {
-        for (t, n) in f.lock().unwrap().iter() {
+        // (Before the lecturer leads.)
+        for (t, n) in f.lock().unwrap().iter().filter(|(t, _)| *t < led_from) {
             if poll_window(*t) {
                 within += n;
                 frames += 1;
@@ -403,7 +426,10 @@ async fn run() -> anyhow::Result<()> {
         "bytes sent to the {n_idle} idle sessions: {outside} outside the poll; {within} in {frames} frames for its question and reveal ({} per session)",
         within / n_idle
     );
-    drop(keep);
+    for line in led {
+        println!("{line}");
+    }
+    drop(polled);
     drop(idle);
     drop(server);
     Ok(())

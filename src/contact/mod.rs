@@ -10,10 +10,8 @@
 //! so the cap is H_use/E*.
 
 pub mod engine;
-pub mod map_svg;
 pub mod measured;
 pub mod scene;
-pub mod svg;
 
 use std::io::Write;
 
@@ -120,6 +118,16 @@ impl Simulation {
     }
 }
 
+/// The side of the square the scene's simulation solves (m): the periodic
+/// cell 2π/q0 of a power law, a measured map's solved square.
+pub fn solved_side(state: &State) -> anyhow::Result<f64> {
+    let p = &state.params;
+    Ok(match measured::heights_of(state)? {
+        Some((_, h)) => measured::plan(&h, p.zeta() * p.q0())?.length,
+        None => std::f64::consts::TAU / p.q0(),
+    })
+}
+
 /// `points` loads p̄/H, log-spaced from 1e-3 to 1.
 pub fn loads(points: usize) -> Vec<f64> {
     let k = points.max(2) - 1;
@@ -139,46 +147,59 @@ pub fn sweep_zetas() -> Vec<f64> {
     (0..=7).map(|k| 2f64.powi(k)).collect()
 }
 
-fn comments(out: &mut impl Write, state: &State, sim: &Simulation) -> anyhow::Result<()> {
+/// The `#` lines of a contact CSV: `scene` (the scene as every view's CSV
+/// has it, made by export), then what the simulation adds.
+fn comments(
+    out: &mut impl Write,
+    scene: &[String],
+    state: &State,
+    sim: &Simulation,
+) -> anyhow::Result<()> {
+    for l in scene {
+        writeln!(out, "# {l}")?;
+    }
     let p = &state.params;
     // A sweep's first point solves another ζ than the scene's.
     let p = &p.with(rough_model::Axis::Zeta, sim.zeta).unwrap_or(*p);
-    writeln!(out, "# scene: {}", state.name)?;
     if let Some(m) = &sim.measured {
         writeln!(
             out,
-            "# simulation: elastic–perfectly-plastic BEM (rough-contact), {m}, wavevectors \
+            "# simulation = elastic–perfectly-plastic BEM (rough-contact), {m}, wavevectors \
              q ≤ zeta q0 = {} 1/m kept",
             csv_number::format(p.zeta() * p.q0())
         )?;
     } else {
         writeln!(
             out,
-            "# simulation: elastic–perfectly-plastic BEM (rough-contact), periodic {n} × {n} grid \
-         of side 2π/q0, power-law Gaussian surface, seed {}",
+            "# simulation = elastic–perfectly-plastic BEM (rough-contact), periodic {n} × {n} grid \
+             of side 2π/q0, power-law Gaussian surface, seed {}",
             sim.seed,
             n = sim.contact.n()
         )?;
     }
     writeln!(
         out,
-        "# h0_over_e = {}, hardness_in_use_over_e = {}, zeta = {}, hurst = {}, h_rms = {} m, \
-         q0 = {} 1/m, rms_slope = {}, size_effect = {}",
-        csv_number::format(p.h0_over_e()),
+        "# hardness_in_use_over_e = {} ({}/E*, the pressure cap); rms_slope = {} (the \
+         surface rescaled to the scene's sqrt(2 m2))",
         csv_number::format(sim.hardness),
-        csv_number::format(p.zeta()),
-        csv_number::format(p.hurst()),
-        csv_number::format(p.h_rms()),
-        csv_number::format(p.q0()),
-        csv_number::format(sim.rms_slope),
-        if state.size_effect { "on" } else { "off" }
+        state.hardness_name(),
+        csv_number::format(sim.rms_slope)
     )?;
     writeln!(
         out,
-        "# theory: {:?} model, index in use {}; areas as fractions of A0, mean_gap in m; \
-         residual: rms violation of the contact conditions over h_rms",
-        state.model,
+        "# theory = the {} model's finite-load areas at the index in use {} = {}",
+        state.model.label(),
+        if state.size_effect {
+            "psi_star"
+        } else {
+            "psi_p"
+        },
         csv_number::format(sim.psi.to_f64())
+    )?;
+    writeln!(
+        out,
+        "# units: areas as fractions of A0, mean_gap in m; residual: rms violation of the \
+         contact conditions over h_rms"
     )?;
     Ok(())
 }
@@ -283,12 +304,13 @@ pub fn sweep_rows(state: &State, seed: u64) -> anyhow::Result<(Simulation, Vec<S
     Ok((first, rows))
 }
 
-/// The contact view as CSV.
+/// The contact view as CSV, `scene` its first `#` lines.
 pub fn write_contact(
     out: &mut impl Write,
     state: &State,
     points: usize,
     seed: u64,
+    scene: &[String],
 ) -> anyhow::Result<()> {
     let (sim, rows) = load_rows(state, points, seed)?;
     let mut buf = String::new();
@@ -309,15 +331,20 @@ pub fn write_contact(
             ],
         );
     }
-    comments(out, state, &sim)?;
+    comments(out, scene, state, &sim)?;
     writeln!(out, "{CONTACT_HEADER}")?;
     out.write_all(buf.as_bytes())?;
     out.flush()?;
     Ok(())
 }
 
-/// The ζ sweep as CSV.
-pub fn write_contact_sweep(out: &mut impl Write, state: &State, seed: u64) -> anyhow::Result<()> {
+/// The ζ sweep as CSV, `scene` its first `#` lines.
+pub fn write_contact_sweep(
+    out: &mut impl Write,
+    state: &State,
+    seed: u64,
+    scene: &[String],
+) -> anyhow::Result<()> {
     let (sim, rows) = sweep_rows(state, seed)?;
     let mut buf = String::new();
     for r in &rows {
@@ -336,11 +363,11 @@ pub fn write_contact_sweep(out: &mut impl Write, state: &State, seed: u64) -> an
             ],
         );
     }
-    comments(out, state, &sim)?;
+    comments(out, scene, state, &sim)?;
     writeln!(
         out,
-        "# zeta swept over 1, 2, 4, …, 128 (a measured map's: those it resolves) at p_over_h = {SWEEP_LOAD}, each on its own grid \
-         (column grid); the lines above are the first point's"
+        "# the simulation and theory lines above are the first zeta's; each zeta solves its own \
+         grid (column grid) and hardness"
     )?;
     writeln!(out, "{SWEEP_HEADER}")?;
     out.write_all(buf.as_bytes())?;

@@ -91,8 +91,8 @@ pub fn moment_comments(state: &State) -> Vec<String> {
     // Every digit: these are data (the shortest text that reads back).
     let n = |v: f64| format!("{v:?}");
     let mut out = vec![
-        "columns: zeta, q1 (1/m), lambda1 (m), m0 (m^2), m2, m4 (1/m^2), h_rms (m), \
-         h_prime, h_dprime (1/m), r_s (m)"
+        "columns: zeta (1), q1 (1/m), lambda1 (m), m0 (m^2), m2 (1), m4 (1/m^2), h_rms (m), \
+         h_prime (1), h_dprime (1/m), r_s (m)"
             .to_string(),
     ];
     let Some(src) = &state.surface else {

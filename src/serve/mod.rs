@@ -11,6 +11,7 @@ pub mod class;
 pub mod code;
 pub mod csv;
 pub mod follow;
+pub mod frames;
 pub mod handler;
 pub mod host_key;
 pub mod input;
@@ -23,6 +24,7 @@ pub mod session;
 pub mod stream;
 pub mod term;
 pub mod web;
+pub mod wire;
 
 use std::io::Write;
 use std::net::SocketAddr;
@@ -105,7 +107,7 @@ pub struct Shared {
     /// `--marker`, if given.
     pub marker: Option<crate::tui::glyphs::Glyphs>,
     /// The lecturer's latest state; `None` while no lecturer is connected.
-    pub follow: watch::Sender<Option<Shown>>,
+    pub follow: watch::Sender<Option<Arc<Shown>>>,
     /// What the lecturer showed last, kept after they leave: a lecturer who
     /// connects (again, or a second time) starts from it.
     last: Mutex<Option<Shown>>,
@@ -125,16 +127,15 @@ pub struct Shared {
     /// The web page's join address with the class code (`--web`), for
     /// the lecturer's `Q`.
     pub join_url: Option<String>,
+    /// The frames students at one screen share.
+    pub frames: frames::Frames,
 }
 
 impl Shared {
     fn lecturer_joined(&self, app: &mut crate::tui::app::App) {
         self.lecturers.fetch_add(1, Ordering::SeqCst);
         if let Some(lesson) = &self.lesson {
-            app.class.lesson = Some(crate::lesson::LessonAt {
-                lesson: Arc::clone(lesson),
-                at: 0,
-            });
+            app.class.lesson = Some(crate::lesson::LessonAt::new(Arc::clone(lesson), 0));
             crate::lesson::show(app);
         }
         let last = self.last.lock().ok().and_then(|l| l.clone());
@@ -154,10 +155,10 @@ impl Shared {
             *last = Some(shown.clone());
         }
         self.follow.send_if_modified(|cur| {
-            if cur.as_ref() == Some(&shown) {
+            if cur.as_deref() == Some(&shown) {
                 return false;
             }
-            *cur = Some(shown);
+            *cur = Some(Arc::new(shown));
             true
         });
     }
@@ -285,6 +286,7 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         lesson_csv: Mutex::new(None),
         seats: Limits::new(opts.max_sessions, opts.max_per_address),
         join_url: join_url.as_ref().map(|u| u.url.clone()),
+        frames: frames::Frames::default(),
     });
     if shared.log.on() {
         tokio::spawn(summaries(Arc::clone(&shared)));
@@ -471,6 +473,7 @@ async fn summaries(shared: Arc<Shared>) {
         tick.tick().await;
         if let Some(line) = shared.class.summary() {
             shared.log.line(&line);
+            shared.log.line(&shared.frames.summary());
         }
     }
 }

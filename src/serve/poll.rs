@@ -12,10 +12,8 @@
 use std::sync::Arc;
 use std::time::SystemTime;
 
-use rough_model::Axis;
-
 use super::class::Poll;
-use super::follow::FOLLOWING;
+use super::follow::{Scene, FOLLOWING};
 use super::session::Seat;
 use crate::snapshot;
 use crate::tui::app::Message;
@@ -47,16 +45,17 @@ pub(super) fn on_poll(s: &mut Seat, poll: Option<Arc<Poll>>) -> bool {
         if s.poll == Some(p.id) {
             return false;
         }
-        // A new poll: on its scene, the marker's slider selected.
+        // A new poll: on its scene, the marker's slider selected (when
+        // the explorer next needs it: every student's first frame of the
+        // question is one render).
         s.poll = Some(p.id);
         app.class.tally = None;
-        p.scene.apply(app);
-        if let Some(i) = Axis::ALL.iter().position(|a| *a == p.question.axis) {
-            app.selected = i;
-        }
+        let question = p.question;
+        s.show(Scene::Poll(p));
+        let app = &mut s.ex.app;
         app.mode = crate::tui::app::Mode::Main;
         app.class.asked = Some(Asked {
-            question: p.question,
+            question,
             answer: None,
             revealed: false,
             changed: false,
@@ -117,9 +116,17 @@ pub(super) fn on_key(s: &mut Seat, msg: Message) {
                     // truth is the scene's as asked, and says so.
                     let changed = !crate::tui::caption::same_scene(&app.state, &p.scene.state);
                     class.reveal(changed);
-                    // The lesson's step has had its poll: its answer shows.
+                    // The lesson's step has had its poll: its answer and
+                    // its claims show (and, from now on, those of the
+                    // steps before it that hid theirs for this poll).
                     if let Some(step) = app.class.step.as_mut() {
                         step.pending = None;
+                        step.claims_hidden = false;
+                        if step.left.is_none() {
+                            if let Some(at) = app.class.lesson.as_mut() {
+                                at.mark_revealed();
+                            }
+                        }
                     }
                     let q = &p.question;
                     let saved = match to_lesson_csv(s) {

@@ -15,21 +15,21 @@ use crossterm::cursor::Hide;
 use crossterm::event::{Event, KeyEvent};
 use crossterm::terminal::EnterAlternateScreen;
 use russh::server::Msg;
-use russh::{Channel, ChannelMsg};
+use russh::Channel;
 use std::io::Write;
 use tokio::sync::watch;
 use tokio::time::{sleep_until, Instant};
 
 use super::auth::Role;
 use super::class::{self, clean_name, Note, SeatId};
-use super::follow::{Effect, Follow, Shown, CALLED_BACK, FOLLOWING};
+use super::follow::{Effect, Follow, Scene, Shown, CALLED_BACK, FOLLOWING};
+use super::frames;
 use super::input::{self, Decoder};
-use super::limits::clamp_size;
 use super::output::{self, FrameBuf};
 use super::panel::{Key as PanelKey, Panel};
 use super::poll;
-use super::stream::Kill;
 use super::term::{self, ClientTerm};
+pub use super::wire::{Input, Wire, WireIn};
 use super::Shared;
 use crate::tui::app::{Message, Mode};
 use crate::tui::glyphs::Glyphs;
@@ -46,70 +46,6 @@ pub struct Start {
     pub addr: IpAddr,
     /// The client's TERM and locale: the session's glyphs and colours.
     pub client: ClientTerm,
-}
-
-/// The bytes and sizes that come in from a client, whatever carries them.
-pub enum WireIn {
-    /// Keys (and terminal answers), as a terminal sends them.
-    Data(Vec<u8>),
-    /// A new terminal size, clamped.
-    Resize(u16, u16),
-}
-
-/// Where a session's input comes from: an SSH channel, or a WebSocket's
-/// reader task.
-pub enum Input {
-    Ssh(russh::ChannelReadHalf),
-    Web(tokio::sync::mpsc::Receiver<WireIn>),
-}
-
-impl Input {
-    /// The next input; `None` when the client is gone.
-    async fn next(&mut self) -> Option<WireIn> {
-        match self {
-            Input::Web(rx) => rx.recv().await,
-            Input::Ssh(read) => loop {
-                match read.wait().await? {
-                    ChannelMsg::Data { data } => return Some(WireIn::Data(data.to_vec())),
-                    ChannelMsg::WindowChange {
-                        col_width,
-                        row_height,
-                        ..
-                    } => {
-                        let (w, h) = clamp_size(col_width, row_height);
-                        return Some(WireIn::Resize(w, h));
-                    }
-                    ChannelMsg::Eof | ChannelMsg::Close => return None,
-                    _ => {}
-                }
-            },
-        }
-    }
-}
-
-/// A session's transport: its input, the one-frame slot its writer takes
-/// frames from, the goodbye that writer sends, and how the console names
-/// it (`""` for SSH, `" over the web"`).
-pub struct Wire {
-    pub input: Input,
-    pub slot: output::Slot,
-    pub bye: output::Bye,
-    pub via: &'static str,
-}
-
-impl Wire {
-    /// An SSH channel's wire: its writer started.
-    pub fn ssh(channel: Channel<Msg>, conn: russh::server::Handle, kill: Kill) -> Wire {
-        let (read, write) = channel.split();
-        let bye = output::Bye::default();
-        let slot = output::spawn(write, conn, kill, bye.clone());
-        Wire {
-            input: Input::Ssh(read),
-            slot,
-            bye,
-            via: "",
-        }
-    }
 }
 
 pub fn spawn(start: Start) {
@@ -153,7 +89,14 @@ pub(super) struct Seat {
     pub seat: Option<SeatId>,
     /// The poll a student is in (its id).
     pub poll: Option<u64>,
-    pub lecturer: watch::Receiver<Option<Shown>>,
+    pub lecturer: watch::Receiver<Option<Arc<Shown>>>,
+    /// The scene the explorer shows, or is to show (`pending`), while it
+    /// is the lecturer's or the poll's as it came (none of the student's
+    /// own moves on it): then its frame may be shared (see `frames`).
+    pub scene: Option<Scene>,
+    /// `scene` is not applied yet: the explorer catches up when it needs
+    /// to (a key, a frame no one else drew).
+    pub pending: bool,
 }
 
 impl Seat {
@@ -161,10 +104,64 @@ impl Seat {
         self.role == Role::Lecturer
     }
 
-    /// Shows the lecturer's latest state.
-    pub fn catch_up(&mut self) {
-        if let Some(s) = self.lecturer.borrow().as_ref() {
-            s.apply(&mut self.ex.app);
+    /// Is to show the lecturer's latest state (see `pending`).
+    pub fn follow_lecturer(&mut self) {
+        let shown = self.lecturer.borrow().clone();
+        if let Some(s) = shown {
+            self.show(Scene::Lecturer(s));
+        }
+    }
+
+    /// The explorer is to show `scene`, when it next needs to (see
+    /// `pending`).
+    pub fn show(&mut self, scene: Scene) {
+        self.scene = Some(scene);
+        self.pending = true;
+        if self.ex.app.ghost.is_some() {
+            // A ghost that no longer fits goes, and says so, now: before
+            // what the caller says next (such a screen is never shared).
+            self.sync();
+        }
+    }
+
+    /// Brings the explorer up to its scene, if it is behind.
+    pub fn sync(&mut self) {
+        if std::mem::take(&mut self.pending) {
+            if let Some(scene) = &self.scene {
+                scene.apply(&mut self.ex.app);
+            }
+        }
+    }
+
+    /// Applies `msg` to the explorer, brought up to its scene first.
+    pub fn update(&mut self, msg: Message) -> std::io::Result<()> {
+        self.own_move(&msg);
+        self.sync();
+        self.ex.update(msg)
+    }
+
+    /// The explorer changed on its own: what it shows is its own now
+    /// (until it follows again), unless `msg` changed only its look.
+    fn own_move(&mut self, msg: &Message) {
+        use Message as M;
+        let look_only = matches!(
+            msg,
+            M::ToggleHelp
+                | M::CloseHelp
+                | M::HelpPage { .. }
+                | M::Resize(..)
+                | M::Redraw
+                | M::CycleGlyphs
+                | M::ToggleColor
+                | M::Answer
+                | M::AnswerNowhere
+                | M::Follow
+                | M::Tick
+                | M::Quit
+        );
+        if !look_only {
+            self.sync();
+            self.scene = None;
         }
     }
 
@@ -173,7 +170,7 @@ impl Seat {
         match e {
             Effect::Say(s) => self.ex.app.set_status(s, false),
             Effect::Catch => {
-                self.catch_up();
+                self.follow_lecturer();
                 self.ex.app.set_status(FOLLOWING, false);
             }
             Effect::None => {}
@@ -242,6 +239,8 @@ async fn run(start: Start) {
         seat: None,
         poll: None,
         lecturer,
+        scene: None,
+        pending: false,
     };
     let is_lecturer = s.is_lecturer();
     s.ex.app.student = !is_lecturer;
@@ -259,15 +258,12 @@ async fn run(start: Start) {
         roster.mark_unchanged();
     } else {
         if s.follow.following() {
-            s.catch_up();
+            s.follow_lecturer();
             s.ex.app.set_status(FOLLOWING, false);
         } else if let Some(lesson) = &shared.lesson {
             // Before the lecturer comes: the lesson's first step, its
             // claims hidden as the lesson says (they may answer a poll).
-            let at = crate::lesson::LessonAt {
-                lesson: Arc::clone(lesson),
-                at: 0,
-            };
+            let at = crate::lesson::LessonAt::new(Arc::clone(lesson), 0);
             s.ex.app.class.step = Some(at.line());
         }
         let following = s.follow.following();
@@ -327,7 +323,7 @@ async fn run(start: Start) {
                                 // The terminal's answer to Ctrl-L's question.
                                 Event::Resize(w, h) => {
                                     if (w, h) != s.ex.app.size {
-                                        if s.ex.update(Message::Resize(w, h)).is_err() {
+                                        if s.update(Message::Resize(w, h)).is_err() {
                                             s.ex.app.quit = true;
                                             break;
                                         }
@@ -349,7 +345,7 @@ async fn run(start: Start) {
                                         panel = None;
                                         bye.normal_screen(false);
                                         // The explorer whole again.
-                                        if s.ex.update(Message::Redraw).is_err() {
+                                        if s.update(Message::Redraw).is_err() {
                                             s.ex.app.quit = true;
                                             break;
                                         }
@@ -358,6 +354,8 @@ async fn run(start: Start) {
                                 }
                                 continue;
                             }
+                            // A key is the student's: the explorer catches up.
+                            s.sync();
                             if s.ex.message_for(&Event::Key(key)) == Some(Message::Redraw) {
                                 decoder.expect_size();
                             }
@@ -393,7 +391,7 @@ async fn run(start: Start) {
                         }
                     }
                     WireIn::Resize(w, h) => {
-                        if s.ex.update(Message::Resize(w, h)).is_err() {
+                        if s.update(Message::Resize(w, h)).is_err() {
                             break;
                         }
                         s.note(Note::Size(w, h));
@@ -412,7 +410,7 @@ async fn run(start: Start) {
                 if s.follow.following() && shown.is_some() {
                     // Watching the lecturer counts as activity.
                     deadline = Instant::now() + idle;
-                    s.catch_up();
+                    s.follow_lecturer();
                 }
                 dirty = true;
             }
@@ -428,7 +426,7 @@ async fn run(start: Start) {
                     if let Some(p) = panel.take() {
                         raw.extend(p.close());
                         bye.normal_screen(false);
-                        if s.ex.update(Message::Redraw).is_err() {
+                        if s.update(Message::Redraw).is_err() {
                             break;
                         }
                     }
@@ -449,7 +447,7 @@ async fn run(start: Start) {
                 dirty = true;
             }
             () = solver.notified(), if s.ex.app.contact.busy() => {
-                if s.ex.update(Message::Tick).is_err() {
+                if s.update(Message::Tick).is_err() {
                     break;
                 }
                 dirty = true;
@@ -496,13 +494,7 @@ async fn run(start: Start) {
                 // While the snapshot is shown, changes wait for its close
                 // (which draws the explorer whole).
                 if dirty && panel.is_none() {
-                    let drawn = s.ex.draw_with(|app, f| {
-                        // Not over a screen too small for the explorer.
-                        if let Some(h) = hint.as_ref().filter(|_| !app.too_small()) {
-                            term::draw_hint(f, h, app.theme.glyphs);
-                        }
-                    });
-                    if drawn.is_err() {
+                    if frames::draw(&mut s, hint.as_ref()).is_err() {
                         break;
                     }
                     bytes.extend(buf.take());
@@ -579,10 +571,10 @@ fn on_key(s: &mut Seat, panel: &mut Option<Panel>, raw: &mut Vec<u8>, key: KeyEv
         }
         if let e @ Effect::Say(_) = s.follow.on_message(&msg) {
             // The edit applies first; the status says what happened.
-            let ok = s.ex.update(msg).is_ok();
+            let ok = s.update(msg).is_ok();
             s.effect(e);
             return ok;
         }
     }
-    s.ex.update(msg).is_ok()
+    s.update(msg).is_ok()
 }

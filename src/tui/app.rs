@@ -29,6 +29,9 @@ use crate::presets;
 use crate::scene::State;
 use crate::snapshot;
 
+mod look;
+pub use look::Look;
+
 #[derive(Clone, Debug, PartialEq)]
 pub enum Mode {
     Main,
@@ -282,7 +285,8 @@ impl App {
                     self.plot_cover = None;
                 }
                 let dots = self.theme.glyphs.dots();
-                Cover::keep(&mut self.plot_cover, &self.plot, regions.graph, dots);
+                let g = regions.slopes_graph();
+                Cover::keep(&mut self.plot_cover, &self.plot, g, dots);
             }
             View::Indices if self.indices_key.as_ref() != Some(&key) => {
                 self.indices = compute_indices(&self.state, points);

@@ -447,14 +447,30 @@ impl Classroom {
             .or_else(|| step.and_then(|s| s.pending))
     }
 
-    /// Whether the chart's regime marks wait: every mark may bracket the
-    /// answer of a claim's poll (the share's 10 % and 90 % marks bracket
-    /// its ½, Ψ = 1 sits near it); a typed value's poll hides none.
+    /// Whether what gives or brackets a claim's answer waits: the chart's
+    /// regime marks (the share's 10 % and 90 % marks bracket its ½, Ψ = 1
+    /// sits near it), the readout's values at the marker, the map's
+    /// colours and its Ψ = 1 contour, the load and contact views (both
+    /// at the marker); a typed value's poll hides none. The curves stay:
+    /// they are what a student reads the answer from.
     pub fn marks_hidden(&self) -> bool {
         match self.hidden_question() {
             Some(q) => q.ask != Ask::Typed,
             None => self.claims_hidden(),
         }
+    }
+
+    /// Until when the marks wait, in words ("the reveal", "the lesson's
+    /// next poll"); `None` when they show.
+    pub fn marks_wait(&self) -> Option<&'static str> {
+        if !self.marks_hidden() {
+            return None;
+        }
+        Some(if self.hidden_question().is_some() {
+            "the reveal"
+        } else {
+            "the lesson's next poll"
+        })
     }
 
     /// Whether the claims line and the chart's regime marks wait: a poll

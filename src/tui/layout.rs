@@ -81,6 +81,25 @@ impl Regions {
         })
     }
 
+    /// The slopes view's graph: a row less at the top, where the view says
+    /// which reading of the elastic/plastic split its shares use.
+    pub fn slopes_graph(&self) -> Rect {
+        Rect {
+            y: self.graph.y + 1,
+            height: self.graph.height.saturating_sub(1),
+            ..self.graph
+        }
+    }
+
+    /// The graph of `view`'s chart.
+    pub fn graph_of(&self, view: crate::scene::View) -> Rect {
+        if view == crate::scene::View::Slopes {
+            self.slopes_graph()
+        } else {
+            self.graph
+        }
+    }
+
     /// The regions of a terminal of `size` (columns, rows).
     pub fn of_size(size: (u16, u16)) -> Option<Regions> {
         Regions::of(Rect::new(0, 0, size.0, size.1))

@@ -92,10 +92,7 @@ pub fn update(app: &mut App, msg: Message) {
                 Source::Preset(i) => presets::load(presets::PRESETS[*i].0),
                 Source::File(p) => crate::snapshot::load_file(p),
                 Source::Lesson(lesson) => {
-                    app.class.lesson = Some(crate::lesson::LessonAt {
-                        lesson: Arc::clone(lesson),
-                        at: 0,
-                    });
+                    app.class.lesson = Some(crate::lesson::LessonAt::new(Arc::clone(lesson), 0));
                     crate::lesson::show(app);
                     return;
                 }

@@ -10,6 +10,7 @@ pub mod lecture;
 pub mod measured;
 pub mod room;
 pub mod serve;
+pub mod svg;
 pub mod tmux;
 
 use std::path::Path;

@@ -29,6 +29,8 @@ pub(crate) const MAX_CHARS: usize = 37;
 pub(crate) enum Sample {
     Solid(u32),
     Dashed,
+    /// A filled dot of this radius (a simulation's points).
+    Dot(u32),
 }
 
 #[derive(Clone, Debug)]
@@ -45,6 +47,8 @@ pub(crate) struct Legend {
     pub entries: Vec<Entry>,
     /// Drawn coordinates (log10 on log axes) of every line drawn.
     pub paths: Vec<Vec<(f64, f64)>>,
+    /// Drawn coordinates of every dot drawn, with its radius in pixels.
+    pub dots: Vec<((f64, f64), i32)>,
 }
 
 /// Where the legend went.
@@ -141,6 +145,9 @@ impl Legend {
                         e.colour.stroke_width(2),
                     ))
                     .map_err(plot_err)?,
+                Sample::Dot(r) => root
+                    .draw(&Circle::new(((sx + ex) / 2, y), r, e.colour.filled()))
+                    .map_err(plot_err)?,
             }
             for (k, l) in lines.into_iter().enumerate() {
                 let font = ("sans-serif", 14).into_font();
@@ -174,6 +181,11 @@ impl Legend {
             (xr.start - 4, yr.start - 4),
             (xr.end + 4, yr.end + 4),
         );
+        let dots: Vec<((i32, i32), i32)> = self
+            .dots
+            .iter()
+            .map(|(q, r)| (c.backend_coord(q), *r))
+            .collect();
         let named = [
             (l, t),
             (r, t),
@@ -189,10 +201,13 @@ impl Legend {
             .flat_map(|y| (l..=r).step_by(4).map(move |x| (x, y)))
             .collect();
         grid.sort_by_key(|&(x, y)| ((x - l).min(r - x).min(y - t).min(b - y), y, x));
-        named
-            .into_iter()
-            .chain(grid)
-            .find(|&(x0, y0)| !taken.any((x0 - 2, y0 - 2, x0 + w + 2, y0 + h + 2)))
+        named.into_iter().chain(grid).find(|&(x0, y0)| {
+            let clear = (x0 - 2, y0 - 2, x0 + w + 2, y0 + h + 2);
+            !taken.any(clear)
+                && !dots.iter().any(|&((x, y), r)| {
+                    x + r >= clear.0 && x - r <= clear.2 && y + r >= clear.1 && y - r <= clear.3
+                })
+        })
     }
 }
 

@@ -50,7 +50,7 @@ impl Widget for &App {
         render_caption(self, r.caption, buf);
         side::render_sliders(self, r.sliders, r.slider_rows, buf);
         side::render_readout(self, r.readout, buf);
-        let chart = (r.chart, r.graph);
+        let chart = (r.chart, r.graph_of(self.view));
         match self.view {
             View::Slopes => slopes::render(self, chart, buf),
             View::Indices => indices::render(self, chart, buf),
