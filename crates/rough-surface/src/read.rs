@@ -426,9 +426,10 @@ pub(crate) fn from_scan(
         ));
     }
     let mut scan = scan;
-    if text.is_some() {
-        crate::validity::as_profile(&mut scan, &header)?;
-    }
+    let not_measured = match text {
+        Some(_) => crate::validity::as_profile(&mut scan, &header)?.unwrap_or(0),
+        None => 0,
+    };
     if scan.cols == 3 && scan.rows() >= 4 && !header.has_size() {
         return Err((
             scan.row_lines.first().copied(),
@@ -445,10 +446,16 @@ pub(crate) fn from_scan(
             "a height matrix: its sizes' unit is its header's ('# Width: 12 µm')",
         ));
     }
-    let (kind, computed) = match text {
+    let (kind, mut computed) = match text {
         Some(text) if columns => columns::read(text, scan, &header, opts)?,
         _ => matrix::read(scan, &header, opts)?,
     };
+    if not_measured > 0 {
+        computed.notes.insert(
+            0,
+            format!("{not_measured} points not measured (validity 0) read as undefined"),
+        );
+    }
     if let (Some(u), Kind::Psd { .. }) = (opts.lateral_unit, kind) {
         return Err(no_lateral(u, "a PSD table"));
     }

@@ -15,11 +15,12 @@ use crate::header::Header;
 use crate::text::Scan;
 
 /// Rewrites `scan` as two columns where it is a profile of three (or
-/// more) columns; whether it did.
-pub(crate) fn as_profile(scan: &mut Scan<'_>, header: &Header) -> Result<bool, Failure> {
+/// more) columns: `None` where it is not, else the rows marked not
+/// measured.
+pub(crate) fn as_profile(scan: &mut Scan<'_>, header: &Header) -> Result<Option<usize>, Failure> {
     let cols = scan.cols;
     if cols < 3 || header.has_size() || scan.rows() == 0 {
-        return Ok(false);
+        return Ok(None);
     }
     let empty_after_two = scan
         .values
@@ -27,15 +28,19 @@ pub(crate) fn as_profile(scan: &mut Scan<'_>, header: &Header) -> Result<bool, F
         .all(|row| row[2..].iter().all(|v| v.is_nan()));
     if empty_after_two {
         keep_two(scan, |_, _| Ok(true))?;
-        return Ok(true);
+        return Ok(Some(0));
     }
     if cols != 3 || !crate::colunits::validity(&scan.header) {
-        return Ok(false);
+        return Ok(None);
     }
     let lines = scan.row_lines.clone();
+    let zeros = std::cell::Cell::new(0);
     keep_two(scan, |k, v| match v {
         1.0 => Ok(true),
-        0.0 => Ok(false),
+        0.0 => {
+            zeros.set(zeros.get() + 1);
+            Ok(false)
+        }
         v => Err((
             Some(lines[k]),
             Problem::Format(format!(
@@ -48,7 +53,7 @@ pub(crate) fn as_profile(scan: &mut Scan<'_>, header: &Header) -> Result<bool, F
             )),
         )),
     })?;
-    Ok(true)
+    Ok(Some(zeros.get()))
 }
 
 /// Keeps each row's x and z, z undefined where `measured(row, third)` is
@@ -77,7 +82,7 @@ mod tests {
     use super::*;
     use crate::text::{head, scan};
 
-    fn two(t: &str) -> Result<(bool, Vec<Option<f64>>), Failure> {
+    fn two(t: &str) -> Result<(Option<usize>, Vec<Option<f64>>), Failure> {
         let mut s = scan(t, head(t)?)?;
         let h = Header::read(&s.header)?;
         let done = as_profile(&mut s, &h)?;
@@ -88,15 +93,15 @@ mod tests {
     #[test]
     fn trailing_cells_and_validity() {
         let (done, v) = two("Lateral um,Raw Micrometer,\n0.0,-0.5,,\n0.2,0.25,,\n").unwrap();
-        assert!(done);
+        assert_eq!(done, Some(0));
         assert_eq!(v, [Some(0.0), Some(-0.5), Some(0.2), Some(0.25)]);
         let (done, v) = two("X;Y;valid\n[mm];[mm];[1/0]\n1;2;1\n2;9;0\n3;4;1\n").unwrap();
-        assert!(done);
+        assert_eq!(done, Some(1));
         assert_eq!(v, [Some(1.), Some(2.), Some(2.), None, Some(3.), Some(4.)]);
         // An XYZ cloud stays three columns.
-        assert!(!two("x y z\n1 2 3\n4 5 6\n").unwrap().0);
+        assert_eq!(two("x y z\n1 2 3\n4 5 6\n").unwrap().0, None);
         // A third column partly empty is no trailing cell.
-        assert!(!two("1,2,3\n4,5,\n").unwrap().0);
+        assert_eq!(two("1,2,3\n4,5,\n").unwrap().0, None);
         let e = two("X;Y;valid\n1;2;1\n2;9;0.5\n").unwrap_err();
         assert_eq!(e.0, Some(3));
         let e = two("X;Y;valid\n1;2;1\n2;9;\n").unwrap_err();

@@ -107,6 +107,10 @@ fn three_column_profiles_match_surfacetopography() {
         if undefined > 0 {
             let note = filled.unwrap_or_else(|| panic!("{}: {:?}", c.file, m.notes));
             assert_eq!(note, format!("{undefined} undefined points (4.1 %) filled"));
+            assert_eq!(
+                m.notes[0],
+                format!("{undefined} points not measured (validity 0) read as undefined")
+            );
         } else {
             assert!(filled.is_none(), "{:?}", m.notes);
         }
@@ -211,7 +215,10 @@ fn validity_zeros_count_as_undefined() {
     )
     .unwrap();
     assert_eq!(
-        m.notes[0],
-        "97 undefined points (12 %) filled (--max-undefined 15 %)"
+        m.notes[..2],
+        [
+            "97 points not measured (validity 0) read as undefined",
+            "97 undefined points (12 %) filled (--max-undefined 15 %)"
+        ]
     );
 }
