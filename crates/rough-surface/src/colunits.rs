@@ -2,7 +2,8 @@
 //! `x [mm]  z [µm]`, `# x/mm z/um` — each column's name, then its unit in
 //! parentheses, brackets or after a slash; a names line and a units line
 //! under it (`X;Y;valid`, `[mm];[mm];[1/0]`: a validity column third);
-//! a name and its unit as words (`Lateral um,Raw Micrometer`).
+//! a name and its unit as words (`Lateral um,Raw Micrometer`) or with
+//! "in" (`x in µm,y in µm`).
 
 /// A column's name and the unit written with it, if any.
 #[derive(Clone, Debug, PartialEq)]
@@ -33,10 +34,16 @@ fn split(token: &str) -> (Option<&str>, Option<&str>) {
 /// is attached to a name.
 pub(crate) fn columns(line: &str) -> Option<Vec<Column>> {
     let mut out: Vec<Column> = Vec::new();
-    let tokens = line
+    let mut tokens = line
         .split(|c: char| c.is_whitespace() || matches!(c, ',' | ';' | '#'))
         .filter(|t| !t.is_empty());
-    for t in tokens {
+    while let Some(t) = tokens.next() {
+        // `x in µm` (a Windows export's header): the unit after "in".
+        if t.eq_ignore_ascii_case("in") && out.last().is_some_and(|c| c.unit.is_none()) {
+            let unit = tokens.next()?;
+            out.last_mut()?.unit = Some(unit.to_string());
+            continue;
+        }
         match split(t) {
             (Some(name), unit) => out.push(Column {
                 name: name.to_lowercase(),
@@ -116,6 +123,7 @@ pub(crate) fn scan_units<'a>(
         let named = match &cols[..] {
             [x, z] => Some((x, z)),
             [x, z, v] if is_validity(v) => Some((x, z)),
+            [i, x, z] if i.name == "index" => Some((x, z)),
             _ => None,
         };
         let (x, z) = named?;
@@ -158,6 +166,10 @@ mod tests {
         assert_eq!(
             scan_units(&[(5, "Lateral um,Raw Micrometer,")]),
             Some((5, u("um"), u("Micrometer")))
+        );
+        assert_eq!(
+            scan_units(&[(1, "x in µm,y in µm ")]),
+            Some((1, u("µm"), u("µm")))
         );
         assert_eq!(scan_units(&[(1, "x (mm) y (mm) z (um)")]), None);
         assert_eq!(

@@ -426,9 +426,9 @@ pub(crate) fn from_scan(
         ));
     }
     let mut scan = scan;
-    let not_measured = match text {
-        Some(_) => crate::validity::as_profile(&mut scan, &header)?.unwrap_or(0),
-        None => 0,
+    let profile_notes = match text {
+        Some(_) => crate::validity::as_profile(&mut scan, &header)?,
+        None => Vec::new(),
     };
     if scan.cols == 3 && scan.rows() >= 4 && !header.has_size() {
         return Err((
@@ -450,12 +450,7 @@ pub(crate) fn from_scan(
         Some(text) if columns => columns::read(text, scan, &header, opts)?,
         _ => matrix::read(scan, &header, opts)?,
     };
-    if not_measured > 0 {
-        computed.notes.insert(
-            0,
-            format!("{not_measured} points not measured (validity 0) read as undefined"),
-        );
-    }
+    computed.notes.splice(0..0, profile_notes);
     if let (Some(u), Kind::Psd { .. }) = (opts.lateral_unit, kind) {
         return Err(no_lateral(u, "a PSD table"));
     }

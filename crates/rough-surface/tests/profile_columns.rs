@@ -222,3 +222,38 @@ fn validity_zeros_count_as_undefined() {
         ]
     );
 }
+
+/// The Dektak profile as Windows' "Unicode" CSV (UTF-16 with its byte-order
+/// mark) of three columns, the rows' numbers first (`index, x in µm, y in
+/// µm`, as SurfaceTopography's csv-2.csv): the same line scan, so
+/// SurfaceTopography's numbers for the Dektak's values.
+#[test]
+fn utf16_with_rows_numbers_reads_as_the_profile() {
+    let bytes = std::fs::read(data().join("dektak_profile.csv")).unwrap();
+    let text: String = bytes.iter().map(|&b| b as char).collect();
+    let rows = text.split("Raw Micrometer,\r\n").nth(1).unwrap();
+    let mut csv = String::from("index, x in µm, y in µm\r\n");
+    for (k, r) in rows.lines().filter(|l| !l.trim().is_empty()).enumerate() {
+        let f: Vec<&str> = r.split(',').collect();
+        csv.push_str(&format!("{k},{},{}\r\n", f[0], f[1]));
+    }
+    let mut utf16 = vec![0xff, 0xfe];
+    utf16.extend(csv.encode_utf16().flat_map(u16::to_le_bytes));
+    let (_d, p) = temp_with("unicode.csv", &utf16);
+    let m = read(&p, &Options::default()).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(
+        m.notes,
+        [
+            "read as UTF-16 text (Windows' \"Unicode\")",
+            "the first column (0, 1, 2 …) read as the rows' numbers, x and z after it"
+        ]
+    );
+    let c = cases().into_iter().next().unwrap();
+    let Kind::Line { n, l } = m.kind else {
+        panic!()
+    };
+    assert_eq!(n, c.n);
+    assert!(rel(l, c.l) < 1e-13);
+    let r = m.real.unwrap();
+    assert!(rel(r.rms_height, c.real.0) < 1e-12 && rel(r.rms_slope, c.real.1) < 1e-12);
+}
