@@ -443,4 +443,20 @@ proptest! {
         }
         let _ = parse(&bytes, &Options::default());
     }
+
+    /// Anything after a UTF-16 byte-order mark, odd lengths and lone
+    /// surrogates included: a result or a refusal, never a panic.
+    #[test]
+    fn utf16_never_panics(
+        big in any::<bool>(),
+        text in "[0-9 ,;.\n\re-]{0,80}",
+        tail in prop::collection::vec(any::<u8>(), 0..5),
+    ) {
+        let mut bytes = if big { vec![0xfe, 0xff] } else { vec![0xff, 0xfe] };
+        for u in text.encode_utf16() {
+            bytes.extend(if big { u.to_be_bytes() } else { u.to_le_bytes() });
+        }
+        bytes.extend(tail);
+        let _ = parse(&bytes, &Options::default());
+    }
 }
