@@ -368,11 +368,17 @@ mod tests {
             let cut = t.trim_end();
             assert_eq!(streamed(cut, block).unwrap().table, whole.table);
         }
-        // Two columns are not streamed.
+        // Two columns are not streamed, nor three without a size (a
+        // profile's validity column or empty cells, or a point cloud).
         let two = "1 2\n3 4\n5 6\n7 8\n";
         assert!(matches!(
             read_in(two.as_bytes(), (16, ""), 0, 4).unwrap(),
             Streamed::Whole(b) if b == two.as_bytes()
+        ));
+        let three = "X;Y;valid\n1;2;1\n3;4;0\n5;6;1\n7;8;1\n";
+        assert!(matches!(
+            read_in(three.as_bytes(), (40, ""), 0, 4).unwrap(),
+            Streamed::Whole(b) if b == three.as_bytes()
         ));
     }
 }
