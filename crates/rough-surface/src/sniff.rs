@@ -150,9 +150,10 @@ fn utf16(bytes: &[u8]) -> Option<bool> {
     }
 }
 
-/// Text bytes as a string: UTF-8 when they are, else Windows-1252
-/// (Latin-1's superset, what Gwyddion and instruments on Windows write:
-/// `µm` as byte 0xB5), with a note saying so.
+/// Text bytes as a string: UTF-16 after its byte-order mark (Windows'
+/// "Unicode"), UTF-8 when they are, else Windows-1252 (Latin-1's
+/// superset, what Gwyddion and instruments on Windows write: `µm` as byte
+/// 0xB5), with a note where not UTF-8.
 pub(crate) fn decode(bytes: &[u8]) -> Result<(Cow<'_, str>, Option<String>), Failure> {
     if let Some(big) = utf16(bytes) {
         let unit = |c: &[u8]| {
@@ -163,15 +164,15 @@ pub(crate) fn decode(bytes: &[u8]) -> Result<(Cow<'_, str>, Option<String>), Fai
                 u16::from_le_bytes(b)
             }
         };
+        // An odd last byte is a unit cut in half: a lone surrogate stands
+        // for it, refused below.
         let units = bytes[2..]
-            .chunks(2)
-            .map(|c| if c.len() == 2 { Some(unit(c)) } else { None });
+            .chunks_exact(2)
+            .map(unit)
+            .chain((bytes.len() % 2 == 1).then_some(0xdc00));
         let mut t = String::with_capacity(bytes.len() / 2);
         let mut line = 1;
-        for c in char::decode_utf16(units.map_while(|u| u).chain(
-            // An odd last byte: a unit cut in half.
-            (bytes.len() % 2 == 1).then_some(0xdc00),
-        )) {
+        for c in char::decode_utf16(units) {
             match c {
                 Ok(c) if c != '\0' => {
                     line += usize::from(c == '\n');
