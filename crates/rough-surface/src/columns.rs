@@ -121,7 +121,7 @@ fn last_place(field: &str) -> i32 {
     let decimals = mantissa.split_once('.').map_or(0, |(_, f)| {
         f.chars().take_while(char::is_ascii_digit).count() as i32
     });
-    exp - decimals
+    exp.saturating_sub(decimals)
 }
 
 /// How finely a column of x is printed: the most significant digits any
@@ -387,6 +387,7 @@ mod tests {
         assert_eq!(last_place("1499.8"), -1);
         assert_eq!(last_place("1.250e-06"), -9);
         assert_eq!(last_place("1500"), 0);
+        assert_eq!(last_place("0.5e-2147483648"), i32::MIN);
         let p = Precision::of(&["0.0", "0.2", "1499.8"]);
         assert_eq!((p.digits, p.place), (5, -1));
         // A fixed-point column is known to its decimal place everywhere.
