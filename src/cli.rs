@@ -7,10 +7,11 @@ use rough_model::Axis;
 
 pub mod setup;
 mod values;
-pub use values::{parse_duration, parse_fit_band, parse_set, SetKey, MAX_POINTS};
 use values::{
-    parse_grid, parse_height_unit, parse_percent, parse_pixel_size, parse_points, parse_sweep,
+    parse_cell, parse_contact_grid, parse_grid, parse_height_unit, parse_per_wavelength,
+    parse_percent, parse_pixel_size, parse_points, parse_seeds, parse_sweep,
 };
+pub use values::{parse_duration, parse_fit_band, parse_set, SetKey, MAX_POINTS};
 
 #[derive(Debug, Parser)]
 #[command(
@@ -254,9 +255,29 @@ pub struct ExportArgs {
     #[arg(long, value_name = "AXIS:FROM:TO", value_parser = parse_sweep)]
     pub sweep: Option<(Axis, f64, f64)>,
     /// Seed of the simulated surface's random phases (contact views only;
-    /// default 1).
+    /// default 1), the first of --seeds.
     #[arg(long, value_name = "N")]
     pub seed: Option<u64>,
+    /// Realisations to average (contact views): seeds --seed, --seed + 1, …;
+    /// the CSV gives means and sample standard deviations (default 1).
+    #[arg(long, value_name = "N", value_parser = parse_seeds)]
+    pub seeds: Option<u32>,
+    /// The simulated cell's side in longest wavelengths 2π/q0, the spectrum
+    /// flat below q0 (contact views; default 2).
+    #[arg(long, value_name = "K", value_parser = parse_cell)]
+    pub cell: Option<u32>,
+    /// The simulation's grid, nodes a side, a power of two (contact views;
+    /// default: 8 nodes per shortest wavelength).
+    #[arg(long, value_name = "N", value_parser = parse_contact_grid, conflicts_with = "per_wavelength")]
+    pub contact_grid: Option<usize>,
+    /// The simulation's nodes per shortest wavelength 2π/(ζ q0), the grid
+    /// the power of two giving as many (contact views; default 8).
+    #[arg(long, value_name = "K", value_parser = parse_per_wavelength)]
+    pub per_wavelength: Option<u32>,
+    /// Where the size effect's hardness applies in the simulation: one cap
+    /// everywhere (default), or each contact patch that of its asperity.
+    #[arg(long, value_enum)]
+    pub hardness: Option<HardnessArg>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -305,6 +326,16 @@ pub enum FormatArg {
 pub enum OnOff {
     On,
     Off,
+}
+
+/// Where the simulation's hardness applies (contact views).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum HardnessArg {
+    /// One cap everywhere: the scene's H_use, as the theory uses it.
+    Global,
+    /// Each contact patch the size effect's H_y of the asperity under it
+    /// (its curvature radius in place of R_s; needs the size effect on).
+    Asperity,
 }
 
 /// A parameter on the command line.

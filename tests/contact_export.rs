@@ -20,7 +20,7 @@ fn parse(csv: &str) -> (Vec<&str>, &str, Vec<Vec<f64>>) {
 #[test]
 fn contact_view_csv() {
     let csv = stdout(&[
-        "export", "--view", "contact", "--preset", "fig2", "--set", "zeta=16",
+        "export", "--view", "contact", "--preset", "fig2", "--set", "zeta=16", "--cell", "1",
     ]);
     let (comments, header, rows) = parse(&csv);
     // The scene as every view's CSV has it, then what the simulation adds.
@@ -46,7 +46,8 @@ fn contact_view_csv() {
     let span = at("# contact = p_over_h = pbar/H0 from 0.001 to 1, 13 loads (log-spaced)");
     let sim = at(
         "# simulation = elastic–perfectly-plastic BEM (rough-contact), periodic 128 × 128 \
-         grid of side 2π/q0, power-law Gaussian surface, seed 1",
+         grid of side 1 × 2π/q0 (cell: 1 longest wavelength), 8 nodes per shortest wavelength, \
+         power-law Gaussian surface, seed 1 (one realisation",
     );
     let model = at("# model = closed form");
     assert!(span.is_some() && sim.is_some(), "{comments:#?}");
@@ -57,10 +58,22 @@ fn contact_view_csv() {
     assert!(comments.iter().any(|c| c.starts_with(
         "# theory = the closed form model's finite-load areas at the index in use psi_p = "
     )));
+    assert!(comments.iter().any(|c| c.contains("128 × 128 grid")
+        && c.contains("cell: 1 longest wavelength")
+        && c.contains("8 nodes per shortest wavelength")
+        && c.contains("seed 1 (one realisation")));
+    assert!(comments.iter().any(
+        |c| c.contains("# surface = matched to the scene's rms slope")
+            && c.contains("the paper's asymptotic moments")
+    ));
+    assert!(comments
+        .iter()
+        .any(|c| c.contains("hardness_in_use_over_e = 0.01")));
     assert_eq!(
         header,
         "p_over_h,area,elastic_area,plastic_area,mean_gap,iterations,residual,\
-         theory_area,theory_elastic_area,theory_plastic_area"
+         theory_area,theory_elastic_area,theory_plastic_area,area_sd,elastic_area_sd,\
+         plastic_area_sd,seeds"
     );
     assert_eq!(rows.len(), 13);
     assert_eq!(rows[0][0], 1e-3);
@@ -72,6 +85,7 @@ fn contact_view_csv() {
         assert!((r[8] + r[9] - r[7]).abs() < 1e-9, "{r:?}");
         assert!(r[1] >= last && r[1] <= 1.0);
         assert!(r[6] <= 1e-10, "residual {r:?}");
+        assert!(r[10].is_nan() && r[13] == 1.0, "one seed: {r:?}");
         last = r[1];
     }
     // At p̄ = H everything is at the hardness, in both.
@@ -80,16 +94,71 @@ fn contact_view_csv() {
     // Another seed, another surface, same header.
     let other = stdout(&[
         "export", "--view", "contact", "--preset", "fig2", "--set", "zeta=16", "--seed", "7",
-        "--points", "3",
+        "--points", "3", "--cell", "1",
     ]);
     let (_, _, other) = parse(&other);
     assert_eq!(other.len(), 3);
     assert_ne!(other[0][1], rows[0][1]);
 }
 
+/// Three seeds: each column the mean of the three single-seed runs, the
+/// `_sd` columns their sample standard deviation.
+#[test]
+fn contact_over_seeds() {
+    let base = [
+        "export", "--view", "contact", "--preset", "fig2", "--set", "zeta=8", "--points", "4",
+    ];
+    let text = stdout(&[&base[..], &["--seed", "4", "--seeds", "3"]].concat());
+    let (comments, _, all) = parse(&text);
+    assert!(comments
+        .iter()
+        .any(|c| c.contains("seeds 4–6 (columns: means over 3 realisations")));
+    let one: Vec<Vec<Vec<f64>>> = ["4", "5", "6"]
+        .iter()
+        .map(|s| parse(&stdout(&[&base[..], &["--seed", s]].concat())).2)
+        .collect();
+    for (k, row) in all.iter().enumerate() {
+        for (col, sd_col) in [(1, 10), (2, 11), (3, 12)] {
+            let v: Vec<f64> = one.iter().map(|r| r[k][col]).collect();
+            let mean = v.iter().sum::<f64>() / 3.0;
+            let sd = (v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / 2.0).sqrt();
+            assert!((row[col] - mean).abs() <= 1e-15, "{row:?} {v:?}");
+            assert!((row[sd_col] - sd).abs() <= 1e-15, "{row:?} {v:?}");
+        }
+        assert_eq!(row[13], 3.0);
+    }
+}
+
+/// The cell: K longest wavelengths a side on K times the grid, its
+/// spectrum flat below q0; the grid as nodes a side or per wavelength.
+#[test]
+fn contact_cell_and_grid() {
+    let base = [
+        "export", "--view", "contact", "--preset", "fig2", "--set", "zeta=8", "--points", "2",
+    ];
+    for (extra, grid) in [
+        (vec![], "128 × 128 grid of side 2 × 2π/q0 (cell: 2 longest wavelengths, the spectrum flat below q0), 8 nodes"),
+        (vec!["--cell", "4"], "256 × 256 grid of side 4 × 2π/q0"),
+        (vec!["--cell", "1", "--contact-grid", "256"], "256 × 256 grid of side 1 × 2π/q0 (cell: 1 longest wavelength), 32 nodes"),
+        (vec!["--cell", "1", "--per-wavelength", "4"], "32 × 32 grid"),
+    ] {
+        let text = stdout(&[&base[..], &extra].concat());
+        let (comments, _, _) = parse(&text);
+        assert!(comments.iter().any(|c| c.contains(grid)), "{extra:?}: {comments:?}");
+    }
+}
+
 #[test]
 fn contact_sweep_csv_and_svg() {
-    let csv = stdout(&["export", "--view", "contact-sweep", "--preset", "fig2"]);
+    let csv = stdout(&[
+        "export",
+        "--view",
+        "contact-sweep",
+        "--preset",
+        "fig2",
+        "--cell",
+        "1",
+    ]);
     let (comments, header, rows) = parse(&csv);
     assert!(header.starts_with("zeta,p_over_h,plastic_share,theory_plastic_share,"));
     assert!(
@@ -125,7 +194,31 @@ fn contact_sweep_csv_and_svg() {
 #[test]
 fn contact_refusals() {
     for (args, needle) in [
-        (vec!["--set", "zeta=1000"], "ζ ≤ 128"),
+        (
+            vec!["--set", "zeta=1000"],
+            "solves up to 4096 (ζ × cell ≤ 512)",
+        ),
+        (vec!["--seeds", "0"], "invalid value '0' for '--seeds <N>'"),
+        (vec!["--contact-grid", "1000"], "must be a power of two"),
+        (
+            vec!["--contact-grid", "64"],
+            "a grid of 64 nodes a side cannot hold ζ = 128",
+        ),
+        (
+            vec!["--contact-grid", "131072"],
+            "of memory to solve (100 bytes a node); this machine has",
+        ),
+        (
+            vec![
+                "--cell",
+                "2",
+                "--contact-grid",
+                "1024",
+                "--per-wavelength",
+                "8",
+            ],
+            "cannot be used with",
+        ),
         (
             vec!["--grid", "3x3"],
             "--grid does not apply to --view contact",
@@ -153,7 +246,7 @@ fn contact_refusals() {
 /// areas at that load, and the same map as SVG rectangles.
 #[test]
 fn contact_map_csv_and_svg() {
-    let args = ["--preset", "fig2", "--set", "zeta=16"];
+    let args = ["--preset", "fig2", "--set", "zeta=16", "--cell", "1"];
     let map = stdout(&[&["export", "--view", "contact-map"][..], &args].concat());
     let lines: Vec<&str> = map.lines().filter(|l| !l.starts_with('#')).collect();
     assert_eq!(lines.len(), 128);
@@ -196,4 +289,50 @@ fn contact_map_csv_and_svg() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr)
         .contains("--points does not apply to --view contact-map"));
+}
+
+/// The size effect per asperity: the elastic contact's patches give each
+/// node its asperity's curvature radius and H_y; refused without the size
+/// effect.
+#[test]
+fn contact_hardness_per_asperity() {
+    let base = [
+        "export",
+        "--view",
+        "contact-sweep",
+        "--preset",
+        "fig2",
+        "--set",
+        "h0-over-e=0.001",
+        "--size-effect",
+        "on",
+        "--cell",
+        "1",
+    ];
+    let global = stdout(&base);
+    let text = stdout(&[&base[..], &["--hardness", "asperity"]].concat());
+    let (comments, header, rows) = parse(&text);
+    assert!(header.ends_with("hardness_over_e,theory_hardness_over_e,patches,patch_radius"));
+    assert!(comments
+        .iter()
+        .any(|c| c.contains("# hardness per asperity = each node capped")));
+    let (_, _, g) = parse(&global);
+    for (a, g) in rows.iter().zip(&g) {
+        // The global cap is the theory's; per asperity the load-weighted
+        // cap is H0 at least and the patches' radii are finite.
+        assert_eq!(g[12], g[13], "{g:?}");
+        assert!(a[12] >= 0.001 * (1.0 - 1e-12), "{a:?}");
+        assert!(a[14] >= 1.0 && a[15] > 0.0, "{a:?}");
+    }
+    let out = common::cli::run(&[
+        "export",
+        "--view",
+        "contact",
+        "--preset",
+        "fig2",
+        "--hardness",
+        "asperity",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("switch it on"));
 }

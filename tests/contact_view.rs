@@ -229,8 +229,8 @@ fn beyond_the_grid_the_view_says_what_it_resolves() {
     assert!(!a.contact.busy());
     assert!(a.contact.tasks.is_empty());
     let text = screen(&a);
-    assert!(text.contains("ζ = 1000 needs a grid of 8000"), "{text}");
-    assert!(text.contains("(ζ ≤ 128)"), "{text}");
+    assert!(text.contains("ζ = 1000 in a cell of 1 longest"), "{text}");
+    assert!(text.contains("simulation solves up to 4096"), "{text}");
     assert_eq!(engine.running(), 0);
 }
 

@@ -174,6 +174,38 @@ pub(crate) fn parse_points(s: &str) -> Result<usize, String> {
     }
 }
 
+/// A whole number from `lo` to `hi`, or the refusal.
+fn whole_in(s: &str, lo: u64, hi: u64) -> Result<u64, String> {
+    match s.trim().parse::<u64>() {
+        Ok(n) if (lo..=hi).contains(&n) => Ok(n),
+        _ => Err(format!("must be a whole number from {lo} to {hi}")),
+    }
+}
+
+/// `--seeds N`: realisations to average, 1 … [`crate::contact::MAX_SEEDS`].
+pub(crate) fn parse_seeds(s: &str) -> Result<u32, String> {
+    whole_in(s, 1, u64::from(crate::contact::MAX_SEEDS)).map(|n| n as u32)
+}
+
+/// `--cell K`: longest wavelengths a side, 1 … [`crate::contact::sampling::MAX_CELL`].
+pub(crate) fn parse_cell(s: &str) -> Result<u32, String> {
+    whole_in(s, 1, u64::from(crate::contact::sampling::MAX_CELL)).map(|n| n as u32)
+}
+
+/// `--contact-grid N`: a power of two from 8 (the memory is checked when
+/// the grid is built).
+pub(crate) fn parse_contact_grid(s: &str) -> Result<usize, String> {
+    match s.trim().parse::<usize>() {
+        Ok(n) if n >= 8 && n.is_power_of_two() => Ok(n),
+        _ => Err("must be a power of two, 8 or more (nodes a side: 256, 512, 1024, …)".into()),
+    }
+}
+
+/// `--per-wavelength K`: nodes per shortest wavelength, 2 … 64.
+pub(crate) fn parse_per_wavelength(s: &str) -> Result<u32, String> {
+    whole_in(s, 2, 64).map(|n| n as u32)
+}
+
 /// `--grid COLSxROWS`, each side a whole number (checked against the map's
 /// limits when the map is built).
 pub(crate) fn parse_grid(s: &str) -> Result<(usize, usize), String> {

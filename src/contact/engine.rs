@@ -18,7 +18,7 @@ use std::time::{Duration, Instant};
 
 use rough_contact::{ContactError, LoadResult, Options};
 
-use super::scene::{classify, Node, SceneKey};
+use super::scene::{classify, classify_capped, Node, SceneKey};
 
 /// What wakes an explorer: called from the worker thread.
 pub type Waker = Arc<dyn Fn() + Send + Sync>;
@@ -423,16 +423,22 @@ impl Engine {
             }
             true
         };
-        let r = contact.solve_with_progress(
-            task.p_over_h() * hardness,
-            hardness,
-            &Options::default(),
-            &mut progress,
-        );
+        let p_mean = task.p_over_h() * hardness;
+        let opts = Options::default();
+        let r = match task.scene.local() {
+            Some(law) => super::local::solve(contact, p_mean, &law, &opts, &mut progress)
+                .map(|(r, caps, _)| (r, Some(caps))),
+            None => contact
+                .solve_with_progress(p_mean, hardness, &opts, &mut progress)
+                .map(|r| (r, None)),
+        };
         match r {
-            Ok(result) => Ok(Arc::new(Solved {
+            Ok((result, caps)) => Ok(Arc::new(Solved {
                 result,
-                map: classify(contact.pressure(), hardness),
+                map: match caps {
+                    Some(caps) => classify_capped(contact.pressure(), &caps),
+                    None => classify(contact.pressure(), hardness),
+                },
                 took: start.elapsed(),
             })),
             Err(ContactError::Cancelled) => Err("cancelled".into()),

@@ -28,7 +28,11 @@ use rough_contact::{resample, Boundary, Contact};
 use rough_surface::Heights;
 
 use super::engine::Waker;
-use super::{MAX_GRID, MIN_GRID};
+use super::MIN_GRID;
+
+/// Largest grid side a measured map is solved on (a free boundary's padded
+/// grid is four times as large).
+pub const MAX_GRID: usize = 1024;
 use crate::scene::State;
 
 /// SHA-256 of the file and a hash of the reading options.

@@ -5,7 +5,10 @@
 
 use rough_contact::{moments, synthesise, Boundary, Contact, PowerLaw};
 
-use super::{grid_for, measured, MAX_GRID};
+use anyhow::bail;
+
+use super::measured;
+use super::sampling::{Hardness, Sampling};
 use crate::scene::State;
 
 /// The surface and cap of one simulation; every field is an input of
@@ -23,6 +26,11 @@ pub struct SceneKey {
     hardness: u64,
     /// Grid side.
     pub n: usize,
+    /// The cell side in longest wavelengths (1 for a measured map).
+    pub cell: u32,
+    /// A hardness per asperity: H0/E* and R* (m) of the size-effect law, as
+    /// f64 bits; `None`: the cap [`SceneKey::hardness`] everywhere.
+    pub local: Option<(u64, u64)>,
     pub seed: u64,
     /// A measured map: its file's SHA-256 and how it was read
     /// ([`super::measured`]); `None`: the power law.
@@ -30,31 +38,39 @@ pub struct SceneKey {
 }
 
 /// Why a scene cannot be simulated, in the explorer's words.
-pub fn unsolvable(state: &State) -> Option<String> {
+pub fn unsolvable(state: &State, sampling: &Sampling) -> Option<String> {
     if state.is_measured() {
         return SceneKey::of(state, 0).err().map(|e| format!("{e:#}"));
     }
-    let zeta = state.params.zeta();
-    grid_for(zeta).err().map(|_| {
-        format!(
-            "ζ = {} needs a grid of {} nodes a side (8 per shortest wavelength); the \
-             simulation solves up to {MAX_GRID} (ζ ≤ {}): lower ζ to compare",
-            crate::physical::print::fmt_num(zeta),
-            (8.0 * zeta).ceil(),
-            MAX_GRID / 8
-        )
-    })
+    sampling
+        .side(state.params.zeta())
+        .err()
+        .map(|e| format!("{e:#}: lower ζ to compare"))
 }
 
 impl SceneKey {
-    /// The power-law scene of `state` with phases from `seed`.
-    /// A measured map's key is its file's and reading's (the seed plays no
-    /// part: it is stored as 0).
+    /// The power-law scene of `state` with phases from `seed`, sampled as
+    /// by default. A measured map's key is its file's and reading's (the
+    /// seed plays no part: it is stored as 0).
     pub fn of(state: &State, seed: u64) -> anyhow::Result<SceneKey> {
+        SceneKey::with(state, seed, &Sampling::default())
+    }
+
+    /// [`SceneKey::of`] with the cell and grid of `sampling` (a measured
+    /// map's are its own).
+    pub fn with(state: &State, seed: u64, sampling: &Sampling) -> anyhow::Result<SceneKey> {
         let p = &state.params;
         let surface = state.roughness().surface(p, state.moments);
         let ix = surface.indices;
         let hardness = p.h0_over_e() * ix.hardness_in_use(state.size_effect);
+        let local = match sampling.hardness {
+            Hardness::Global => None,
+            Hardness::Asperity if !state.size_effect => bail!(
+                "a hardness per asperity is the size effect's: switch it on (--size-effect on, \
+                 e in the explorer)"
+            ),
+            Hardness::Asperity => Some((p.h0_over_e().to_bits(), p.r_star().to_bits())),
+        };
         if let Some((id, h)) = measured::heights_of(state)? {
             let plan = measured::plan(&h, p.zeta() * p.q0())?;
             return Ok(SceneKey {
@@ -65,6 +81,8 @@ impl SceneKey {
                 rms_slope: surface.spectrum.rms_slope.to_bits(),
                 hardness: hardness.to_bits(),
                 n: plan.n,
+                cell: 1,
+                local,
                 seed: 0,
                 surface: Some(id),
             });
@@ -76,7 +94,9 @@ impl SceneKey {
             zeta: p.zeta().to_bits(),
             rms_slope: surface.spectrum.rms_slope.to_bits(),
             hardness: hardness.to_bits(),
-            n: grid_for(p.zeta())?,
+            n: sampling.side(p.zeta())?,
+            cell: sampling.cell,
+            local,
             seed,
             surface: None,
         })
@@ -87,6 +107,14 @@ impl SceneKey {
         f64::from_bits(self.hardness)
     }
 
+    /// The size-effect law of a hardness per asperity, if the key has one.
+    pub fn local(&self) -> Option<super::local::Law> {
+        self.local.map(|(h0, r)| super::local::Law {
+            h0: f64::from_bits(h0),
+            r_star: f64::from_bits(r),
+        })
+    }
+
     pub fn zeta(&self) -> f64 {
         f64::from_bits(self.zeta)
     }
@@ -95,30 +123,52 @@ impl SceneKey {
         f64::from_bits(self.rms_slope)
     }
 
-    /// The surface synthesised and rescaled, ready to be loaded (pressures
-    /// in units of E*).
-    pub fn build(&self) -> anyhow::Result<Contact> {
+    /// The cell's side: K longest wavelengths.
+    pub fn length(&self) -> f64 {
+        self.cell as f64 * std::f64::consts::TAU / f64::from_bits(self.q0)
+    }
+
+    /// The surface's heights, synthesised and rescaled to the scene's rms
+    /// slope (a power-law scene only).
+    pub fn heights(&self) -> anyhow::Result<Vec<f64>> {
         let f = f64::from_bits;
         let (n, q0) = (self.n, f(self.q0));
-        if let Some(id) = &self.surface {
-            return measured::build(id, f(self.zeta) * q0);
-        }
-        let length = 2.0 * std::f64::consts::PI / q0;
+        let length = self.length();
         let law = PowerLaw {
             z: f(self.z),
             hurst: f(self.hurst),
             q0,
             q1: f(self.zeta) * q0,
+            rolloff: self.cell > 1,
         };
         let mut h = synthesise(n, length, &law, self.seed)?;
         let got = moments(&h, n, length)?.rms_slope;
-        let k = if got > 0.0 {
-            self.rms_slope() / got
-        } else {
-            0.0
-        };
+        if got.is_nan() || got <= 0.0 {
+            anyhow::bail!(
+                "the synthesised surface is flat on a {n} × {n} grid: no wavelength of the \
+                 spectrum lies on it"
+            );
+        }
+        let k = self.rms_slope() / got;
         h.iter_mut().for_each(|v| *v *= k);
-        Ok(Contact::new(h, n, length, 1.0, Boundary::Periodic)?)
+        Ok(h)
+    }
+
+    /// The surface synthesised and rescaled, ready to be loaded (pressures
+    /// in units of E*).
+    pub fn build(&self) -> anyhow::Result<Contact> {
+        let f = f64::from_bits;
+        if let Some(id) = &self.surface {
+            return measured::build(id, f(self.zeta) * f(self.q0));
+        }
+        let h = self.heights()?;
+        Ok(Contact::new(
+            h,
+            self.n,
+            self.length(),
+            1.0,
+            Boundary::Periodic,
+        )?)
     }
 }
 
@@ -139,6 +189,23 @@ pub fn classify(pressure: &[f64], hardness: f64) -> Vec<Node> {
             if p <= 0.0 {
                 Node::Out
             } else if p >= hardness {
+                Node::Plastic
+            } else {
+                Node::Elastic
+            }
+        })
+        .collect()
+}
+
+/// The contact map of a pressure field under a cap per node.
+pub fn classify_capped(pressure: &[f64], caps: &[f64]) -> Vec<Node> {
+    pressure
+        .iter()
+        .zip(caps)
+        .map(|(&p, &c)| {
+            if p <= 0.0 {
+                Node::Out
+            } else if p >= c {
                 Node::Plastic
             } else {
                 Node::Elastic

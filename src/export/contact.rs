@@ -11,13 +11,60 @@ use rough_model::{areas, Axis};
 use crate::cli::{ExportArgs, FormatArg};
 use crate::contact::scene::{classify, SceneKey};
 use crate::contact::{
-    self, load_rows, sweep_rows, Simulation, DEFAULT_LOADS, DEFAULT_SEED, MAX_LOADS, SWEEP_LOAD,
+    self, load_rows, sweep_rows, Grid, Sampling, Seeds, Simulation, Spec, DEFAULT_LOADS,
+    DEFAULT_SEED, MAX_LOADS, SWEEP_LOAD,
 };
 pub use crate::contact::{CONTACT_HEADER, SWEEP_HEADER};
 use crate::figure::scene_text::full_lines_of;
 use crate::figure::{self, ContactLoads, ContactMap, ContactSweep};
 use crate::physical::csv_number;
 use crate::scene::State;
+
+/// The options of the contact views only.
+pub fn contact_options(args: &ExportArgs) -> [(bool, &'static str); 5] {
+    [
+        (args.seeds.is_some(), "--seeds"),
+        (args.hardness.is_some(), "--hardness"),
+        (args.cell.is_some(), "--cell"),
+        (args.contact_grid.is_some(), "--contact-grid"),
+        (args.per_wavelength.is_some(), "--per-wavelength"),
+    ]
+}
+
+/// What `args` ask to simulate of `state`: the sampling and the seeds
+/// (the snapshot's seed first when --seed is not given).
+pub fn spec_of(args: &ExportArgs, state: &State) -> anyhow::Result<Spec> {
+    if state.is_measured() {
+        for (given, opt) in contact_options(args).into_iter().skip(2) {
+            if given {
+                bail!(
+                    "{opt} does not apply to a measured map: it is solved on its own heights, \
+                     its square and grid set by the data and ζ"
+                );
+            }
+        }
+    }
+    let mut sampling = Sampling::default();
+    if let Some(k) = args.cell {
+        sampling.cell = k;
+    }
+    if let Some(n) = args.contact_grid {
+        sampling.grid = Grid::Side(n);
+    }
+    if let Some(k) = args.per_wavelength {
+        sampling.grid = Grid::PerWavelength(k);
+    }
+    if args.hardness == Some(crate::cli::HardnessArg::Asperity) {
+        sampling.hardness = contact::Hardness::Asperity;
+    }
+    Ok(Spec {
+        sampling,
+        seeds: Seeds {
+            first: args.seed.or(state.seed).unwrap_or(DEFAULT_SEED),
+            count: args.seeds.unwrap_or(1),
+        },
+    })
+}
 
 /// `roughtui export --view contact|contact-sweep`.
 pub fn export(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
@@ -49,20 +96,20 @@ pub fn export(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
         bail!("--points {points} is too many for --view contact: at most {MAX_LOADS} loads (each is a solution)");
     }
     let state = super::state_of(args)?;
-    let seed = args.seed.or(state.seed).unwrap_or(DEFAULT_SEED);
+    let spec = spec_of(args, &state)?;
     match (args.format, sweep) {
         (FormatArg::Csv, false) => {
             let span = figure::contact_span(&state, &contact::loads(points));
             let scene = full_lines_of(&state, "contact", span);
-            contact::write_contact(out, &state, points, seed, &scene)
+            contact::write_contact(out, &state, points, &spec, &scene)
         }
         (FormatArg::Csv, true) => {
             let span = figure::sweep_span(&state, SWEEP_LOAD);
             let scene = full_lines_of(&state, "contact-sweep", span);
-            contact::write_contact_sweep(out, &state, seed, &scene)
+            contact::write_contact_sweep(out, &state, &spec, &scene)
         }
-        (FormatArg::Svg, false) => write_svg(out, &contact_svg(&state, points, seed)?),
-        (FormatArg::Svg, true) => write_svg(out, &sweep_svg(&state, seed)?),
+        (FormatArg::Svg, false) => write_svg(out, &contact_svg(&state, points, &spec)?),
+        (FormatArg::Svg, true) => write_svg(out, &sweep_svg(&state, &spec)?),
     }
 }
 
@@ -72,12 +119,17 @@ fn write_svg(out: &mut impl Write, svg: &str) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// The solved surface in words, for the pictures: "128×128 nodes, seed 1".
-fn surface_words(sim: &Simulation) -> String {
+/// The solved surface in words, for the pictures: "128×128 nodes, a cell
+/// of 2 longest wavelengths, seeds 1…4".
+fn surface_words(sim: &Simulation, spec: &Spec) -> String {
     let n = sim.contact.n();
     match &sim.measured {
         Some(_) => format!("{n}×{n} nodes of the measured map"),
-        None => format!("{n}×{n} nodes, seed {}", sim.seed),
+        None => format!(
+            "{n}×{n} nodes, a cell of {}, {}",
+            spec.sampling.cell_words(),
+            spec.seeds.words()
+        ),
     }
 }
 
@@ -90,19 +142,26 @@ fn log_points(from: f64, to: f64, n: usize) -> Vec<f64> {
 
 /// The contact view as a picture: the simulated areas at the loads, the
 /// theory's at 120 loads between the same ends.
-fn contact_svg(state: &State, points: usize, seed: u64) -> anyhow::Result<String> {
-    let (sim, rows) = load_rows(state, points, seed)?;
-    let surface = surface_words(&sim);
+fn contact_svg(state: &State, points: usize, spec: &Spec) -> anyhow::Result<String> {
+    let (sim, rows, _) = load_rows(state, points, spec)?;
+    let surface = surface_words(&sim, spec);
     let p_over_h: Vec<f64> = rows.iter().map(|r| r.p_over_h).collect();
     let (from, to) = (p_over_h[0], p_over_h[p_over_h.len() - 1]);
     let mut d = ContactLoads {
         surface,
         psi: sim.psi.to_f64(),
         area: [
-            rows.iter().map(|r| r.sim.area).collect(),
-            rows.iter().map(|r| r.sim.elastic_area).collect(),
-            rows.iter().map(|r| r.sim.plastic_area).collect(),
+            rows.iter().map(|r| r.area.mean).collect(),
+            rows.iter().map(|r| r.elastic.mean).collect(),
+            rows.iter().map(|r| r.plastic.mean).collect(),
         ],
+        sd: (spec.seeds.count > 1).then(|| {
+            [
+                rows.iter().map(|r| r.area.sd).collect(),
+                rows.iter().map(|r| r.elastic.sd).collect(),
+                rows.iter().map(|r| r.plastic.sd).collect(),
+            ]
+        }),
         p_over_h,
         ..ContactLoads::default()
     };
@@ -119,9 +178,9 @@ fn contact_svg(state: &State, points: usize, seed: u64) -> anyhow::Result<String
 
 /// The ζ sweep as a picture: the simulated shares at each solved ζ, the
 /// theory's at 100 ζ between the same ends.
-fn sweep_svg(state: &State, seed: u64) -> anyhow::Result<String> {
-    let (sim, rows) = sweep_rows(state, seed)?;
-    let surface = surface_words(&sim);
+fn sweep_svg(state: &State, spec: &Spec) -> anyhow::Result<String> {
+    let (sim, rows, _) = sweep_rows(state, spec)?;
+    let surface = surface_words(&sim, spec);
     let surface = match &sim.measured {
         Some(_) => "the measured map".to_string(),
         None => surface
@@ -133,7 +192,8 @@ fn sweep_svg(state: &State, seed: u64) -> anyhow::Result<String> {
     let mut d = ContactSweep {
         surface,
         load: SWEEP_LOAD,
-        share: rows.iter().map(|r| r.share()).collect(),
+        share: rows.iter().map(|r| r.share().mean).collect(),
+        sd: (spec.seeds.count > 1).then(|| rows.iter().map(|r| r.share().sd).collect()),
         zeta,
         ..ContactSweep::default()
     };
@@ -162,12 +222,11 @@ fn sweep_svg(state: &State, seed: u64) -> anyhow::Result<String> {
 /// `p` on the contact view draws it too.
 pub fn map_picture(
     state: &State,
-    (nodes, n): (&[u8], usize),
+    (nodes, n, side): (&[u8], usize, f64),
     load: f64,
     (area, plastic): (f64, f64),
     seed: Option<u64>,
 ) -> anyhow::Result<String> {
-    let side = contact::solved_side(state)?;
     let m = ContactMap {
         seed,
         nodes,
@@ -210,9 +269,13 @@ fn export_map(args: &ExportArgs, out: &mut impl std::io::Write) -> anyhow::Resul
             );
         }
     }
+    if args.seeds.is_some() {
+        bail!("--seeds does not apply to --view contact-map: it draws one realisation's map (--seed picks it)");
+    }
     let state = super::state_of(args)?;
-    let seed = args.seed.or(state.seed).unwrap_or(DEFAULT_SEED);
-    let key = SceneKey::of(&state, seed)?;
+    let spec = spec_of(args, &state)?;
+    let seed = spec.seeds.first;
+    let key = SceneKey::with(&state, seed, &spec.sampling)?;
     let mut c = key.build()?;
     let h = key.hardness();
     let r = c.solve(SWEEP_LOAD * h, h, &rough_contact::Options::default())?;
@@ -221,15 +284,14 @@ fn export_map(args: &ExportArgs, out: &mut impl std::io::Write) -> anyhow::Resul
         .map(|v| v as u8)
         .collect();
     let n = key.n;
+    let side = contact::solved_side(&state, &key)?;
     let seed = key.surface.is_none().then_some(seed);
     let areas = (r.area, r.plastic_area);
     match args.format {
-        FormatArg::Svg => {
-            out.write_all(map_picture(&state, (&map, n), SWEEP_LOAD, areas, seed)?.as_bytes())?
-        }
+        FormatArg::Svg => out
+            .write_all(map_picture(&state, (&map, n, side), SWEEP_LOAD, areas, seed)?.as_bytes())?,
         FormatArg::Csv => {
             let hy = state.hardness_name();
-            let side = contact::solved_side(&state)?;
             let mut s = String::new();
             let span = map_span(&state, n, side, SWEEP_LOAD, seed);
             for l in full_lines_of(&state, "contact-map", span) {

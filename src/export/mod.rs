@@ -143,12 +143,27 @@ pub fn options_of(args: &ExportArgs) -> anyhow::Result<(View, FigureOptions)> {
 pub fn run(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
     if args.view == ViewArg::Moments {
         moments::check(args)?;
+        for (given, opt) in contact::contact_options(args) {
+            if given {
+                bail!("{opt} applies only to the contact views, not to --view moments");
+            }
+        }
         let state = state_of(args)?;
         let points = args.points.unwrap_or(DEFAULT_POINTS);
         return moments::run(args.format, &state, points, out);
     }
     if args.view.figure().is_none() {
         return contact::export(args, out);
+    }
+    for (given, opt) in contact::contact_options(args) {
+        if given {
+            bail!(
+                "{opt} applies only to the contact views (--view contact, contact-sweep, \
+                 contact-map), not to --view {}",
+                clap::ValueEnum::to_possible_value(&args.view)
+                    .map_or_else(String::new, |v| v.get_name().to_string())
+            );
+        }
     }
     let (view, opts) = options_of(args)?;
     let state = state_of(args)?;

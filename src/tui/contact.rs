@@ -12,7 +12,7 @@ use rough_model::{areas, psi_in_use, slopes, Axis, Model};
 use crate::contact::engine::{Engine, Outcome, Progress, Task, Ticket, Waker};
 use crate::contact::measured::{self, Fetch};
 use crate::contact::scene::{unsolvable, SceneKey};
-use crate::contact::{grid_for, DEFAULT_SEED, MAX_GRID};
+use crate::contact::{Sampling, DEFAULT_SEED, MAX_GRID};
 use crate::scene::State;
 
 /// Loads of the contact view, p̄/H_use: 1e-3 to 1, four per decade.
@@ -31,11 +31,11 @@ pub fn load_value(k: usize) -> f64 {
     }
 }
 
-/// ζ of the `b` plot: 1, 2, 4, … up to what the grid resolves.
-pub fn sweep_zetas() -> Vec<f64> {
-    (0..)
+/// ζ of the `b` plot: 1, 2, 4, … up to what the grid resolves (and 128).
+pub fn sweep_zetas(sampling: &Sampling) -> Vec<f64> {
+    (0..=7)
         .map(|k| 2f64.powi(k))
-        .take_while(|z| grid_for(*z).is_ok())
+        .take_while(|z| sampling.side(*z).is_ok())
         .collect()
 }
 
@@ -73,6 +73,8 @@ pub struct ContactPane {
     pub sweep: bool,
     /// The scene's seed (the snapshot's, 1 by default).
     pub seed: u64,
+    /// The cell and grid of the simulation.
+    pub sampling: Sampling,
     /// The ζ of the `b` plot: [`sweep_zetas`], a measured map's those it
     /// resolves.
     pub zetas: Vec<f64>,
@@ -99,6 +101,12 @@ impl Default for ContactPane {
             load: DEFAULT_LOAD,
             sweep: false,
             seed: DEFAULT_SEED,
+            // One longest wavelength: the explorer's first answer must come
+            // quickly (export's default is two).
+            sampling: Sampling {
+                cell: 1,
+                ..Sampling::default()
+            },
             zetas: vec![],
             why_not: None,
             tasks: vec![],
@@ -221,7 +229,7 @@ impl ContactPane {
     }
 
     fn request_for(&mut self, state: &State) -> Option<Request> {
-        self.why_not = unsolvable(state);
+        self.why_not = unsolvable(state, &self.sampling);
         let theory = (
             state.model,
             state.moments,
@@ -236,10 +244,13 @@ impl ContactPane {
             // has no heights on a grid: then the reason).
             let mut keys = vec![];
             let zeta_max = state.roughness().zeta_max() * (1.0 + 1e-12);
-            for z in sweep_zetas().into_iter().filter(|z| *z <= zeta_max) {
+            for z in sweep_zetas(&self.sampling)
+                .into_iter()
+                .filter(|z| *z <= zeta_max)
+            {
                 let mut s = state.clone();
                 s.params = s.params.with(Axis::Zeta, z).ok()?;
-                match SceneKey::of(&s, self.seed) {
+                match SceneKey::with(&s, self.seed, &self.sampling) {
                     Ok(_) => keys.push(z),
                     Err(e) => self.why_not = Some(format!("{e:#}")),
                 }
@@ -253,12 +264,12 @@ impl ContactPane {
                     let mut s = state.clone();
                     s.size_effect = se;
                     s.params = s.params.with(Axis::Zeta, z).ok()?;
-                    let key = SceneKey::of(&s, self.seed).ok()?;
+                    let key = SceneKey::with(&s, self.seed, &self.sampling).ok()?;
                     tasks.push(Task::new(key, load_value(self.load)));
                 }
             }
         } else if self.why_not.is_none() {
-            match SceneKey::of(state, self.seed) {
+            match SceneKey::with(state, self.seed, &self.sampling) {
                 Ok(key) => tasks = (0..LOADS).map(|k| Task::new(key, load_value(k))).collect(),
                 Err(e) => self.why_not = Some(format!("{e:#}")),
             }
@@ -368,6 +379,10 @@ pub fn picture(app: &super::app::App) -> anyhow::Result<String> {
         None => anyhow::bail!("the contact map is not solved yet: p again when it is"),
     };
     let n = pane.tasks.first().map_or(0, |t| t.scene.n);
+    let side = match pane.tasks.first() {
+        Some(t) => crate::contact::solved_side(&app.state, &t.scene)?,
+        None => anyhow::bail!("the contact map is not solved yet: p again when it is"),
+    };
     let measured = pane
         .tasks
         .first()
@@ -376,7 +391,7 @@ pub fn picture(app: &super::app::App) -> anyhow::Result<String> {
     let nodes: Vec<u8> = solved.map.iter().map(|v| *v as u8).collect();
     crate::export::contact_map_picture(
         &app.state,
-        (&nodes, n),
+        (&nodes, n, side),
         load_value(pane.load),
         (r.area, r.plastic_area),
         (!measured).then_some(pane.seed),

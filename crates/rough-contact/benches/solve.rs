@@ -13,6 +13,7 @@ fn surface(n: usize) -> Vec<f64> {
         hurst: 0.8,
         q0: 2.0 * PI,
         q1: 16.0 * 2.0 * PI,
+        rolloff: false,
     };
     let h = synthesise(n, 1.0, &law, 1).unwrap();
     let s = moments(&h, n, 1.0).unwrap().rms_slope;

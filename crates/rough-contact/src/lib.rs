@@ -16,13 +16,25 @@
 //! Memory: about ten N² arrays of f64 (periodic), forty for the free
 //! boundary's padded grid.
 
+pub mod asperity;
+mod cap;
 mod fft;
+mod load;
+mod multigrid;
+mod par;
 mod solver;
 mod surface;
 
 use std::fmt;
 
+pub use multigrid::{prolong, restrict};
 pub use surface::{low_pass, moments, resample, synthesise, Moments, PowerLaw};
+
+/// Threads a solve's passes run on (rayon's pool: the machine's cores, or
+/// `RAYON_NUM_THREADS`).
+pub fn threads() -> usize {
+    rayon::current_num_threads()
+}
 
 /// How the grid meets what lies beyond it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -181,6 +193,27 @@ impl Contact {
         self.bccg.h_rms
     }
 
+    /// The rigid surface's heights, n × n row-major.
+    pub fn heights(&self) -> &[f64] {
+        &self.bccg.h
+    }
+
+    /// The next solve starts from `p` (n × n, any non-negative field),
+    /// rescaled to its load, instead of the last solution.
+    pub fn start_from(&mut self, p: &[f64]) -> Result<(), ContactError> {
+        if p.len() != self.pressure.len() {
+            return Err(ContactError::Input(format!(
+                "a start of {} values for a {n} × {n} grid",
+                p.len(),
+                n = self.n
+            )));
+        }
+        let mean = p.iter().sum::<f64>() / p.len() as f64;
+        self.pressure.copy_from_slice(p);
+        self.last_load = (mean.is_finite() && mean > 0.0).then_some(mean);
+        Ok(())
+    }
+
     /// Pressure of the last solution, n × n row-major.
     pub fn pressure(&self) -> &[f64] {
         &self.pressure
@@ -219,14 +252,56 @@ impl Contact {
         opts: &Options,
         progress: &mut dyn FnMut(usize, f64) -> bool,
     ) -> Result<LoadResult, ContactError> {
-        if !(p_mean.is_finite() && p_mean > 0.0) {
-            return Err(ContactError::Input(format!(
-                "mean pressure {p_mean}: must be finite and positive"
-            )));
-        }
         if hardness.is_nan() || hardness <= 0.0 {
             return Err(ContactError::Input(format!(
                 "hardness {hardness}: must be positive (∞ for elastic)"
+            )));
+        }
+        self.check(p_mean, hardness, opts)?;
+        self.run(
+            p_mean.min(hardness),
+            &cap::Uniform(hardness),
+            opts,
+            progress,
+        )
+    }
+
+    /// [`Contact::solve_with_progress`] with a hardness for each node
+    /// (`caps`, n × n row-major, each positive, ∞ for elastic): the size
+    /// effect node by node. The result's `hardness` is the caps' mean.
+    pub fn solve_capped(
+        &mut self,
+        p_mean: f64,
+        caps: &[f64],
+        opts: &Options,
+        progress: &mut dyn FnMut(usize, f64) -> bool,
+    ) -> Result<LoadResult, ContactError> {
+        if caps.len() != self.pressure.len() {
+            return Err(ContactError::Input(format!(
+                "{} hardnesses for a {n} × {n} grid",
+                caps.len(),
+                n = self.n
+            )));
+        }
+        if let Some(i) = caps.iter().position(|c| c.is_nan() || *c <= 0.0) {
+            return Err(ContactError::Input(format!(
+                "hardness {} at row {}, column {}: must be positive (∞ for elastic)",
+                caps[i],
+                i / self.n,
+                i % self.n
+            )));
+        }
+        let mean = caps.iter().sum::<f64>() / caps.len() as f64;
+        let max = caps.iter().cloned().fold(0.0, f64::max);
+        self.check(p_mean, mean, opts)?;
+        let cap = cap::PerNode { caps, max, mean };
+        self.run(p_mean.min(mean), &cap, opts, progress)
+    }
+
+    fn check(&self, p_mean: f64, hardness: f64, opts: &Options) -> Result<(), ContactError> {
+        if !(p_mean.is_finite() && p_mean > 0.0) {
+            return Err(ContactError::Input(format!(
+                "mean pressure {p_mean}: must be finite and positive"
             )));
         }
         if p_mean > hardness * (1.0 + 1e-12) {
@@ -240,21 +315,31 @@ impl Contact {
                 opts.tolerance
             )));
         }
+        Ok(())
+    }
+
+    fn run<C: cap::Cap>(
+        &mut self,
+        p_mean: f64,
+        cap: &C,
+        opts: &Options,
+        progress: &mut dyn FnMut(usize, f64) -> bool,
+    ) -> Result<LoadResult, ContactError> {
         if let Some(prev) = self.last_load {
             let k = p_mean / prev;
             self.pressure.iter_mut().for_each(|v| *v *= k);
         }
         self.last_load = None;
         let r = self.bccg.solve(
-            p_mean.min(hardness),
-            hardness,
+            p_mean,
+            cap,
             opts,
             &mut self.pressure,
             &mut self.gap,
             progress,
         );
         match &r {
-            Ok(_) => self.last_load = Some(p_mean.min(hardness)),
+            Ok(_) => self.last_load = Some(p_mean),
             Err(_) => self.pressure.iter_mut().for_each(|v| *v = 0.0),
         }
         r

@@ -12,7 +12,9 @@ use rustfft::num_complex::Complex64;
 use crate::fft::{signed, Fft2};
 use crate::ContactError;
 
-/// An isotropic power law C(q) = z q^(−2(1+hurst)) on q0 ≤ |q| ≤ q1.
+/// An isotropic power law C(q) = z q^(−2(1+hurst)) on q0 ≤ |q| ≤ q1, zero
+/// beyond q1 and below q0 — or, with `rolloff`, flat at C(q0) below q0 (a
+/// cell of several longest wavelengths: the roll-off of measured spectra).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PowerLaw {
     /// Amplitude Z, m^(2H)·m² … (the model's `Z`).
@@ -23,14 +25,22 @@ pub struct PowerLaw {
     pub q0: f64,
     /// Upper cutoff ζ q0, 1/m.
     pub q1: f64,
+    /// C(q) = C(q0) for 0 < q < q0 instead of 0.
+    pub rolloff: bool,
 }
 
 impl PowerLaw {
     fn psd(&self, q: f64) -> f64 {
         // A relative margin keeps the wavevectors exactly on a cutoff in.
         let eps = 1e-9;
-        if q < self.q0 * (1.0 - eps) || q > self.q1 * (1.0 + eps) {
+        if q > self.q1 * (1.0 + eps) || q == 0.0 {
             0.0
+        } else if q < self.q0 * (1.0 - eps) {
+            if self.rolloff {
+                self.z * self.q0.powf(-2.0 * (1.0 + self.hurst))
+            } else {
+                0.0
+            }
         } else {
             self.z * q.powf(-2.0 * (1.0 + self.hurst))
         }

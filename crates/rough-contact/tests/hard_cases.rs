@@ -14,6 +14,7 @@ fn surface(seed: u64) -> Vec<f64> {
         hurst: 0.8,
         q0: 2.0 * std::f64::consts::PI,
         q1: 16.0 * 2.0 * std::f64::consts::PI,
+        rolloff: false,
     };
     let h = synthesise(N, 1.0, &law, seed).unwrap();
     let m = moments(&h, N, 1.0).unwrap();
@@ -144,6 +145,7 @@ fn synthesis_has_the_spectrum_it_was_asked_for() {
         hurst: 0.7,
         q0: 2.0 * std::f64::consts::PI,
         q1: 8.0 * 2.0 * std::f64::consts::PI,
+        rolloff: false,
     };
     // Expected ⟨|∇h|²⟩: the sum of C(q) q² dq² over the band's modes.
     let dq = 2.0 * std::f64::consts::PI;
@@ -176,6 +178,40 @@ fn synthesis_has_the_spectrum_it_was_asked_for() {
     }
     let ratio = acc / seeds as f64 / expected;
     assert!((ratio - 1.0).abs() < 0.05, "⟨|∇h|²⟩ ratio {ratio}");
+}
+
+/// A cell of four longest wavelengths with the roll-off: below q0 the
+/// spectrum is flat at C(q0), so ⟨h²⟩ gains C(q0) dq² per mode there.
+#[test]
+fn rolloff_is_flat_below_q0() {
+    let k = 4.0;
+    let law = PowerLaw {
+        z: 1e-3,
+        hurst: 0.8,
+        q0: k * 2.0 * std::f64::consts::PI,
+        q1: 4.0 * k * 2.0 * std::f64::consts::PI,
+        rolloff: true,
+    };
+    let dq = 2.0 * std::f64::consts::PI;
+    let c0 = law.z * law.q0.powf(-2.0 * (1.0 + law.hurst));
+    let mut expected = 0.0;
+    for i in -64i32..64 {
+        for j in -64i32..64 {
+            let q = dq * ((i * i + j * j) as f64).sqrt();
+            if q > 0.0 && q < law.q0 * (1.0 - 1e-9) {
+                expected += c0 * dq * dq;
+            }
+        }
+    }
+    let seeds = 64;
+    let mut acc = 0.0;
+    for seed in 0..seeds {
+        let h = synthesise(N, 1.0, &law, seed).unwrap();
+        let below = low_pass(&h, N, 1.0, 0.99 * law.q0).unwrap();
+        acc += below.iter().map(|v| v * v).sum::<f64>() / (N * N) as f64;
+    }
+    let ratio = acc / seeds as f64 / expected;
+    assert!((ratio - 1.0).abs() < 0.1, "⟨h²⟩ below q0 ratio {ratio}");
 }
 
 #[test]

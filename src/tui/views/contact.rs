@@ -14,13 +14,16 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Dataset, GraphType, Paragraph, Widget, Wrap};
 
 use super::chart::{self, Scale};
-use crate::contact::scene::Node;
 use crate::physical::print::{fmt_num, load_text};
 use crate::tui::app::App;
 use crate::tui::contact::{load_value, ContactPane, LOADS};
 use crate::tui::glyphs::Glyphs;
 use crate::tui::layout::Y_LABEL_W;
 use crate::tui::theme::{CurveStyle, Theme};
+
+mod map;
+pub use map::{dithered, map_scale};
+use map::{draw_map, map_legend};
 
 /// The map's colours: elastic light grey, at the hardness blue (the
 /// paper's plastic colour); out of contact the terminal's background.
@@ -251,7 +254,15 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
         body.width.saturating_sub(side + 1),
         body.height,
     );
-    map_legend(t, h, Rect::new(body.x, body.y, side, 1), buf);
+    let half = t.color && !t.glyphs.ascii_only();
+    let scale = map_scale(n.unwrap_or(0), usize::from(side));
+    // Without half blocks a character is one point across and two up.
+    let scale = if half {
+        scale
+    } else {
+        format!("{scale} across")
+    };
+    map_legend(t, h, &scale, Rect::new(body.x, body.y, side, 1), buf);
     if let Some(why) = &pane.why_not {
         let text = gl.text(why).into_owned();
         Paragraph::new(text)
@@ -263,113 +274,6 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
         draw_map(t, &s.map, nn, map, buf);
     }
     load_chart(app, chart, buf);
-}
-
-/// The map's legend in `area` (one row).
-fn map_legend(t: &Theme, h: &str, area: Rect, buf: &mut Buffer) {
-    let (e, p) = node_look(t, Node::Elastic, Node::Plastic);
-    let spans = vec![
-        Span::styled(e.0, e.1),
-        Span::raw(" elastic "),
-        Span::styled(p.0, p.1),
-        Span::raw(format!(" at {h}")),
-    ];
-    Line::from(spans).render(area, buf);
-}
-
-/// A one-point swatch of each of two node kinds (legend).
-fn node_look(t: &Theme, a: Node, b: Node) -> ((&'static str, Style), (&'static str, Style)) {
-    let one = |k: Node| -> (&'static str, Style) {
-        if t.color {
-            let c = if k == Node::Plastic { PLASTIC } else { ELASTIC };
-            if t.glyphs.ascii_only() {
-                (" ", Style::new().bg(c))
-            } else {
-                ("█", Style::new().fg(c))
-            }
-        } else {
-            (plain_char(t, k), Style::new())
-        }
-    };
-    (one(a), one(b))
-}
-
-/// A node's character without colour.
-fn plain_char(t: &Theme, k: Node) -> &'static str {
-    match (k, t.glyphs.ascii_only()) {
-        (Node::Out, _) => " ",
-        (Node::Elastic, true) => "o",
-        (Node::Plastic, true) => "#",
-        (Node::Elastic, false) => "░",
-        (Node::Plastic, false) => "█",
-    }
-}
-
-/// The most loaded node of the block of `map` (n × n) under point
-/// (`px`, `py`) of a `side` × `side` picture.
-fn block(map: &[Node], n: usize, side: usize, px: usize, py: usize) -> Node {
-    let span = |i: usize| {
-        (
-            i * n / side,
-            ((i + 1) * n / side).max(i * n / side + 1).min(n),
-        )
-    };
-    let (x0, x1) = span(px);
-    let (y0, y1) = span(py);
-    let mut best = Node::Out;
-    for y in y0..y1 {
-        for &v in &map[y * n + x0..y * n + x1] {
-            best = best.max(v);
-            if best == Node::Plastic {
-                return best;
-            }
-        }
-    }
-    best
-}
-
-/// The whole periodic cell, each point the most loaded node it covers:
-/// half blocks (two points a cell) in colour, one character a cell (the
-/// more loaded of its two points) without colour or in ASCII.
-fn draw_map(t: &Theme, map: &[Node], n: usize, area: Rect, buf: &mut Buffer) {
-    if n == 0 || map.len() != n * n || area.width == 0 || area.height == 0 {
-        return;
-    }
-    let side = usize::from(area.width);
-    let colour = |k: Node| match k {
-        Node::Out => Color::Reset,
-        Node::Elastic => ELASTIC,
-        Node::Plastic => PLASTIC,
-    };
-    for r in 0..usize::from(area.height) {
-        for c in 0..side {
-            let up = block(map, n, side, c, 2 * r);
-            let low = block(map, n, side, c, (2 * r + 1).min(side - 1));
-            let cell = &mut buf[(area.x + c as u16, area.y + r as u16)];
-            if !t.color {
-                cell.set_symbol(plain_char(t, up.max(low)));
-            } else if t.glyphs.ascii_only() {
-                cell.set_symbol(" ")
-                    .set_style(Style::new().bg(colour(up.max(low))));
-            } else {
-                match (up, low) {
-                    (Node::Out, Node::Out) => {
-                        cell.set_symbol(" ");
-                    }
-                    (Node::Out, l) => {
-                        cell.set_symbol("▄").set_style(Style::new().fg(colour(l)));
-                    }
-                    (u, Node::Out) => {
-                        cell.set_symbol("▀").set_style(Style::new().fg(colour(u)));
-                    }
-                    (u, l) => {
-                        cell.set_symbol("▀")
-                            .set_style(Style::new().fg(colour(u)).bg(colour(l)));
-                    }
-                }
-            }
-        }
-    }
 }
 
 /// A point style of the simulation: the curve's colour, a dot; without

@@ -1,0 +1,201 @@
+//! The contact views' rows: each load (or ζ) solved for every seed, with
+//! the mean and spread over the realisations.
+
+use anyhow::{bail, Context};
+use rough_contact::LoadResult;
+use rough_model::Areas;
+
+use super::{loads, measured, sweep_zetas, Simulation, Spec, Stat, SWEEP_LOAD};
+use crate::scene::State;
+
+/// One load of the contact view, over the seeds.
+pub struct LoadRow {
+    pub p_over_h: f64,
+    /// Each seed's result, in seed order.
+    pub runs: Vec<LoadResult>,
+    pub area: Stat,
+    pub elastic: Stat,
+    pub plastic: Stat,
+    pub theory: Areas,
+}
+
+impl LoadRow {
+    fn of(p_over_h: f64, runs: Vec<LoadResult>, theory: Areas) -> LoadRow {
+        LoadRow {
+            p_over_h,
+            area: Stat::of(runs.iter().map(|r| r.area)),
+            elastic: Stat::of(runs.iter().map(|r| r.elastic_area)),
+            plastic: Stat::of(runs.iter().map(|r| r.plastic_area)),
+            runs,
+            theory,
+        }
+    }
+
+    /// The mean of `f` over the seeds.
+    pub fn mean(&self, f: impl Fn(&LoadResult) -> f64) -> f64 {
+        Stat::of(self.runs.iter().map(f)).mean
+    }
+
+    /// The largest residual over the seeds.
+    pub fn residual(&self) -> f64 {
+        self.runs.iter().map(|r| r.residual).fold(0.0, f64::max)
+    }
+}
+
+/// The seeds of `spec` checked against the scene: a measured map has one
+/// realisation only.
+fn check_seeds(state: &State, spec: &Spec) -> anyhow::Result<()> {
+    if spec.seeds.count == 0 {
+        bail!("--seeds 0: at least one realisation is needed");
+    }
+    if state.is_measured() && spec.seeds.count > 1 {
+        bail!(
+            "--seeds {} does not apply to a measured map: it is solved on its own heights, one \
+             realisation",
+            spec.seeds.count
+        );
+    }
+    Ok(())
+}
+
+/// The scene at `points` loads from 1e-3 H to H for each seed of `spec`
+/// (each load warm-started from the last); the first seed's simulation (for
+/// the parameter lines) and the rms heights of the realisations.
+pub fn load_rows(
+    state: &State,
+    points: usize,
+    spec: &Spec,
+) -> anyhow::Result<(Simulation, Vec<LoadRow>, Stat)> {
+    check_seeds(state, spec)?;
+    let loads = loads(points);
+    let mut runs: Vec<Vec<LoadResult>> = vec![vec![]; loads.len()];
+    let mut theory = vec![];
+    let (mut first, mut heights) = (None, vec![]);
+    for seed in spec.seeds.iter() {
+        let mut sim = Simulation::with(state, seed, &spec.sampling)?;
+        heights.push(sim.contact.h_rms());
+        theory.clear();
+        for (k, &p_over_h) in loads.iter().enumerate() {
+            let (r, t) = sim
+                .solve(p_over_h, &mut |_, _| true)
+                .with_context(|| format!("contact at p̄/H = {p_over_h}, seed {seed}"))?;
+            runs[k].push(r);
+            theory.push(t);
+        }
+        first.get_or_insert(sim);
+    }
+    let first = first.ok_or_else(|| anyhow::anyhow!("no seed to solve"))?;
+    let rows = loads
+        .into_iter()
+        .zip(runs)
+        .zip(theory)
+        .map(|((p, r), t)| LoadRow::of(p, r, t))
+        .collect();
+    Ok((first, rows, Stat::of(heights)))
+}
+
+/// One magnification of the ζ sweep, over the seeds.
+pub struct SweepRow {
+    pub zeta: f64,
+    pub grid: usize,
+    pub runs: Vec<LoadResult>,
+    pub theory: Areas,
+    /// The load-weighted hardness of each run, H/E* (the cap itself without
+    /// a hardness per asperity).
+    pub hardness: Vec<f64>,
+    /// With a hardness per asperity, each run's asperities in contact: how
+    /// many, and their median curvature radius (m).
+    pub asperities: Vec<(usize, f64)>,
+    /// The scene's cap at this ζ, H_use/E* (the theory's).
+    pub theory_hardness: f64,
+}
+
+impl SweepRow {
+    /// Plastic share of the simulated contact area over the seeds (a
+    /// realisation without contact left out).
+    pub fn share(&self) -> Stat {
+        Stat::of(self.runs.iter().map(|r| share(r.plastic_area, r.area)))
+    }
+    /// Contact area over the seeds.
+    pub fn area(&self) -> Stat {
+        Stat::of(self.runs.iter().map(|r| r.area))
+    }
+    /// The theory's plastic share at the same load.
+    pub fn theory_share(&self) -> f64 {
+        share(self.theory.plastic, self.theory.total)
+    }
+}
+
+fn share(plastic: f64, total: f64) -> f64 {
+    if total > 0.0 {
+        plastic / total
+    } else {
+        f64::NAN
+    }
+}
+
+/// The scene at ζ = 1, 2, …, 128 and p̄/H = [`SWEEP_LOAD`] for each seed;
+/// the first point's simulation (for the parameter lines) and its
+/// realisations' rms heights.
+pub fn sweep_rows(state: &State, spec: &Spec) -> anyhow::Result<(Simulation, Vec<SweepRow>, Stat)> {
+    check_seeds(state, spec)?;
+    let mut rows = vec![];
+    let mut first = None;
+    let mut heights = vec![];
+    // A measured map's ζ runs from the first that keeps a mode of its
+    // solved square to its data's largest.
+    let zeta_max = state.roughness().zeta_max() * (1.0 + 1e-12);
+    let zeta_min = match measured::heights_of(state)? {
+        Some((_, h)) => measured::lowest_zeta(&h) * (1.0 - 1e-9),
+        None => 0.0,
+    };
+    for zeta in sweep_zetas()
+        .into_iter()
+        .filter(|z| (zeta_min..=zeta_max).contains(z))
+    {
+        let mut s = state.clone();
+        s.params = s
+            .params
+            .with(rough_model::Axis::Zeta, zeta)
+            .map_err(|e| anyhow::anyhow!("ζ = {zeta}: {e}"))?;
+        let (mut runs, mut theory, mut grid) = (vec![], None, 0);
+        let (mut hardness, mut asperities) = (vec![], vec![]);
+        let first_zeta = first.is_none();
+        for seed in spec.seeds.iter() {
+            let mut sim = Simulation::with(&s, seed, &spec.sampling)?;
+            let (r, t) = sim
+                .solve(SWEEP_LOAD, &mut |_, _| true)
+                .with_context(|| format!("contact at ζ = {zeta}, seed {seed}"))?;
+            runs.push(r);
+            theory = Some(t);
+            grid = sim.contact.n();
+            match &sim.last_local {
+                Some(l) => {
+                    hardness.push(l.mean_hardness);
+                    asperities.push((l.patches, l.radius[0]));
+                }
+                None => hardness.push(sim.hardness),
+            }
+            if first_zeta {
+                heights.push(sim.contact.h_rms());
+                first.get_or_insert(sim);
+            }
+        }
+        let theory = theory.ok_or_else(|| anyhow::anyhow!("no seed to solve"))?;
+        rows.push(SweepRow {
+            zeta,
+            grid,
+            runs,
+            theory,
+            hardness,
+            asperities,
+            theory_hardness: s.params.h0_over_e()
+                * s.roughness()
+                    .surface(&s.params, s.moments)
+                    .indices
+                    .hardness_in_use(s.size_effect),
+        });
+    }
+    let first = first.ok_or_else(|| anyhow::anyhow!("no ζ to sweep"))?;
+    Ok((first, rows, Stat::of(heights)))
+}
