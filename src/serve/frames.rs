@@ -42,28 +42,28 @@ struct Slot {
     from: Mutex<Vec<Change>>,
 }
 
-/// A frame shown before, and the bytes that change it into another.
-type Change = (Arc<Buffer>, Arc<[u8]>);
+/// A frame shown before, and the bytes that change it into another, once
+/// the first session to make that change wrote them (`None`: its write
+/// failed, each works them out).
+type Change = (Arc<Buffer>, Arc<OnceLock<Option<Arc<[u8]>>>>);
 
 /// Changes into one frame kept (each from another frame shown before).
 const FROM: usize = 8;
 
 impl Slot {
-    fn bytes_from(&self, shown: &Arc<Buffer>) -> Option<Arc<[u8]>> {
-        let from = self.from.lock().unwrap_or_else(|p| p.into_inner());
-        let found = from.iter().find(|(f, _)| Arc::ptr_eq(f, shown));
-        found.map(|(_, b)| Arc::clone(b))
-    }
-
-    fn keep_from(&self, shown: Arc<Buffer>, bytes: Vec<u8>) {
+    /// The change from `shown` into this frame: the one kept, or a new
+    /// one (the oldest goes).
+    fn change_from(&self, shown: &Arc<Buffer>) -> Arc<OnceLock<Option<Arc<[u8]>>>> {
         let mut from = self.from.lock().unwrap_or_else(|p| p.into_inner());
-        if from.iter().any(|(f, _)| Arc::ptr_eq(f, &shown)) {
-            return;
+        if let Some((_, c)) = from.iter().find(|(f, _)| Arc::ptr_eq(f, shown)) {
+            return Arc::clone(c);
         }
         if from.len() >= FROM {
             from.remove(0);
         }
-        from.push((shown, bytes.into()));
+        let c = Arc::default();
+        from.push((Arc::clone(shown), Arc::clone(&c)));
+        c
     }
 }
 
@@ -192,25 +192,33 @@ pub(super) fn draw(s: &mut Seat, hint: Option<&String>) -> std::io::Result<()> {
     }
     // A screen that showed a shared frame goes on as every other screen
     // that showed it and goes on to this one: the first of them works out
-    // the bytes, the others send them.
-    let shown = s.ex.shown().cloned();
-    if let Some(bytes) = shown.as_ref().and_then(|f| slot.bytes_from(f)) {
-        #[cfg(test)]
-        if let Some(f) = &shown {
-            if *bytes != *tests::encode(f, &frame) {
-                let mut m = frames.mismatches.lock().unwrap();
-                m.push("the bytes sent are not the change of screen".into());
-            }
-        }
-        frames.as_bytes.fetch_add(1, Ordering::Relaxed);
-        return s.ex.draw_frame_as(&frame, &bytes);
+    // the bytes (the others wait for them, as for a render), the others
+    // send them.
+    let Some(shown) = s.ex.shown().cloned() else {
+        return s.ex.draw_frame(&frame);
+    };
+    let change = slot.change_from(&shown);
+    let mut drawn = None;
+    let bytes = change.get_or_init(|| {
+        let start = s.out.len();
+        let r = s.ex.draw_frame(&frame);
+        let ok = r.is_ok();
+        drawn = Some(r);
+        ok.then(|| s.out.since(start).into())
+    });
+    if let Some(r) = drawn {
+        return r;
     }
-    let start = s.out.len();
-    s.ex.draw_frame(&frame)?;
-    if let Some(f) = shown {
-        slot.keep_from(f, s.out.since(start));
+    let Some(bytes) = bytes else {
+        return s.ex.draw_frame(&frame);
+    };
+    #[cfg(test)]
+    if **bytes != *tests::encode(&shown, &frame) {
+        let mut m = frames.mismatches.lock().unwrap();
+        m.push("the bytes sent are not the change of screen".into());
     }
-    Ok(())
+    frames.as_bytes.fetch_add(1, Ordering::Relaxed);
+    s.ex.draw_frame_as(&frame, bytes)
 }
 
 /// What the session's next frame shows, if others may show it too: a

@@ -214,20 +214,20 @@ pub(super) fn encode(from: &Buffer, to: &Buffer) -> Vec<u8> {
     out
 }
 
-/// Waits until the class has drawn what it had to: no frame drawn for
-/// 300 ms. The counts then.
+/// Waits until the students have drawn what they had to: no shared frame
+/// rendered or taken for 300 ms. The counts then (rendered, taken, alone).
 async fn settled(frames: &Frames) -> (u64, u64, u64) {
-    let counts = || (frames.rendered(), frames.taken(), frames.alone());
+    let counts = || (frames.rendered(), frames.taken());
     let mut last = counts();
     for _ in 0..50 {
         tokio::time::sleep(Duration::from_millis(300)).await;
         let now = counts();
         if now == last {
-            return now;
+            return (now.0, now.1, frames.alone());
         }
         last = now;
     }
-    panic!("the class never stopped drawing");
+    panic!("the class never stopped drawing: {last:?}");
 }
 
 /// No session was given a frame other than its own.
@@ -302,7 +302,8 @@ async fn followers_of_one_shape_share_one_render() {
 
     // A poll: one render a shape for the question; one who answered gets
     // their own screen, the others still theirs.
-    lecturer.key("\t\t\t\t").await;
+    // Back to the slopes (⇧Tab).
+    lecturer.key("\x1b[Z").await;
     until(&students, "slopes", |s| s.contains("slope H0")).await;
     let (r0, t0, _) = counts();
     lecturer.key("v").await;
@@ -433,7 +434,8 @@ async fn a_follower_with_a_screen_of_their_own_renders_it() {
 
     // A poll: everyone at 100×30 in braille and colour, whatever they
     // showed (the help, their own scene), answers on one question frame.
-    lecturer.key("\t\t\t\t").await;
+    // Back to the slopes (⇧Tab).
+    lecturer.key("\x1b[Z").await;
     until(&[&a], "slopes", |s| s.contains("slope H0")).await;
     let (r0, t0, _) = settled(frames).await;
     lecturer.key("v").await;
