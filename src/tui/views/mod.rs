@@ -6,6 +6,7 @@ mod chart;
 pub mod class;
 pub mod compact;
 pub mod contact;
+pub mod contact_map;
 mod indices;
 mod load;
 mod map;
