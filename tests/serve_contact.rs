@@ -52,7 +52,7 @@ fn a_class_solves_the_lecturers_contact_scene_once() {
     let done = room.wait_all(&all, "the result", 90, |s| s.contains("13 solved"));
     for s in &done {
         assert!(
-            s.contains("contact 2.34 %, 1.5 % plastic · theory: 2.01 %, 7.9 % plastic"),
+            s.contains("contact 3.03 %, 1.2 % plastic · theory: 2.01 %, 7.9 % plastic"),
             "{s}"
         );
     }
