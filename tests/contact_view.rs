@@ -137,6 +137,55 @@ fn a_change_of_the_scene_cancels_the_job() {
     assert!(solved_old < 13, "{solved_old} of the old loads solved");
 }
 
+/// A grid finer than 256² first shows the same surface sampled on 256²
+/// (every second node of 512²), saying so, then its own; leaving the view
+/// stops the job (no core stays busy), coming back goes on.
+#[test]
+fn a_coarse_answer_first_and_leaving_stops_the_work() {
+    let engine = Engine::new(1);
+    let mut a = app_at(64.0, (120, 36), Theme::colored(), &engine);
+    to_contact(&mut a);
+    assert_eq!(a.contact.grids(), (Some(512), Some(256)));
+    assert_eq!(a.contact.coarse_tasks.len(), 13);
+    let start = Instant::now();
+    while a.contact.chosen().is_none() {
+        assert!(
+            start.elapsed() < Duration::from_secs(60),
+            "no coarse answer"
+        );
+        std::thread::sleep(Duration::from_millis(5));
+        update(&mut a, Message::Tick);
+    }
+    assert!(a.contact.chosen_is_coarse());
+    let s = a.contact.chosen().unwrap().as_ref().unwrap();
+    assert_eq!(s.map.len(), 256 * 256);
+    assert!(s.result.area > 0.0 && s.result.residual <= 1e-8);
+    let text = screen(&a);
+    assert!(
+        text.contains("simulation 256² coarse, 512² to come · seed 1"),
+        "{text}"
+    );
+    // Away: the job ends at its next iteration and nothing more is solved.
+    press(&mut a, KeyCode::Tab, KeyModifiers::NONE);
+    assert_ne!(a.view, View::Contact);
+    update(&mut a, Message::Tick);
+    let start = Instant::now();
+    while engine.running() > 0 {
+        assert!(start.elapsed() < Duration::from_secs(10), "still working");
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    let solves = engine.solves.load(std::sync::atomic::Ordering::Relaxed);
+    std::thread::sleep(Duration::from_millis(300));
+    assert_eq!(
+        engine.solves.load(std::sync::atomic::Ordering::Relaxed),
+        solves
+    );
+    // Back: the job goes on from what the cache holds.
+    to_contact(&mut a);
+    assert!(a.contact.busy());
+    assert!(a.contact.chosen().is_some());
+}
+
 #[test]
 fn results_are_cached_and_shared_between_explorers() {
     let engine = Engine::new(2);

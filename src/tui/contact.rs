@@ -21,6 +21,10 @@ pub const LOADS: usize = 13;
 pub const DEFAULT_LOAD: usize = 4;
 /// Points along a theory curve.
 const THEORY_POINTS: usize = 96;
+/// The coarse answer's grid side at most: a finer scene is first solved on
+/// its surface sampled at every second, fourth … node (256²: a load in
+/// tenths of a second), then on its own grid.
+pub const COARSE_GRID: usize = 256;
 
 /// p̄/H of load `k` (0 … [`LOADS`] − 1).
 pub fn load_value(k: usize) -> f64 {
@@ -80,9 +84,14 @@ pub struct ContactPane {
     pub zetas: Vec<f64>,
     /// Why the scene cannot be simulated (then nothing is requested).
     pub why_not: Option<String>,
-    /// The tasks on screen and what the cache holds for each.
+    /// The tasks on screen and what is shown for each: the cache's result,
+    /// or while it is not in, the coarse grid's ([`ContactPane::coarse`]).
     pub tasks: Vec<Task>,
     pub results: Vec<Option<Outcome>>,
+    /// The same loads on a coarse grid (empty when the grid is coarse
+    /// enough), solved first; which of `results` are theirs.
+    pub coarse_tasks: Vec<Task>,
+    pub coarse: Vec<bool>,
     pub progress: Progress,
     pub theory: Theory,
     request: Option<Request>,
@@ -111,6 +120,8 @@ impl Default for ContactPane {
             why_not: None,
             tasks: vec![],
             results: vec![],
+            coarse_tasks: vec![],
+            coarse: vec![],
             progress: Progress::default(),
             theory: Theory::default(),
             request: None,
@@ -136,6 +147,61 @@ impl ContactPane {
         self.results.get(self.load).and_then(Option::as_ref)
     }
 
+    /// Whether the chosen load shows the coarse grid's answer.
+    pub fn chosen_is_coarse(&self) -> bool {
+        !self.sweep && self.coarse.get(self.load).copied().unwrap_or(false)
+    }
+
+    /// The grid side of the scene, and of its coarse answer if any.
+    pub fn grids(&self) -> (Option<usize>, Option<usize>) {
+        (
+            self.tasks.first().map(|t| t.scene.side()),
+            self.coarse_tasks.first().map(|t| t.scene.side()),
+        )
+    }
+
+    /// Reads what the cache holds: each task's result, or the coarse
+    /// grid's while it is not in.
+    fn read_results(&mut self) {
+        let fine: Vec<Option<Outcome>> = self.tasks.iter().map(|t| self.engine.get(t)).collect();
+        self.coarse = vec![false; fine.len()];
+        self.results = fine;
+        for (i, t) in self.coarse_tasks.iter().enumerate() {
+            if self.results.get(i).is_some_and(Option::is_none) {
+                if let Some(Ok(c)) = self.engine.get(t) {
+                    self.results[i] = Some(Ok(c));
+                    self.coarse[i] = true;
+                }
+            }
+        }
+    }
+
+    /// The job's tasks: the coarse grid's, then the scene's own.
+    fn job_tasks(&self) -> Vec<Task> {
+        self.coarse_tasks
+            .iter()
+            .chain(&self.tasks)
+            .copied()
+            .collect()
+    }
+
+    /// The order the job solves in: the chosen load on the coarse grid,
+    /// the coarse grid's other loads, then the chosen load on the scene's
+    /// grid (then its other loads in turn, each from the last answer).
+    fn job_order(&self) -> Vec<usize> {
+        let c = self.coarse_tasks.len();
+        if self.sweep {
+            return vec![0];
+        }
+        let mut order = vec![];
+        if c > 0 {
+            order.push(self.load.min(c - 1));
+            order.extend(0..c);
+        }
+        order.push(c + self.load);
+        order
+    }
+
     /// Brings the pane up to `state`: a changed scene cancels the job on
     /// the old one (by dropping its ticket) and, if `shown`, requests the
     /// new one; the results are read from the cache.
@@ -143,10 +209,13 @@ impl ContactPane {
         self.seed = state.seed.unwrap_or(DEFAULT_SEED);
         if !shown {
             // Off screen nothing is worked out (a measured map's scene
-            // would read its heights from the file): a job on the scene
-            // last shown goes on, one on another scene stops. A read of
-            // heights goes on too, but nobody waits on it here.
+            // would read its heights from the file) and the job stops at
+            // its next iteration (what it solved stays in the cache; back
+            // in the view it goes on from there). A read of heights goes
+            // on, but nobody waits on it here.
             self.reading = false;
+            self.ticket = None;
+            self.progress = Progress::default();
             if !self.scene.as_ref().is_some_and(|s| same_scene(s, state)) {
                 self.ticket = None;
                 self.progress = Progress::default();
@@ -180,6 +249,8 @@ impl ContactPane {
             self.scene = None;
             self.tasks.clear();
             self.results.clear();
+            self.coarse_tasks.clear();
+            self.coarse.clear();
             self.theory = Theory::default();
             return;
         }
@@ -198,25 +269,31 @@ impl ContactPane {
                 .as_ref()
                 .map(|r| r.tasks.clone())
                 .unwrap_or_default();
+            self.coarse_tasks = if self.sweep {
+                vec![]
+            } else {
+                self.tasks
+                    .iter()
+                    .map_while(|t| Some(Task::new(t.scene.coarser(COARSE_GRID)?, t.p_over_h())))
+                    .collect()
+            };
             self.request = request;
         }
-        self.results = self.tasks.iter().map(|t| self.engine.get(t)).collect();
-        let all_in = self.results.iter().all(Option::is_some);
+        self.read_results();
+        let all_in = self.tasks.iter().all(|t| self.engine.get(t).is_some());
         if self.ticket.is_none() && !all_in {
-            let first = if self.sweep { 0 } else { self.load };
+            let order = self.job_order();
             let t = self
                 .engine
-                .request(self.tasks.clone(), first, Arc::clone(&self.waker));
+                .request(self.job_tasks(), order[0], Arc::clone(&self.waker));
             self.ticket = Some(t);
         }
         if let Some(t) = &self.ticket {
-            if !self.sweep {
-                t.prefer(self.load);
-            }
+            t.prefer_in_order(&self.job_order());
             self.progress = t.progress();
             if self.progress.finished {
                 // Read once more: the last result came with the end.
-                self.results = self.tasks.iter().map(|t| self.engine.get(t)).collect();
+                self.read_results();
             }
         } else {
             self.progress = Progress {

@@ -127,8 +127,15 @@ fn progress_text(app: &App, width: usize) -> String {
         } else {
             ("█", "░")
         };
+        let left = match p.left() {
+            Some(d) if d.as_secs_f64() >= 90.0 => {
+                format!(", {:.0} min left", d.as_secs_f64() / 60.0)
+            }
+            Some(d) => format!(", {:.0} s left", d.as_secs_f64().max(1.0)),
+            None => String::new(),
+        };
         return format!(
-            "solving {}/{} [{}{}] {:.0} %",
+            "solving {}/{} [{}{}] {:.0} %{left}",
             p.done,
             p.total,
             on.repeat(full.min(cells)),
@@ -157,7 +164,10 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
     let gl = t.glyphs;
     let pane = &app.contact;
     let w = usize::from(area.width);
-    let n = pane.tasks.first().map(|t| t.scene.n);
+    let (n, coarse) = pane.grids();
+    // The grid of the answer shown: the coarse one until the scene's own
+    // grid has solved the chosen load.
+    let shown = if pane.chosen_is_coarse() { coarse } else { n };
     let head = if pane.sweep {
         format!(
             "plastic share vs ζ at p̄ = {} H · seed {}",
@@ -171,6 +181,11 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
             .is_some_and(|t| t.scene.surface.is_some());
         match n {
             Some(n) if measured => format!("simulation {n}² · measured map"),
+            Some(n) if shown != Some(n) => format!(
+                "simulation {}² coarse, {n}² to come · seed {}",
+                shown.unwrap_or(0),
+                pane.seed
+            ),
             Some(n) => format!("simulation {n}² · seed {}", pane.seed),
             None => "simulation".into(),
         }
@@ -213,7 +228,7 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
         body.height,
     );
     let half = t.color && !t.glyphs.ascii_only();
-    let scale = map_scale(n.unwrap_or(0), usize::from(side));
+    let scale = map_scale(shown.unwrap_or(0), usize::from(side));
     // Without half blocks a character is one point across and two up.
     let scale = if half {
         scale
@@ -228,7 +243,7 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
             .wrap(Wrap { trim: true })
             .render(Rect::new(body.x, body.y + 1, side.max(1), rows), buf);
     } else if let Some(Ok(s)) = pane.chosen() {
-        let nn = n.unwrap_or(0);
+        let nn = (s.map.len() as f64).sqrt().round() as usize;
         draw_map(t, &s.map, nn, map, buf);
     }
     load_chart(app, chart, buf);
