@@ -6,7 +6,7 @@
 
 Prints the same columns as `roughtui export --preset fig2 --points N`
 (without its `#` lines naming the scene):
-zeta,psi,hardness_ratio,elastic,plastic,total,persson_elastic, with the
+zeta,psi,h_use_over_h0,elastic,plastic,total,persson_elastic, with the
 closed-form slopes (Ciavarella 2024, Appendix A) on the asymptotic moments
 (eq. 10), zeta swept log-uniformly from 1 to 1e4, no size effect. Numbers are
 printed with 17 significant digits (they read back to the same doubles).
@@ -30,7 +30,7 @@ HURST = 0.8
 Q0 = 1e5  # 1/m
 ZETA_FROM, ZETA_TO = 1.0, 1e4
 
-HEADER = "zeta,psi,hardness_ratio,elastic,plastic,total,persson_elastic"
+HEADER = "zeta,psi,h_use_over_h0,elastic,plastic,total,persson_elastic"
 
 
 def psi_p(zeta):

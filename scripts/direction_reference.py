@@ -19,7 +19,12 @@ crates/rough-surface/tests/data/direction_reference.txt:
   reference.txt: the profile moments m0, m2, m4 at 41 cutoffs from
   `integrate_psd_from_profile` (profiles along x; the transposed map for
   y) and the display spectrum `power_spectrum_from_profile`, both with
-  reliable=False, after detrend('height').
+  reliable=False, after detrend('height'), and the real-space numbers of
+  the profiles: `Rq` and `Rdq` of the topography (each profile along x
+  about its own mean; the differences along x), and of the same
+  deviations d from each profile's mean Ra = mean |d|, Rsk = mean d^3 /
+  Rq^3, Rku = mean d^4 / Rq^4 (NumPy's; SurfaceTopography computes none of
+  them) and Rz the profiles' mean max() - min().
 
 requirements: SurfaceTopography==1.27.1
 """
@@ -58,7 +63,13 @@ def profile_reference(name, t, out):
     zetas = np.logspace(0, np.log10(zeta_max), NZ)
     zetas[-1] = zeta_max
     out.write(f"surface {name} periodic 0 pixel_size 0.0 profiles n {nx} l {r(sx * scale)}\n")
-    out.write(f"q0 {r(q0 / scale)}\nzeta_max {r(zeta_max)}\nmoments\n")
+    out.write(f"q0 {r(q0 / scale)}\nzeta_max {r(zeta_max)}\n")
+    h = t.heights()
+    d = h - h.mean(axis=0)
+    rq = t.Rq()
+    real = [rq * scale, t.Rdq(), np.mean(np.abs(d)) * scale, np.mean(d ** 3) / rq ** 3,
+            np.mean(d ** 4) / rq ** 4, np.mean(h.max(axis=0) - h.min(axis=0)) * scale]
+    out.write("real " + " ".join(r(v) for v in real) + "\nmoments\n")
     for z in zetas:
         q1 = z * q0 * (1 + SAME_Q)
         m = [t.integrate_psd_from_profile(lambda qx, a=a: np.where((qx != 0) & (abs(qx) <= q1),

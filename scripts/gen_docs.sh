@@ -15,4 +15,14 @@ for view in spectrum indices; do
     "$bin" export --surface surfaces/example.txt --view "$view" --format svg \
         > "docs/example-$view.svg"
 done
+# The example surface's moments, one panel a quantity.
+"$bin" export --surface surfaces/example.txt --view moments --format svg \
+    > docs/example-moments.svg
+# The contact simulation beside the theory (docs/theory-vs-simulation.md):
+# small grids, so that the pictures take seconds, not minutes.
+"$bin" export --preset fig2 --set zeta=32 --view contact-map --format svg \
+    > docs/fig2-contact-map.svg
+"$bin" export --preset fig4 --set zeta=32 --view contact --format svg \
+    > docs/fig4-contact.svg
+"$bin" export --preset fig2 --view contact-sweep --format svg > docs/fig2-contact-sweep.svg
 echo "wrote docs/*.svg" >&2

@@ -40,7 +40,7 @@ import mpmath
 from mpmath import mp, mpf
 
 SCRIPT = "scripts/gen_reference.py"
-OUT_DIR = os.path.join("crates", "rough-model", "tests", "data")
+OUT_DIR = os.path.join("crates", "rough-study", "data")
 
 BASE_DPS = 50          # starting working precision, decimal digits
 STEP_DPS = 40          # the second evaluation is at D + STEP_DPS; D rises by STEP_DPS

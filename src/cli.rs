@@ -9,7 +9,7 @@ pub mod setup;
 mod values;
 use values::{
     parse_cell, parse_contact_grid, parse_grid, parse_height_unit, parse_per_wavelength,
-    parse_pixel_size, parse_points, parse_seeds, parse_sweep,
+    parse_percent, parse_pixel_size, parse_points, parse_seeds, parse_sweep,
 };
 pub use values::{parse_duration, parse_fit_band, parse_set, SetKey, MAX_POINTS};
 
@@ -100,16 +100,32 @@ pub struct Setup {
     /// every view then shows that direction alone.
     #[arg(long, value_enum, value_name = "x|y", requires = "surface")]
     pub direction: Option<DirectionArg>,
-    /// The channel of a file of several (Gwyddion's .gwy, its ASCII
-    /// exports concatenated): its number or its title (the first channel of
-    /// heights when not given).
+    /// The channel of a file of several (Gwyddion's .gwy, a Nanoscope,
+    /// Nanosurf or Igor file's images, ASCII exports concatenated): its
+    /// number or its title (the first channel of heights when not given).
     #[arg(long, value_name = "N|TITLE", requires = "surface")]
     pub channel: Option<String>,
-    /// The unit of the surface's heights, whatever the file says: m, mm,
-    /// µm (um), nm, Å (A) or pm. Without it heights take the file's value
+    /// The unit of the surface's heights: m, mm, µm (um, microns), nm, Å
+    /// (A) or pm; for a text file whatever it says, for an instrument's
+    /// file where it gives none. Without it heights take the file's value
     /// unit, else its lateral unit (said in a note).
     #[arg(long, value_name = "UNIT", requires = "surface", value_parser = parse_height_unit)]
     pub height_unit: Option<rough_surface::HeightUnit>,
+    /// The lateral unit of a file that gives none: the x column of an
+    /// `x z` line scan, the sizes of an Igor wave without units (heights
+    /// without a unit of their own follow it).
+    #[arg(long, value_name = "UNIT", requires = "surface", value_parser = parse_height_unit)]
+    pub lateral_unit: Option<rough_surface::HeightUnit>,
+    /// The share of undefined (not measured, masked, NaN) points that is
+    /// filled, in percent, e.g. 35 [default: 10]; more is refused.
+    #[arg(long, value_name = "PERCENT", requires = "surface", value_parser = parse_percent)]
+    pub max_undefined: Option<f64>,
+    /// The form removed from the surface's heights before its spectrum and
+    /// Sq: none, the mean, the least-squares plane (a line scan's line) or
+    /// the least-squares quadratic (curvature), as SurfaceTopography's
+    /// detrend modes [default: plane; mean with --periodic].
+    #[arg(long, value_enum, value_name = "MODE", requires = "surface")]
+    pub detrend: Option<DetrendArg>,
     /// The Hurst fit band of a measured surface: wavevectors in 1/m
     /// (1e6:1e8) or wavelengths with a unit (60nm:6um) [default: the
     /// spectrum's self-affine stretch, found from the data].
@@ -142,6 +158,26 @@ impl From<DirectionArg> for rough_surface::Direction {
     }
 }
 
+/// `--detrend`: the form removed from a measured surface's heights.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum DetrendArg {
+    None,
+    Mean,
+    Plane,
+    Curvature,
+}
+
+impl From<DetrendArg> for rough_surface::Detrend {
+    fn from(d: DetrendArg) -> Self {
+        match d {
+            DetrendArg::None => rough_surface::Detrend::None,
+            DetrendArg::Mean => rough_surface::Detrend::Mean,
+            DetrendArg::Plane => rough_surface::Detrend::Plane,
+            DetrendArg::Curvature => rough_surface::Detrend::Curvature,
+        }
+    }
+}
+
 impl Setup {
     /// How `--surface` is to be read.
     pub fn surface_options(&self) -> rough_surface::Options {
@@ -152,6 +188,9 @@ impl Setup {
             direction: self.direction.map(Into::into),
             channel: self.channel.clone(),
             height_unit: self.height_unit,
+            lateral_unit: self.lateral_unit,
+            max_undefined: self.max_undefined.map(|p| p / 100.0),
+            detrend: self.detrend.map(Into::into),
         }
     }
 }
@@ -166,6 +205,9 @@ impl BenchArgs {
             direction: self.direction.map(Into::into),
             channel: self.channel.clone(),
             height_unit: None,
+            lateral_unit: None,
+            max_undefined: self.max_undefined.map(|p| p / 100.0),
+            detrend: None,
         }
     }
 }
@@ -324,11 +366,19 @@ impl From<AxisArg> for Axis {
     }
 }
 
+/// `serve`'s SSH address when neither `--listen` nor `--web` is given.
+pub const DEFAULT_LISTEN: &str = "127.0.0.1:2222";
+
 #[derive(Debug, Args)]
 pub struct ServeArgs {
-    /// Address and port to listen on (loopback unless given).
-    #[arg(long, default_value = "127.0.0.1:2222", value_name = "ADDR:PORT")]
-    pub listen: std::net::SocketAddr,
+    /// Address and port of the SSH server [default: 127.0.0.1:2222, loopback;
+    /// none with --web alone].
+    #[arg(long, value_name = "ADDR:PORT")]
+    pub listen: Option<std::net::SocketAddr>,
+    /// Also serve the class to browsers: a page and a WebSocket on this
+    /// address and port (plain HTTP; put it behind a TLS proxy off campus).
+    #[arg(long, value_name = "ADDR:PORT")]
+    pub web: Option<std::net::SocketAddr>,
     /// The host key (OpenSSH Ed25519, mode 0600), made if absent [default:
     /// $XDG_CONFIG_HOME/roughtui/host_ed25519 or ~/.config/roughtui/host_ed25519].
     #[arg(long, value_name = "PATH")]
@@ -396,6 +446,10 @@ pub struct BenchArgs {
     /// The channel of a file of several (as for the explorer).
     #[arg(long, value_name = "N|TITLE", requires = "surface")]
     pub channel: Option<String>,
+    /// The share of undefined points filled, in percent (as for the
+    /// explorer).
+    #[arg(long, value_name = "PERCENT", requires = "surface", value_parser = parse_percent)]
+    pub max_undefined: Option<f64>,
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]

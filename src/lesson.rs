@@ -10,6 +10,8 @@
 //!         (title: "Bulk hardness", scene: Preset("fig1"), view: "slopes"),
 //!         (title: "Finer scales", scene: Snapshot("mine.ron"), poll: Claim),
 //!         (title: "Guess ζ", scene: Preset("fig2"), poll: Value(100.0)),
+//!         (title: "Plastic at all?", scene: Preset("fig3"), poll: Share),
+//!         (title: "Before a poll", scene: Preset("fig1"), claims: Hidden),
 //!     ],
 //! )
 //! ```
@@ -56,6 +58,16 @@ struct StepFile {
     caption: Option<String>,
     #[serde(default)]
     poll: Option<PollFile>,
+    /// `Hidden`: the claims line and the chart's regime marks wait (a
+    /// step before a poll whose answer they would give).
+    #[serde(default)]
+    claims: Option<ClaimsFile>,
+}
+
+#[derive(Debug, Deserialize)]
+enum ClaimsFile {
+    Shown,
+    Hidden,
 }
 
 #[derive(Debug, Deserialize)]
@@ -71,6 +83,9 @@ enum PollFile {
     Claim,
     /// A value of the swept parameter, in the model's units (metres).
     Value(f64),
+    /// Where the plastic share passes ½, if anywhere: "nowhere in the
+    /// sweep" (a student's `0`) may be the answer.
+    Share,
 }
 
 /// A lesson, read and checked.
@@ -90,6 +105,8 @@ pub struct Step {
     pub view: View,
     /// The step's poll: its question and true value.
     pub poll: Option<Question>,
+    /// The claims and regime marks wait (`claims: Hidden`).
+    pub claims_hidden: bool,
 }
 
 /// A lesson and the step on screen.
@@ -97,9 +114,38 @@ pub struct Step {
 pub struct LessonAt {
     pub lesson: Arc<Lesson>,
     pub at: usize,
+    /// Which steps' polls were revealed (in this run of the lesson).
+    revealed: Vec<bool>,
 }
 
 impl LessonAt {
+    /// `lesson` at step `at` (from 0), no poll revealed yet.
+    pub fn new(lesson: Arc<Lesson>, at: usize) -> LessonAt {
+        let revealed = vec![false; lesson.steps.len()];
+        LessonAt {
+            lesson,
+            at,
+            revealed,
+        }
+    }
+
+    /// The step's poll was revealed: the claims a step hid for it show
+    /// from now on.
+    pub fn mark_revealed(&mut self) {
+        if let Some(r) = self.revealed.get_mut(self.at) {
+            *r = true;
+        }
+    }
+
+    /// Whether the step's claims wait: it hides them (`claims: Hidden`)
+    /// and the lesson's next poll (its own, or a later step's) has not
+    /// been revealed.
+    fn claims_wait(&self) -> bool {
+        let steps = &self.lesson.steps;
+        let next = (self.at..steps.len()).find(|i| steps[*i].poll.is_some());
+        self.step().claims_hidden && next.is_none_or(|i| !self.revealed[i])
+    }
+
     pub fn step(&self) -> &Step {
         &self.lesson.steps[self.at.min(self.lesson.steps.len() - 1)]
     }
@@ -111,6 +157,8 @@ impl LessonAt {
             of: self.lesson.steps.len(),
             title: self.step().title.clone(),
             pending: self.step().poll,
+            claims_hidden: self.claims_wait(),
+            left: None,
         }
     }
 }
@@ -125,11 +173,29 @@ pub struct StepLine {
     /// The step's poll, until it is revealed: what would answer it stays
     /// off every screen.
     pub pending: Option<Question>,
+    /// The step hides its claims (`claims: Hidden`), until the lesson's
+    /// next poll is revealed.
+    pub claims_hidden: bool,
+    /// The scene the lecturer loaded with `o`, away from the lesson's
+    /// step (`n` returns to it).
+    pub left: Option<String>,
 }
 
 impl StepLine {
     pub fn text(&self) -> String {
-        format!("step {}/{} · {}", self.at, self.of, self.title)
+        match &self.left {
+            Some(scene) => format!(
+                "left the lesson at step {}/{} for {scene} · n returns",
+                self.at, self.of
+            ),
+            None => format!("step {}/{} · {}", self.at, self.of, self.title),
+        }
+    }
+
+    /// Whether what the claims say stays off the screen: before a poll,
+    /// or on a step that hides them (not once the class left the lesson).
+    pub fn hides_claims(&self) -> bool {
+        self.left.is_none() && (self.pending.is_some() || self.claims_hidden)
     }
 }
 
@@ -222,6 +288,16 @@ fn read_step(s: StepFile, base: &Path) -> anyhow::Result<Step> {
             Question::of_claims(view, &claims(&state))
                 .ok_or_else(|| anyhow!("poll: Claim, but this scene makes no claim"))?,
         ),
+        Some(PollFile::Share) => {
+            let share = claims(&state)
+                .into_iter()
+                .find(|c| c.kind == crate::figure::ClaimKind::ShareHalf);
+            Some(Question {
+                axis: state.sweep.axis(),
+                ask: Ask::ShareEver,
+                truth: share.map_or(crate::tui::class::NOWHERE, |c| c.at),
+            })
+        }
         Some(PollFile::Value(truth)) => {
             let sw = &state.sweep;
             let axis: Axis = sw.axis();
@@ -245,6 +321,7 @@ fn read_step(s: StepFile, base: &Path) -> anyhow::Result<Step> {
         state,
         view,
         poll,
+        claims_hidden: matches!(s.claims, Some(ClaimsFile::Hidden)),
     })
 }
 
@@ -267,6 +344,11 @@ pub fn show(app: &mut App) {
 
 /// `n` / `N`: the next or previous step (at either end, a line says so).
 pub fn step(app: &mut App, next: bool) {
+    // Back from a scene loaded with `o`: `n` returns to the step left.
+    if next && app.class.step.as_ref().is_some_and(|s| s.left.is_some()) {
+        show(app);
+        return;
+    }
     let Some(at) = app.class.lesson.as_mut() else {
         return;
     };
@@ -283,6 +365,15 @@ pub fn step(app: &mut App, next: bool) {
         }
         None if next => app.set_status("the lesson's last step: N goes back", false),
         None => app.set_status("the lesson's first step: n goes on", false),
+    }
+}
+
+/// The lecturer loaded `scene` with `o`: the step line says the class
+/// left the lesson (`n` returns).
+pub fn leave(app: &mut App, scene: &str) {
+    if let Some(step) = app.class.step.as_mut() {
+        step.left = Some(scene.to_string());
+        step.pending = None;
     }
 }
 
@@ -331,11 +422,37 @@ mod tests {
         );
         assert_eq!(l.steps[1].state.caption.as_deref(), Some("mine"));
         assert_eq!(l.steps[2].poll.unwrap().truth, 100.0);
-        let at = LessonAt {
-            lesson: Arc::new(l),
-            at: 1,
-        };
+        let at = LessonAt::new(Arc::new(l), 1);
         assert_eq!(at.line().text(), "step 2/3 · two");
+    }
+
+    #[test]
+    fn hidden_claims_wait_for_the_lessons_next_poll() {
+        let l = parse_here(
+            r#"(title: "t", steps: [
+                (title: "one", scene: Preset("fig1"), claims: Hidden),
+                (title: "two", scene: Preset("fig1"), poll: Claim, claims: Hidden),
+                (title: "three", scene: Preset("fig2")),
+                (title: "four", scene: Preset("fig2"), claims: Hidden),
+            ])"#,
+        )
+        .unwrap();
+        let mut at = LessonAt::new(Arc::new(l), 0);
+        let hides = |at: &mut LessonAt, i: usize| {
+            at.at = i;
+            at.line().hides_claims()
+        };
+        assert!(hides(&mut at, 0) && hides(&mut at, 1));
+        assert!(!hides(&mut at, 2));
+        // Step two's poll revealed: one's and two's claims show (two's
+        // question is asked again if the lecturer comes back to it).
+        at.at = 1;
+        at.mark_revealed();
+        assert!(!hides(&mut at, 0));
+        at.at = 1;
+        assert!(!at.line().claims_hidden && at.line().pending.is_some());
+        // No poll after step four: its claims wait for good.
+        assert!(hides(&mut at, 3));
     }
 
     #[test]
@@ -378,5 +495,35 @@ mod tests {
         let names: Vec<&str> = l.steps.iter().map(|s| s.state.name.as_str()).collect();
         assert_eq!(names.first(), Some(&"fig1"));
         assert_eq!(names.last(), Some(&"fig4"));
+        // Step 1 keeps the paper's qualifier and hides the claims that
+        // would answer step 2's poll.
+        let one = &l.steps[0];
+        let cap = one.state.caption.as_deref().unwrap();
+        assert!(
+            cap.contains(
+                "only because the surface is very smooth and the magnification is quite low"
+            ),
+            "{cap}"
+        );
+        assert!(one.claims_hidden && l.steps[1].poll.is_some());
+        // fig3's poll asks what the paper asks: is there plastic area at
+        // all? Nowhere: the plastic area is zero over the whole range.
+        let fig3 = polls.iter().find(|s| s.state.name == "fig3").unwrap();
+        let q = fig3.poll.unwrap();
+        assert_eq!(
+            (q.ask, q.truth),
+            (Ask::ShareEver, crate::tui::class::NOWHERE)
+        );
+        let message = l
+            .steps
+            .iter()
+            .find(|s| s.title.contains("message"))
+            .unwrap();
+        assert!(message
+            .state
+            .caption
+            .as_deref()
+            .unwrap()
+            .contains("the plastic area is zero over the whole range"));
     }
 }

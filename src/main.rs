@@ -11,7 +11,16 @@ use roughtui::cli::{Cli, Command};
 use roughtui::{export, tui};
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) if !e.use_stderr() => e.exit(),
+        Err(e) => {
+            // A refused command line is one line, as every refusal is:
+            // clap's message with its hints, without the usage lines.
+            let _ = writeln!(std::io::stderr(), "roughtui: {}", one_line(&e.to_string()));
+            return ExitCode::from(2);
+        }
+    };
     match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
         // A reader that stops early (`roughtui export … | head -1`) is not
@@ -23,6 +32,27 @@ fn main() -> ExitCode {
             ExitCode::from(2)
         }
     }
+}
+
+/// clap's error `text` on one line: "error: " dropped, the usage and
+/// "For more information" lines left out, the rest joined with "; ".
+fn one_line(text: &str) -> String {
+    let parts: Vec<&str> = text
+        .lines()
+        .map(str::trim)
+        .filter(|l| {
+            !l.is_empty() && !l.starts_with("Usage:") && !l.starts_with("For more information")
+        })
+        .collect();
+    // "…were not provided:" runs on into what was not.
+    let mut line = String::new();
+    for p in parts {
+        if !line.is_empty() {
+            line.push_str(if line.ends_with(':') { " " } else { "; " });
+        }
+        line.push_str(p);
+    }
+    line.strip_prefix("error: ").unwrap_or(&line).to_string()
 }
 
 fn is_broken_pipe(e: &anyhow::Error) -> bool {
@@ -72,7 +102,12 @@ fn run(cli: Cli) -> anyhow::Result<()> {
                 return Ok(());
             }
             roughtui::serve::run(roughtui::serve::Options {
-                listen: a.listen,
+                // SSH on its default address unless only the web is asked.
+                listen: match (a.listen, a.web) {
+                    (None, None) => Some(roughtui::cli::DEFAULT_LISTEN.parse()?),
+                    (l, _) => l,
+                },
+                web: a.web,
                 host_key: a.host_key,
                 lecturer_keys: a.lecturer_keys,
                 state,

@@ -265,6 +265,7 @@ mod tests {
             points: 5,
             hurst_se: 0.0,
             rms_decades: 0.0,
+            rms_decades_unweighted: 0.0,
         };
         let (z, h) = fit_amplitude(&fit).unwrap();
         assert!((z / 1e-8 - 1.0).abs() < 1e-14, "{z}");

@@ -8,7 +8,7 @@ use common::cli::{run, stdout, BIN};
 use std::io::Read;
 use std::process::{Command, Output, Stdio};
 
-const HEADER: &str = "zeta,psi,hardness_ratio,elastic,plastic,total,persson_elastic";
+const HEADER: &str = "zeta,psi,h_use_over_h0,elastic,plastic,total,persson_elastic";
 
 /// A CSV export without its `#` lines (the scene), header first.
 fn body(text: &str) -> String {
@@ -43,6 +43,7 @@ fn usage_error(args: &[&str], words: &[&str]) {
     let out = run(args);
     let err = String::from_utf8(out.stderr).unwrap();
     assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+    assert_eq!(err.lines().count(), 1, "{args:?}: one line, {err}");
     assert!(out.stdout.is_empty());
     for w in words {
         assert!(err.contains(w), "{args:?}: wants {w:?} in {err}");
@@ -222,7 +223,7 @@ fn indices_header_rows_and_empty_undefined_fields() {
     let t = stdout(&["export", "--view", "indices", "--points", "5"]);
     assert_eq!(
         header(&t),
-        Some("zeta,psi_gw,psi_p,psi_star,psi_star_asymptotic,hardness_ratio")
+        Some("zeta,psi_gw,psi_p,psi_star,psi_star_asymptotic,hy_over_h0")
     );
     let r = rows(&t);
     assert_eq!(r.len(), 5);
@@ -365,13 +366,33 @@ fn a_picture_carries_the_claims_under_its_caption() {
             .1
     };
     let caption = at(&fig1, "Fig. 1: the paper calls realistic hardness");
-    let psi = at(&fig1, "Ψ_P falls below 1 at H0/E = 0.00523 (E/H0 = 191.2)");
     let share = at(
         &fig1,
         "plastic share falls below ½ at H0/E = 0.008318 (E/H0 = 120.2)",
     );
     let minimum = at(&fig1, "total slope's minimum 0.9796 at H0/E = 0.003678");
-    assert!(caption < share && share < psi && psi < minimum);
+    assert!(caption < share && share < minimum);
+    // Each picture its own claims: the index's crossing under the
+    // indices, not under the slopes; the share and the crossing under the
+    // map, along the current parameters' row.
+    let psi = "Ψ_P falls below 1 at H0/E = 0.00523 (E/H0 = 191.2)";
+    assert!(!fig1.iter().any(|(s, _)| s.contains(psi)));
+    let indices = texts(&stdout(&[
+        "export", "--preset", "fig1", "--view", "indices", "--format", "svg",
+    ]));
+    at(&indices, psi);
+    assert!(!indices
+        .iter()
+        .any(|(s, _)| s.contains("plastic share") && !s.starts_with("Plasticity")));
+    let map = texts(&stdout(&[
+        "export", "--preset", "fig1", "--view", "map", "--format", "svg",
+    ]));
+    at(
+        &map,
+        "along ζ = 128: plastic share falls below ½ at H0/E = 0.008318",
+    );
+    at(&map, psi);
+    assert!(!map.iter().any(|(s, _)| s.contains("total slope's minimum")));
     // Every line inside the picture (the caption area grows to hold them).
     assert!(fig1.iter().all(|(_, y)| *y < 600.0), "{fig1:?}");
     let fig3 = texts(&stdout(&["export", "--preset", "fig3", "--format", "svg"]));
@@ -555,8 +576,9 @@ fn every_csv_and_picture_names_its_scene() {
             .find(|n| n.has_tag_name("desc"))
             .and_then(|n| n.text())
             .unwrap();
-        // The description holds the CSV's `#` lines, word for word.
-        for c in &comments {
+        // The description holds the CSV's `#` lines, word for word (the
+        // columns' meanings aside: the picture has no columns).
+        for c in comments.iter().filter(|c| !c.starts_with("# columns:")) {
             assert!(
                 desc.lines().any(|l| l == &c[2..]),
                 "{view}: {c:?} not in <desc>"

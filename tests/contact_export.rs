@@ -23,12 +23,47 @@ fn contact_view_csv() {
         "export", "--view", "contact", "--preset", "fig2", "--set", "zeta=16", "--cell", "1",
     ]);
     let (comments, header, rows) = parse(&csv);
+    // The scene as every view's CSV has it, then what the simulation adds.
+    assert_eq!(
+        comments[0],
+        format!(
+            "# roughtui {}: scene \"fig2\", view contact",
+            env!("CARGO_PKG_VERSION")
+        )
+    );
+    for want in [
+        "# h0_over_e = 0.01  (H0/E: macroscopic hardness over E, the composite modulus E*)",
+        "# zeta = 16  (magnification q1/q0; the marker)",
+        "# model = closed form",
+        "# moments = asymptotic",
+        "# size_effect = off",
+    ] {
+        assert!(comments.contains(&want), "{want} not in {comments:#?}");
+    }
+    // The span where every view has it (after the parameters), then the
+    // simulation's lines after the scene's.
+    let at = |line: &str| comments.iter().position(|c| c.starts_with(line));
+    let span = at("# contact = p_over_h = pbar/H0 from 0.001 to 1, 13 loads (log-spaced)");
+    let sim = at(
+        "# simulation = elastic–perfectly-plastic BEM (rough-contact), periodic 128 × 128 \
+         grid of side 1 × 2π/q0 (cell: 1 longest wavelength), 8 nodes per shortest wavelength, \
+         power-law Gaussian surface, seed 1 (one realisation",
+    );
+    let model = at("# model = closed form");
+    assert!(span.is_some() && sim.is_some(), "{comments:#?}");
+    assert!(span < model && model < sim, "{comments:#?}");
+    assert!(comments
+        .iter()
+        .any(|c| c.starts_with("# hardness_in_use_over_e = 0.01 (H0/E*, the pressure cap)")));
+    assert!(comments.iter().any(|c| c.starts_with(
+        "# theory = the closed form model's finite-load areas at the index in use psi_p = "
+    )));
     assert!(comments.iter().any(|c| c.contains("128 × 128 grid")
         && c.contains("cell: 1 longest wavelength")
         && c.contains("8 nodes per shortest wavelength")
         && c.contains("seed 1 (one realisation")));
     assert!(comments.iter().any(
-        |c| c.contains("# surface: matched to the scene's rms slope")
+        |c| c.contains("# surface = matched to the scene's rms slope")
             && c.contains("the paper's asymptotic moments")
     ));
     assert!(comments
@@ -126,7 +161,13 @@ fn contact_sweep_csv_and_svg() {
     ]);
     let (comments, header, rows) = parse(&csv);
     assert!(header.starts_with("zeta,p_over_h,plastic_share,theory_plastic_share,"));
-    assert!(comments.iter().any(|c| c.contains("zeta = 1,")));
+    assert!(
+        comments.iter().any(|c| c.starts_with(
+            "# contact-sweep = zeta = 1, 2, 4, …, 128 (a measured map: those it resolves), each \
+             on its own grid, at p_over_h = pbar/H0 = 0.01"
+        )),
+        "{comments:#?}"
+    );
     let zetas: Vec<f64> = rows.iter().map(|r| r[0]).collect();
     assert_eq!(zetas, [1.0, 2.0, 4.0, 8.0, 16.0, 32.0, 64.0, 128.0]);
     let grids: Vec<f64> = rows.iter().map(|r| r[6]).collect();
@@ -224,9 +265,13 @@ fn contact_map_csv_and_svg() {
     assert_eq!(count(1), row[2]);
     assert_eq!(count(2), row[3]);
     assert!(
-        map.contains("# fig2: contact map at p̄ = 0.01 H, 128×128, seed 1"),
+        map.contains(
+            "# contact-map = p_over_h = pbar/H0 = 0.01; simulation: 128 × 128 grid of side \
+             0.00006283185307179586 m, periodic Gaussian surface, seed 1"
+        ),
         "{map}"
     );
+    assert!(map.contains("# zeta = 16  (magnification q1/q0; the marker)"));
     let svg = stdout(
         &[
             &["export", "--view", "contact-map", "--format", "svg"][..],
@@ -235,7 +280,7 @@ fn contact_map_csv_and_svg() {
         .concat(),
     );
     assert!(svg.starts_with("<svg"));
-    assert!(svg.matches("fill=\"#8c8c8c\"").count() > 10, "{svg}");
+    assert!(svg.matches("fill=\"#8C8C8C\"").count() > 10, "{svg}");
     let out = run(&[
         &["export", "--view", "contact-map", "--points", "5"][..],
         &args,
@@ -270,7 +315,7 @@ fn contact_hardness_per_asperity() {
     assert!(header.ends_with("hardness_over_e,theory_hardness_over_e,patches,patch_radius"));
     assert!(comments
         .iter()
-        .any(|c| c.contains("# hardness per asperity: each node capped")));
+        .any(|c| c.contains("# hardness per asperity = each node capped")));
     let (_, _, g) = parse(&global);
     for (a, g) in rows.iter().zip(&g) {
         // The global cap is the theory's; per asperity the load-weighted

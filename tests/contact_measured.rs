@@ -275,7 +275,10 @@ fn the_explorer_solves_a_measured_map_in_its_contact_view() {
     assert!((s.result.area - area).abs() <= 1.01 / (N * N) as f64);
     let text = common::app::screen(&a);
     assert!(text.contains("simulation 64² · measured map"), "{text}");
-    assert!(text.contains("simulation at p̄ = 0.01 H: contact"), "{text}");
+    assert!(
+        text.contains("simulation at p̄ = 0.01 H0: contact"),
+        "{text}"
+    );
     // No seed to change.
     update(&mut a, Message::ContactSeed);
     let st = a.status.clone().unwrap();

@@ -23,11 +23,11 @@ fn tab_to_the_contact_view_shows_the_progress_then_the_result() {
     let s = p.wait_text("13 solved");
     assert!(
         s.contains(
-            "simulation at p̄ = 0.01 H: contact 3.03 %, 1.2 % plastic · theory: 2.01 %, 7.9 % plastic"
+            "simulation at p̄ = 0.01 H0: contact 3.03 %, 1.2 % plastic · theory: 2.01 %, 7.9 % plastic"
         ),
         "{s}"
     );
-    assert!(s.contains("█ elastic █ at H"), "{s}");
+    assert!(s.contains("█ elastic █ at H0"), "{s}");
     // The size effect changes the hardness: the job starts again.
     p.keys(&["e"]);
     p.wait_text("solving");

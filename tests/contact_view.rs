@@ -73,7 +73,10 @@ fn tab_reaches_the_contact_view_and_its_result_comes_in() {
     assert_eq!(s.map.len(), 32 * 32);
     assert!(s.result.residual <= 1e-10 * 100.0);
     let text = screen(&a);
-    assert!(text.contains("simulation at p̄ = 0.01 H: contact"), "{text}");
+    assert!(
+        text.contains("simulation at p̄ = 0.01 H0: contact"),
+        "{text}"
+    );
     assert!(text.contains("simulation 32² · seed 1"), "{text}");
     assert!(text.contains("13 solved"), "{text}");
 }
@@ -86,13 +89,15 @@ fn the_readout_gives_the_simulation_and_the_theory_at_the_chosen_load() {
     settle(&mut a);
     let r = a.contact.chosen().unwrap().as_ref().unwrap().result;
     let t = a.contact.theory.at_load.unwrap();
-    let (line, error) = roughtui::tui::views::contact::readout(&a.contact, 200, Glyphs::Braille);
+    let (lines, error) =
+        roughtui::tui::views::contact::readout(&a.contact, 200, Glyphs::Braille, "H0");
+    let line = lines.join("\n");
     assert!(!error);
     use roughtui::tui::views::contact::{pct, share_pct};
     assert_eq!(
         line,
         format!(
-            "simulation at p̄ = 0.01 H: contact {} %, {} % plastic · theory: {} %, {} % plastic",
+            "simulation at p̄ = 0.01 H0: contact {} %, {} % plastic · theory: {} %, {} % plastic",
             pct(r.area),
             share_pct(r.plastic_area, r.area),
             pct(t.total),
@@ -105,8 +110,26 @@ fn the_readout_gives_the_simulation_and_the_theory_at_the_chosen_load() {
     // ] and [ move the load a quarter decade; the readout follows.
     ch(&mut a, ']');
     assert_eq!(a.contact.load, 5);
-    let (line, _) = roughtui::tui::views::contact::readout(&a.contact, 200, Glyphs::Braille);
-    assert!(line.starts_with("simulation at p̄ = 0.01778 H"), "{line}");
+    let (lines, _) = roughtui::tui::views::contact::readout(&a.contact, 200, Glyphs::Braille, "H0");
+    assert!(
+        lines[0].starts_with("simulation at p̄ = 0.01778 H0"),
+        "{lines:?}"
+    );
+    // On an 80-column screen the panel is 46 wide: one line or two, none
+    // cut; narrower, two.
+    for w in [46, 40] {
+        let (lines, _) =
+            roughtui::tui::views::contact::readout(&a.contact, w, Glyphs::Braille, "H0");
+        for l in &lines {
+            // Columns: p̄'s combining macron takes none.
+            let cols = l.chars().filter(|c| *c != '\u{304}').count();
+            assert!(cols <= w, "{l}");
+        }
+    }
+    let (lines, _) = roughtui::tui::views::contact::readout(&a.contact, 40, Glyphs::Braille, "H0");
+    assert_eq!(lines.len(), 2, "{lines:?}");
+    assert!(lines[0].starts_with("p̄ = 0.01778 H0 · sim "), "{lines:?}");
+    assert!(lines[1].starts_with("theory: "), "{lines:?}");
     for _ in 0..20 {
         ch(&mut a, '[');
     }
@@ -303,7 +326,7 @@ fn p_saves_the_contact_map_at_the_chosen_load() {
     assert!(files[0].starts_with("fig2-contact"), "{files:?}");
     let svg = std::fs::read_to_string(dir.path().join(&files[0])).unwrap();
     assert!(
-        svg.contains("fig2: contact map at p̄ = 0.01778 H, 32×32, seed 1"),
+        svg.contains("fig2 — contact map at p̄ = 0.01778 H0") && svg.contains("32×32 nodes, seed 1"),
         "{svg}"
     );
     // b's plot has no picture here: the status says where to get one.

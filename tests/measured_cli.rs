@@ -159,15 +159,23 @@ fn the_spectrum_view_as_csv_and_svg() {
     ]);
     let doc = roxmltree::Document::parse(&svg).unwrap();
     assert_eq!(doc.root_element().tag_name().name(), "svg");
+    // The picture's texts, a caption's wrapped lines joined again.
+    let texts = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("text"))
+        .filter_map(|n| n.text())
+        .map(str::trim)
+        .collect::<Vec<_>>()
+        .join(" ");
     for w in [
         "fig2-psd — spectrum",
         "exact · measured moments · size effect on",
         "C^iso (m⁴)",
         "power law fitted over the fit band 1e5…1e9 /m: H = 0.8 ± ",
-        "h_rms of the fitted power law 1.982e-8 m (5 points)",
+        "h_rms of the fitted power law 19.82 nm (5 points)",
         "cutoff q1 = ζ q0 = 1e9 /m (ζ = 1e4)",
     ] {
-        assert!(svg.contains(w), "{w}");
+        assert!(texts.contains(w), "{w}: {texts}");
     }
     for view in ["slopes", "indices", "map", "load"] {
         let svg = stdout(&["export", "--surface", t, "--view", view, "--format", "svg"]);

@@ -49,6 +49,28 @@ fn notes_show_on_the_status_row_and_under_the_readout() {
     for w in ["h_rms(ζ) ", "h′(ζ) ", "Sq ", "Sdq ", "H fit"] {
         assert!(text.contains(w), "wants {w:?} in\n{text}");
     }
+    // The height parameters beside Sq, where there is room: Sa and Sz on
+    // one line, Ssk and Sku on the next, as the readout prints them.
+    use roughtui::physical::print::{fmt_len, fmt_num};
+    let r = a.state.surface.as_ref().unwrap().measured.real.unwrap();
+    let [sa, ssk, sku, sz] = r.heights();
+    let line = |l: &str, v: String| format!("{l:<6}{v:<10}");
+    for (w, next) in [
+        (
+            line("Sa", fmt_len(sa.1)),
+            format!("Sz     {}", fmt_len(sz.1)),
+        ),
+        (
+            line("Ssk", fmt_num(ssk.1)),
+            format!("Sku    {}", fmt_num(sku.1)),
+        ),
+    ] {
+        let want = format!("{w}{next}");
+        assert!(text.contains(&want), "wants {want:?} in\n{text}");
+    }
+    // An 80 × 24 terminal keeps its readout for the model's numbers.
+    let small = app(d.path(), (80, 24));
+    assert!(!screen(&small).contains("Ssk"));
 }
 
 #[test]

@@ -69,7 +69,7 @@ fn deviation(args: &[&str], rows: &[[f64; 4]], tol: f64) -> f64 {
     let mut lines = csv.lines();
     assert_eq!(
         lines.next(),
-        Some("zeta,psi_gw,psi_p,psi_star,psi_star_asymptotic,hardness_ratio")
+        Some("zeta,psi_gw,psi_p,psi_star,psi_star_asymptotic,hy_over_h0")
     );
     let mut worst = 0f64;
     let mut count = 0;
@@ -140,11 +140,11 @@ fn every_view_of_a_map_and_a_download_exports() {
         for (view, header) in [
             (
                 "slopes",
-                "zeta,psi,hardness_ratio,elastic,plastic,total,persson_elastic",
+                "zeta,psi,h_use_over_h0,elastic,plastic,total,persson_elastic",
             ),
             (
                 "indices",
-                "zeta,psi_gw,psi_p,psi_star,psi_star_asymptotic,hardness_ratio",
+                "zeta,psi_gw,psi_p,psi_star,psi_star_asymptotic,hy_over_h0",
             ),
             (
                 "map",

@@ -213,7 +213,17 @@ fn the_default_band_is_the_self_affine_stretch() {
         "--fit-band",
         &format!("{}:{}", q0, qr),
     ]);
-    assert!(svg.contains("not self-affine over this band"));
+    // Said in the picture (its texts joined: a legend or caption line
+    // wraps).
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let texts = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("text"))
+        .filter_map(|n| n.text())
+        .map(str::trim)
+        .collect::<Vec<_>>()
+        .join(" ");
+    assert!(texts.contains("not self-affine over this band"), "{texts}");
     // A band that is not one is refused.
     for bad in ["1e7", "1e7:1e7", "1e6:6um", "-1:5"] {
         let out = common::cli::run(&["export", "--surface", &f, "--fit-band", bad]);

@@ -2,8 +2,9 @@
 //! reference surfaces gives SurfaceTopography's moments (reference.txt,
 //! scripts/surface_reference.py) at every ζ and its Sq, Sdq, Rq, RΔq
 //! (realspace.txt, scripts/realspace_reference.py) as comment lines, each
-//! within 1e-12; on the paper's power law, its moments in closed form; and
-//! the same as an SVG picture.
+//! within 1e-12, and the height parameters beside them (Sa, Ssk, Sku, Sz;
+//! Ra, Rsk, Rku, Rz) within 1e-9; on the paper's power law, its moments in
+//! closed form; and the same as an SVG picture.
 
 mod common;
 
@@ -94,19 +95,18 @@ fn consistent(r: &[f64], q0: f64) {
 
 #[test]
 fn measured_moments_and_real_space_numbers_match_surfacetopography() {
-    let real: HashMap<String, (f64, f64)> = std::fs::read_to_string(data("realspace.txt"))
+    // file → Sq, Sdq, Sa, Ssk, Sku, Sz (Rq, RΔq, Ra, … for lines).
+    let real: HashMap<String, Vec<f64>> = std::fs::read_to_string(data("realspace.txt"))
         .unwrap()
         .lines()
         .filter(|l| !l.starts_with('#'))
         .map(|l| {
             let w: Vec<&str> = l.split_whitespace().collect();
-            (
-                w[0].to_string(),
-                (w[4].parse().unwrap(), w[5].parse().unwrap()),
-            )
+            let v = w[4..10].iter().map(|v| v.parse().unwrap()).collect();
+            (w[0].to_string(), v)
         })
         .collect();
-    let (mut worst_m, mut worst_r) = (0f64, 0f64);
+    let (mut worst_m, mut worst_r, mut worst_iso) = (0f64, 0f64, 0f64);
     for (file, opts, q0, rows) in reference() {
         let path = data(&file);
         let n = rows.len().to_string();
@@ -140,32 +140,51 @@ fn measured_moments_and_real_space_numbers_match_surfacetopography() {
             consistent(g, q0);
         }
         // Sq and Sdq (Rq and RΔq) as a comment line, every digit.
-        let (h, s) = real[&file];
+        let want = &real[&file];
         let (a, b) = if file.starts_with("map") {
             ("Sq", "Sdq")
         } else {
             ("Rq", "RΔq")
         };
-        let line = csv
-            .lines()
-            .find(|l| l.starts_with(&format!("# {a} = ")))
-            .unwrap_or_else(|| panic!("{file}: {csv}"));
-        let num = |after: &str, end: &str| -> f64 {
+        let comment = |name: &str| {
+            csv.lines()
+                .find(|l| l.starts_with(&format!("# {name} = ")))
+                .unwrap_or_else(|| panic!("{file}: {csv}"))
+        };
+        let num = |line: &str, after: &str, end: &str| -> f64 {
             let t = &line[line.find(after).unwrap() + after.len()..];
             t[..t.find(end).unwrap()].parse().unwrap()
         };
+        let line = comment(a);
         let (gh, gs) = (
-            num(&format!("{a} = "), " m,"),
-            num(&format!("{b} = "), " ("),
+            num(line, &format!("{a} = "), " m,"),
+            num(line, &format!("{b} = "), " ("),
         );
-        for (g, w) in [(gh, h), (gs, s)] {
+        for (g, w) in [(gh, want[0]), (gs, want[1])] {
             assert!(rel(g, w) < 1e-12, "{file}: {g} vs {w}");
             worst_r = worst_r.max(rel(g, w));
+        }
+        // The height parameters on the line after it.
+        let names = if file.starts_with("map") {
+            ["Sa", "Ssk", "Sku", "Sz"]
+        } else {
+            ["Ra", "Rsk", "Rku", "Rz"]
+        };
+        let line = comment(names[0]);
+        let ends = [" m,", ",", ",", " m ("];
+        for k in 0..4 {
+            let g = num(line, &format!("{} = ", names[k]), ends[k]);
+            let w = want[2 + k];
+            // The skewness's error relative to 1 where it is smaller.
+            let e = (g - w).abs() / if k == 1 { w.abs().max(1.0) } else { w.abs() };
+            assert!(e < 1e-9, "{file} {}: {g} vs {w}", names[k]);
+            worst_iso = worst_iso.max(e);
         }
         assert!(csv.contains("# fit: H = "), "{file}");
     }
     eprintln!(
-        "moments view against SurfaceTopography: moments {worst_m:.1e}, real space {worst_r:.1e}"
+        "moments view against SurfaceTopography: moments {worst_m:.1e}, real space \
+         {worst_r:.1e}, height parameters {worst_iso:.1e}"
     );
 }
 
@@ -230,9 +249,10 @@ fn the_moments_view_as_a_picture_and_its_options() {
     for w in [
         "map_windowed — moments",
         "exact · measured moments · size effect on",
-        "h_rms = √m0 from the PSD up to ζ",
-        "Sq = 7.07e-8 (real space, no window)",
-        "Sdq = 0.153 (real space, no window)",
+        "h_rms = √m0",
+        "summed from the PSD up to ζ",
+        "Sq = 70.7 nm (real space)",
+        "Sdq = 0.153 (real space)",
     ] {
         assert!(svg.contains(w), "{w}");
     }

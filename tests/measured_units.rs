@@ -150,7 +150,42 @@ fn column_headers_with_units_are_read() {
     let (want, notes) = moments(&metres, &[]);
     assert_eq!(
         notes,
-        ["heights read in m (the file names no unit; --height-unit to change)"]
+        [
+            "x read in m (the file names no unit; --lateral-unit to change)",
+            "heights read in m (the file names no unit; --height-unit to change)"
+        ]
+    );
+    // x and z written in µm without a unit: --lateral-unit says x's, and
+    // the heights follow it (--height-unit alone would change the slope
+    // a millionfold).
+    let microns = write("um.txt", "# x z", 1e6, 1e6);
+    let (got, notes) = moments(&microns, &["--lateral-unit", "um"]);
+    assert_eq!(
+        notes,
+        [
+            "x read in µm (--lateral-unit)",
+            "heights read in µm (the x column's unit; --height-unit to change)"
+        ]
+    );
+    close(&rows(&got), &rows(&want), 1e-12);
+    let (got, _) = moments(
+        &microns,
+        &["--lateral-unit", "microns", "--height-unit", "um"],
+    );
+    close(&rows(&got), &rows(&want), 1e-12);
+    // On a height matrix its header says the sizes' unit.
+    let map = write_map(
+        d.path(),
+        "map.txt",
+        "# Width: 5 um\n# Height: 3.75 um\n",
+        1.0,
+    );
+    let out = run(&["export", "--surface", &map, "--lateral-unit", "nm"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("--lateral-unit nm applies to an x z line scan and to files that give no lateral unit, not to a height matrix"),
+        "{err}"
     );
     for (name, header) in [
         ("paren.txt", "x (mm),z (um)"),

@@ -63,7 +63,7 @@ fn a_class_solves_the_lecturers_contact_scene_once() {
     // The lecturer's next load: the students follow, nothing is solved again.
     room.keys("lect", &["]"]);
     room.wait_all(&all, "the next load", 30, |s| {
-        s.contains("simulation at p̄ = 0.01778 H: contact")
+        s.contains("simulation at p̄ = 0.01778 H0: contact")
     });
     std::thread::sleep(std::time::Duration::from_millis(300));
     assert_eq!(srv.log().matches("contact: ").count(), 1);

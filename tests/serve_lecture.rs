@@ -27,7 +27,8 @@ fn stepped(from: f64, k: usize) -> f64 {
 /// The miss as a reader would say it: the percentage of the larger over
 /// the smaller, two digits, "low" or "high".
 fn miss(answer: f64, truth: f64) -> String {
-    let pc = (answer.max(truth) / answer.min(truth) - 1.0) * 100.0;
+    // Per cent of the truth: (1 − answer/truth) low, (answer/truth − 1) high.
+    let pc = (answer / truth - 1.0).abs() * 100.0;
     let pc = if pc < 10.0 {
         format!("{pc:.1}")
     } else {
@@ -209,10 +210,22 @@ fn a_poll_holds_never_leaks_and_ends_as_the_lecturer_says() {
     room.wait("lect2", "the CSV", 20, |_| csvs(dir.path()).len() == 1);
     let text = std::fs::read_to_string(&csvs(dir.path())[0]).unwrap();
     let q = "where does the plastic share pass 1/2?,zeta,";
-    let mut rows: Vec<&str> = text.lines().collect();
+    // Each answer's time (UTC, to the second) last; no step outside a lesson.
+    let mut rows: Vec<String> = text
+        .lines()
+        .map(|l| {
+            let (rest, time) = l.rsplit_once(',').unwrap();
+            assert!(
+                time.is_empty() || time == "time" || time.ends_with('Z'),
+                "{l}"
+            );
+            let rest = rest.strip_suffix(',').unwrap_or(rest);
+            rest.to_string()
+        })
+        .collect();
     assert_eq!(
         rows.remove(0),
-        "question,quantity,unit,truth,name,answer,offset"
+        "question,quantity,unit,truth,name,answer,offset,step"
     );
     rows.sort();
     let num = roughtui::physical::csv_number::format;
@@ -419,17 +432,24 @@ fn a_clean_goodbye_on_sigterm_and_ctrl_c() {
             assert!(!s.contains("Readout"), "{n}:\n{s}");
             assert_eq!(modes(&room, n), (false, true), "{n} after:\n{s}");
         }
-        let csv = csvs(dir.path());
+        // The poll was still open: its answers are saved too, and said.
         let log = srv.wait_log("the summary", 20, |l| l.contains("poll answers saved in:"));
+        let csv = csvs(dir.path());
+        assert_eq!(csv.len(), 2, "{log}");
         let students = if have_plink { 3 } else { 2 };
-        assert!(
-            log.contains(&format!(
-                "roughtui serve: the class has ended: {students} students came, 1 poll\n\
-                 poll answers saved in:\n  {}\n",
-                csv[0].display()
-            )),
-            "{log}"
+        let open = log
+            .split_once("the poll was still open: its 1 answer saved unrevealed in ")
+            .map(|(_, rest)| rest.lines().next().unwrap().to_string())
+            .unwrap_or_else(|| panic!("{log}"));
+        assert!(csv.iter().any(|c| c.display().to_string() == open), "{log}");
+        let summary = format!(
+            "roughtui serve: the class has ended: {students} students came, 1 poll\n\
+             poll answers saved in:\n"
         );
+        assert!(log.contains(&summary), "{log}");
+        for c in &csv {
+            assert!(log.contains(&format!("\n  {}\n", c.display())), "{log}");
+        }
         let mut child = srv;
         let status = child.child.wait().unwrap();
         assert_eq!(status.code(), Some(0), "{signal}");

@@ -1,5 +1,5 @@
 //! Lessons with real OpenSSH clients in tmux: `serve --lesson` steps the
-//! class through lessons/paper.ron (n / N, "step 3/7 · title" on every
+//! class through lessons/paper.ron (n / N, "step 3/8 · title" on every
 //! screen, a step's poll asked without its answer, one CSV of all its
 //! polls), `F` pulls every student back, `o` loads a scene for everyone;
 //! `roughtui --lesson` rehearses alone and a bad lesson is refused.
@@ -41,7 +41,7 @@ fn a_lesson_steps_polls_into_one_csv_and_everyone_follows() {
     room.open("bob", &srv.ssh_line("bob", &["-t"]));
     let all = ["lect", "ann", "bob"];
     room.wait_all(&all, "step 1", 30, |s| {
-        s.contains("step 1/7 · The claim: realistic hardness is elastic")
+        s.contains("step 1/8 · The claim: realistic hardness is elastic")
     });
     // The lecturer's footer and help name the lecturer's keys.
     let lect = room.capture("lect");
@@ -58,7 +58,10 @@ fn a_lesson_steps_polls_into_one_csv_and_everyone_follows() {
     let claim = |fig: &str, i: usize| {
         roughtui::figure::claims(&roughtui::presets::load(fig).unwrap())[i].at
     };
-    // Three polls: fig1's share, fig2's share, fig3's minimum.
+    // Three polls: fig1's share, fig2's share, and fig3's: does the
+    // share pass ½ at all with the size effect? Nowhere (the paper: the
+    // plastic area is zero over the whole range); ann answers with `0`.
+    let nowhere = roughtui::tui::class::NOWHERE;
     let polls = [
         (
             2,
@@ -66,19 +69,44 @@ fn a_lesson_steps_polls_into_one_csv_and_everyone_follows() {
             claim("fig1", 0),
         ),
         (3, "where does the plastic share pass ½?", claim("fig2", 0)),
-        (5, "where is the total slope smallest?", claim("fig3", 0)),
+        (
+            5,
+            "where does the plastic share pass ½ now (if anywhere)?",
+            nowhere,
+        ),
     ];
+    // The step before each poll hides its claims (and the readout's
+    // values at the marker) on every screen.
+    let hidden = "(this step's claims show after the lesson's next poll)";
+    let before = |step: usize| {
+        let screens = room.wait_all(&all, "the step before a poll", 30, |s| {
+            s.contains(&format!("step {step}/8 · "))
+        });
+        for s in screens {
+            assert!(s.contains("Ψ_P    ?"), "{s}");
+            // (Bob has not dismissed the last reveal: it stands in.)
+            assert!(s.contains(hidden) || s.contains("the model"), "{s}");
+        }
+    };
+    before(1);
     let mut at = 1;
     for (step, question, truth) in polls {
         while at < step {
             room.keys("lect", &["n"]);
             at += 1;
+            if at + 1 == step {
+                before(at);
+            }
         }
         let screens = room.wait_all(&all, "the step", 30, |s| {
-            s.contains(&format!("step {step}/7 · "))
+            s.contains(&format!("step {step}/8 · "))
         });
         // Before the poll opens no screen gives its answer away.
-        let shown = roughtui::physical::short_number(truth);
+        let shown = if truth == nowhere {
+            "nowhere".to_string()
+        } else {
+            roughtui::physical::short_number(truth)
+        };
         for (i, s) in screens.iter().enumerate() {
             assert!(!s.contains(&shown), "{shown}:\n{s}");
             // (Bob has not dismissed the last reveal: it stays.)
@@ -90,7 +118,7 @@ fn a_lesson_steps_polls_into_one_csv_and_everyone_follows() {
         room.wait_all(&["ann", "bob"], "the question", 30, |s| {
             s.contains(&format!("Predict: {question}"))
         });
-        room.keys("ann", &["Enter"]);
+        room.keys("ann", &[if truth == nowhere { "0" } else { "Enter" }]);
         room.wait("lect", "ann's answer", 30, |s| s.contains("1/2 answered"));
         room.keys("lect", &["v"]);
         let lect = room.wait("lect", "the reveal", 30, |s| s.contains("answers added to"));
@@ -99,7 +127,12 @@ fn a_lesson_steps_polls_into_one_csv_and_everyone_follows() {
             s.contains("you did not answer")
         });
         room.wait("ann", "the model's answer", 30, |s| {
-            s.contains("the model: ") && s.contains(&format!(" = {shown} · you: "))
+            let said = if truth == nowhere {
+                "the model: nowhere in the sweep · you: nowhere · right".to_string()
+            } else {
+                format!(" = {shown} · you: ")
+            };
+            s.contains("the model: ") && s.contains(&said)
         });
         room.keys("ann", &["Enter"]);
     }
@@ -113,22 +146,29 @@ fn a_lesson_steps_polls_into_one_csv_and_everyone_follows() {
         .collect();
     assert_eq!(
         text.lines().next(),
-        Some("question,quantity,unit,truth,name,answer,offset")
+        Some("question,quantity,unit,truth,name,answer,offset,step,time")
     );
     assert_eq!(rows.len(), 6, "{text}");
-    for (i, (_, question, truth)) in polls.iter().enumerate() {
+    for (i, (step, question, truth)) in polls.iter().enumerate() {
         let q = question.replace('½', "1/2");
         for r in &rows[2 * i..2 * i + 2] {
             assert_eq!(r[0], q, "{text}");
-            assert_eq!(r[3].parse::<f64>().unwrap(), *truth, "{text}");
+            if *truth == nowhere {
+                assert_eq!(r[3], "nowhere", "{text}");
+            } else {
+                assert_eq!(r[3].parse::<f64>().unwrap(), *truth, "{text}");
+            }
+            assert_eq!(r[7], step.to_string(), "{text}");
         }
         assert_eq!(rows[2 * i][4], "ann");
+        assert!(rows[2 * i][8].ends_with('Z'), "{text}");
         assert_eq!(rows[2 * i + 1][4..6], ["bob", "no answer"]);
     }
+    assert_eq!(rows[4][5], "nowhere", "{text}");
     // N goes back; F pulls a student exploring alone back.
     room.keys("lect", &["N"]);
     room.wait_all(&all, "step 4", 30, |s| {
-        s.contains("step 4/7 · The index behind it")
+        s.contains("step 4/8 · The index behind it")
     });
     room.keys("bob", &["m"]);
     room.wait("bob", "on his own", 20, |s| {
@@ -157,9 +197,9 @@ fn a_lesson_is_rehearsed_alone_and_a_bad_one_is_refused() {
         &[],
         &["--lesson", paper.to_str().unwrap()],
     );
-    p.wait_text("step 1/7 · The claim: realistic hardness is elastic");
+    p.wait_text("step 1/8 · The claim: realistic hardness is elastic");
     p.keys(&["n"]);
-    let s = p.wait_text("step 2/7 · Poll: where does fig. 1 turn plastic?");
+    let s = p.wait_text("step 2/8 · Poll: where does fig. 1 turn plastic?");
     assert!(
         s.contains("v opens this step's poll · n next step · N back"),
         "{s}"
@@ -176,7 +216,7 @@ fn a_lesson_is_rehearsed_alone_and_a_bad_one_is_refused() {
     }
     p.wait_text("the lesson's last step: N goes back");
     p.keys(&["N"]);
-    p.wait_text("step 6/7 · Rougher and softer");
+    p.wait_text("step 7/8 · Rougher and softer");
     p.keys(&["q"]);
     assert_eq!(p.exit_status(), 0);
     // A bad lesson: exit 2 and where the problem is.
@@ -233,4 +273,35 @@ fn o_loads_a_preset_or_a_snapshot_for_everyone() {
     // Esc closes the list without loading.
     room.keys("lect", &["o", "Escape", "Right"]);
     room.wait("ann", "still mine", 30, |s| s.contains("[mine.ron*]"));
+    // A lesson in the folder is listed as a lesson (a file that is neither
+    // a snapshot nor a lesson is not listed); picking it leads the class
+    // from its first step, `o` leaves the lesson (the step line says so)
+    // and `n` returns to the step.
+    let paper = Path::new(env!("CARGO_MANIFEST_DIR")).join("lessons/paper.ron");
+    let text = std::fs::read_to_string(paper).unwrap();
+    std::fs::write(dir.path().join("paper.ron"), text).unwrap();
+    std::fs::write(dir.path().join("junk.ron"), "(not: a scene)").unwrap();
+    room.keys("lect", &["o"]);
+    let list = room.wait("lect", "the list", 20, |s| s.contains("load a scene"));
+    assert!(
+        list.contains("lesson paper.ron: Is rough contact elastic?"),
+        "{list}"
+    );
+    assert!(
+        !list.contains("junk.ron") && !list.contains(" paper.ron\n"),
+        "{list}"
+    );
+    // The presets, then junk is left out, mine.ron, then the lesson.
+    room.keys("lect", &["Up", "Enter"]);
+    room.wait_all(&["lect", "ann"], "the lesson", 30, |s| {
+        s.contains("step 1/8 · The claim: realistic hardness is elastic")
+    });
+    room.keys("lect", &["n", "o", "Enter"]);
+    room.wait_all(&["lect", "ann"], "left the lesson", 30, |s| {
+        s.contains("left the lesson at step 2/8 for fig1 · n returns")
+    });
+    room.keys("lect", &["n"]);
+    room.wait_all(&["lect", "ann"], "back", 30, |s| {
+        s.contains("step 2/8 · Poll: where does fig. 1 turn plastic?")
+    });
 }

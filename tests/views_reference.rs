@@ -30,6 +30,12 @@ fn cases(text: &str) -> Vec<Vec<String>> {
 /// whose cases sweep different parameters in one file, `x` (across) and
 /// `y` (up).
 fn reference_name(k: usize, name: &str, inputs: &[&str]) -> String {
+    // The reference (scripts/gen_views.py) names H_y/H0 `hardness_ratio`;
+    // the export calls it `hy_over_h0` (its slopes' `h_use_over_h0` is
+    // the hardness in use, another quantity).
+    if name == "hy_over_h0" {
+        return "hardness_ratio".into();
+    }
     match inputs.get(k) {
         Some(&grid) if grid != name && rough_model::Axis::ALL.iter().any(|a| a.field() == name) => {
             grid.to_string()

@@ -17,7 +17,21 @@ pub fn load_source(src: &Source, setup: &Setup) -> anyhow::Result<State> {
 }
 
 /// The state named by `--preset`, `--load` or `--surface`, nothing set.
+/// How to read a surface (`--detrend`, `--periodic`, …) is refused without
+/// `--surface`: a preset has none, a snapshot records how its own is read.
 pub fn load_base(src: &Source, setup: &Setup) -> anyhow::Result<State> {
+    if src.surface.is_none() && setup.surface_options() != Default::default() {
+        let given = if src.load.is_some() {
+            "--load: a snapshot records how its surface is read"
+        } else {
+            "a preset: it has no surface"
+        };
+        anyhow::bail!(
+            "how to read a surface (--periodic, --pixel-size, --series, --direction, \
+             --channel, --height-unit, --lateral-unit, --max-undefined, --detrend) applies \
+             to --surface FILE, not to {given}"
+        );
+    }
     Ok(if let Some(path) = &src.load {
         snapshot::load_file(path)?
     } else if let Some(path) = &src.surface {

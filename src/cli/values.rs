@@ -27,6 +27,19 @@ pub(crate) fn parse_height_unit(s: &str) -> Result<rough_surface::HeightUnit, St
     })
 }
 
+/// `--max-undefined PERCENT`: a percentage above 0 and below 100 (`35`,
+/// `35%`, `35 %`).
+pub(crate) fn parse_percent(s: &str) -> Result<f64, String> {
+    let t = s.trim().trim_end_matches('%').trim_end();
+    match t.parse::<f64>() {
+        Ok(v) if v > 0.0 && v < 100.0 => Ok(v),
+        _ => Err(format!(
+            "\"{}\" is not a percentage above 0 and below 100 (e.g. 35)",
+            s.trim()
+        )),
+    }
+}
+
 /// `--fit-band FROM:TO`: two wavevectors in 1/m, or two wavelengths with
 /// a unit (q = 2π/λ), as (q_lo, q_hi).
 pub fn parse_fit_band(s: &str) -> Result<(f64, f64), String> {

@@ -17,12 +17,10 @@ pub mod convergence;
 pub mod engine;
 pub mod ensemble;
 pub mod local;
-pub mod map_svg;
 pub mod measured;
 mod rows;
 pub mod sampling;
 pub mod scene;
-pub mod svg;
 
 use std::io::Write;
 
@@ -167,6 +165,16 @@ impl Simulation {
     }
 }
 
+/// The side of the square `key` solves (m): the periodic cell of K
+/// longest wavelengths of a power law, a measured map's solved square.
+pub fn solved_side(state: &State, key: &SceneKey) -> anyhow::Result<f64> {
+    let p = &state.params;
+    Ok(match measured::heights_of(state)? {
+        Some((_, h)) => measured::plan(&h, p.zeta() * p.q0())?.length,
+        None => key.length(),
+    })
+}
+
 /// `points` loads p̄/H, log-spaced from 1e-3 to 1.
 pub fn loads(points: usize) -> Vec<f64> {
     let k = points.max(2) - 1;
@@ -186,10 +194,12 @@ pub fn sweep_zetas() -> Vec<f64> {
     (0..=7).map(|k| 2f64.powi(k)).collect()
 }
 
-/// The `#` lines of a contact CSV: the scene, the simulation, the surface
-/// and what it matches, the parameters and the theory.
+/// The `#` lines of a contact CSV: `scene` (the scene as every view's CSV
+/// has it, made by export), then what the simulation adds: how the surface
+/// is solved and what it matches, the hardness, the theory and the units.
 fn comments(
     out: &mut impl Write,
+    scene: &[String],
     state: &State,
     sim: &Simulation,
     spec: &Spec,
@@ -198,11 +208,13 @@ fn comments(
     let p = &state.params;
     // A sweep's first point solves another ζ than the scene's.
     let p = &p.with(rough_model::Axis::Zeta, sim.zeta).unwrap_or(*p);
-    writeln!(out, "# scene: {}", state.name)?;
+    for l in scene {
+        writeln!(out, "# {l}")?;
+    }
     if let Some(m) = &sim.measured {
         writeln!(
             out,
-            "# simulation: elastic–perfectly-plastic BEM (rough-contact), {m}, wavevectors \
+            "# simulation = elastic–perfectly-plastic BEM (rough-contact), {m}, wavevectors \
              q ≤ zeta q0 = {} 1/m kept",
             csv_number::format(p.zeta() * p.q0())
         )?;
@@ -211,7 +223,7 @@ fn comments(
         let s = &spec.sampling;
         writeln!(
             out,
-            "# simulation: elastic–perfectly-plastic BEM (rough-contact), periodic {n} × {n} grid \
+            "# simulation = elastic–perfectly-plastic BEM (rough-contact), periodic {n} × {n} grid \
              of side {} × 2π/q0 (cell: {}{}), {} nodes per shortest wavelength, power-law \
              Gaussian surface, {}{}",
             sim.cell,
@@ -235,7 +247,7 @@ fn comments(
         )?;
         writeln!(
             out,
-            "# surface: matched to the scene's rms slope sqrt(2 m2) = {} ({}); its own h_rms \
+            "# surface = matched to the scene's rms slope sqrt(2 m2) = {} ({}); its own h_rms \
              {} m{} against the scene's {} m",
             csv_number::format(sim.rms_slope),
             match state.moments {
@@ -260,7 +272,7 @@ fn comments(
     if let Some(law) = &sim.local {
         writeln!(
             out,
-            "# hardness per asperity: each node capped at H0 sqrt(1 + R*/(1.2 R)) with R the \
+            "# hardness per asperity = each node capped at H0 sqrt(1 + R*/(1.2 R)) with R the \
              curvature radius of its asperity, the paraboloid fitted to the surface under its \
              patch (H0/E* = {}, \
              R* = {} m): the asperities are the patches of the purely elastic contact at the \
@@ -272,24 +284,32 @@ fn comments(
     }
     writeln!(
         out,
-        "# h0_over_e = {}, hardness_in_use_over_e = {}, zeta = {}, hurst = {}, h_rms = {} m, \
-         q0 = {} 1/m, rms_slope = {}, size_effect = {}",
-        csv_number::format(p.h0_over_e()),
+        "# hardness_in_use_over_e = {} ({}/E*, the pressure cap{}); rms_slope = {} (the \
+         surface rescaled to the scene's sqrt(2 m2))",
         csv_number::format(sim.hardness),
-        csv_number::format(p.zeta()),
-        csv_number::format(p.hurst()),
-        csv_number::format(p.h_rms()),
-        csv_number::format(p.q0()),
-        csv_number::format(sim.rms_slope),
-        if state.size_effect { "on" } else { "off" }
+        state.hardness_name(),
+        if sim.local.is_some() {
+            ", the loads' unit"
+        } else {
+            ""
+        },
+        csv_number::format(sim.rms_slope)
     )?;
     writeln!(
         out,
-        "# theory: {:?} model, index in use {}; areas as fractions of A0, mean_gap in m; \
-         residual: rms violation of the contact conditions over h_rms (the largest over the \
-         seeds)",
-        state.model,
+        "# theory = the {} model's finite-load areas at the index in use {} = {}",
+        state.model.label(),
+        if state.size_effect {
+            "psi_star"
+        } else {
+            "psi_p"
+        },
         csv_number::format(sim.psi.to_f64())
+    )?;
+    writeln!(
+        out,
+        "# units: areas as fractions of A0, mean_gap in m; residual: rms violation of the \
+         contact conditions over h_rms (the largest over the seeds)"
     )?;
     Ok(())
 }
@@ -304,12 +324,13 @@ pub(crate) fn push_row(buf: &mut String, fields: &[f64]) {
     buf.push('\n');
 }
 
-/// The contact view as CSV.
+/// The contact view as CSV, `scene` its first `#` lines.
 pub fn write_contact(
     out: &mut impl Write,
     state: &State,
     points: usize,
     spec: &Spec,
+    scene: &[String],
 ) -> anyhow::Result<()> {
     let (sim, rows, heights) = load_rows(state, points, spec)?;
     let mut buf = String::new();
@@ -334,15 +355,20 @@ pub fn write_contact(
             ],
         );
     }
-    comments(out, state, &sim, spec, &heights)?;
+    comments(out, scene, state, &sim, spec, &heights)?;
     writeln!(out, "{CONTACT_HEADER}")?;
     out.write_all(buf.as_bytes())?;
     out.flush()?;
     Ok(())
 }
 
-/// The ζ sweep as CSV.
-pub fn write_contact_sweep(out: &mut impl Write, state: &State, spec: &Spec) -> anyhow::Result<()> {
+/// The ζ sweep as CSV, `scene` its first `#` lines.
+pub fn write_contact_sweep(
+    out: &mut impl Write,
+    state: &State,
+    spec: &Spec,
+    scene: &[String],
+) -> anyhow::Result<()> {
     let (sim, rows, heights) = sweep_rows(state, spec)?;
     let mut buf = String::new();
     for r in &rows {
@@ -369,7 +395,7 @@ pub fn write_contact_sweep(out: &mut impl Write, state: &State, spec: &Spec) -> 
             ],
         );
     }
-    comments(out, state, &sim, spec, &heights)?;
+    comments(out, scene, state, &sim, spec, &heights)?;
     if sim.local.is_some() {
         writeln!(
             out,
@@ -380,8 +406,8 @@ pub fn write_contact_sweep(out: &mut impl Write, state: &State, spec: &Spec) -> 
     }
     writeln!(
         out,
-        "# zeta swept over 1, 2, 4, …, 128 (a measured map's: those it resolves) at p_over_h = \
-         {SWEEP_LOAD}, each on its own grid (column grid); the lines above are the first point's"
+        "# the simulation and theory lines above are the first zeta's; each zeta solves its own \
+         grid (column grid) and hardness"
     )?;
     writeln!(out, "{SWEEP_HEADER}")?;
     out.write_all(buf.as_bytes())?;

@@ -1,16 +1,23 @@
 //! `roughtui export --view contact|contact-sweep|contact-map`: the scene's
-//! surface solved by the boundary-element contact (`crate::contact`).
+//! surface solved by the boundary-element contact (`crate::contact`), as
+//! CSV (the scene in `#` lines laid out as every other view's, then what
+//! the simulation adds) or as pictures drawn by `crate::figure`.
 
 use std::io::Write;
 
 use anyhow::bail;
+use rough_model::{areas, Axis};
 
 use crate::cli::{ExportArgs, FormatArg};
-use crate::contact::map_svg::{caption, map_svg};
 use crate::contact::scene::{classify, SceneKey};
 use crate::contact::{
-    self, Grid, Sampling, Seeds, Spec, DEFAULT_LOADS, DEFAULT_SEED, MAX_LOADS, SWEEP_LOAD,
+    self, load_rows, sweep_rows, Grid, Sampling, Seeds, Simulation, Spec, DEFAULT_LOADS,
+    DEFAULT_SEED, MAX_LOADS, SWEEP_LOAD,
 };
+pub use crate::contact::{CONTACT_HEADER, SWEEP_HEADER};
+use crate::figure::scene_text::full_lines_of;
+use crate::figure::{self, ContactLoads, ContactMap, ContactSweep};
+use crate::physical::csv_number;
 use crate::scene::State;
 
 /// The options of the contact views only.
@@ -94,15 +101,163 @@ pub fn export(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
     let state = super::state_of(args)?;
     let spec = spec_of(args, &state)?;
     match (args.format, sweep) {
-        (FormatArg::Csv, false) => contact::write_contact(out, &state, points, &spec),
-        (FormatArg::Csv, true) => contact::write_contact_sweep(out, &state, &spec),
-        (FormatArg::Svg, false) => contact::svg::contact(out, &state, points, &spec),
-        (FormatArg::Svg, true) => contact::svg::sweep(out, &state, &spec),
+        (FormatArg::Csv, false) => {
+            let span = figure::contact_span(&state, &contact::loads(points));
+            let scene = full_lines_of(&state, "contact", span);
+            contact::write_contact(out, &state, points, &spec, &scene)
+        }
+        (FormatArg::Csv, true) => {
+            let span = figure::sweep_span(&state, SWEEP_LOAD);
+            let scene = full_lines_of(&state, "contact-sweep", span);
+            contact::write_contact_sweep(out, &state, &spec, &scene)
+        }
+        (FormatArg::Svg, false) => write_svg(out, &contact_svg(&state, points, &spec)?),
+        (FormatArg::Svg, true) => write_svg(out, &sweep_svg(&state, &spec)?),
     }
 }
 
+fn write_svg(out: &mut impl Write, svg: &str) -> anyhow::Result<()> {
+    out.write_all(svg.as_bytes())?;
+    out.flush()?;
+    Ok(())
+}
+
+/// The solved surface in words, for the pictures: "128×128 nodes, a cell
+/// of 2 longest wavelengths, seeds 1…4".
+fn surface_words(sim: &Simulation, spec: &Spec) -> String {
+    let n = sim.contact.n();
+    match &sim.measured {
+        Some(_) => format!("{n}×{n} nodes of the measured map"),
+        None => format!(
+            "{n}×{n} nodes, a cell of {}, {}",
+            spec.sampling.cell_words(),
+            spec.seeds.words()
+        ),
+    }
+}
+
+/// `n` loads log-spaced from `from` to `to`.
+fn log_points(from: f64, to: f64, n: usize) -> Vec<f64> {
+    (0..n)
+        .map(|i| from * (to / from).powf(i as f64 / (n - 1) as f64))
+        .collect()
+}
+
+/// The contact view as a picture: the simulated areas at the loads, the
+/// theory's at 120 loads between the same ends.
+fn contact_svg(state: &State, points: usize, spec: &Spec) -> anyhow::Result<String> {
+    let (sim, rows, _) = load_rows(state, points, spec)?;
+    let surface = surface_words(&sim, spec);
+    let p_over_h: Vec<f64> = rows.iter().map(|r| r.p_over_h).collect();
+    let (from, to) = (p_over_h[0], p_over_h[p_over_h.len() - 1]);
+    let mut d = ContactLoads {
+        surface,
+        psi: sim.psi.to_f64(),
+        area: [
+            rows.iter().map(|r| r.area.mean).collect(),
+            rows.iter().map(|r| r.elastic.mean).collect(),
+            rows.iter().map(|r| r.plastic.mean).collect(),
+        ],
+        sd: (spec.seeds.count > 1).then(|| {
+            [
+                rows.iter().map(|r| r.area.sd).collect(),
+                rows.iter().map(|r| r.elastic.sd).collect(),
+                rows.iter().map(|r| r.plastic.sd).collect(),
+            ]
+        }),
+        p_over_h,
+        ..ContactLoads::default()
+    };
+    for x in log_points(from, to, 120) {
+        if let Ok(a) = areas(sim.model, sim.psi, x) {
+            d.theory_p.push(x);
+            d.theory[0].push(a.total);
+            d.theory[1].push(a.elastic);
+            d.theory[2].push(a.plastic);
+        }
+    }
+    figure::render_contact(state, &d)
+}
+
+/// The ζ sweep as a picture: the simulated shares at each solved ζ, the
+/// theory's at 100 ζ between the same ends.
+fn sweep_svg(state: &State, spec: &Spec) -> anyhow::Result<String> {
+    let (sim, rows, _) = sweep_rows(state, spec)?;
+    let surface = surface_words(&sim, spec);
+    let surface = match &sim.measured {
+        Some(_) => "the measured map".to_string(),
+        None => surface
+            .split_once(", ")
+            .map_or(surface.clone(), |(_, s)| s.to_string()),
+    };
+    let zeta: Vec<f64> = rows.iter().map(|r| r.zeta).collect();
+    let (from, to) = (zeta[0], zeta[zeta.len() - 1]);
+    let mut d = ContactSweep {
+        surface,
+        load: SWEEP_LOAD,
+        share: rows.iter().map(|r| r.share().mean).collect(),
+        sd: (spec.seeds.count > 1).then(|| rows.iter().map(|r| r.share().sd).collect()),
+        zeta,
+        ..ContactSweep::default()
+    };
+    let roughness = state.roughness();
+    for z in log_points(from, to.max(from * 1.0001), 100) {
+        let Ok(p) = state.params.with(Axis::Zeta, z) else {
+            continue;
+        };
+        let psi = roughness
+            .surface(&p, state.moments)
+            .indices
+            .psi_in_use(state.size_effect);
+        if let Ok(a) = areas(state.model, psi, SWEEP_LOAD) {
+            if a.total > 0.0 {
+                d.theory_zeta.push(z);
+                d.theory_share.push(a.plastic / a.total);
+            }
+        }
+    }
+    figure::render_contact_sweep(state, &d)
+}
+
+/// The contact map of `state` at p̄/H_use = `load` as a picture: `nodes`
+/// (n × n, 0 out, 1 elastic, 2 at the hardness), `area` and `plastic` the
+/// areas, `seed` the surface's (none for a measured map). The explorer's
+/// `p` on the contact view draws it too.
+pub fn map_picture(
+    state: &State,
+    (nodes, n, side): (&[u8], usize, f64),
+    load: f64,
+    (area, plastic): (f64, f64),
+    seed: Option<u64>,
+) -> anyhow::Result<String> {
+    let m = ContactMap {
+        seed,
+        nodes,
+        n,
+        side,
+        load,
+        area,
+        plastic,
+    };
+    figure::render_contact_map(state, &m, map_span(state, n, side, load, seed))
+}
+
+/// What the contact map spans, in full.
+fn map_span(state: &State, n: usize, side: f64, load: f64, seed: Option<u64>) -> String {
+    let h = state.hardness_name();
+    let what = match seed {
+        Some(s) => format!("periodic Gaussian surface, seed {s}"),
+        None => "the measured map".into(),
+    };
+    format!(
+        "contact-map = p_over_h = pbar/{h} = {}; simulation: {n} × {n} grid of side {} m, {what}",
+        csv_number::format(load),
+        csv_number::format(side)
+    )
+}
+
 /// `roughtui export --view contact-map`: the scene's surface at
-/// p̄ = 0.01 H, as SVG or as CSV digits.
+/// p̄ = 0.01 H_use, as SVG or as CSV digits.
 fn export_map(args: &ExportArgs, out: &mut impl std::io::Write) -> anyhow::Result<()> {
     for (given, opt) in [
         (args.grid.is_some(), "--grid"),
@@ -127,23 +282,42 @@ fn export_map(args: &ExportArgs, out: &mut impl std::io::Write) -> anyhow::Resul
     let mut c = key.build()?;
     let h = key.hardness();
     let r = c.solve(SWEEP_LOAD * h, h, &rough_contact::Options::default())?;
-    let map = classify(c.pressure(), h);
+    let map: Vec<u8> = classify(c.pressure(), h)
+        .into_iter()
+        .map(|v| v as u8)
+        .collect();
     let n = key.n;
+    let side = contact::solved_side(&state, &key)?;
     let seed = key.surface.is_none().then_some(seed);
-    let (title, note) = caption(&state.name, n, seed, SWEEP_LOAD, r.area, r.plastic_area);
+    let areas = (r.area, r.plastic_area);
     match args.format {
-        FormatArg::Svg => out.write_all(map_svg(&map, n, &title, &note).as_bytes())?,
+        FormatArg::Svg => out
+            .write_all(map_picture(&state, (&map, n, side), SWEEP_LOAD, areas, seed)?.as_bytes())?,
         FormatArg::Csv => {
-            let mut s = format!(
-                "# {title}\n# {note}\n# one line per grid row (y), one value per node (x): \
-                 0 out of contact, 1 elastic (0 < p < H), 2 at the hardness\n"
-            );
+            let hy = state.hardness_name();
+            let mut s = String::new();
+            let span = map_span(&state, n, side, SWEEP_LOAD, seed);
+            for l in full_lines_of(&state, "contact-map", span) {
+                s.push_str(&format!("# {l}\n"));
+            }
+            let share = if r.area > 0.0 {
+                r.plastic_area / r.area
+            } else {
+                0.0
+            };
+            s.push_str(&format!(
+                "# area = {} (A/A0), plastic_share = {} (the part of it at the hardness)\n\
+                 # one line per grid row (y, from the top), one value per node (x): 0 out of \
+                 contact, 1 elastic (0 < p < {hy}), 2 at the hardness (p = {hy})\n",
+                csv_number::format(r.area),
+                csv_number::format(share)
+            ));
             for row in map.chunks(n) {
                 for (i, v) in row.iter().enumerate() {
                     if i > 0 {
                         s.push(',');
                     }
-                    s.push(char::from(b'0' + *v as u8));
+                    s.push(char::from(b'0' + *v));
                 }
                 s.push('\n');
             }

@@ -16,6 +16,7 @@ use std::io::Write;
 use anyhow::bail;
 use rough_model::Sweep;
 
+pub use contact::{map_picture as contact_map_picture, CONTACT_HEADER, SWEEP_HEADER};
 pub use moments::{write_moments, MOMENTS_HEADER};
 pub use slopes::{write_csv, HEADER};
 pub use views::{

@@ -14,7 +14,8 @@ use crate::physical::csv_number;
 use crate::scene::State;
 
 /// The moments view's CSV header: ζ, q1 (1/m), λ1 (m), the profile moments
-/// m0 (m²), m2, m4 (1/m²), h_rms (m), h′, h″ (1/m) and R_s (m).
+/// m0 (m²), m2 (dimensionless), m4 (1/m²), h_rms (m), h′ (dimensionless), h″ (1/m) and
+/// R_s (m).
 pub const MOMENTS_HEADER: &str = "zeta,q1,lambda1,m0,m2,m4,h_rms,h_prime,h_dprime,r_s";
 
 /// Refuses the options that do not apply to the moments view.
@@ -61,7 +62,7 @@ pub fn write_moments(out: &mut impl Write, state: &State, points: usize) -> anyh
     // The scene first, as every CSV has it, then what stands beside the
     // moments.
     let span = format!(
-        "moments = zeta from {} to {}, {points} points (log-spaced)",
+        "cutoffs = zeta from {} to {}, {points} points (log-spaced)",
         csv_number::format(s.zeta[0]),
         csv_number::format(s.zeta[s.len() - 1])
     );

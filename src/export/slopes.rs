@@ -13,7 +13,7 @@ use crate::scene::State;
 
 /// The CSV header after the first column, which is named after the swept
 /// parameter (`zeta`, `h0_over_e`, `h_rms`, `hurst`, `r_star`).
-pub const HEADER: &str = "psi,hardness_ratio,elastic,plastic,total,persson_elastic";
+pub const HEADER: &str = "psi,h_use_over_h0,elastic,plastic,total,persson_elastic";
 
 /// Rows per block: blocks are computed and formatted on worker threads and
 /// written in order, so memory stays bounded however many points are asked

@@ -14,7 +14,7 @@ use crate::scene::State;
 
 /// The index view's CSV header after the first column, which is named
 /// after the swept parameter (`zeta`, `h0_over_e`, …).
-pub const INDICES_HEADER: &str = "psi_gw,psi_p,psi_star,psi_star_asymptotic,hardness_ratio";
+pub const INDICES_HEADER: &str = "psi_gw,psi_p,psi_star,psi_star_asymptotic,hy_over_h0";
 /// The map's CSV header after the first two columns, named after the
 /// parameters across and up (one row per cell, across fastest).
 pub const MAP_HEADER: &str = "psi,elastic,plastic,total,plastic_share";

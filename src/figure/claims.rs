@@ -50,7 +50,8 @@ pub struct Claim {
 }
 
 impl Claim {
-    /// The claim in words: "plastic share passes ½ at ζ = 322.3",
+    /// The claim in words, the place in the slider's unit: "plastic share
+    /// passes ½ at ζ = 322.3", "… at h_rms = 23.82 nm",
     /// "Ψ* falls below 1 at ζ = 5324", "total slope's minimum 3.91 at
     /// ζ = 3.19"; on an H0/E sweep the place also as E/H0, the paper's
     /// way of naming hardness ("… at H0/E = 0.00523 (E/H0 = 191.2)").
@@ -103,11 +104,12 @@ impl Claim {
         }
     }
 
-    /// The place with its unit: "321.5", "2.5e-8 m".
+    /// The place in the slider's unit: "321.5", "23.82 nm", "1.5 mm".
     fn number(&self) -> String {
-        let unit = super::axis_unit(self.axis);
-        let sep = if unit.is_empty() { "" } else { " " };
-        format!("{}{sep}{unit}", short_number(self.at))
+        match super::axis_unit(self.axis) {
+            "m" => crate::physical::short_length(self.at),
+            _ => short_number(self.at),
+        }
     }
 
     /// E/H0 at the place, on an H0/E sweep.
@@ -341,8 +343,16 @@ mod tests {
             value: 0.5,
             step: false,
         };
-        assert_eq!(c.text(), "plastic share passes ½ at h_rms = 2.5e-8 m");
-        assert_eq!(c.short_text(), "plastic share ½ at h_rms = 2.5e-8 m");
+        assert_eq!(c.text(), "plastic share passes ½ at h_rms = 25 nm");
+        assert_eq!(c.short_text(), "plastic share ½ at h_rms = 25 nm");
+        let c = Claim { at: 2.382e-8, ..c };
+        assert_eq!(c.text(), "plastic share passes ½ at h_rms = 23.82 nm");
+        let c = Claim {
+            axis: Axis::RStar,
+            at: 1.5e-3,
+            ..c
+        };
+        assert_eq!(c.short_text(), "plastic share ½ at R* = 1.5 mm");
         let c = Claim {
             kind: ClaimKind::IndexOne,
             axis: Axis::H0OverE,

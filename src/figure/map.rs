@@ -152,7 +152,7 @@ impl MapSpec {
     /// [`MapSpec::y_range`] for `roughness`: ζ up to the largest the data
     /// holds on a measured surface.
     pub fn y_range_of(axis: Axis, roughness: &Roughness) -> Sweep {
-        let zeta_max = roughness.zeta_max();
+        let zeta_max = crate::physical::clean(roughness.zeta_max());
         if axis == Axis::Zeta && zeta_max < 1e6 && zeta_max > 1.0 {
             if let Ok(s) = Sweep::new(axis, 1.0, zeta_max) {
                 return s;

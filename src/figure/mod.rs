@@ -44,7 +44,10 @@ pub use moments::{moment_comments, MomentSeries};
 pub use rough_model::slopes::{ELASTIC_BELOW, PLASTIC_ABOVE};
 pub use series::{IndexSeries, LoadCurve};
 pub use spectrum::{NotMeasured, SpectrumSeries};
-pub use svg::{render_moments_svg, render_svg};
+pub use svg::{
+    contact_span, render_contact, render_contact_map, render_contact_sweep, render_moments_svg,
+    render_svg, sweep_span, ContactLoads, ContactMap, ContactSweep,
+};
 
 /// The views, named where the scene keeps the one shown.
 pub use crate::scene::View;

@@ -91,8 +91,8 @@ pub fn moment_comments(state: &State) -> Vec<String> {
     // Every digit: these are data (the shortest text that reads back).
     let n = |v: f64| format!("{v:?}");
     let mut out = vec![
-        "columns: zeta, q1 (1/m), lambda1 (m), m0 (m^2), m2, m4 (1/m^2), h_rms (m), \
-         h_prime, h_dprime (1/m), r_s (m)"
+        "columns: zeta (1), q1 (1/m), lambda1 (m), m0 (m^2), m2 (1), m4 (1/m^2), h_rms (m), \
+         h_prime (1), h_dprime (1/m), r_s (m)"
             .to_string(),
     ];
     let Some(src) = &state.surface else {
@@ -117,6 +117,15 @@ pub fn moment_comments(state: &State) -> Vec<String> {
             n(r.rms_height),
             n(r.rms_slope)
         ));
+        let [sa, ssk, sku, sz] = r.amplitude_names();
+        let p = r.amplitude;
+        out.push(format!(
+            "{sa} = {} m, {ssk} = {}, {sku} = {}, {sz} = {} m (the same heights)",
+            n(p.mean_abs),
+            n(p.skewness),
+            n(p.kurtosis),
+            n(p.range)
+        ));
     }
     match src.fit() {
         Some(f) => {
@@ -128,12 +137,13 @@ pub fn moment_comments(state: &State) -> Vec<String> {
             };
             out.push(format!(
                 "fit: H = {}, standard error {}, band {}…{} /m ({how}; {} points, \
-                 rms {} decades): {verdict}",
+                 rms {} decades unweighted, {} weighted by modes): {verdict}",
                 n(f.hurst),
                 n(f.hurst_se),
                 n(f.q_lo),
                 n(f.q_hi),
                 f.points,
+                n(f.rms_decades_unweighted),
                 n(f.rms_decades)
             ));
             if let Some((_, h)) = crate::surface::fit_amplitude(&f) {

@@ -9,6 +9,7 @@
 use rough_model::Axis;
 
 use super::{axis_unit, FigureOptions, MapSpec, View};
+pub use crate::physical::short_length;
 use crate::physical::short_number;
 use crate::scene::State;
 
@@ -17,25 +18,6 @@ fn full(v: f64) -> String {
     let mut s = String::new();
     crate::physical::csv_number::push(&mut s, v);
     s
-}
-
-/// A length with an SI prefix, four significant digits: "19.82 nm".
-pub fn short_length(m: f64) -> String {
-    let a = m.abs();
-    let (k, unit) = if a == 0.0 || !a.is_finite() {
-        (1.0, "m")
-    } else if a < 1e-9 {
-        (1e12, "pm")
-    } else if a < 1e-6 {
-        (1e9, "nm")
-    } else if a < 1e-3 {
-        (1e6, "µm")
-    } else if a < 1.0 {
-        (1e3, "mm")
-    } else {
-        (1.0, "m")
-    };
-    format!("{} {unit}", short_number(m * k))
 }
 
 /// A parameter's value in the short form: lengths with a unit.
@@ -118,7 +100,7 @@ fn span_full(state: &State, view: View, opts: &FigureOptions) -> String {
         },
         View::Load => format!(
             "load = pbar/{} from 0 to 1, {} points, at the parameters above",
-            if state.size_effect { "H_y" } else { "H0" },
+            state.hardness_name(),
             opts.points
         ),
         View::Spectrum => match state.surface.as_ref().and_then(|s| s.fit()) {
@@ -247,11 +229,51 @@ pub fn short_lines_of(state: &State, span: Option<String>) -> Vec<String> {
     lines
 }
 
+/// What each column of `view`'s CSV means, one line: a name says one
+/// thing (`h_use_over_h0` is the hardness in use, `hy_over_h0` the
+/// size-dependent one whether it is in use or not).
+pub fn columns_line(state: &State, view: View) -> Option<String> {
+    let (psi, hy) = if state.size_effect {
+        ("psi_star, with the size effect on", "H_y/H0")
+    } else {
+        ("psi_p, with the size effect off", "1")
+    };
+    let h = state.hardness_name();
+    let swept = state.sweep.axis().field();
+    Some(match view {
+        View::Slopes => format!(
+            "columns: {swept} (the swept value); psi = the index in use ({psi}); \
+             h_use_over_h0 = the hardness in use over H0 (here {hy}); elastic, plastic, total = \
+             the initial slopes {h} dA/(A0 dpbar); persson_elastic = Persson's purely elastic \
+             slope sqrt(2/pi)/psi"
+        ),
+        View::Indices => format!(
+            "columns: {swept} (the swept value); psi_gw (Greenwood-Williamson), psi_p (Persson, \
+             bulk hardness H0), psi_star (size-dependent hardness H_y), psi_star_asymptotic \
+             (eq. 13, empty where undefined); hy_over_h0 = H_y/H0, the size-dependent hardness \
+             at lambda1 over H0, whether the size effect is on or off"
+        ),
+        View::Map => format!(
+            "columns: the two parameters; psi = the index in use ({psi}); elastic, plastic, \
+             total = the initial slopes {h} dA/(A0 dpbar); plastic_share = plastic/total"
+        ),
+        View::Load => {
+            format!("columns: load = pbar/{h}; elastic, plastic, total = the contact areas A/A0")
+        }
+        View::Spectrum => "columns: q (1/m); psd = the data's spectrum (C^iso in m^4 of a map, \
+                           C1D in m^3 of a profile); fit = the power law fitted over the fit \
+                           band (empty outside it)"
+            .to_string(),
+        View::Contact => return None,
+    })
+}
+
 /// The scene as CSV comment lines (`# ` before each line of
-/// [`full_lines`]), each ending in a newline.
+/// [`full_lines`], then what the columns mean), each ending in a newline.
 pub fn csv_comments(state: &State, view: View, opts: &FigureOptions) -> String {
     full_lines(state, view, opts)
-        .iter()
+        .into_iter()
+        .chain(columns_line(state, view))
         .map(|l| format!("# {l}\n"))
         .collect()
 }
@@ -259,15 +281,6 @@ pub fn csv_comments(state: &State, view: View, opts: &FigureOptions) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn lengths_take_a_prefix() {
-        assert_eq!(short_length(1.9816636488030044e-8), "19.82 nm");
-        assert_eq!(short_length(1e-3), "1 mm");
-        assert_eq!(short_length(6.283185307179586e-5), "62.83 µm");
-        assert_eq!(short_length(7e-10), "700 pm");
-        assert_eq!(short_length(0.0), "0 m");
-    }
 
     #[test]
     fn every_parameter_is_named_in_both_forms() {

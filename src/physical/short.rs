@@ -1,4 +1,4 @@
-//! Short numbers for claims, labels and the bench table.
+//! Short numbers and lengths for claims, labels and the bench table.
 
 /// Four significant digits, trailing zeros dropped: plain between 1e-3 and
 /// 1e4 (`322.3`, `0.02602`), else exponent form (`1.684e4`, `1e-308`).
@@ -27,9 +27,65 @@ pub fn short_number(v: f64) -> String {
     }
 }
 
+/// `v` as the shortest decimal of at most 9 significant digits within
+/// 1e-14 of it (relative: a few roundings), else `v` itself: a ratio that
+/// is whole in exact arithmetic (a line's largest ζ = n/2,
+/// 96.00000000000001 after the rounding of q_max/q0) is 96, and an
+/// irrational one (a map's √2 · 48 = 67.88225099390857) stays (the chance
+/// that it lies that close to a short decimal is some 1e-5).
+pub fn clean(v: f64) -> f64 {
+    if v == 0.0 || !v.is_finite() {
+        return v;
+    }
+    (1..=9)
+        .filter_map(|digits| format!("{v:.*e}", digits - 1).parse::<f64>().ok())
+        .find(|r| ((r - v) / v).abs() <= 1e-14)
+        .unwrap_or(v)
+}
+
+/// A length with an SI prefix, four significant digits: "19.82 nm".
+pub fn short_length(m: f64) -> String {
+    let a = m.abs();
+    let (k, unit) = if a == 0.0 || !a.is_finite() {
+        (1.0, "m")
+    } else if a < 1e-9 {
+        (1e12, "pm")
+    } else if a < 1e-6 {
+        (1e9, "nm")
+    } else if a < 1e-3 {
+        (1e6, "µm")
+    } else if a < 1.0 {
+        (1e3, "mm")
+    } else {
+        (1.0, "m")
+    };
+    format!("{} {unit}", short_number(m * k))
+}
+
 #[cfg(test)]
 mod tests {
-    use super::short_number;
+    use super::{clean, short_length, short_number};
+
+    #[test]
+    fn clean_numbers_are_the_nearest_short_ones() {
+        assert_eq!(clean(96.00000000000001), 96.0);
+        assert_eq!(clean(95.99999999999999), 96.0);
+        assert_eq!(clean(512.0000000000001), 512.0);
+        // A map's largest ζ, √2 · 96, is no short decimal: kept.
+        assert_eq!(clean(135.76450198781714), 135.76450198781714);
+        assert_eq!(clean(67.88225099390857), 67.88225099390857);
+        assert_eq!(clean(0.1 + 0.2), 0.3);
+        assert_eq!(clean(0.0), 0.0);
+    }
+
+    #[test]
+    fn lengths_take_a_prefix() {
+        assert_eq!(short_length(1.9816636488030044e-8), "19.82 nm");
+        assert_eq!(short_length(1e-3), "1 mm");
+        assert_eq!(short_length(6.283185307179586e-5), "62.83 µm");
+        assert_eq!(short_length(7e-10), "700 pm");
+        assert_eq!(short_length(0.0), "0 m");
+    }
 
     #[test]
     fn four_digits_trimmed() {

@@ -53,7 +53,10 @@ impl State {
     /// the data allows and the marker there, the exact model (the data
     /// deserve the exact solution; the paper's closed form is a key away).
     pub fn measured(src: SurfaceSource) -> anyhow::Result<State> {
-        let zeta_max = src.zeta_max();
+        // A whole ratio as it is (a line's or a map's profiles' n/2: 96,
+        // not 96.00000000000001); the table counts q within 1e-12 of q1
+        // as ≤ q1, so the last wavevector stays in.
+        let zeta_max = crate::physical::clean(src.zeta_max());
         if !(zeta_max > 1.0 && zeta_max.is_finite()) {
             anyhow::bail!(
                 "surface {}: its spectrum spans no band (largest ζ {zeta_max}): \

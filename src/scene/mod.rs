@@ -104,6 +104,25 @@ impl State {
         }
     }
 
+    /// The hardness in use by its own name: H_y with the size effect, H0
+    /// without (H alone is the Hurst exponent).
+    pub fn hardness_name(&self) -> &'static str {
+        if self.size_effect {
+            "H_y"
+        } else {
+            "H0"
+        }
+    }
+
+    /// The index in use by its name: Ψ* with the size effect, Ψ_P without.
+    pub fn index_name(&self) -> &'static str {
+        if self.size_effect {
+            "Ψ*"
+        } else {
+            "Ψ_P"
+        }
+    }
+
     /// Whether the scene is a measured surface's.
     pub fn is_measured(&self) -> bool {
         self.surface.is_some()

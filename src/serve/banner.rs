@@ -71,6 +71,71 @@ pub fn lines(addr: SocketAddr, lecturer: Option<&str>, extra: &[String]) -> Vec<
     out
 }
 
+/// The web page's address for a class: `http://HOST:PORT/`, with
+/// `?code=WORD` when the class has a code, for the banner's QR code and
+/// the lecturer's `Q`. On all interfaces HOST is the first of the
+/// machine's addresses ([`addresses`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Join {
+    pub url: String,
+    /// Every address the page is reached at (bound to all interfaces:
+    /// one per address of the machine).
+    pub pages: Vec<String>,
+}
+
+pub fn join_url(addr: SocketAddr, code: Option<&super::code::ClassCode>) -> Join {
+    let hosts: Vec<IpAddr> = if addr.ip().is_unspecified() {
+        addresses(addr.ip())
+    } else {
+        vec![addr.ip()]
+    };
+    let page = |ip: &IpAddr| match ip {
+        IpAddr::V6(v6) => format!("http://[{v6}]:{}/", addr.port()),
+        IpAddr::V4(v4) => format!("http://{v4}:{}/", addr.port()),
+    };
+    let pages: Vec<String> = hosts.iter().map(page).collect();
+    let first = pages
+        .first()
+        .cloned()
+        .unwrap_or_else(|| format!("http://{addr}/"));
+    let url = match code {
+        Some(c) => format!("{first}?code={}", percent(c.as_str())),
+        None => first,
+    };
+    Join { url, pages }
+}
+
+/// `s` with everything but unreserved URL characters as `%XX`.
+fn percent(s: &str) -> String {
+    s.bytes()
+        .map(|b| {
+            if b.is_ascii_alphanumeric() || b"-._~".contains(&b) {
+                (b as char).to_string()
+            } else {
+                format!("%{b:02X}")
+            }
+        })
+        .collect()
+}
+
+/// The banner's lines about the web page: its address(es) and the join
+/// address the QR code (printed after them on a terminal) holds.
+pub fn web_lines(addr: SocketAddr, join: &Join) -> Vec<String> {
+    let mut out = vec![format!("web: listening on {addr}")];
+    match join.pages.as_slice() {
+        [one] => out.push(format!("students on the web: {one}")),
+        many => {
+            out.push("students on the web, at any of:".into());
+            out.extend(many.iter().map(|p| format!("  {p}")));
+        }
+    }
+    out.push(format!(
+        "join address (the QR code; the lecturer's Q shows it): {}",
+        join.url
+    ));
+    out
+}
+
 /// The console's last lines when the server stops.
 pub fn summary(seen: u64, polls: u64, saved: &[PathBuf]) -> Vec<String> {
     let plural = |n: u64, one: &str, many: &str| format!("{n} {}", if n == 1 { one } else { many });
@@ -91,6 +156,26 @@ pub fn summary(seen: u64, polls: u64, saved: &[PathBuf]) -> Vec<String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_join_address_carries_the_code() {
+        let a: SocketAddr = "192.0.2.7:8080".parse().unwrap();
+        let code = crate::serve::code::ClassCode::word("gr än&it").unwrap();
+        let j = join_url(a, Some(&code));
+        assert_eq!(j.url, "http://192.0.2.7:8080/?code=gr%20%C3%A4n%26it");
+        assert_eq!(j.pages, ["http://192.0.2.7:8080/"]);
+        let j = join_url("[2001:db8::7]:80".parse().unwrap(), None);
+        assert_eq!(j.url, "http://[2001:db8::7]:80/");
+        let l = web_lines(a, &join_url(a, None));
+        assert_eq!(
+            l,
+            [
+                "web: listening on 192.0.2.7:8080",
+                "students on the web: http://192.0.2.7:8080/",
+                "join address (the QR code; the lecturer's Q shows it): http://192.0.2.7:8080/"
+            ]
+        );
+    }
 
     #[test]
     fn both_commands_name_the_same_host() {

@@ -56,6 +56,11 @@ impl ClassCode {
         ClassCode::word(&text).with_context(|| format!("class code file {}", path.display()))
     }
 
+    /// The code itself (for the web page's join address).
+    pub fn as_str(&self) -> &str {
+        &self.0
+    }
+
     /// Whether `typed` (blanks around it dropped) is the code; the time
     /// taken does not depend on where they differ.
     pub fn matches(&self, typed: &[u8]) -> bool {

@@ -2,6 +2,8 @@
 //! (a [`Shown`]) on a latest-value channel, so a slow student never queues
 //! anything; each student's [`Follow`] decides whether to show it.
 
+use std::sync::Arc;
+
 use rough_model::Axis;
 
 use crate::figure::View;
@@ -51,6 +53,50 @@ impl Shown {
         app.modified = self.modified;
         app.file.clone_from(&self.file);
         app.class.step.clone_from(&self.step);
+    }
+}
+
+/// The scene a student's explorer shows, by identity: a lecturer's state
+/// as published, or a poll's scene with the marker's slider selected.
+/// Two explorers that apply one such scene (the same `Arc`, which the
+/// token keeps alive, so its address is not reused) show the same scene.
+#[derive(Clone, Debug)]
+pub enum Scene {
+    Lecturer(Arc<Shown>),
+    Poll(Arc<super::class::Poll>),
+}
+
+impl PartialEq for Scene {
+    fn eq(&self, other: &Scene) -> bool {
+        match (self, other) {
+            (Scene::Lecturer(a), Scene::Lecturer(b)) => Arc::ptr_eq(a, b),
+            (Scene::Poll(a), Scene::Poll(b)) => Arc::ptr_eq(a, b),
+            _ => false,
+        }
+    }
+}
+
+impl Scene {
+    /// Makes `app` show this scene.
+    pub fn apply(&self, app: &mut App) {
+        match self {
+            Scene::Lecturer(shown) => shown.apply(app),
+            Scene::Poll(p) => {
+                p.scene.apply(app);
+                // The marker's slider selected.
+                if let Some(i) = Axis::ALL.iter().position(|a| *a == p.question.axis) {
+                    app.selected = i;
+                }
+            }
+        }
+    }
+
+    /// The view the scene shows.
+    pub fn view(&self) -> View {
+        match self {
+            Scene::Lecturer(shown) => shown.view,
+            Scene::Poll(p) => p.scene.view,
+        }
     }
 }
 

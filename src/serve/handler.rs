@@ -318,9 +318,7 @@ impl russh::server::Handler for Handler {
         }
         session::spawn(Start {
             shared: Arc::clone(&self.shared),
-            channel: ch,
-            conn: session.handle(),
-            kill: self.kill.clone(),
+            wire: session::Wire::ssh(ch, session.handle(), self.kill.clone()),
             role,
             size,
             name: std::mem::take(&mut self.user),

@@ -1,5 +1,6 @@
-//! `roughtui serve`: the explorer for a classroom over SSH. Each connection
-//! gets its own explorer at its own terminal size; a lecturer (by key) leads
+//! `roughtui serve`: the explorer for a classroom over SSH and the web
+//! ([`web`]: a page and a WebSocket carrying the same session). Each
+//! connection gets its own explorer at its own terminal size; a lecturer (by key) leads
 //! and students follow until they explore on their own. Nobody gets a shell
 //! or anything else: see [`handler`] for what is refused, [`limits`] for
 //! the bounds.
@@ -10,6 +11,7 @@ pub mod class;
 pub mod code;
 pub mod csv;
 pub mod follow;
+pub mod frames;
 pub mod handler;
 pub mod host_key;
 pub mod input;
@@ -21,6 +23,8 @@ pub mod poll;
 pub mod session;
 pub mod stream;
 pub mod term;
+pub mod web;
+pub mod wire;
 
 use std::io::Write;
 use std::net::SocketAddr;
@@ -60,7 +64,10 @@ pub const MAX_AUTH_ATTEMPTS: usize = 6;
 /// What `roughtui serve` was asked for.
 #[derive(Clone, Debug)]
 pub struct Options {
-    pub listen: SocketAddr,
+    /// `--listen`: the SSH server's address; `None` with `--web` alone.
+    pub listen: Option<SocketAddr>,
+    /// `--web`: the web page's address.
+    pub web: Option<SocketAddr>,
     pub host_key: Option<PathBuf>,
     pub lecturer_keys: Option<PathBuf>,
     pub state: State,
@@ -100,7 +107,7 @@ pub struct Shared {
     /// `--marker`, if given.
     pub marker: Option<crate::tui::glyphs::Glyphs>,
     /// The lecturer's latest state; `None` while no lecturer is connected.
-    pub follow: watch::Sender<Option<Shown>>,
+    pub follow: watch::Sender<Option<Arc<Shown>>>,
     /// What the lecturer showed last, kept after they leave: a lecturer who
     /// connects (again, or a second time) starts from it.
     last: Mutex<Option<Shown>>,
@@ -115,18 +122,20 @@ pub struct Shared {
     /// Set when the server stops: every session says goodbye.
     pub ending: watch::Sender<bool>,
     /// Students' places (`--max-sessions`, `--max-per-address`), taken at
-    /// login; the lecturer's key needs none.
+    /// login (SSH) or join (the web); the lecturer's key needs none.
     pub seats: Limits,
+    /// The web page's join address with the class code (`--web`), for
+    /// the lecturer's `Q`.
+    pub join_url: Option<String>,
+    /// The frames students at one screen share.
+    pub frames: frames::Frames,
 }
 
 impl Shared {
     fn lecturer_joined(&self, app: &mut crate::tui::app::App) {
         self.lecturers.fetch_add(1, Ordering::SeqCst);
         if let Some(lesson) = &self.lesson {
-            app.class.lesson = Some(crate::lesson::LessonAt {
-                lesson: Arc::clone(lesson),
-                at: 0,
-            });
+            app.class.lesson = Some(crate::lesson::LessonAt::new(Arc::clone(lesson), 0));
             crate::lesson::show(app);
         }
         let last = self.last.lock().ok().and_then(|l| l.clone());
@@ -146,10 +155,10 @@ impl Shared {
             *last = Some(shown.clone());
         }
         self.follow.send_if_modified(|cur| {
-            if cur.as_ref() == Some(&shown) {
+            if cur.as_deref() == Some(&shown) {
                 return false;
             }
-            *cur = Some(shown);
+            *cur = Some(Arc::new(shown));
             true
         });
     }
@@ -180,25 +189,29 @@ pub fn run(opts: Options) -> anyhow::Result<()> {
     rt.block_on(serve(opts))
 }
 
-async fn serve(opts: Options) -> anyhow::Result<()> {
+/// The SSH side, when `--listen` asks for it: its listener, its
+/// configuration and the banner's host-key line.
+struct Ssh {
+    listener: TcpListener,
+    config: Arc<russh::server::Config>,
+    key_line: String,
+}
+
+async fn ssh(opts: &Options, listen: SocketAddr) -> anyhow::Result<Ssh> {
     let key_path = match &opts.host_key {
         Some(p) => p.clone(),
         None => host_key::default_path()?,
     };
     let (key, generated) = host_key::load_or_create(&key_path)?;
-    let lecturer_keys = match &opts.lecturer_keys {
-        Some(p) => LecturerKeys::read(p)?,
-        None => LecturerKeys::default(),
-    };
-    let listener = TcpListener::bind(opts.listen)
+    let listener = TcpListener::bind(listen)
         .await
-        .with_context(|| format!("cannot listen on {}", opts.listen))?;
-    let addr = listener.local_addr()?;
-    let fingerprint = host_key::fingerprint(&key);
-    // The console log's writer exists before the banner, so that a server
-    // that has printed its banner has all its threads.
-    let log = Log::new(opts.quiet);
-
+        .with_context(|| format!("cannot listen on {listen}"))?;
+    let key_line = format!(
+        "host key {} ({}): {}",
+        key_path.display(),
+        if generated { "new" } else { "reused" },
+        host_key::fingerprint(&key)
+    );
     let mut methods = vec![MethodKind::None, MethodKind::PublicKey];
     if opts.class_code.is_some() {
         methods.push(MethodKind::KeyboardInteractive);
@@ -215,6 +228,35 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         nodelay: true,
         ..Default::default()
     });
+    Ok(Ssh {
+        listener,
+        config,
+        key_line,
+    })
+}
+
+async fn serve(opts: Options) -> anyhow::Result<()> {
+    let lecturer_keys = match &opts.lecturer_keys {
+        Some(p) => LecturerKeys::read(p)?,
+        None => LecturerKeys::default(),
+    };
+    let ssh = match opts.listen {
+        Some(listen) => Some(ssh(&opts, listen).await?),
+        None => None,
+    };
+    let web = match opts.web {
+        Some(a) => Some(
+            TcpListener::bind(a)
+                .await
+                .with_context(|| format!("cannot listen on {a} for the web"))?,
+        ),
+        None => None,
+    };
+    let web_addr = web.as_ref().map(TcpListener::local_addr).transpose()?;
+    let join_url = web_addr.map(|a| banner::join_url(a, opts.class_code.as_ref()));
+    // The console log's writer exists before the banner, so that a server
+    // that has printed its banner has all its threads.
+    let log = Log::new(opts.quiet);
     // One contact engine for the class: a scene is solved once for all
     // who show it, each job's end on the console.
     let contact = crate::contact::engine::Engine::new(
@@ -243,6 +285,8 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         lesson: opts.lesson.map(Arc::new),
         lesson_csv: Mutex::new(None),
         seats: Limits::new(opts.max_sessions, opts.max_per_address),
+        join_url: join_url.as_ref().map(|u| u.url.clone()),
+        frames: frames::Frames::default(),
     });
     if shared.log.on() {
         tokio::spawn(summaries(Arc::clone(&shared)));
@@ -253,6 +297,9 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         opts.max_sessions + LECTURER_PLACES,
         opts.max_per_address + LECTURER_PLACES,
     );
+    // The web's connections: a page's files and each student's WebSocket
+    // (a class behind one address loads its pages at once).
+    let web_conns = Limits::new(2 * opts.max_sessions + 32, 2 * opts.max_per_address + 16);
     let turned_away = Limits::new(TURNED_AWAY.0, TURNED_AWAY.1);
     let login = login_deadline();
     let mut stop = Stop::new()?;
@@ -260,18 +307,6 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
     // engine's threads started, no file open for set-up): a server that has
     // printed it holds only what it keeps. A console that is gone (a closed
     // pipe) does not stop the server.
-    let mut out = std::io::stdout().lock();
-    macro_rules! say {
-        ($($t:tt)*) => {
-            let _ = writeln!(out, $($t)*);
-        };
-    }
-    say!("roughtui serve: listening on {addr}");
-    say!(
-        "host key {} ({}): {fingerprint}",
-        key_path.display(),
-        if generated { "new" } else { "reused" }
-    );
     let mut extra = Vec::new();
     if shared.class_code.is_some() {
         extra.push("class code: on (students type it at \"class code:\")".to_string());
@@ -280,14 +315,48 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         extra.push("log: a line per join and leave (times UTC), a summary each minute".into());
     }
     let lecturer = shared.lecturer_keys.any().then_some(auth::LECTURER);
-    for line in banner::lines(addr, lecturer, &extra) {
-        say!("{line}");
+    let mut lines = Vec::new();
+    if let Some(ssh) = &ssh {
+        lines.push(format!(
+            "roughtui serve: listening on {}",
+            ssh.listener.local_addr()?
+        ));
+        lines.push(ssh.key_line.clone());
+        lines.extend(banner::lines(ssh.listener.local_addr()?, lecturer, &extra));
+    } else {
+        lines.push("no SSH (no --listen): the lecturer leads only over SSH".into());
+        lines.extend(extra);
+    }
+    if let (Some(addr), Some(join)) = (web_addr, &join_url) {
+        lines.extend(banner::web_lines(addr, join));
+    }
+    let mut out = std::io::stdout().lock();
+    for line in lines {
+        let _ = writeln!(out, "{line}");
+    }
+    if let Some(join) = &join_url {
+        use std::io::IsTerminal;
+        if out.is_terminal() {
+            for line in crate::tui::qr::terminal_lines(&join.url) {
+                let _ = writeln!(out, "  {line}");
+            }
+        }
     }
     let _ = out.flush();
     drop(out);
+    if let Some(listener) = web {
+        tokio::spawn(web::serve(listener, Arc::clone(&shared), web_conns.clone()));
+    }
+    let ssh_listener = ssh.as_ref().map(|s| &s.listener);
     loop {
+        let accept = async {
+            match ssh_listener {
+                Some(l) => l.accept().await,
+                None => std::future::pending().await,
+            }
+        };
         let (socket, peer) = tokio::select! {
-            accepted = listener.accept() => match accepted {
+            accepted = accept => match accepted {
                 Ok(x) => x,
                 // Out of file descriptors and the like: wait, then go on.
                 Err(_) => {
@@ -297,8 +366,9 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
             },
             () = stop.wait() => break,
         };
+        let Some(ssh) = &ssh else { continue };
         let _ = socket.set_nodelay(true);
-        let config = Arc::clone(&config);
+        let config = Arc::clone(&ssh.config);
         let shared = Arc::clone(&shared);
         match limits.enter(peer.ip()) {
             Ok(permit) => {
@@ -322,8 +392,8 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
             }
         }
     }
-    drop(listener);
-    goodbye(&shared, &limits).await;
+    drop(ssh);
+    goodbye(&shared, &[&limits, &web_conns]).await;
     Ok(())
 }
 
@@ -375,14 +445,19 @@ impl Stop {
 /// the alternate screen, cursor shown, colours reset, "the class has
 /// ended") and closes; after at most [`GOODBYE_TIME`] the console's
 /// summary.
-async fn goodbye(shared: &Shared, limits: &Limits) {
+async fn goodbye(shared: &Shared, limits: &[&Limits]) {
+    // An open poll's answers are not lost with the class.
+    let open = poll::save_open(shared);
     shared.ending.send_replace(true);
     let until = tokio::time::Instant::now() + GOODBYE_TIME;
-    while limits.open() > 0 && tokio::time::Instant::now() < until {
+    while limits.iter().any(|l| l.open() > 0) && tokio::time::Instant::now() < until {
         tokio::time::sleep(Duration::from_millis(50)).await;
     }
     let saved = shared.saved.lock().map(|s| s.clone()).unwrap_or_default();
     let mut out = std::io::stdout().lock();
+    if let Some(line) = open {
+        let _ = writeln!(out, "{line}");
+    }
     for line in banner::summary(shared.class.seen(), shared.class.polls(), &saved) {
         let _ = writeln!(out, "{line}");
     }
@@ -398,6 +473,7 @@ async fn summaries(shared: Arc<Shared>) {
         tick.tick().await;
         if let Some(line) = shared.class.summary() {
             shared.log.line(&line);
+            shared.log.line(&shared.frames.summary());
         }
     }
 }

@@ -50,32 +50,46 @@ impl Write for FrameBuf {
 pub type Slot = mpsc::Sender<Vec<u8>>;
 
 /// Why the server ends a session, set before the slot is dropped: the
-/// client's terminal shows it as a line on its normal screen.
+/// client's terminal shows it as a line on its normal screen; and whether
+/// the terminal is on its normal screen already (a student's printed
+/// snapshot), where leaving the alternate screen again would put the
+/// cursor back where the session began, over the snapshot.
 #[derive(Clone, Debug, Default)]
-pub struct Bye(Arc<Mutex<Option<String>>>);
+pub struct Bye(Arc<Mutex<(Option<String>, bool)>>);
 
 impl Bye {
     pub fn set(&self, why: impl Into<String>) {
-        *self.0.lock().unwrap_or_else(|p| p.into_inner()) = Some(why.into());
+        self.0.lock().unwrap_or_else(|p| p.into_inner()).0 = Some(why.into());
     }
 
-    fn take(&self) -> Option<String> {
-        self.0.lock().unwrap_or_else(|p| p.into_inner()).take()
+    /// The session printed on the normal screen (`true`) or went back to
+    /// the alternate one.
+    pub fn normal_screen(&self, on: bool) {
+        self.0.lock().unwrap_or_else(|p| p.into_inner()).1 = on;
+    }
+
+    /// Why the server ends the session, if it does.
+    pub fn why(&self) -> Option<String> {
+        self.0.lock().unwrap_or_else(|p| p.into_inner()).0.clone()
+    }
+
+    /// The goodbye's bytes for the terminal as it is now.
+    pub fn bytes(&self) -> Vec<u8> {
+        let (why, normal) = std::mem::take(&mut *self.0.lock().unwrap_or_else(|p| p.into_inner()));
+        goodbye(why.as_deref(), !normal)
     }
 }
 
 /// What ends a session on the client's terminal: out of the alternate
-/// screen, the cursor shown, colours and attributes reset, then `why` (if
-/// the server ended it) on a line of its own.
-pub fn goodbye(why: Option<&str>) -> Vec<u8> {
+/// screen (when `alt`: it is on it), the cursor shown, colours and
+/// attributes reset, then `why` (if the server ended it) on a line of its
+/// own.
+pub fn goodbye(why: Option<&str>, alt: bool) -> Vec<u8> {
     let mut bye = Vec::new();
-    let _ = crossterm::execute!(
-        bye,
-        LeaveAlternateScreen,
-        Show,
-        ResetColor,
-        SetAttribute(Attribute::Reset)
-    );
+    if alt {
+        let _ = crossterm::execute!(bye, LeaveAlternateScreen);
+    }
+    let _ = crossterm::execute!(bye, Show, ResetColor, SetAttribute(Attribute::Reset));
     if let Some(why) = why {
         bye.extend_from_slice(format!("\r\nroughtui: {why}\r\n").as_bytes());
     }
@@ -128,7 +142,7 @@ async fn write_frames(
             _ => return false,
         }
     }
-    let bye = goodbye(why.take().as_deref());
+    let bye = why.bytes();
     let _ = tokio::time::timeout(STALL, async {
         let _ = out.data_bytes(bye).await;
         let _ = out.exit_status(0).await;

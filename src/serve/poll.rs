@@ -12,10 +12,8 @@
 use std::sync::Arc;
 use std::time::SystemTime;
 
-use rough_model::Axis;
-
 use super::class::Poll;
-use super::follow::FOLLOWING;
+use super::follow::{Scene, FOLLOWING};
 use super::session::Seat;
 use crate::snapshot;
 use crate::tui::app::Message;
@@ -47,30 +45,48 @@ pub(super) fn on_poll(s: &mut Seat, poll: Option<Arc<Poll>>) -> bool {
         if s.poll == Some(p.id) {
             return false;
         }
-        // A new poll: on its scene, the marker's slider selected.
+        // A new poll: on its scene, the marker's slider selected (when
+        // the explorer next needs it: every student's first frame of the
+        // question is one render).
         s.poll = Some(p.id);
-        p.scene.apply(app);
-        if let Some(i) = Axis::ALL.iter().position(|a| *a == p.question.axis) {
-            app.selected = i;
-        }
+        app.class.tally = None;
+        let question = p.question;
+        s.show(Scene::Poll(p));
+        let app = &mut s.ex.app;
         app.mode = crate::tui::app::Mode::Main;
         app.class.asked = Some(Asked {
-            question: p.question,
+            question,
             answer: None,
             revealed: false,
+            changed: false,
         });
         app.set_status(PREDICT, false);
         s.follow.on_poll();
         s.note(super::class::Note::Following(false));
         return true;
     }
+    // The lecturer showed the answers to everyone (`d`).
+    let mut shown = false;
+    if let (Some(answers), None) = (&p.answers, &app.class.tally) {
+        app.class.tally = Some(crate::tui::class::Tally {
+            question: p.question,
+            answers: answers.to_vec(),
+            asked: answers.len(),
+            revealed: true,
+            sweep: p.scene.state.sweep,
+        });
+        shown = true;
+    }
     // Revealed: only those who were asked see the result.
     if s.poll != Some(p.id) {
-        return false;
+        return shown;
     }
     match app.class.asked.as_mut() {
-        Some(a) if !a.revealed => a.revealed = true,
-        _ => return false,
+        Some(a) if !a.revealed => {
+            a.revealed = true;
+            a.changed = p.changed;
+        }
+        _ => return shown,
     }
     let lecturer = s.lecturer.borrow().is_some();
     let e = s.follow.on_poll_end(lecturer);
@@ -81,16 +97,36 @@ pub(super) fn on_poll(s: &mut Seat, poll: Option<Arc<Poll>>) -> bool {
 /// The poll keys: the lecturer's `v`, `C` and `S`, a student's Enter.
 pub(super) fn on_key(s: &mut Seat, msg: Message) {
     match msg {
-        Message::Answer => answer(s),
+        Message::Answer => answer(s, false),
+        Message::AnswerNowhere => answer(s, true),
+        Message::ShareAnswers if s.is_lecturer() => {
+            let text = if s.shared.class.share_answers() {
+                "every screen shows the answers' histogram now"
+            } else {
+                "no revealed poll: d shows its answers after v reveals"
+            };
+            s.ex.app.set_status(text, false);
+        }
         Message::Poll if s.is_lecturer() => {
             let class = &s.shared.class;
             let app = &mut s.ex.app;
             match class.poll() {
                 Some(p) if !p.revealed => {
-                    class.reveal();
-                    // The lesson's step has had its poll: its answer shows.
+                    // The lecturer may have moved on since asking: the
+                    // truth is the scene's as asked, and says so.
+                    let changed = !crate::tui::caption::same_scene(&app.state, &p.scene.state);
+                    class.reveal(changed);
+                    // The lesson's step has had its poll: its answer and
+                    // its claims show (and, from now on, those of the
+                    // steps before it that hid theirs for this poll).
                     if let Some(step) = app.class.step.as_mut() {
                         step.pending = None;
+                        step.claims_hidden = false;
+                        if step.left.is_none() {
+                            if let Some(at) = app.class.lesson.as_mut() {
+                                at.mark_revealed();
+                            }
+                        }
                     }
                     let q = &p.question;
                     let saved = match to_lesson_csv(s) {
@@ -98,8 +134,16 @@ pub(super) fn on_key(s: &mut Seat, msg: Message) {
                         Some(Err(e)) => format!("{e:#}"),
                         None => "S saves the answers".into(),
                     };
+                    let asked = if changed {
+                        " (for the scene as asked: it has changed since)"
+                    } else {
+                        ""
+                    };
                     s.ex.app.set_status(
-                        format!("revealed: {} · {saved} · v asks again", q.value(q.truth)),
+                        format!(
+                            "revealed: {}{asked} · {saved} · v asks again",
+                            q.value(q.truth)
+                        ),
                         false,
                     );
                 }
@@ -133,8 +177,12 @@ pub(super) fn on_key(s: &mut Seat, msg: Message) {
 
 /// The poll of a lesson's step on a value, if the lecturer is at one.
 fn step_value(app: &crate::tui::app::App) -> Option<Question> {
+    if app.class.step.as_ref().is_some_and(|s| s.left.is_some()) {
+        return None;
+    }
     let q = app.class.lesson.as_ref()?.step().poll?;
-    (q.ask == Ask::Typed && q.axis == app.state.sweep.axis()).then_some(q)
+    let own = matches!(q.ask, Ask::Typed | Ask::ShareEver);
+    (own && q.axis == app.state.sweep.axis()).then_some(q)
 }
 
 /// In a lesson, the revealed poll's rows appended to the lesson's one CSV
@@ -142,7 +190,7 @@ fn step_value(app: &crate::tui::app::App) -> Option<Question> {
 /// outside a lesson.
 fn to_lesson_csv(s: &Seat) -> Option<anyhow::Result<std::path::PathBuf>> {
     use std::io::Write;
-    let lesson = s.shared.lesson.as_ref()?;
+    let lesson = &s.ex.app.class.lesson.as_ref()?.lesson;
     let rows = s.shared.class.csv_rows()?;
     let mut slot = s.shared.lesson_csv.lock().ok()?;
     let path = match slot.as_ref() {
@@ -192,7 +240,7 @@ fn open(s: &mut Seat, q: Question) {
 
 /// A student's Enter: their marker's value as their answer; after the
 /// reveal, it dismisses the result (the student keeps following).
-fn answer(s: &mut Seat) {
+fn answer(s: &mut Seat, nowhere: bool) {
     let app = &mut s.ex.app;
     if app.class.asked.is_some_and(|a| a.revealed) {
         app.class.asked = None;
@@ -212,7 +260,14 @@ fn answer(s: &mut Seat) {
         return;
     };
     let q = asked.question;
-    let v = app.state.params.get(q.axis);
+    if nowhere && !q.nowhere_ok() {
+        return;
+    }
+    let v = if nowhere {
+        crate::tui::class::NOWHERE
+    } else {
+        app.state.params.get(q.axis)
+    };
     match s.shared.class.answer(id, poll, v) {
         Ok(()) => {
             if let Some(a) = app.class.asked.as_mut() {
@@ -240,4 +295,48 @@ fn save(s: &mut Seat) {
         }
         Err(e) => app.set_status(format!("{e:#}"), true),
     }
+}
+
+/// The server stops with a poll open: its answers so far (and a `no
+/// answer` row for each student here) go to the lesson's CSV, or to a
+/// CSV of their own in the folder the server runs in; the console's line
+/// that says so.
+pub(super) fn save_open(shared: &super::Shared) -> Option<String> {
+    use std::io::Write;
+    if !shared.class.poll_open() {
+        return None;
+    }
+    let rows = shared.class.csv_rows()?;
+    let answers = shared.class.view().poll.map_or(0, |t| t.answers.len());
+    let dir = std::env::current_dir().unwrap_or_else(|_| ".".into());
+    let lesson = shared.lesson_csv.lock().ok().and_then(|p| p.clone());
+    let written = match lesson {
+        Some(path) => std::fs::OpenOptions::new()
+            .append(true)
+            .open(&path)
+            .and_then(|mut f| f.write_all(rows.as_bytes()))
+            .map_err(|e| anyhow::anyhow!("cannot add the answers to {}: {e}", path.display()))
+            .map(|()| path),
+        None => {
+            let name = shared
+                .class
+                .poll()
+                .map_or("class".into(), |p| p.scene.state.name.clone());
+            let stem = snapshot::default_stem(&format!("{name}-poll"), SystemTime::now());
+            let csv = format!("{}\n{rows}", super::class::CSV_HEADER);
+            let path = snapshot::save_file_new(&dir, &stem, "csv", "poll answers", csv.as_bytes());
+            if let Ok(p) = &path {
+                shared.saved(p.clone());
+            }
+            path
+        }
+    };
+    Some(match written {
+        Ok(path) => format!(
+            "the poll was still open: its {answers} {} saved unrevealed in {}",
+            if answers == 1 { "answer" } else { "answers" },
+            path.display()
+        ),
+        Err(e) => format!("the poll was still open and its answers were not saved: {e:#}"),
+    })
 }

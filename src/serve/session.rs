@@ -15,32 +15,30 @@ use crossterm::cursor::Hide;
 use crossterm::event::{Event, KeyEvent};
 use crossterm::terminal::EnterAlternateScreen;
 use russh::server::Msg;
-use russh::{Channel, ChannelMsg};
+use russh::Channel;
 use std::io::Write;
 use tokio::sync::watch;
 use tokio::time::{sleep_until, Instant};
 
 use super::auth::Role;
 use super::class::{self, clean_name, Note, SeatId};
-use super::follow::{Effect, Follow, Shown, CALLED_BACK, FOLLOWING};
+use super::follow::{Effect, Follow, Scene, Shown, CALLED_BACK, FOLLOWING};
+use super::frames;
 use super::input::{self, Decoder};
-use super::limits::clamp_size;
 use super::output::{self, FrameBuf};
 use super::panel::{Key as PanelKey, Panel};
 use super::poll;
-use super::stream::Kill;
 use super::term::{self, ClientTerm};
+pub use super::wire::{Input, Wire, WireIn};
 use super::Shared;
 use crate::tui::app::{Message, Mode};
 use crate::tui::glyphs::Glyphs;
 use crate::tui::session::Session;
 
-/// What a shell request hands over.
+/// What a shell request (or a browser's WebSocket) hands over.
 pub struct Start {
     pub shared: Arc<Shared>,
-    pub channel: Channel<Msg>,
-    pub conn: russh::server::Handle,
-    pub kill: Kill,
+    pub wire: Wire,
     pub role: Role,
     pub size: (u16, u16),
     /// The SSH user name (a student's name in the class).
@@ -91,7 +89,14 @@ pub(super) struct Seat {
     pub seat: Option<SeatId>,
     /// The poll a student is in (its id).
     pub poll: Option<u64>,
-    pub lecturer: watch::Receiver<Option<Shown>>,
+    pub lecturer: watch::Receiver<Option<Arc<Shown>>>,
+    /// The scene the explorer shows, or is to show (`pending`), while it
+    /// is the lecturer's or the poll's as it came (none of the student's
+    /// own moves on it): then its frame may be shared (see `frames`).
+    pub scene: Option<Scene>,
+    /// `scene` is not applied yet: the explorer catches up when it needs
+    /// to (a key, a frame no one else drew).
+    pub pending: bool,
 }
 
 impl Seat {
@@ -99,10 +104,64 @@ impl Seat {
         self.role == Role::Lecturer
     }
 
-    /// Shows the lecturer's latest state.
-    pub fn catch_up(&mut self) {
-        if let Some(s) = self.lecturer.borrow().as_ref() {
-            s.apply(&mut self.ex.app);
+    /// Is to show the lecturer's latest state (see `pending`).
+    pub fn follow_lecturer(&mut self) {
+        let shown = self.lecturer.borrow().clone();
+        if let Some(s) = shown {
+            self.show(Scene::Lecturer(s));
+        }
+    }
+
+    /// The explorer is to show `scene`, when it next needs to (see
+    /// `pending`).
+    pub fn show(&mut self, scene: Scene) {
+        self.scene = Some(scene);
+        self.pending = true;
+        if self.ex.app.ghost.is_some() {
+            // A ghost that no longer fits goes, and says so, now: before
+            // what the caller says next (such a screen is never shared).
+            self.sync();
+        }
+    }
+
+    /// Brings the explorer up to its scene, if it is behind.
+    pub fn sync(&mut self) {
+        if std::mem::take(&mut self.pending) {
+            if let Some(scene) = &self.scene {
+                scene.apply(&mut self.ex.app);
+            }
+        }
+    }
+
+    /// Applies `msg` to the explorer, brought up to its scene first.
+    pub fn update(&mut self, msg: Message) -> std::io::Result<()> {
+        self.own_move(&msg);
+        self.sync();
+        self.ex.update(msg)
+    }
+
+    /// The explorer changed on its own: what it shows is its own now
+    /// (until it follows again), unless `msg` changed only its look.
+    fn own_move(&mut self, msg: &Message) {
+        use Message as M;
+        let look_only = matches!(
+            msg,
+            M::ToggleHelp
+                | M::CloseHelp
+                | M::HelpPage { .. }
+                | M::Resize(..)
+                | M::Redraw
+                | M::CycleGlyphs
+                | M::ToggleColor
+                | M::Answer
+                | M::AnswerNowhere
+                | M::Follow
+                | M::Tick
+                | M::Quit
+        );
+        if !look_only {
+            self.sync();
+            self.scene = None;
         }
     }
 
@@ -111,7 +170,7 @@ impl Seat {
         match e {
             Effect::Say(s) => self.ex.app.set_status(s, false),
             Effect::Catch => {
-                self.catch_up();
+                self.follow_lecturer();
                 self.ex.app.set_status(FOLLOWING, false);
             }
             Effect::None => {}
@@ -134,18 +193,19 @@ impl Seat {
 async fn run(start: Start) {
     let Start {
         shared,
-        channel,
-        conn,
-        kill,
+        wire,
         role,
         size,
         name,
         addr,
         client,
     } = start;
-    let (mut read, write) = channel.split();
-    let bye = output::Bye::default();
-    let slot = output::spawn(write, conn, kill, bye.clone());
+    let Wire {
+        input: mut read,
+        slot,
+        bye,
+        via,
+    } = wire;
     let buf = FrameBuf::default();
     let mut prelude = Vec::new();
     let _ = crossterm::execute!(prelude, EnterAlternateScreen, Hide);
@@ -164,7 +224,10 @@ async fn run(start: Start) {
     ex.app.contact.engine = Arc::clone(&shared.contact);
     // The first screen's line on switching the drawing, until the first
     // key or HINT_FOR.
-    let mut hint = Some(term::hint(caps.glyphs, why.as_deref()));
+    // (Not in a browser: xterm.js draws braille, and M is in the help.)
+    let mut hint = via
+        .is_empty()
+        .then(|| term::hint(caps.glyphs, why.as_deref()));
     let hint_until = Instant::now() + term::HINT_FOR;
     let mut lecturer = shared.follow.subscribe();
     let follow = Follow::start(lecturer.borrow_and_update().is_some());
@@ -176,40 +239,52 @@ async fn run(start: Start) {
         seat: None,
         poll: None,
         lecturer,
+        scene: None,
+        pending: false,
     };
     let is_lecturer = s.is_lecturer();
     s.ex.app.student = !is_lecturer;
     s.ex.app.lecturer_keys = shared.lecturer_keys.any();
     s.ex.app.lecturer_here = s.lecturer.borrow().is_some();
-    let name = clean_name(&name);
+    let mut name = clean_name(&name);
     let joined = Instant::now();
     let mut marker = s.marker();
-    shared.log.line(&format!(
-        "join  {name}{} from {addr}, {}x{}, {}",
-        if is_lecturer { " (lecturer)" } else { "" },
-        size.0,
-        size.1,
-        marker.name()
-    ));
     let mut roster = shared.class.watch_roster();
     let mut polls = shared.class.watch_poll();
     if is_lecturer {
+        s.ex.app.class.join_url.clone_from(&shared.join_url);
         shared.lecturer_joined(&mut s.ex.app);
         s.ex.app.class.view = Some(shared.class.view());
         roster.mark_unchanged();
     } else {
         if s.follow.following() {
-            s.catch_up();
+            s.follow_lecturer();
             s.ex.app.set_status(FOLLOWING, false);
+        } else if let Some(lesson) = &shared.lesson {
+            // Before the lecturer comes: the lesson's first step, its
+            // claims hidden as the lesson says (they may answer a poll).
+            let at = crate::lesson::LessonAt::new(Arc::clone(lesson), 0);
+            s.ex.app.class.step = Some(at.line());
         }
         let following = s.follow.following();
-        s.seat = Some(
-            shared
-                .class
-                .join(&name, addr, size, marker.name(), following),
-        );
+        let id = shared
+            .class
+            .join(&name, addr, size, marker.name(), following);
+        s.seat = Some(id);
+        // Two of one name are told apart (ada, ada-2).
+        if let Some(n) = shared.class.name(id) {
+            name = n;
+        }
         polls.mark_changed();
     }
+    shared.log.line(&format!(
+        "join  {name}{} from {addr}{}, {}x{}, {}",
+        if is_lecturer { " (lecturer)" } else { "" },
+        via,
+        size.0,
+        size.1,
+        marker.name()
+    ));
     let mut decoder = Decoder::new();
     let mut panel: Option<Panel> = None;
     // Bytes for the terminal besides frames (the snapshot panel's).
@@ -235,10 +310,10 @@ async fn run(start: Start) {
             deadline = Instant::now() + idle;
         }
         tokio::select! {
-            msg = read.wait() => {
+            msg = read.next() => {
                 let Some(msg) = msg else { break };
                 match msg {
-                    ChannelMsg::Data { data } => {
+                    WireIn::Data(data) => {
                         deadline = Instant::now() + idle;
                         s.note(Note::Key);
                         let events = decoder.feed(&data[..data.len().min(input::MAX_READ)]);
@@ -248,7 +323,7 @@ async fn run(start: Start) {
                                 // The terminal's answer to Ctrl-L's question.
                                 Event::Resize(w, h) => {
                                     if (w, h) != s.ex.app.size {
-                                        if s.ex.update(Message::Resize(w, h)).is_err() {
+                                        if s.update(Message::Resize(w, h)).is_err() {
                                             s.ex.app.quit = true;
                                             break;
                                         }
@@ -268,8 +343,9 @@ async fn run(start: Start) {
                                     PanelKey::Close(b) => {
                                         raw.extend(b);
                                         panel = None;
+                                        bye.normal_screen(false);
                                         // The explorer whole again.
-                                        if s.ex.update(Message::Redraw).is_err() {
+                                        if s.update(Message::Redraw).is_err() {
                                             s.ex.app.quit = true;
                                             break;
                                         }
@@ -278,12 +354,16 @@ async fn run(start: Start) {
                                 }
                                 continue;
                             }
+                            // A key is the student's: the explorer catches up.
+                            s.sync();
                             if s.ex.message_for(&Event::Key(key)) == Some(Message::Redraw) {
                                 decoder.expect_size();
                             }
                             if on_key(&mut s, &mut panel, &mut raw, key) {
                                 dirty = true;
                             }
+                            // The snapshot printed: a goodbye now stays below it.
+                            bye.normal_screen(panel.is_some());
                             if s.ex.app.quit {
                                 break;
                             }
@@ -310,16 +390,13 @@ async fn run(start: Start) {
                             poll::after_lecturer_keys(&mut s);
                         }
                     }
-                    ChannelMsg::WindowChange { col_width, row_height, .. } => {
-                        let (w, h) = clamp_size(col_width, row_height);
-                        if s.ex.update(Message::Resize(w, h)).is_err() {
+                    WireIn::Resize(w, h) => {
+                        if s.update(Message::Resize(w, h)).is_err() {
                             break;
                         }
                         s.note(Note::Size(w, h));
                         dirty = true;
                     }
-                    ChannelMsg::Eof | ChannelMsg::Close => break,
-                    _ => {}
                 }
             }
             changed = s.lecturer.changed(), if !is_lecturer => {
@@ -333,7 +410,7 @@ async fn run(start: Start) {
                 if s.follow.following() && shown.is_some() {
                     // Watching the lecturer counts as activity.
                     deadline = Instant::now() + idle;
-                    s.catch_up();
+                    s.follow_lecturer();
                 }
                 dirty = true;
             }
@@ -348,7 +425,8 @@ async fn run(start: Start) {
                     // A question or a reveal closes the snapshot's text.
                     if let Some(p) = panel.take() {
                         raw.extend(p.close());
-                        if s.ex.update(Message::Redraw).is_err() {
+                        bye.normal_screen(false);
+                        if s.update(Message::Redraw).is_err() {
                             break;
                         }
                     }
@@ -369,7 +447,7 @@ async fn run(start: Start) {
                 dirty = true;
             }
             () = solver.notified(), if s.ex.app.contact.busy() => {
-                if s.ex.update(Message::Tick).is_err() {
+                if s.update(Message::Tick).is_err() {
                     break;
                 }
                 dirty = true;
@@ -416,13 +494,7 @@ async fn run(start: Start) {
                 // While the snapshot is shown, changes wait for its close
                 // (which draws the explorer whole).
                 if dirty && panel.is_none() {
-                    let drawn = s.ex.draw_with(|app, f| {
-                        // Not over a screen too small for the explorer.
-                        if let Some(h) = hint.as_ref().filter(|_| !app.too_small()) {
-                            term::draw_hint(f, h, app.theme.glyphs);
-                        }
-                    });
-                    if drawn.is_err() {
+                    if frames::draw(&mut s, hint.as_ref()).is_err() {
                         break;
                     }
                     bytes.extend(buf.take());
@@ -440,7 +512,7 @@ async fn run(start: Start) {
         shared.lecturer_left();
     }
     shared.log.line(&format!(
-        "leave {name}{} from {addr} after {}",
+        "leave {name}{} from {addr}{via} after {}",
         if is_lecturer { " (lecturer)" } else { "" },
         class::duration(joined.elapsed())
     ));
@@ -470,7 +542,12 @@ fn on_key(s: &mut Seat, panel: &mut Option<Panel>, raw: &mut Vec<u8>, key: KeyEv
             s.ex.app.set_status("everyone follows you now", false);
             return true;
         }
-        Message::Poll | Message::SavePoll | Message::Answer | Message::CancelPoll => {
+        Message::Poll
+        | Message::SavePoll
+        | Message::Answer
+        | Message::AnswerNowhere
+        | Message::ShareAnswers
+        | Message::CancelPoll => {
             poll::on_key(s, msg);
             return true;
         }
@@ -494,10 +571,10 @@ fn on_key(s: &mut Seat, panel: &mut Option<Panel>, raw: &mut Vec<u8>, key: KeyEv
         }
         if let e @ Effect::Say(_) = s.follow.on_message(&msg) {
             // The edit applies first; the status says what happened.
-            let ok = s.ex.update(msg).is_ok();
+            let ok = s.update(msg).is_ok();
             s.effect(e);
             return ok;
         }
     }
-    s.ex.update(msg).is_ok()
+    s.update(msg).is_ok()
 }

@@ -6,11 +6,11 @@
 
 use std::time::Duration;
 
+use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::{Modifier, Style};
 use ratatui::text::Line;
 use ratatui::widgets::{Clear, Widget};
-use ratatui::Frame;
 
 use crate::tui::caps::Caps;
 use crate::tui::glyphs::Glyphs;
@@ -107,16 +107,16 @@ pub fn hint(glyphs: Glyphs, why: Option<&str>) -> String {
 
 /// Draws `text` over the status row (the screen's second row from the
 /// bottom), as the glyphs write it.
-pub fn draw_hint(f: &mut Frame, text: &str, glyphs: Glyphs) {
-    let area = f.area();
+pub fn draw_hint(buf: &mut Buffer, text: &str, glyphs: Glyphs) {
+    let area = buf.area;
     if area.height < 2 {
         return;
     }
     let row = Rect::new(area.x, area.bottom() - 2, area.width, 1);
     let text = glyphs.text(text).into_owned();
     let style = Style::new().add_modifier(Modifier::REVERSED | Modifier::BOLD);
-    Clear.render(row, f.buffer_mut());
-    Line::styled(text, style).render(row, f.buffer_mut());
+    Clear.render(row, buf);
+    Line::styled(text, style).render(row, buf);
 }
 
 #[cfg(test)]

@@ -4,7 +4,7 @@
 use std::fmt;
 use std::path::{Path, PathBuf};
 
-use rough_surface::{Direction, Options, Problem, SurfaceError};
+use rough_surface::{Detrend, Direction, Options, Problem, SurfaceError};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
 use crate::surface::{relative_to, SurfaceSource};
@@ -58,6 +58,24 @@ pub struct SurfaceFile {
         deserialize_with = "de_text"
     )]
     pub height_unit: Option<String>,
+    /// The lateral unit given with `--lateral-unit` ("µm") for a file that
+    /// gives none, if any.
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "ser_text",
+        deserialize_with = "de_text"
+    )]
+    pub lateral_unit: Option<String>,
+    /// The share of undefined points filled at most, in percent
+    /// (`--max-undefined`), when it is not the default 10 %.
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "ser_number",
+        deserialize_with = "de_number"
+    )]
+    pub max_undefined: Option<f64>,
     /// The Hurst fit band set by hand, (q_lo, q_hi) in 1/m; absent: the
     /// self-affine stretch found from the data.
     #[serde(
@@ -67,6 +85,36 @@ pub struct SurfaceFile {
         deserialize_with = "de_pair"
     )]
     pub fit_band: Option<(f64, f64)>,
+    /// The form removed from the heights (`--detrend`), written plain,
+    /// `detrend: curvature`; absent: the default (the plane, the mean of
+    /// periodic data), so snapshots from before it load unchanged.
+    #[serde(
+        default,
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "ser_detrend",
+        deserialize_with = "de_detrend"
+    )]
+    pub detrend: Option<Detrend>,
+}
+
+fn ser_detrend<S: Serializer>(v: &Option<Detrend>, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_unit_variant("Detrend", 0, v.unwrap_or_default().name())
+}
+
+fn de_detrend<'de, D: Deserializer<'de>>(d: D) -> Result<Option<Detrend>, D::Error> {
+    /// The names `detrend:` takes.
+    const MODES: &[&str] = &["none", "mean", "plane", "curvature"];
+    struct Mode;
+    impl serde::de::Visitor<'_> for Mode {
+        type Value = Detrend;
+        fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+            f.write_str("one of none, mean, plane, curvature")
+        }
+        fn visit_str<E: serde::de::Error>(self, v: &str) -> Result<Detrend, E> {
+            Detrend::parse(v).ok_or_else(|| E::unknown_variant(v, MODES))
+        }
+    }
+    d.deserialize_identifier(Mode).map(Some)
 }
 
 fn ser_pair<S: Serializer>(v: &Option<(f64, f64)>, s: S) -> Result<S::Ok, S::Error> {
@@ -157,6 +205,10 @@ pub enum SurfaceProblem {
     PixelSize(f64),
     /// `height_unit` is not a length unit.
     HeightUnit(String),
+    /// `lateral_unit` is not a length unit.
+    LateralUnit(String),
+    /// `max_undefined` is not a percentage in (0, 100).
+    MaxUndefined(f64),
     /// `fit_band` is not two wavevectors 0 < q_lo < q_hi.
     FitBand(f64, f64),
 }
@@ -183,6 +235,15 @@ impl fmt::Display for SurfaceProblem {
             SurfaceProblem::HeightUnit(u) => write!(
                 f,
                 "surface.height_unit = {u:?} is not a length unit: m, mm, µm, nm, Å or pm"
+            ),
+            SurfaceProblem::LateralUnit(u) => write!(
+                f,
+                "surface.lateral_unit = {u:?} is not a length unit: m, mm, µm, nm, Å or pm"
+            ),
+            SurfaceProblem::MaxUndefined(v) => write!(
+                f,
+                "surface.max_undefined = {v} is out of range: a percentage above 0 and \
+                 below 100"
             ),
         }
     }
@@ -211,6 +272,18 @@ pub(super) fn read(sf: &SurfaceFile, base: Option<&Path>) -> Result<SurfaceSourc
         ),
         None => None,
     };
+    let lateral_unit = match &sf.lateral_unit {
+        Some(u) => Some(
+            rough_surface::HeightUnit::parse(u)
+                .ok_or_else(|| SurfaceProblem::LateralUnit(u.clone()))?,
+        ),
+        None => None,
+    };
+    if let Some(v) = sf.max_undefined {
+        if !(v > 0.0 && v < 100.0) {
+            return Err(SurfaceProblem::MaxUndefined(v));
+        }
+    }
     let options = Options {
         periodic: sf.periodic,
         pixel_size: sf.pixel_size,
@@ -218,6 +291,9 @@ pub(super) fn read(sf: &SurfaceFile, base: Option<&Path>) -> Result<SurfaceSourc
         direction: sf.direction.map(Into::into),
         channel: sf.channel.clone(),
         height_unit,
+        lateral_unit,
+        max_undefined: sf.max_undefined.map(|p| p / 100.0),
+        detrend: sf.detrend,
     };
     let mut src = SurfaceSource::read(&path, options).map_err(|e| {
         let missing = matches!(&e.problem, Problem::Read(_)) && !path.exists();
@@ -258,6 +334,9 @@ pub(super) fn file_of(src: &SurfaceSource, base: Option<&Path>) -> SurfaceFile {
         direction: src.options.direction.map(Into::into),
         channel: src.options.channel.clone(),
         height_unit: src.options.height_unit.map(|u| u.name.to_string()),
+        lateral_unit: src.options.lateral_unit.map(|u| u.name.to_string()),
+        max_undefined: src.options.max_undefined.map(|s| s * 100.0),
         fit_band: src.fit_band,
+        detrend: src.options.detrend,
     }
 }

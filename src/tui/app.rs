@@ -29,6 +29,9 @@ use crate::presets;
 use crate::scene::State;
 use crate::snapshot;
 
+mod look;
+pub use look::Look;
+
 #[derive(Clone, Debug, PartialEq)]
 pub enum Mode {
     Main,
@@ -263,7 +266,7 @@ impl App {
         self.readout = Readout::of(&self.state);
         let shown = self.view == View::Contact;
         self.contact.refresh(&self.state, shown);
-        let Some(regions) = Regions::of_size(self.size) else {
+        let Some(regions) = Regions::of_app(self) else {
             return;
         };
         let points = (usize::from(regions.graph.width) * 2).max(2);
@@ -282,7 +285,8 @@ impl App {
                     self.plot_cover = None;
                 }
                 let dots = self.theme.glyphs.dots();
-                Cover::keep(&mut self.plot_cover, &self.plot, regions.graph, dots);
+                let g = regions.slopes_graph();
+                Cover::keep(&mut self.plot_cover, &self.plot, g, dots);
             }
             View::Indices if self.indices_key.as_ref() != Some(&key) => {
                 self.indices = compute_indices(&self.state, points);
@@ -456,7 +460,7 @@ pub fn update(app: &mut App, msg: Message) {
         Message::NextView => app.view = app.view.next(app.state.is_measured()),
         Message::PrevView => app.view = app.view.prev(app.state.is_measured()),
         Message::NextMapY => {
-            let graph = Regions::of_size(app.size).map(|r| r.graph);
+            let graph = Regions::of_app(app).map(|r| r.graph);
             if let Some(spec) = graph.and_then(|g| app.map_spec(g)) {
                 app.map_y = Some(spec.next_y());
             }
@@ -528,7 +532,12 @@ pub fn update(app: &mut App, msg: Message) {
         | Message::SavePoll
         | Message::Answer
         | Message::CancelPoll
+        | Message::AnswerNowhere
+        | Message::ShareAnswers
         | Message::AllFollow => {}
+        Message::ShowJoin => {
+            app.class.join_shown = !app.class.join_shown && app.class.join_url.is_some();
+        }
         Message::ClassChoose { down } => super::class::choose(app, down),
         Message::RemoveStudent => super::class::remove(app),
         Message::LessonStep { next } => crate::lesson::step(app, next),

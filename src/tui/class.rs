@@ -14,6 +14,9 @@ use crate::physical::short_number;
 /// A value of `axis` to four digits, lengths in a readable unit: `321.5`,
 /// `20 nm`, `0.85`.
 pub fn fmt_value(axis: Axis, v: f64) -> String {
+    if v == NOWHERE {
+        return "nowhere".into();
+    }
     if !matches!(axis, Axis::HRms | Axis::RStar) {
         return short_number(v);
     }
@@ -29,6 +32,11 @@ pub fn fmt_value(axis: Axis, v: f64) -> String {
     };
     format!("{} {unit}", short_number(v * scale))
 }
+
+/// The answer, or the truth, of a poll that allows "nowhere in the
+/// sweep" ([`Ask::ShareEver`]): the student's `0`, the model's when the
+/// plastic share never passes ½.
+pub const NOWHERE: f64 = f64::INFINITY;
 
 /// The characters the class panels draw that are not plain ASCII, in one
 /// place, with their ASCII stand-ins.
@@ -85,6 +93,9 @@ pub enum Ask {
     Index { rising: bool, size_effect: bool },
     /// Where the total slope has its minimum inside the sweep.
     Minimum,
+    /// Where the plastic share passes ½, if anywhere in the sweep (the
+    /// truth may be [`NOWHERE`], and so may an answer: a student's `0`).
+    ShareEver,
     /// A value the lecturer typed.
     Typed,
 }
@@ -136,21 +147,38 @@ impl Question {
                 format!("where does {psi} {verb} 1?")
             }
             Ask::Minimum => "where is the total slope smallest?".to_string(),
+            Ask::ShareEver => {
+                format!("where does the plastic share pass {half} now (if anywhere)?")
+            }
             Ask::Typed => format!("which {} is it?", self.axis.symbol()),
         }
     }
 
     /// `ζ = 321.5`
     pub fn value(&self, v: f64) -> String {
+        if v == NOWHERE {
+            return "nowhere in the sweep".into();
+        }
         format!("{} = {}", self.axis.symbol(), fmt_value(self.axis, v))
     }
 
+    /// Whether a student may answer "nowhere" (`0`).
+    pub fn nowhere_ok(&self) -> bool {
+        self.ask == Ask::ShareEver
+    }
+
     /// How far `answer` is from the truth, said plainly: on log axes a
-    /// percentage below a factor of two ("1.7 % low"), a factor from two
+    /// percentage of the truth below a factor of two ("1.6 % low"), a factor from two
     /// on ("13× high"); on the Hurst exponent's linear axis the difference
     /// ("0.1 low").
     pub fn off(&self, answer: f64, g: &ClassGlyphs) -> String {
         let t = self.truth;
+        match (answer == NOWHERE, t == NOWHERE) {
+            (true, true) => return "right".into(),
+            (false, true) => return "it never passes".into(),
+            (true, false) => return "it does pass".into(),
+            (false, false) => {}
+        }
         if self.axis.is_log() {
             if !(answer > 0.0 && t > 0.0) {
                 return "off the scale".into();
@@ -161,8 +189,9 @@ impl Question {
                 return "spot on".into();
             }
             if f < 2.0 {
-                // Two digits: 1.7 %, 24 %; 0.8 % under one per cent.
-                let pc = (f - 1.0) * 100.0;
+                // Two digits: 1.6 %, 24 %; 0.8 % under one per cent. Of
+                // the truth: low is (1 − answer/truth), high (answer/truth − 1).
+                let pc = (answer / t - 1.0).abs() * 100.0;
                 let pc = if pc < 10.0 {
                     format!("{pc:.1}")
                 } else {
@@ -310,6 +339,8 @@ pub struct Asked {
     /// Their answer, once sent.
     pub answer: Option<f64>,
     pub revealed: bool,
+    /// Revealed after the lecturer changed the scene asked about.
+    pub changed: bool,
 }
 
 impl Asked {
@@ -318,7 +349,10 @@ impl Asked {
         let q = &self.question;
         let sep = g.sep;
         if self.revealed {
-            let truth = format!("the model: {}", q.value(q.truth));
+            // The lecturer changed the scene after asking: the truth is
+            // the scene's as asked.
+            let asked = if self.changed { ", as asked" } else { "" };
+            let truth = format!("the model{asked}: {}", q.value(q.truth));
             let line = match self.answer {
                 Some(a) => format!(
                     "{truth}{sep}you: {}{sep}{}",
@@ -337,15 +371,23 @@ impl Asked {
         match self.answer {
             None => {
                 let ask = format!("Predict: {}", q.text(g));
-                [
-                    " Move the marker and press Enter",
-                    " Marker, then Enter",
-                    "",
-                ]
-                .iter()
-                .map(|how| format!("{ask}{how}"))
-                .find(|s| s.chars().count() <= width)
-                .unwrap_or(ask)
+                let hows: &[&str] = if q.nowhere_ok() {
+                    &[
+                        " Marker and Enter, or 0: nowhere",
+                        " Enter, or 0: nowhere",
+                        "",
+                    ]
+                } else {
+                    &[
+                        " Move the marker and press Enter",
+                        " Marker, then Enter",
+                        "",
+                    ]
+                };
+                hows.iter()
+                    .map(|how| format!("{ask}{how}"))
+                    .find(|s| s.chars().count() <= width)
+                    .unwrap_or(ask)
             }
             Some(a) => format!(
                 "you answered {}{sep}Enter again changes it{sep}waiting for the reveal",
@@ -378,6 +420,14 @@ pub struct Classroom {
     pub remove: Option<u64>,
     /// The lecturer's scene list, while open.
     pub scenes: Option<crate::tui::scenes::SceneList>,
+    /// The revealed poll's answers, when the lecturer shows them to
+    /// everyone (`d`): a student's chart draws their histogram.
+    pub tally: Option<Tally>,
+    /// The class's web page with its code (`serve --web`), for the
+    /// lecturer's `Q`.
+    pub join_url: Option<String>,
+    /// `Q`'s full-screen QR code is up (any key closes it).
+    pub join_shown: bool,
 }
 
 impl Classroom {
@@ -392,8 +442,41 @@ impl Classroom {
     /// The question whose answer no screen shows: an open poll's, or the
     /// poll a lesson's step is about to ask (until its reveal).
     pub fn hidden_question(&self) -> Option<Question> {
+        let step = self.step.as_ref().filter(|s| s.left.is_none());
         self.open_question()
-            .or_else(|| self.step.as_ref().and_then(|s| s.pending))
+            .or_else(|| step.and_then(|s| s.pending))
+    }
+
+    /// Whether what gives or brackets a claim's answer waits: the chart's
+    /// regime marks (the share's 10 % and 90 % marks bracket its ½, Ψ = 1
+    /// sits near it), the readout's values at the marker, the map's
+    /// colours and its Ψ = 1 contour, the load and contact views (both
+    /// at the marker); a typed value's poll hides none. The curves stay:
+    /// they are what a student reads the answer from.
+    pub fn marks_hidden(&self) -> bool {
+        match self.hidden_question() {
+            Some(q) => q.ask != Ask::Typed,
+            None => self.claims_hidden(),
+        }
+    }
+
+    /// Until when the marks wait, in words ("the reveal", "the lesson's
+    /// next poll"); `None` when they show.
+    pub fn marks_wait(&self) -> Option<&'static str> {
+        if !self.marks_hidden() {
+            return None;
+        }
+        Some(if self.hidden_question().is_some() {
+            "the reveal"
+        } else {
+            "the lesson's next poll"
+        })
+    }
+
+    /// Whether the claims line and the chart's regime marks wait: a poll
+    /// open or about to be asked, or a lesson's step that hides them.
+    pub fn claims_hidden(&self) -> bool {
+        self.hidden_question().is_some() || self.step.as_ref().is_some_and(|s| s.hides_claims())
     }
 }
 
@@ -424,139 +507,5 @@ pub fn duration(d: Duration) -> String {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn q(axis: Axis, ask: Ask, truth: f64) -> Question {
-        Question { axis, ask, truth }
-    }
-
-    #[test]
-    fn the_question_follows_the_view_and_the_claims() {
-        let claims = crate::figure::claims(&crate::presets::load("fig2").unwrap());
-        let s = Question::of_claims(View::Slopes, &claims).unwrap();
-        assert_eq!(s.ask, Ask::Share { rising: true });
-        assert_eq!(s.truth, claims[0].at);
-        assert_eq!(s.text(&UNICODE), "where does the plastic share pass ½?");
-        let i = Question::of_claims(View::Indices, &claims).unwrap();
-        assert_eq!(i.text(&UNICODE), "where does Ψ_P reach 1?");
-        assert_eq!(i.truth, claims[1].at);
-        // fig3 claims only the total slope's minimum: that is the question,
-        // on either view, its truth the claim's own number.
-        let fig3 = crate::figure::claims(&crate::presets::load("fig3").unwrap());
-        for view in [View::Slopes, View::Indices] {
-            let m = Question::of_claims(view, &fig3).unwrap();
-            assert_eq!(m.ask, Ask::Minimum);
-            assert_eq!((m.axis, m.truth), (Axis::Zeta, fig3[0].at));
-            assert_eq!(m.text(&UNICODE), "where is the total slope smallest?");
-            assert_eq!(m.value(m.truth), "ζ = 3.191");
-        }
-        // Elsewhere the minimum comes last: fig4 asks the share.
-        let fig4 = crate::figure::claims(&crate::presets::load("fig4").unwrap());
-        let f = Question::of_claims(View::Slopes, &fig4).unwrap();
-        assert_eq!(f.ask, Ask::Share { rising: false });
-        // No claim at all: the lecturer types the value.
-        assert_eq!(Question::of_claims(View::Slopes, &[]), None);
-        // Only an index claim: the slopes view asks it.
-        let only = [claims[1].clone()];
-        assert_eq!(
-            Question::of_claims(View::Slopes, &only).map(|q| q.truth),
-            Some(claims[1].at)
-        );
-    }
-
-    #[test]
-    fn durations_read_short() {
-        assert_eq!(duration(Duration::from_secs(45)), "45s");
-        assert_eq!(duration(Duration::from_secs(123)), "2m03s");
-        assert_eq!(duration(Duration::from_secs(3720)), "1h02m");
-    }
-
-    #[test]
-    fn how_far_off() {
-        let z = q(Axis::Zeta, Ask::Typed, 321.5);
-        // The issue's own example: 316.2 is 1.7 % low.
-        assert_eq!(z.off(316.2, &UNICODE), "1.7 % low");
-        assert_eq!(z.off(400.0, &UNICODE), "24 % high");
-        assert_eq!(z.off(322.0, &UNICODE), "0.2 % high");
-        assert_eq!(z.off(321.6, &UNICODE), "spot on");
-        assert_eq!(z.off(643.0, &UNICODE), "2× high");
-        assert_eq!(z.off(160.75, &ASCII), "2x low");
-        assert_eq!(z.off(562.34, &UNICODE), "75 % high");
-        assert_eq!(z.off(3215.0 * 1.26, &UNICODE), "13× high");
-        let h = q(Axis::Hurst, Ask::Typed, 0.8);
-        assert_eq!(h.off(0.7, &UNICODE), "0.1 low");
-        assert_eq!(h.off(0.8, &UNICODE), "spot on");
-        let r = q(Axis::HRms, Ask::Typed, 2e-8);
-        assert_eq!(r.value(2e-8), "h_rms = 20 nm");
-    }
-
-    #[test]
-    fn the_class_line() {
-        let seat = |state, size| Seat {
-            id: 1,
-            name: "a".into(),
-            state,
-            size,
-            marker: "braille".into(),
-            idle: Duration::ZERO,
-        };
-        let mut v = ClassView {
-            seats: vec![
-                seat(SeatState::Following, (100, 30)),
-                seat(SeatState::Following, (79, 30)),
-                seat(SeatState::Own, (80, 23)),
-            ],
-            poll: None,
-        };
-        assert_eq!(
-            v.line(&UNICODE),
-            "3 students · 2 following · 1 on their own · 2 terminals < 80×24"
-        );
-        v.seats.truncate(1);
-        assert_eq!(v.line(&ASCII), "1 student - 1 following - 0 on their own");
-        v.poll = Some(Tally {
-            question: q(Axis::Zeta, Ask::Share { rising: true }, 321.5),
-            answers: vec![100.0],
-            asked: 2,
-            revealed: false,
-            sweep: crate::presets::load("fig2").unwrap().sweep,
-        });
-        assert_eq!(v.line(&UNICODE), "1 student · 1/2 answered");
-        v.poll.as_mut().unwrap().revealed = true;
-        assert_eq!(
-            v.line(&UNICODE),
-            "1 student · 1 following · 0 on their own · revealed ζ = 321.5 (1 answer)"
-        );
-    }
-
-    #[test]
-    fn a_students_line_fits_80_columns() {
-        let mut a = Asked {
-            question: q(Axis::Zeta, Ask::Share { rising: false }, 321.5),
-            answer: None,
-            revealed: false,
-        };
-        for w in [80, 60, 40] {
-            let l = a.line(&UNICODE, w);
-            assert!(l.starts_with("Predict: where does the plastic share fall below ½?"));
-            assert!(l.chars().count() <= w.max(51), "{l}");
-        }
-        a.answer = Some(643.0);
-        assert!(a.line(&UNICODE, 80).starts_with("you answered ζ = 643"));
-        a.revealed = true;
-        assert_eq!(
-            a.line(&UNICODE, 80),
-            "the model: ζ = 321.5 · you: 643 · 2× high · Enter dismisses"
-        );
-        assert_eq!(
-            a.line(&UNICODE, 50),
-            "the model: ζ = 321.5 · you: 643 · 2× high"
-        );
-        a.answer = None;
-        assert_eq!(
-            a.line(&ASCII, 80),
-            "the model: ζ = 321.5 - you did not answer - Enter dismisses"
-        );
-    }
-}
+#[path = "class_tests.rs"]
+mod tests;

@@ -416,7 +416,10 @@ pub fn on_key(app: &mut super::app::App, msg: super::app::Message) {
                 pane.load.saturating_sub(1)
             };
             if k == pane.load {
-                app.set_status("p̄/H runs from 1e-3 to 1 in the contact view", false);
+                app.set_status(
+                    "the load runs from 1e-3 to 1 times the hardness in use",
+                    false,
+                );
             }
             app.contact.load = k;
         }
@@ -453,25 +456,23 @@ pub fn picture(app: &super::app::App) -> anyhow::Result<String> {
         None => anyhow::bail!("the contact map is not solved yet: p again when it is"),
     };
     let n = pane.tasks.first().map_or(0, |t| t.scene.n);
+    let side = match pane.tasks.first() {
+        Some(t) => crate::contact::solved_side(&app.state, &t.scene)?,
+        None => anyhow::bail!("the contact map is not solved yet: p again when it is"),
+    };
     let measured = pane
         .tasks
         .first()
         .is_some_and(|t| t.scene.surface.is_some());
     let r = &solved.result;
-    let (title, note) = crate::contact::map_svg::caption(
-        &app.state.name,
-        n,
-        (!measured).then_some(pane.seed),
+    let nodes: Vec<u8> = solved.map.iter().map(|v| *v as u8).collect();
+    crate::export::contact_map_picture(
+        &app.state,
+        (&nodes, n, side),
         load_value(pane.load),
-        r.area,
-        r.plastic_area,
-    );
-    Ok(crate::contact::map_svg::map_svg(
-        &solved.map,
-        n,
-        &title,
-        &note,
-    ))
+        (r.area, r.plastic_area),
+        (!measured).then_some(pane.seed),
+    )
 }
 
 /// Whether `a` and `b` are the same scene for the simulation (their names,

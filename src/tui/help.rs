@@ -209,6 +209,11 @@ fn scene(app: &App, lines: &mut Vec<(bool, Line<'static>)>) {
         lines.push((false, Line::raw(format!(" {l}"))));
     }
     let dot = g.text("·");
+    if app.class.claims_hidden() {
+        let l = " this step's claims show after the lesson's next poll";
+        lines.push((false, Line::raw(l)));
+        return;
+    }
     for c in &app.claims {
         // Each claim whole: in full where it fits, else short.
         let l = claims_line(std::slice::from_ref(c), TEXT_W - 2, g);

@@ -44,6 +44,10 @@ pub enum Context {
     Lesson,
     /// The lecturer's scene list is open.
     Scenes,
+    /// A student's explorer while a poll that allows "nowhere" waits.
+    Nowhere,
+    /// The lecturer's explorer when the class is also served on the web.
+    Joinable,
     /// Everywhere: the explorer, the help, a prompt, a terminal too small.
     Any,
 }
@@ -73,6 +77,12 @@ impl Context {
             || (self == Context::Revealed
                 && app.mode == Mode::Main
                 && app.class.asked.is_some_and(|a| a.revealed))
+            || (self == Context::Nowhere
+                && app.mode == Mode::Main
+                && app
+                    .class
+                    .asked
+                    .is_some_and(|a| !a.revealed && a.question.nowhere_ok()))
     }
 
     fn is_role(self) -> bool {
@@ -83,6 +93,7 @@ impl Context {
                 | Context::Follower
                 | Context::Surface
                 | Context::Lecturer
+                | Context::Joinable
                 | Context::Lesson
         )
     }
@@ -97,6 +108,8 @@ impl Context {
                 app.student && app.lecturer_keys
             }
             Context::Lecturer => app.class.view.is_some(),
+            Context::Joinable => app.class.view.is_some() && app.class.join_url.is_some(),
+            Context::Nowhere => app.student && app.lecturer_keys,
             // The contact view's keys, in its help only.
             Context::ContactView => app.view == crate::figure::View::Contact,
             Context::Lesson => app.class.lesson.is_some(),
@@ -170,8 +183,8 @@ pub struct Binding {
 }
 
 use Context::{
-    Answering, Any, ClassList, ContactView, Follower, Help, Lecturer, Lesson, Main, MainAndHelp,
-    NotStudent, Prompt, Revealed, Scenes, Student, Surface,
+    Answering, Any, ClassList, ContactView, Follower, Help, Joinable, Lecturer, Lesson, Main,
+    MainAndHelp, NotStudent, Nowhere, Prompt, Revealed, Scenes, Student, Surface,
 };
 use KeyCode::{
     BackTab, Backspace, Delete, Down, End, Enter, Esc, Home, Left, PageDown, PageUp, Right, Tab, Up,
@@ -218,6 +231,7 @@ const FINE_UP: Message = M::Step {
 #[rustfmt::skip]
 pub const BINDINGS: &[Binding] = &[
     bind(Answering, &[(key(Enter), M::Answer)], "Enter", "in a poll: answer with the marker's value", Some("⏎ answer")),
+    bind(Nowhere, &[(ch('0'), M::AnswerNowhere)], "0", "in a poll that allows it: answer \"nowhere in the sweep\"", Some("0 nowhere")),
     bind(Revealed, &[(key(Enter), M::Answer)], "Enter", "after the reveal: dismiss the result", Some("⏎ dismiss")),
     bind(Follower, &[(ch('f'), M::Follow)], "f", "follow the lecturer again", Some("f follow")),
     bind(Lecturer, &[(ch('v'), M::Poll)], "v", "poll: the class predicts; v again reveals", Some("v V poll")),
@@ -231,6 +245,8 @@ pub const BINDINGS: &[Binding] = &[
     bind(Lecturer, &[(ch('F'), M::AllFollow)], "F", "everyone follow: pull every student back to you", Some("F all")),
     bind(Lesson, &[(ch('n'), M::LessonStep { next: true }), (ch('N'), M::LessonStep { next: false })], "n N", "the lesson's next / previous step", Some("n N step")),
     bind(Lecturer, &[(ch('S'), M::SavePoll)], "S", "save the last poll's answers here (.csv)", Some("S csv")),
+    bind(Lecturer, &[(ch('d'), M::ShareAnswers)], "d", "after a reveal: show everyone the answers' histogram", None),
+    bind(Joinable, &[(ch('Q'), M::ShowJoin)], "Q", "the web page's address and QR code, full screen", None),
     bind(ClassList, &[(ch('w'), M::ToggleClass), (key(Esc), M::ToggleClass)], "w  Esc", "close the class list", None),
     bind(ClassList, &[(key(Down), M::ClassChoose { down: true }), (ch('j'), M::ClassChoose { down: true }), (key(Up), M::ClassChoose { down: false }), (ch('k'), M::ClassChoose { down: false })], "↓ ↑  j k", "choose a student", None),
     bind(ClassList, &[(ch('x'), M::RemoveStudent)], "x", "remove the student chosen (told why)", None),
@@ -306,6 +322,10 @@ pub fn message_for_key(app: &App, ev: &KeyEvent) -> Option<Message> {
     if ev.kind == KeyEventKind::Release {
         return None;
     }
+    // The join page's QR code, full screen: any key closes it.
+    if app.class.join_shown {
+        return Some(M::ShowJoin);
+    }
     // While the terminal is too small nothing is shown: only quitting and
     // redrawing act; on a student's compact screen also following,
     // moving the marker and answering.
@@ -314,7 +334,12 @@ pub fn message_for_key(app: &App, ev: &KeyEvent) -> Option<Message> {
         let moves = |m: &Message| {
             matches!(
                 m,
-                M::Step { .. } | M::SelectPrev | M::SelectNext | M::Answer | M::Follow
+                M::Step { .. }
+                    | M::SelectPrev
+                    | M::SelectNext
+                    | M::Answer
+                    | M::AnswerNowhere
+                    | M::Follow
             )
         };
         let compact_key = BINDINGS

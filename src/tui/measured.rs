@@ -71,7 +71,8 @@ pub fn fixed_text(axis: Axis) -> String {
 pub fn range(app: &App, axis: Axis) -> (f64, f64) {
     let (lo, hi) = default_range(axis);
     if axis == Axis::Zeta {
-        return (lo, hi.min(app.state.roughness().zeta_max()));
+        let top = crate::physical::clean(app.state.roughness().zeta_max());
+        return (lo, hi.min(top));
     }
     (lo, hi)
 }

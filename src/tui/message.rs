@@ -67,6 +67,14 @@ pub enum Message {
     PollTyped,
     /// The lecturer's `C`: cancel the open poll.
     CancelPoll,
+    /// A student's `0` in a poll that allows it: "nowhere in the sweep".
+    AnswerNowhere,
+    /// The lecturer's `d` after a reveal: every screen shows the answers'
+    /// histogram with the truth marked.
+    ShareAnswers,
+    /// The lecturer's `Q`: the join page's QR code, full screen (any key
+    /// closes it).
+    ShowJoin,
     /// The lecturer's `F`: every student follows again.
     AllFollow,
     /// The lecturer's scene list (`o`): open it, move in it, load the one

@@ -19,6 +19,7 @@ pub mod measured;
 pub mod message;
 pub mod plots;
 pub mod prompt;
+pub mod qr;
 pub mod readout;
 pub mod scenes;
 pub mod session;
@@ -89,10 +90,8 @@ pub fn run(
         .map(|f| f.to_string_lossy().into_owned());
     if let Some(lesson) = lesson {
         // Rehearsing a lesson alone: its first step, n / N to go on.
-        session.app.class.lesson = Some(crate::lesson::LessonAt {
-            lesson: std::sync::Arc::new(lesson),
-            at: 0,
-        });
+        session.app.class.lesson =
+            Some(crate::lesson::LessonAt::new(std::sync::Arc::new(lesson), 0));
         crate::lesson::show(&mut session.app);
     }
     if let Some(why) = why {

@@ -1,8 +1,11 @@
-//! The lecturer's scene list (`o`): the presets and the snapshots (.ron) in
-//! the save folder, one to pick with ↑↓ and Enter; in a served class every
-//! follower gets the scene picked.
+//! The lecturer's scene list (`o`): the presets, the snapshots (.ron) in
+//! the save folder that load, and the lessons there (a lesson is listed as
+//! one, and picking it leads the class through it from its first step);
+//! one to pick with ↑↓ and Enter; in a served class every follower gets
+//! the scene picked. A `.ron` file that is neither is not listed.
 
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
@@ -19,6 +22,7 @@ pub const MAX_FILES: usize = 200;
 pub enum Source {
     Preset(usize),
     File(PathBuf),
+    Lesson(Arc<crate::lesson::Lesson>),
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -27,7 +31,8 @@ pub struct SceneList {
     pub selected: usize,
 }
 
-/// The presets, then the `.ron` files in `dir` by name.
+/// The presets, then the `.ron` files in `dir` by name that load: as
+/// snapshots, or as lessons.
 pub fn list(dir: &Path) -> SceneList {
     let mut entries: Vec<(String, Source)> = presets::PRESETS
         .iter()
@@ -44,11 +49,16 @@ pub fn list(dir: &Path) -> SceneList {
         .unwrap_or_default();
     files.sort();
     files.truncate(MAX_FILES);
-    entries.extend(files.into_iter().map(|p| {
+    entries.extend(files.into_iter().filter_map(|p| {
         let name = p
             .file_name()
             .map_or(String::new(), |n| n.to_string_lossy().into_owned());
-        (name, Source::File(p))
+        if crate::snapshot::read_file(&p).is_ok() {
+            return Some((name, Source::File(p)));
+        }
+        let lesson = crate::lesson::read(&p).ok()?;
+        let title = format!("lesson {name}: {}", lesson.title);
+        Some((title, Source::Lesson(Arc::new(lesson))))
     }));
     SceneList {
         entries,
@@ -81,6 +91,11 @@ pub fn update(app: &mut App, msg: Message) {
             let loaded = match &src {
                 Source::Preset(i) => presets::load(presets::PRESETS[*i].0),
                 Source::File(p) => crate::snapshot::load_file(p),
+                Source::Lesson(lesson) => {
+                    app.class.lesson = Some(crate::lesson::LessonAt::new(Arc::clone(lesson), 0));
+                    crate::lesson::show(app);
+                    return;
+                }
             };
             match loaded {
                 Ok(state) => {
@@ -88,6 +103,9 @@ pub fn update(app: &mut App, msg: Message) {
                     if let Source::File(_) = src {
                         app.file = Some(name.clone());
                     }
+                    // Away from the lesson's step, which says so.
+                    let scene = name.strip_prefix("preset ").unwrap_or(&name);
+                    crate::lesson::leave(app, scene);
                     app.set_status(format!("loaded {name}"), false);
                 }
                 Err(e) => app.set_status(format!("{e:#}"), true),

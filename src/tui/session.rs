@@ -8,7 +8,8 @@ use crossterm::event::Event;
 use ratatui::backend::{Backend, ClearType, CrosstermBackend};
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
-use ratatui::{Frame, Terminal, TerminalOptions, Viewport};
+use ratatui::widgets::Widget;
+use ratatui::{Terminal, TerminalOptions, Viewport};
 
 use super::app::{update, App, Message};
 use super::glyphs::ascii_name;
@@ -68,20 +69,49 @@ impl<W: Write> Session<W> {
     /// Draws the app, then `overlay` on top, and flushes the backend. With
     /// the ASCII glyphs, whatever is not ASCII in the frame (nothing the
     /// views draw; a safety net) is sent as its ASCII fallback.
-    pub fn draw_with(&mut self, overlay: impl FnOnce(&App, &mut Frame)) -> io::Result<()> {
+    pub fn draw_with(&mut self, overlay: impl FnOnce(&App, &mut Buffer)) -> io::Result<()> {
         let app = &self.app;
-        self.terminal.draw(|f| {
-            f.render_widget(app, f.area());
-            overlay(app, f);
-            if app.theme.glyphs.ascii_only() {
-                ascii_only(f.buffer_mut());
-            }
-        })?;
+        self.terminal
+            .draw(|f| paint(app, f.buffer_mut(), overlay))?;
         Ok(())
     }
 
     pub fn draw(&mut self) -> io::Result<()> {
         self.draw_with(|_, _| {})
+    }
+
+    /// The frame [`Session::draw_with`] would draw, drawn apart (to be
+    /// shown by other sessions with the same screen, see [`App::look`]).
+    pub fn render(&self, overlay: impl FnOnce(&App, &mut Buffer)) -> Buffer {
+        let (w, h) = self.app.size;
+        let mut buf = Buffer::empty(Rect::new(0, 0, w, h));
+        paint(&self.app, &mut buf, overlay);
+        buf
+    }
+
+    /// Shows `frame` (drawn by [`Session::render`], here or in another
+    /// session at this size): only what differs from the screen before is
+    /// sent, as for a frame drawn here.
+    pub fn draw_frame(&mut self, frame: &Buffer) -> io::Result<()> {
+        self.terminal.draw(|f| {
+            let buf = f.buffer_mut();
+            // (A frame's size is part of what it shows, so it fits.)
+            debug_assert_eq!(buf.area, frame.area);
+            if buf.area == frame.area {
+                buf.content.clone_from_slice(&frame.content);
+            }
+        })?;
+        Ok(())
+    }
+}
+
+/// The app, then `overlay`, into `buf` (all of it), in ASCII where the
+/// glyphs say so.
+fn paint(app: &App, buf: &mut Buffer, overlay: impl FnOnce(&App, &mut Buffer)) {
+    app.render(buf.area, buf);
+    overlay(app, buf);
+    if app.theme.glyphs.ascii_only() {
+        ascii_only(buf);
     }
 }
 

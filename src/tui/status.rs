@@ -13,7 +13,7 @@ use super::glyphs::Glyphs;
 use super::line_edit::LineEdit;
 use crate::physical::print::{fmt_param, fmt_short};
 use crate::physical::value;
-use crate::scene::State;
+use crate::scene::{State, View};
 use rough_model::Axis;
 
 /// Advice that holds only in some states.
@@ -173,7 +173,8 @@ pub fn render_status(app: &App, status: Rect, below: Rect, buf: &mut Buffer) {
             let w = usize::from(status.width);
             let (text, style) = match &app.status {
                 Some(s) => (s.text.clone(), if s.error { t.error } else { t.ok }),
-                None => match &app.ghost {
+                // The ghost's line where the ghost is drawn (the slopes).
+                None => match app.ghost.as_ref().filter(|_| app.view == View::Slopes) {
                     Some(g) => (format!("┄ {} · g clears it", g.label(&app.state)), t.dim),
                     None => (
                         format!(

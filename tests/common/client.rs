@@ -1,5 +1,5 @@
 //! A russh client for the server tests and the load test
-//! (`examples/serve_load.rs` includes this file): a student logged in with
+//! (`examples/serve_load/` includes this file): a student logged in with
 //! "none" or the lecturer by key, and an explorer started at a given size;
 //! and what /proc says about the server process.
 

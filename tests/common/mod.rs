@@ -3,12 +3,14 @@
 #![allow(dead_code)]
 
 pub mod app;
+pub mod browser;
 pub mod cli;
 pub mod client;
 pub mod lecture;
 pub mod measured;
 pub mod room;
 pub mod serve;
+pub mod svg;
 pub mod tmux;
 
 use std::path::Path;

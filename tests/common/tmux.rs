@@ -162,13 +162,22 @@ impl Pane {
     }
 
     /// Polls the pane until `pred` holds (20 s at most: a loaded 2-core
-    /// machine can hold a resize back for seconds).
+    /// machine can hold a resize back for seconds), then gives the screen
+    /// 40 ms more and returns it as it is then, if `pred` still holds: a
+    /// capture can come while the program is still writing a frame, and
+    /// what the test reads next (the colours, a count of cells) would be
+    /// half of it.
     pub fn wait_for(&self, what: &str, pred: impl Fn(&str) -> bool) -> String {
         let start = Instant::now();
         loop {
             let s = self.capture();
             if pred(&s) {
-                return s;
+                std::thread::sleep(Duration::from_millis(40));
+                let whole = self.capture();
+                if pred(&whole) {
+                    return whole;
+                }
+                continue;
             }
             assert!(
                 start.elapsed() < Duration::from_secs(20),

@@ -99,7 +99,10 @@ impl Roughness {
     /// Whether `p`'s ζ lies within the data (always, for the power law).
     pub fn check(&self, p: &Params) -> Result<(), RoughnessError> {
         let zeta_max = self.zeta_max();
-        if p.zeta() > zeta_max {
+        // Within the rounding of q_max/q0 (a whole ζ_max such as a line's
+        // n/2 is taken as the whole number): the table counts q within
+        // 1e-12 of q1 as ≤ q1.
+        if p.zeta() > zeta_max * (1.0 + 1e-12) {
             return Err(RoughnessError::BeyondData {
                 zeta: p.zeta(),
                 zeta_max,
@@ -114,7 +117,7 @@ impl Roughness {
             return Err(RoughnessError::NotAParameter(s.axis()));
         }
         let zeta_max = self.zeta_max();
-        if s.axis() == Axis::Zeta && s.to() > zeta_max {
+        if s.axis() == Axis::Zeta && s.to() > zeta_max * (1.0 + 1e-12) {
             return Err(RoughnessError::BeyondData {
                 zeta: s.to(),
                 zeta_max,

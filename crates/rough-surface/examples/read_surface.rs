@@ -2,7 +2,7 @@
 //! the time taken (a benchmark, not a test; `scripts/surface_bench.py`
 //! runs it beside SurfaceTopography on the same file).
 //!
-//! cargo run --release -p rough-surface --example read_surface -- FILE [--periodic] [--pixel-size M] [--repeat N]
+//! cargo run --release -p rough-surface --example read_surface -- FILE [--periodic] [--pixel-size M] [--repeat N] [--channel N] [--max-undefined PERCENT]
 
 use std::time::Instant;
 
@@ -19,10 +19,17 @@ fn main() {
             "--periodic" => opts.periodic = true,
             "--pixel-size" => opts.pixel_size = it.next().and_then(|v| v.parse().ok()),
             "--repeat" => repeat = it.next().and_then(|v| v.parse().ok()).unwrap_or(1),
+            "--channel" => opts.channel = it.next().cloned(),
+            "--max-undefined" => {
+                opts.max_undefined = it
+                    .next()
+                    .and_then(|v| v.parse::<f64>().ok())
+                    .map(|p| p / 100.0)
+            }
             _ => path = Some(std::path::PathBuf::from(a)),
         }
     }
-    let path = path.expect("usage: read_surface FILE [--periodic] [--pixel-size M] [--repeat N]");
+    let path = path.expect("usage: read_surface FILE [--periodic] [--pixel-size M] [--repeat N] [--channel N] [--max-undefined PERCENT]");
     let mut best = f64::INFINITY;
     let mut m = None;
     for _ in 0..repeat {

@@ -15,7 +15,9 @@
 //! sides: a roll-off plateau (slope 0: H = −1 for areal data) and a noise
 //! floor are not, and neither is the steep fall past a short cutoff or the
 //! window's leakage there; failing that, the longest self-affine piece,
-//! then the longest piece. Before that,
+//! then the longest piece; its ends then lose the points that lie far off
+//! its line, while their plain (unweighted) rms passes [`POOR_DECADES`].
+//! Before that,
 //! numerical zeros are dropped: everything from the first point that lies
 //! more than [`CLIFF`] decades below its neighbour (a periodic surface
 //! generated with a short cutoff has nothing but rounding past it).
@@ -233,6 +235,35 @@ pub(crate) fn self_affine(dim: Dim, spectrum: &[(f64, f64)], modes: &[f64]) -> O
             }
             (None, None) => break,
         }
+    }
+    // The points as drawn, every one counting the same: the band's ends
+    // lose points while their plain rms from the line passes
+    // [`POOR_DECADES`] (few-mode bins at small q, scattered a decade, hide
+    // in the mode-weighted rms), the end farther from the line first, as
+    // long as the fit keeps its points and half a decade.
+    let plain = |i: usize, j: usize| -> (f64, f64, f64) {
+        let s = sums(i, j);
+        let (slope, _) = s.line();
+        let (mx, my) = (s.x / s.w, s.y / s.w);
+        let r = |k: usize| (pts[k].1 - my - slope * (pts[k].0 - mx)).abs();
+        let rms = ((i..j).map(|k| r(k).powi(2)).sum::<f64>() / (j - i) as f64).sqrt();
+        (rms / std::f64::consts::LN_10, r(i), r(j - 1))
+    };
+    let decades = |i: usize, j: usize| (pts[j - 1].0 - pts[i].0) / std::f64::consts::LN_10;
+    loop {
+        let (rms, first, last) = plain(i, j);
+        if rms <= POOR_DECADES || j - i <= crate::limits::MIN_FIT_POINTS {
+            break;
+        }
+        let (a, b) = if first >= last {
+            (i + 1, j)
+        } else {
+            (i, j - 1)
+        };
+        if decades(a, b) < crate::limits::MIN_FIT_DECADES {
+            break;
+        }
+        (i, j) = (a, b);
     }
     // The spectrum's own wavevectors (not their logarithms' round trip).
     let nearest = |x: f64| {

@@ -218,44 +218,69 @@ pub(crate) fn read(
     let (sx, sz, note) = scales(&scan.header, header, opts)?;
     let z: Vec<f64> = y.iter().map(|v| v / sz).collect();
     let l = n as f64 * dx / sx;
-    let mut c = spectrum::line(z, l, opts.periodic).map_err(|p| (None, p))?;
+    let mut c = spectrum::line(z, l, opts.periodic, opts.detrend_mode()).map_err(|p| (None, p))?;
     c.notes.extend(note);
     Ok((Kind::Line { n, l }, c))
 }
 
-/// An `x z` table's x and z units per metre (divide by them) and the note
-/// on the heights' unit: a header naming the columns' units (`x (mm),z
-/// (um)`) first, else the labels (`Lateral units`, `Value units`); heights
-/// without a unit take the x unit.
+/// An `x z` table's x and z units per metre (divide by them) and the notes
+/// on the units it assumed: a header naming the columns' units (`x (mm),z
+/// (um)`) first, else the labels (`Lateral units`, `Value units`), else
+/// `--lateral-unit` for x, else metres, said; heights without a unit take
+/// the x unit.
 fn scales(
     lines: &[(usize, &str)],
     header: &Header,
     opts: &Options,
-) -> Result<(f64, f64, Option<String>), Failure> {
-    use crate::units::{heights, Source};
+) -> Result<(f64, f64, Vec<String>), Failure> {
+    use crate::units::{canonical, heights, Source};
     let unit = |u: &str, line: usize| {
         crate::units::per_metre(u).ok_or((Some(line), Problem::UnknownUnit(u.to_string())))
     };
-    let Some((line, x, z)) = crate::colunits::scan_units(lines) else {
-        let source = match (&header.value_unit, &header.x_unit) {
-            (Some((u, l)), _) => Source::File(u, *l),
-            (None, Some((u, l))) => Source::Lateral(u, *l, "the lateral unit"),
-            (None, None) => Source::Nothing,
-        };
-        let (sz, note) = heights(source, opts.height_unit)?;
-        return Ok((header.lateral_scale()?, sz, note));
+    let (x, z) = match crate::colunits::scan_units(lines) {
+        Some((line, x, z)) => (x.map(|u| (u, line)), z.map(|u| (u, line))),
+        None => (header.x_unit.clone(), header.value_unit.clone()),
     };
-    let sx = match &x {
-        Some(u) => unit(u, line)?,
-        None => header.lateral_scale()?,
+    let mut notes = Vec::new();
+    let sx = match (&x, opts.lateral_unit) {
+        (Some((u, line)), None) => unit(u, *line)?,
+        (Some((u, line)), Some(g)) => {
+            let per = unit(u, *line)?;
+            if per != g.per_metre {
+                notes.push(format!(
+                    "x read in {} (--lateral-unit; the file says {})",
+                    g.name,
+                    canonical(per)
+                ));
+            }
+            g.per_metre
+        }
+        (None, Some(g)) => {
+            notes.push(format!("x read in {} (--lateral-unit)", g.name));
+            g.per_metre
+        }
+        (None, None) => {
+            notes.push("x read in m (the file names no unit; --lateral-unit to change)".into());
+            1.0
+        }
     };
-    let source = match (&z, &x) {
-        (Some(u), _) => Source::File(u, line),
-        (None, Some(u)) => Source::Lateral(u, line, "the x column's unit"),
-        (None, None) => Source::Nothing,
+    let (sz, note) = match (&z, &x, opts.lateral_unit) {
+        (Some((u, l)), _, _) => heights(Source::File(u, *l), opts.height_unit)?,
+        (None, Some((u, l)), _) => heights(
+            Source::Lateral(u, *l, "the x column's unit"),
+            opts.height_unit,
+        )?,
+        (None, None, Some(g)) if opts.height_unit.is_none() => (
+            g.per_metre,
+            Some(format!(
+                "heights read in {} (the x column's unit; --height-unit to change)",
+                g.name
+            )),
+        ),
+        (None, None, _) => heights(Source::Nothing, opts.height_unit)?,
     };
-    let (sz, note) = heights(source, opts.height_unit)?;
-    Ok((sx, sz, note))
+    notes.extend(note);
+    Ok((sx, sz, notes))
 }
 
 /// The first field of every data row, as written.

@@ -22,12 +22,48 @@ fn length(m: f64) -> String {
         .replace("00 ", " ")
 }
 
+/// The form removed, "plane removed" or "quadratic removed (--detrend
+/// curvature)": the flag named where it was given.
+fn removed(opts: &Options, line: bool) -> String {
+    let words = opts.detrend_mode().words(line);
+    match opts.detrend {
+        Some(d) => format!("{words} (--detrend {})", d.name()),
+        None => words.to_string(),
+    }
+}
+
+/// The note where `--detrend` chose another form than the default:
+/// "quadratic removed before the spectrum and Sq (--detrend curvature; the
+/// default removes the plane)".
+pub(crate) fn detrend_note(kind: &Kind, opts: &Options) -> Option<String> {
+    let mode = opts.detrend?;
+    let default = Options {
+        detrend: None,
+        ..opts.clone()
+    }
+    .detrend_mode();
+    let line = matches!(kind, Kind::Line { .. });
+    let rms = if line { "Rq" } else { "Sq" };
+    (mode != default && !matches!(kind, Kind::Psd { .. })).then(|| {
+        format!(
+            "{} before the spectrum and {rms} (--detrend {}; the default removes the {})",
+            mode.words(line),
+            mode.name(),
+            match default {
+                crate::detrend::Detrend::Mean => "mean of periodic data",
+                _ if line => "line",
+                _ => "plane",
+            }
+        )
+    })
+}
+
 pub(crate) fn describe(kind: &Kind, opts: &Options, psd: &str) -> String {
-    let treat = |what: &str| {
+    let treat = |line: bool| {
         if opts.periodic {
-            "periodic, mean removed".to_string()
+            format!("periodic, {}", removed(opts, line))
         } else {
-            format!("{what} removed, Hann window")
+            format!("{}, Hann window", removed(opts, line))
         }
     };
     match *kind {
@@ -35,9 +71,9 @@ pub(crate) fn describe(kind: &Kind, opts: &Options, psd: &str) -> String {
             "map {nx} × {ny}, {} × {}, {}",
             length(lx),
             length(ly),
-            treat("plane")
+            treat(false)
         ),
-        Kind::Line { n, l } => format!("line scan of {n} points, {}, {}", length(l), treat("line")),
+        Kind::Line { n, l } => format!("line scan of {n} points, {}, {}", length(l), treat(true)),
         Kind::Profiles {
             direction,
             nx,
@@ -52,9 +88,9 @@ pub(crate) fn describe(kind: &Kind, opts: &Options, psd: &str) -> String {
                 length(lx),
                 length(ly),
                 if opts.periodic {
-                    "periodic, mean removed".to_string()
+                    format!("periodic, {}", removed(opts, false))
                 } else {
-                    format!("plane removed, Hann window along {d}")
+                    format!("{}, Hann window along {d}", removed(opts, false))
                 }
             )
         }

@@ -48,6 +48,9 @@ pub enum Problem {
         /// The heights were a tilted plane (line), not a constant.
         plane: bool,
     },
+    /// Nothing left after removing the least-squares quadratic
+    /// (`--detrend curvature`).
+    Quadratic,
     /// A line scan whose x is not uniformly spaced (or does not increase).
     NonUniform {
         x: f64,
@@ -69,6 +72,9 @@ pub enum Problem {
     Undefined {
         count: usize,
         total: usize,
+        /// The share filled at most (0–1): [`crate::MAX_UNDEFINED`] or
+        /// `--max-undefined`'s.
+        allowed: f64,
     },
     /// An undefined value (NaN, an empty cell) where only heights may be
     /// undefined: a position, a wavevector, a PSD value.
@@ -124,6 +130,11 @@ impl fmt::Display for Problem {
                 "the surface is flat: nothing is left after removing its tilt \
                  (the heights lie on a plane)"
             ),
+            Problem::Quadratic => write!(
+                f,
+                "the surface is flat: nothing is left after removing its curvature \
+                 (--detrend curvature; the heights lie on a quadratic)"
+            ),
             Problem::NonUniform {
                 x,
                 expected,
@@ -152,13 +163,17 @@ impl fmt::Display for Problem {
                 f,
                 "an undefined {what} (nan or an empty cell): only heights may be undefined"
             ),
-            Problem::Undefined { count, total } => write!(
+            Problem::Undefined {
+                count,
+                total,
+                allowed,
+            } => write!(
                 f,
                 "{count} of {total} points ({}) are undefined (NaN, empty or masked): \
-                 up to {} % are filled, more is refused; crop the data to the part \
-                 that was measured",
+                 up to {} are filled, more is refused; crop the data to the part \
+                 that was measured, or allow more with --max-undefined PERCENT",
                 share(*count, *total),
-                crate::MAX_UNDEFINED * 100.0
+                percent(*allowed)
             ),
             Problem::Format(s) => write!(f, "{s}"),
         }
@@ -188,6 +203,12 @@ impl std::error::Error for SurfaceError {}
 
 /// A problem and the 1-based line it is about, if any.
 pub(crate) type Failure = (Option<usize>, Problem);
+
+/// A share 0–1 as a percentage for people: "35 %", "0.5 %".
+pub(crate) fn percent(share: f64) -> String {
+    let s = format!("{:.4}", share * 100.0);
+    format!("{} %", s.trim_end_matches('0').trim_end_matches('.'))
+}
 
 /// A share of points as a percentage for people: "0.4 %", "0.12 %",
 /// "2.5 %", "12.5 %", "< 0.01 %".

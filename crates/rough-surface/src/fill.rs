@@ -16,7 +16,7 @@
 //! point is defined, so the system is never singular below the share
 //! refused.
 
-use crate::error::{share, Problem};
+use crate::error::{percent, share, Problem};
 
 /// The largest share of undefined points filled; above it the file is
 /// refused ([`Problem::Undefined`]).
@@ -37,7 +37,8 @@ pub(crate) fn note(count: usize, total: usize) -> String {
 
 /// Fills the NaN heights of an nx × ny grid (rows of nx; a line is
 /// ny = 1). Returns the note to show, or `None` when every point was
-/// defined; refuses a grid with more than [`MAX_UNDEFINED`] undefined.
+/// defined; refuses a grid with more than [`MAX_UNDEFINED`] undefined
+/// (or the share `--max-undefined` allows, which the note then names).
 pub(crate) fn fill(
     h: &mut [f64],
     nx: usize,
@@ -50,11 +51,22 @@ pub(crate) fn fill(
         return Ok(None);
     }
     let total = h.len();
-    if count as f64 > MAX_UNDEFINED * total as f64 || count == total {
-        return Err(Problem::Undefined { count, total });
+    let allowed = crate::allow::max_undefined();
+    let limit = allowed.unwrap_or(MAX_UNDEFINED);
+    if count as f64 > limit * total as f64 || count == total {
+        return Err(Problem::Undefined {
+            count,
+            total,
+            allowed: limit,
+        });
     }
     solve(h, nx, ny, periodic);
-    Ok(Some(note(count, total)))
+    let mut note = note(count, total);
+    // Said where the default would have refused.
+    if let Some(a) = allowed.filter(|_| count as f64 > MAX_UNDEFINED * total as f64) {
+        note.push_str(&format!(" (--max-undefined {})", percent(a)));
+    }
+    Ok(Some(note))
 }
 
 /// The neighbours of grid point (i, j) inside the stencil.
@@ -243,8 +255,22 @@ mod tests {
             fill(&mut h, 10, 10, false),
             Err(Problem::Undefined {
                 count: 11,
-                total: 100
+                total: 100,
+                allowed: MAX_UNDEFINED
             })
         );
+        // --max-undefined 12 % fills them and says so.
+        let opts = crate::Options {
+            max_undefined: Some(0.12),
+            ..crate::Options::default()
+        };
+        let note = crate::allow::with(&opts, || fill(&mut h, 10, 10, false));
+        assert_eq!(
+            note,
+            Ok(Some(
+                "11 undefined points (11 %) filled (--max-undefined 12 %)".into()
+            ))
+        );
+        assert_eq!(percent(0.355), "35.5 %");
     }
 }

@@ -2,6 +2,7 @@
 //! Gwyddion's .gwy): sizes in metres, undefined points as NaN, and the
 //! step from them to the moment table.
 
+use crate::assumed::Assumed;
 use crate::error::{Failure, Problem};
 use crate::measured::{Kind, Options};
 use crate::spectrum::{self, Computed};
@@ -23,6 +24,11 @@ pub struct Grid {
     /// What the reader assumed, one line each (they go to
     /// [`crate::Measured::notes`]).
     pub notes: Vec<String>,
+    /// The file's format for people: "x3p", "Digital Surf .sur".
+    pub format: &'static str,
+    /// Units the file does not give (`--height-unit`, `--lateral-unit`
+    /// then say them); the default where it gives every unit.
+    pub assumed: Assumed,
 }
 
 impl Grid {
@@ -62,6 +68,14 @@ pub(crate) fn compute(
     notes: &mut Vec<String>,
 ) -> Result<(Kind, Computed), Failure> {
     notes.append(&mut g.notes);
+    let format = g.format;
+    notes.extend(crate::assumed::apply(
+        g.assumed,
+        format,
+        &mut g.z,
+        (&mut g.lx, &mut g.ly),
+        opts,
+    )?);
     if let Some(p) = opts.pixel_size {
         return Err((
             None,
@@ -83,9 +97,14 @@ pub(crate) fn compute(
     }
     // Undefined points (NaN) are filled by the map pipeline.
     if let (Some(direction), false) = (opts.direction, g.is_profile()) {
-        let c =
-            crate::profiles::profiles(g.z, (g.nx, g.ny), (g.lx, g.ly), opts.periodic, direction)
-                .map_err(|p| (None, p))?;
+        let c = crate::profiles::profiles(
+            g.z,
+            (g.nx, g.ny),
+            (g.lx, g.ly),
+            (opts.periodic, opts.detrend_mode()),
+            direction,
+        )
+        .map_err(|p| (None, p))?;
         let kind = Kind::Profiles {
             direction,
             nx: g.nx,
@@ -96,9 +115,15 @@ pub(crate) fn compute(
         return Ok((kind, c));
     }
     let c = if g.is_profile() {
-        spectrum::line(g.z, g.lx, opts.periodic)
+        spectrum::line(g.z, g.lx, opts.periodic, opts.detrend_mode())
     } else {
-        spectrum::map(g.z, g.nx, g.ny, g.lx, g.ly, opts.periodic)
+        spectrum::map(
+            g.z,
+            (g.nx, g.ny),
+            (g.lx, g.ly),
+            opts.periodic,
+            opts.detrend_mode(),
+        )
     }
     .map_err(|p| (None, p))?;
     Ok((kind, c))

@@ -250,6 +250,12 @@ impl Field<'_> {
         per_metre(&self.unit_xy).is_some() && per_metre(&self.unit_z).is_some()
     }
 
+    /// Sizes of a length unit, values without a unit: heights whose unit
+    /// is taken as the sizes' (`--height-unit` says it).
+    fn unitless(&self) -> bool {
+        per_metre(&self.unit_xy).is_some() && self.unit_z.is_empty()
+    }
+
     fn value(&self, i: usize) -> f64 {
         f64::from_le_bytes(self.data[8 * i..8 * i + 8].try_into().expect("8 bytes"))
     }
@@ -433,6 +439,7 @@ fn pick<'c, 'a>(
         return chans
             .iter()
             .find(|(_, c)| c.field.is_length())
+            .or_else(|| chans.iter().find(|(_, c)| c.field.unitless()))
             .map(|(n, c)| (*n, c))
             .ok_or_else(|| {
                 bad(format!(
@@ -466,7 +473,7 @@ fn pick<'c, 'a>(
         first
     };
     let (n, c) = found;
-    if !c.field.is_length() {
+    if !c.field.is_length() && !c.field.unitless() {
         let (u, which) = if per_metre(&c.field.unit_z).is_none() {
             (&c.field.unit_z, "values")
         } else {
@@ -491,7 +498,12 @@ pub(crate) fn read(bytes: &[u8], choice: Option<&str>) -> Result<Grid, Failure> 
     let (n, c) = pick(&chans, choice)?;
     let f = &c.field;
     let xy = per_metre(&f.unit_xy).expect("a length");
-    let zs = per_metre(&f.unit_z).expect("a length");
+    // Values without a unit are read in the sizes' unit (said in a note).
+    let zs = per_metre(&f.unit_z).unwrap_or(xy);
+    let assumed = crate::assumed::Assumed {
+        height: f.unit_z.is_empty().then_some(xy),
+        lateral: None,
+    };
     let points = f.xres * f.yres;
     let mut z: Vec<f64> = (0..points)
         .map(|i| {
@@ -549,5 +561,7 @@ pub(crate) fn read(bytes: &[u8], choice: Option<&str>) -> Result<Grid, Failure> 
         ly: if f.yres == 1 { 0.0 } else { f.yreal / xy },
         z,
         notes,
+        format: "Gwyddion .gwy",
+        assumed,
     })
 }

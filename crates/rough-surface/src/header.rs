@@ -224,15 +224,6 @@ impl Header {
         };
         Ok((metres(&self.width, axis_x)?, metres(&self.height, axis_y)?))
     }
-
-    /// An `x z` table's x unit per metre (its `Lateral units`, else
-    /// metres): divide by it.
-    pub fn lateral_scale(&self) -> Result<f64, Failure> {
-        match &self.x_unit {
-            None => Ok(1.0),
-            Some((u, line)) => unit(u, *line),
-        }
-    }
 }
 
 fn unit(u: &str, line: usize) -> Result<f64, Failure> {

@@ -6,15 +6,20 @@
 //! contact.engineering), so that its numbers are the reference; docs/model.md,
 //! "Measured surfaces", states them.
 
+mod allow;
+mod amplitude;
 mod anisotropy;
+mod assumed;
 mod band;
 mod bins;
 mod ce;
 mod channels;
 mod columns;
 mod colunits;
+mod container;
 mod decimal;
 mod describe;
+mod detrend;
 mod error;
 mod fill;
 mod fit;
@@ -29,6 +34,7 @@ mod prepare;
 mod profiles;
 mod psd;
 mod read;
+mod readers;
 mod realspace;
 mod sniff;
 mod spectrum;
@@ -38,7 +44,9 @@ mod threads;
 mod units;
 mod x3p;
 
+pub use amplitude::Amplitude;
 pub use anisotropy::{Slopes, RATIO as ANISOTROPY_RATIO};
+pub use detrend::Detrend;
 pub use error::{Problem, SurfaceError};
 pub use fill::MAX_UNDEFINED;
 pub use fit::{PowerLawFit, Verdict, MIN_POINTS as MIN_FIT_POINTS};
@@ -46,6 +54,6 @@ pub use grid::Grid;
 pub use limits::MAX_BYTES;
 pub use measured::{Direction, Kind, Measured, Options};
 pub use prepare::Heights;
-pub use read::{parse, read, read_grid, read_heights, sha256_hex};
+pub use read::{parse, parse_named, read, read_grid, read_grid_named, read_heights, sha256_hex};
 pub use realspace::RealSpace;
 pub use units::HeightUnit;

@@ -69,7 +69,8 @@ pub(crate) fn read(
             (None, Some(p)) => p * n as f64,
             (None, None) => return Err((None, Problem::NoSize { line: true })),
         };
-        let mut c = spectrum::line(h, l, opts.periodic).map_err(|p| (None, p))?;
+        let mut c =
+            spectrum::line(h, l, opts.periodic, opts.detrend_mode()).map_err(|p| (None, p))?;
         c.notes.extend(note);
         return Ok((Kind::Line { n, l }, c));
     }
@@ -88,8 +89,14 @@ pub(crate) fn read(
         }
     };
     if let Some(direction) = opts.direction {
-        let mut c = profiles::profiles(h, (cols, rows), (lx, ly), opts.periodic, direction)
-            .map_err(|p| (None, p))?;
+        let mut c = profiles::profiles(
+            h,
+            (cols, rows),
+            (lx, ly),
+            (opts.periodic, opts.detrend_mode()),
+            direction,
+        )
+        .map_err(|p| (None, p))?;
         c.notes.extend(note);
         let kind = Kind::Profiles {
             direction,
@@ -100,7 +107,14 @@ pub(crate) fn read(
         };
         return Ok((kind, c));
     }
-    let mut c = spectrum::map(h, cols, rows, lx, ly, opts.periodic).map_err(|p| (None, p))?;
+    let mut c = spectrum::map(
+        h,
+        (cols, rows),
+        (lx, ly),
+        opts.periodic,
+        opts.detrend_mode(),
+    )
+    .map_err(|p| (None, p))?;
     c.notes.extend(note);
     Ok((
         Kind::Map {

@@ -7,6 +7,7 @@ use rough_model::{Dim, MomentTable};
 
 use crate::anisotropy::Slopes;
 use crate::band;
+use crate::detrend::Detrend;
 use crate::fit::{self, PowerLawFit};
 use crate::prepare::Heights;
 use crate::realspace::RealSpace;
@@ -31,6 +32,27 @@ pub struct Options {
     pub channel: Option<String>,
     /// The heights' unit, whatever the file says (`--height-unit`).
     pub height_unit: Option<HeightUnit>,
+    /// The lateral unit (sizes, x positions) of a file that gives none
+    /// (`--lateral-unit`).
+    pub lateral_unit: Option<HeightUnit>,
+    /// The largest share of undefined points filled, 0 to 1
+    /// (`--max-undefined PERCENT`); [`crate::MAX_UNDEFINED`] when `None`.
+    pub max_undefined: Option<f64>,
+    /// The form removed before anything is computed (`--detrend`); `None`:
+    /// the plane, or the mean of periodic data ([`Options::detrend_mode`]).
+    pub detrend: Option<Detrend>,
+}
+
+impl Options {
+    /// The form removed: the one asked, else the plane (the mean on
+    /// periodic data).
+    pub fn detrend_mode(&self) -> Detrend {
+        self.detrend.unwrap_or(if self.periodic {
+            Detrend::Mean
+        } else {
+            Detrend::Plane
+        })
+    }
 }
 
 /// A direction on a map: x along its rows, y across them.

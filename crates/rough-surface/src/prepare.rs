@@ -7,6 +7,7 @@
 
 use std::f64::consts::PI;
 
+use crate::detrend::Detrend;
 use crate::error::Problem;
 
 /// The residual rms below which detrended heights count as nothing left
@@ -35,12 +36,12 @@ fn sums(block: &[f64], nx: usize, j0: usize, (cx, cy): (f64, f64), first: f64) -
     [s, sx, sy, f64::from(u8::from(same))]
 }
 
-/// The mean removed (`periodic`) or the least-squares plane removed, in
-/// place; refuses flat heights as `detrend` does.
+/// The form `mode` removed in place (nothing, the mean, the least-squares
+/// plane or quadratic); refuses flat heights as `detrend` does.
 pub(crate) fn detrend(
     h: &mut [f64],
     (nx, ny): (usize, usize),
-    periodic: bool,
+    mode: Detrend,
 ) -> Result<(), Problem> {
     let n = (nx * ny) as f64;
     let c = ((nx as f64 - 1.0) / 2.0, (ny as f64 - 1.0) / 2.0);
@@ -62,9 +63,22 @@ pub(crate) fn detrend(
     }
     let total = |k: usize| parts.iter().map(|p| p[k]).sum::<f64>();
     let mean = total(0) / n;
-    if periodic {
-        h.iter_mut().for_each(|v| *v -= mean);
-        return Ok(());
+    match mode {
+        Detrend::None => return Ok(()),
+        Detrend::Mean => {
+            h.iter_mut().for_each(|v| *v -= mean);
+            return Ok(());
+        }
+        Detrend::Curvature => {
+            let var = h.iter().map(|v| (v - mean) * (v - mean)).sum::<f64>() / n;
+            crate::detrend::remove_quadratic(h, nx, ny)?;
+            let rest = h.iter().map(|v| v * v).sum::<f64>() / n;
+            if rest <= FLAT * FLAT * var {
+                return Err(Problem::Quadratic);
+            }
+            return Ok(());
+        }
+        Detrend::Plane => {}
     }
     let sxx: f64 = (0..nx).map(|i| (i as f64 - c.0).powi(2)).sum::<f64>() * ny as f64;
     let syy: f64 = (0..ny).map(|j| (j as f64 - c.1).powi(2)).sum::<f64>() * nx as f64;

@@ -4,6 +4,8 @@
 //! profile along the direction windowed with the periodic Hann window of a
 //! line scan (none if periodic) and transformed; the profile moments and
 //! the display C1D are those of a line scan, averaged over the profiles.
+//! Beside them the real-space Rq and RΔq of the profiles, SurfaceTopography's
+//! `Rq` and `Rdq` of the topography (each profile about its own mean).
 
 use std::f64::consts::PI;
 
@@ -12,6 +14,7 @@ use rustfft::num_complex::Complex;
 use rustfft::FftPlanner;
 
 use crate::bins::Bins;
+use crate::detrend::Detrend;
 use crate::error::Problem;
 use crate::fill;
 use crate::measured::Direction;
@@ -23,11 +26,11 @@ pub(crate) fn profiles(
     mut h: Vec<f64>,
     (nx, ny): (usize, usize),
     (lx, ly): (f64, f64),
-    periodic: bool,
+    (periodic, mode): (bool, Detrend),
     direction: Direction,
 ) -> Result<Computed, Problem> {
     let notes: Vec<String> = fill::fill(&mut h, nx, ny, periodic)?.into_iter().collect();
-    detrend(&mut h, nx, ny, periodic)?;
+    detrend(&mut h, nx, ny, mode)?;
     // Profiles as rows of n samples over l.
     let (h, n, count, l) = match direction {
         Direction::X => (h, nx, ny, lx),
@@ -37,6 +40,7 @@ pub(crate) fn profiles(
             (t, ny, nx, ly)
         }
     };
+    let real = crate::realspace::profiles(&h, n, l, periodic);
     let fft = FftPlanner::<f64>::new().plan_fft_forward(n);
     let mut power = vec![0.0; n];
     let mut buf = vec![Complex::new(0.0, 0.0); n];
@@ -72,7 +76,7 @@ pub(crate) fn profiles(
         spectrum: bins.finish(),
         notes,
         slopes: None,
-        real: None,
+        real: Some(real),
         modes: bins.counts(),
         heights: None,
     })
@@ -90,11 +94,18 @@ mod tests {
         let h: Vec<f64> = (0..nx * ny)
             .map(|i| 0.5 * (k * lx * (i % nx) as f64 / nx as f64).cos())
             .collect();
-        let x = profiles(h.clone(), (nx, ny), (lx, ly), true, Direction::X).unwrap();
+        let x = profiles(
+            h.clone(),
+            (nx, ny),
+            (lx, ly),
+            (true, Detrend::Mean),
+            Direction::X,
+        )
+        .unwrap();
         let s = x.table.sums(1e9);
         assert!((s[0] / 0.125 - 1.0).abs() < 1e-14, "{s:?}");
         assert!((s[1] / (0.125 * k * k) - 1.0).abs() < 1e-14, "{s:?}");
-        let y = profiles(h, (nx, ny), (lx, ly), true, Direction::Y);
+        let y = profiles(h, (nx, ny), (lx, ly), (true, Detrend::Mean), Direction::Y);
         // Every profile along y is flat.
         assert!(y.is_err() || y.unwrap().table.sums(1e9)[1] < 1e-25);
     }

@@ -12,9 +12,10 @@ use crate::error::{Problem, SurfaceError};
 use crate::grid::Grid;
 use crate::limits::MAX_BYTES;
 use crate::measured::{Kind, Measured, Options};
+use crate::units::Advice;
 use crate::{
-    band, ce, channels, columns, grid, gwy, header, matrix, sniff, spectrum, stream, text, units,
-    x3p,
+    band, ce, channels, columns, grid, gwy, header, matrix, readers, sniff, spectrum, stream, text,
+    units, x3p,
 };
 
 /// Reads and computes the surface in `path`. Every refusal names the file
@@ -33,7 +34,7 @@ pub fn read_heights(path: &Path, opts: &Options) -> Result<Measured, SurfaceErro
 
 fn read_keeping(path: &Path, opts: &Options, keep: bool) -> Result<Measured, SurfaceError> {
     let before = crate::prepare::KEEP_HEIGHTS.with(|k| k.replace(keep));
-    let r = read_inner(path, opts);
+    let r = crate::allow::with(opts, || read_inner(path, opts));
     crate::prepare::KEEP_HEIGHTS.with(|k| k.set(before));
     r
 }
@@ -51,10 +52,7 @@ fn read_inner(path: &Path, opts: &Options) -> Result<Measured, SurfaceError> {
     if meta.len() > MAX_BYTES {
         return Err(fail(None, Problem::TooLarge(meta.len())));
     }
-    let ext = path
-        .extension()
-        .map(|e| e.to_string_lossy().to_ascii_lowercase())
-        .unwrap_or_default();
+    let ext = readers::gz::extension(path);
     let whole = |bytes: Vec<u8>| {
         if bytes.len() as u64 > MAX_BYTES {
             return Err(fail(None, Problem::TooLarge(bytes.len() as u64)));
@@ -85,7 +83,7 @@ fn read_inner(path: &Path, opts: &Options) -> Result<Measured, SurfaceError> {
                 from_scan(None, rest.scan(&head)?, opts)
             };
             read()
-                .map(|r| measured(r, sha256, Vec::new()))
+                .map(|r| measured(r, sha256, Vec::new(), opts))
                 .map_err(|(line, problem)| fail(line, problem))
         }
     }
@@ -117,16 +115,63 @@ pub fn sha256_hex(bytes: &[u8]) -> String {
 /// - any other format recognised (NetCDF, HDF5, .npy, TIFF, Zygo, Keyence,
 ///   Nanoscope …) is refused with a line saying how to convert it.
 pub fn parse(bytes: &[u8], opts: &Options) -> Result<Measured, (Option<usize>, Problem)> {
-    parse_file(bytes, opts, "")
+    crate::allow::with(opts, || parse_file(bytes, opts, ""))
 }
 
-/// The heights of an x3p or .gwy file as the file holds them, before any
+/// [`parse`] of a file named `name`: its extension names the formats that
+/// have no magic bytes of their own (Sensofar `.plu`), and a `.gz`'s
+/// inner name the format of what it holds.
+pub fn parse_named(
+    bytes: &[u8],
+    name: &str,
+    opts: &Options,
+) -> Result<Measured, (Option<usize>, Problem)> {
+    let ext = readers::gz::extension(Path::new(name));
+    crate::allow::with(opts, || parse_file(bytes, opts, &ext))
+}
+
+/// The heights of a binary file (x3p, .gwy, an instrument's own format;
+/// gzip-compressed too) as the file holds them, in metres, before any
 /// detrending (undefined points NaN); text and other formats are refused.
 pub fn read_grid(bytes: &[u8], opts: &Options) -> Result<Grid, (Option<usize>, Problem)> {
-    match sniff::format(bytes, "") {
+    read_grid_named(bytes, "", opts)
+}
+
+/// [`read_grid`] of a file named `name` (as [`parse_named`]).
+pub fn read_grid_named(
+    bytes: &[u8],
+    name: &str,
+    opts: &Options,
+) -> Result<Grid, (Option<usize>, Problem)> {
+    let ext = readers::gz::extension(Path::new(name));
+    if bytes.starts_with(readers::gz::MAGIC) {
+        let inner = readers::gz::unpack(bytes)?;
+        if inner.starts_with(readers::gz::MAGIC) {
+            return Err((
+                None,
+                Problem::Format("a gzip-compressed file inside a gzip-compressed file".into()),
+            ));
+        }
+        return grid_of(
+            &sniff::format(&inner, readers::gz::inner(&ext)),
+            &inner,
+            opts,
+        );
+    }
+    grid_of(&sniff::format(bytes, &ext), bytes, opts)
+}
+
+/// The grid of `bytes` in `format`.
+fn grid_of(
+    format: &sniff::Format,
+    bytes: &[u8],
+    opts: &Options,
+) -> Result<Grid, (Option<usize>, Problem)> {
+    match format {
         sniff::Format::X3p => x3p::read(bytes),
         sniff::Format::Gwy => gwy::read(bytes, opts.channel.as_deref()),
-        sniff::Format::Other(s) => Err((None, Problem::Format(s))),
+        sniff::Format::Native(n) => readers::read(*n, bytes, opts),
+        sniff::Format::Other(s) => Err((None, Problem::Format(s.clone()))),
         sniff::Format::Text => Err((
             None,
             Problem::Format("text: not an x3p or .gwy file".to_string()),
@@ -142,6 +187,18 @@ fn parse_file(
     ext: &str,
 ) -> Result<Measured, (Option<usize>, Problem)> {
     check_options(opts)?;
+    if bytes.starts_with(readers::gz::MAGIC) {
+        let inner = readers::gz::unpack(bytes)?;
+        if inner.starts_with(readers::gz::MAGIC) {
+            return Err((
+                None,
+                Problem::Format("a gzip-compressed file inside a gzip-compressed file".into()),
+            ));
+        }
+        let mut m = parse_file(&inner, opts, readers::gz::inner(ext))?;
+        m.sha256 = sha256_hex(bytes);
+        return Ok(m);
+    }
     let format = sniff::format(bytes, ext);
     let no_channels = || {
         Err((
@@ -153,25 +210,26 @@ fn parse_file(
             ),
         ))
     };
-    if opts.channel.is_some() && format == sniff::Format::X3p {
+    if opts.channel.is_some()
+        && format == sniff::Format::X3p
+        && !crate::container::is_container(bytes)
+    {
         return no_channels();
-    }
-    if let (Some(u), sniff::Format::X3p | sniff::Format::Gwy) = (opts.height_unit, &format) {
-        return Err((
-            None,
-            Problem::Option(format!(
-                "--height-unit {u} applies to text files: x3p and .gwy files carry their units"
-            )),
-        ));
     }
     let mut notes = Vec::new();
     let text = match format {
         sniff::Format::Other(s) => return Err((None, Problem::Format(s))),
-        sniff::Format::X3p | sniff::Format::Gwy => {
+        sniff::Format::X3p if crate::container::is_container(bytes) => {
+            let mut m = crate::container::read(bytes, opts, &|b, o, e| parse_file(b, o, e))?;
+            m.sha256 = sha256_hex(bytes);
+            return Ok(m);
+        }
+        sniff::Format::X3p | sniff::Format::Gwy | sniff::Format::Native(_) => {
             not_a_download(opts)?;
             let (sha256, read) = std::thread::scope(|s| {
                 let hash = s.spawn(|| sha256_hex(bytes));
-                let read = read_grid(bytes, opts).and_then(|g| grid::compute(g, opts, &mut notes));
+                let read =
+                    grid_of(&format, bytes, opts).and_then(|g| grid::compute(g, opts, &mut notes));
                 (hash.join().expect("hash thread"), read)
             });
             let (kind, computed) = read?;
@@ -184,19 +242,26 @@ fn parse_file(
                     )),
                 ));
             }
-            let what = if format == sniff::Format::X3p {
-                "x3p"
-            } else {
-                "Gwyddion .gwy"
+            let what = match format {
+                sniff::Format::X3p => "x3p",
+                sniff::Format::Native(n) => n.name(),
+                _ => "Gwyddion .gwy",
             };
             let summary = format!("{what} {}", describe(&kind, opts, ""));
+            // The file's units, unless the reader said it assumed them.
+            let assumed = notes.iter().any(|n| n.starts_with("heights read in"));
             let r = Reading {
                 kind,
                 computed,
                 summary,
                 measurement: None,
+                advice: if assumed {
+                    Advice::Height
+                } else {
+                    Advice::File(what)
+                },
             };
-            return Ok(measured(r, sha256, notes));
+            return Ok(measured(r, sha256, notes, opts));
         }
         sniff::Format::Text => {
             let (text, mut assumed) = sniff::text(bytes)?;
@@ -223,6 +288,15 @@ fn parse_file(
         (hash.join().expect("hash thread"), read)
     });
     let r = read?;
+    if let (Kind::Psd { .. }, Some(d)) = (&r.kind, opts.detrend) {
+        return Err((
+            None,
+            Problem::Option(format!(
+                "--detrend {} does not apply to a PSD table: it holds no heights",
+                d.name()
+            )),
+        ));
+    }
     if let (Kind::Psd { .. }, Some(u)) = (&r.kind, opts.height_unit) {
         return Err((
             None,
@@ -231,10 +305,11 @@ fn parse_file(
             )),
         ));
     }
-    Ok(measured(r, sha256, notes))
+    Ok(measured(r, sha256, notes, opts))
 }
 
 fn check_options(opts: &Options) -> Result<(), (Option<usize>, Problem)> {
+    crate::detrend::check_periodic(opts.detrend_mode(), opts.periodic).map_err(|p| (None, p))?;
     match opts.pixel_size {
         Some(p) if !(p.is_finite() && p > 0.0) => Err((
             None,
@@ -259,12 +334,22 @@ fn not_a_download(opts: &Options) -> Result<(), (Option<usize>, Problem)> {
 }
 
 /// The surface from what was read: the reader's `notes` before the
-/// pipeline's, the plausibility warning, the default fit band.
-pub(crate) fn measured(r: Reading, sha256: String, mut notes: Vec<String>) -> Measured {
+/// pipeline's, the form removed where `opts` chose another than the
+/// default, the plausibility warning, the default fit band.
+pub(crate) fn measured(
+    r: Reading,
+    sha256: String,
+    mut notes: Vec<String>,
+    opts: &Options,
+) -> Measured {
     let c = r.computed;
     notes.extend(c.notes);
-    let heights = !matches!(r.kind, Kind::Psd { .. });
-    notes.extend(units::plausibility(&c.table, heights));
+    notes.extend(crate::describe::detrend_note(&r.kind, opts));
+    let advice = match r.kind {
+        Kind::Psd { .. } => Advice::Table,
+        _ => r.advice,
+    };
+    notes.extend(units::plausibility(&c.table, advice));
     let band = band::self_affine(r.kind.dim(), &c.spectrum, &c.modes);
     Measured {
         kind: r.kind,
@@ -288,11 +373,16 @@ pub(crate) struct Reading {
     computed: spectrum::Computed,
     summary: String,
     measurement: Option<String>,
+    /// What the plausibility line may advise.
+    advice: Advice,
 }
 
 fn read_text(text: &str, opts: &Options) -> Result<Reading, (Option<usize>, Problem)> {
     let head = text::head(text)?;
     if ce::is_ce(&head.header) {
+        if let Some(u) = opts.lateral_unit {
+            return Err(no_lateral(u, "a contact.engineering download"));
+        }
         let r = ce::read(text, opts)?;
         let summary = describe(&r.kind, opts, &r.label);
         return Ok(Reading {
@@ -300,6 +390,7 @@ fn read_text(text: &str, opts: &Options) -> Result<Reading, (Option<usize>, Prob
             computed: r.computed,
             summary,
             measurement: r.measurement,
+            advice: Advice::Table,
         });
     }
     not_a_download(opts)?;
@@ -343,10 +434,20 @@ pub(crate) fn from_scan(
             )),
         ));
     }
+    let columns = text.is_some() && !header.is_matrix(scan.cols);
+    if let (Some(u), false) = (opts.lateral_unit, columns) {
+        return Err(no_lateral(
+            u,
+            "a height matrix: its sizes' unit is its header's ('# Width: 12 µm')",
+        ));
+    }
     let (kind, computed) = match text {
-        Some(text) if !header.is_matrix(scan.cols) => columns::read(text, scan, &header, opts)?,
+        Some(text) if columns => columns::read(text, scan, &header, opts)?,
         _ => matrix::read(scan, &header, opts)?,
     };
+    if let (Some(u), Kind::Psd { .. }) = (opts.lateral_unit, kind) {
+        return Err(no_lateral(u, "a PSD table"));
+    }
     if let (Some(d), false) = (opts.direction, matches!(kind, Kind::Profiles { .. })) {
         return Err((
             None,
@@ -366,5 +467,21 @@ pub(crate) fn from_scan(
         computed,
         summary,
         measurement: None,
+        advice: if columns {
+            Advice::HeightOrLateral
+        } else {
+            Advice::Height
+        },
     })
+}
+
+/// `--lateral-unit` on a file whose x unit is not to be said.
+fn no_lateral(u: crate::units::HeightUnit, what: &str) -> (Option<usize>, Problem) {
+    (
+        None,
+        Problem::Option(format!(
+            "--lateral-unit {u} applies to an x z line scan and to files that give no \
+             lateral unit, not to {what}"
+        )),
+    )
 }

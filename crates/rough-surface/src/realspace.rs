@@ -13,6 +13,8 @@
 //!   `rms_slope_from_profile`, the rms of the same difference (n − 1 of them,
 //!   or n wrapping around when periodic).
 
+use crate::amplitude::Amplitude;
+
 /// Real-space rms height and rms slope (gradient for maps).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RealSpace {
@@ -22,6 +24,8 @@ pub struct RealSpace {
     pub rms_height: f64,
     /// Sdq or RΔq, dimensionless.
     pub rms_slope: f64,
+    /// Sa, Ssk, Sku, Sz (Ra, Rsk, Rku, Rz).
+    pub amplitude: Amplitude,
 }
 
 impl RealSpace {
@@ -31,6 +35,29 @@ impl RealSpace {
             ("Sq", "Sdq")
         } else {
             ("Rq", "RΔq")
+        }
+    }
+
+    /// The height parameters' names and values: Sa, Ssk, Sku, Sz (maps)
+    /// or Ra, Rsk, Rku, Rz (lines, profiles).
+    pub fn heights(&self) -> [(&'static str, f64); 4] {
+        let [a, sk, ku, z] = self.amplitude_names();
+        let p = self.amplitude;
+        [
+            (a, p.mean_abs),
+            (sk, p.skewness),
+            (ku, p.kurtosis),
+            (z, p.range),
+        ]
+    }
+
+    /// The amplitude parameters' names: ["Sa", "Ssk", "Sku", "Sz"] or
+    /// ["Ra", "Rsk", "Rku", "Rz"].
+    pub fn amplitude_names(&self) -> [&'static str; 4] {
+        if self.areal {
+            ["Sa", "Ssk", "Sku", "Sz"]
+        } else {
+            ["Ra", "Rsk", "Rku", "Rz"]
         }
     }
 }
@@ -97,6 +124,7 @@ pub(crate) fn areal(
         areal: true,
         rms_height: (squares / n).sqrt(),
         rms_slope: (gradient / (ix * jy) as f64).sqrt(),
+        amplitude: crate::amplitude::of(h, nx, false),
     }
 }
 
@@ -110,6 +138,40 @@ pub(crate) fn profile(h: &[f64], l: f64, periodic: bool) -> RealSpace {
         areal: false,
         rms_height: rms_about_mean(h),
         rms_slope: (sum / m as f64).sqrt(),
+        amplitude: crate::amplitude::of(h, n, false),
+    }
+}
+
+/// A map's profiles, rows of `n` samples over `l` (the map detrended as a
+/// whole), as SurfaceTopography's `Rq` and `Rdq` of a topography
+/// (`rms_height_from_profile`, `rms_slope_from_profile`) take them: each
+/// profile about its own mean, the differences along it (n − 1 a profile,
+/// n wrapping around when periodic; its derivative of a map that is not
+/// periodic leaves out the last profile too, as the gradient's stencil
+/// does).
+pub(crate) fn profiles(h: &[f64], n: usize, l: f64, periodic: bool) -> RealSpace {
+    let dx = l / n as f64;
+    let count = h.len() / n;
+    let (m, sloped) = if periodic {
+        (n, count)
+    } else {
+        (n - 1, count - 1)
+    };
+    let (mut squares, mut slopes) = (0.0, 0.0);
+    for (j, row) in h.chunks_exact(n).enumerate() {
+        let mean = row.iter().sum::<f64>() / n as f64;
+        squares += row.iter().map(|v| (v - mean).powi(2)).sum::<f64>();
+        if j < sloped {
+            slopes += (0..m)
+                .map(|i| ((row[(i + 1) % n] - row[i]) / dx).powi(2))
+                .sum::<f64>();
+        }
+    }
+    RealSpace {
+        areal: false,
+        rms_height: (squares / h.len() as f64).sqrt(),
+        rms_slope: (slopes / (m * sloped) as f64).sqrt(),
+        amplitude: crate::amplitude::of(h, n, true),
     }
 }
 
@@ -131,5 +193,23 @@ mod tests {
         let r = areal(&h, nx, ny, 1.0, 1.0, true);
         assert!((r.rms_height - a / 2f64.sqrt()).abs() < 1e-15);
         assert_eq!(r.names(), ("Sq", "Sdq"));
+        // Its height parameters: Sa = a · mean |cos|, no skew, Sku = 3/2,
+        // Sz = 2a.
+        let [sa, ssk, sku, sz] = r.heights();
+        assert_eq!((sa.0, ssk.0, sku.0, sz.0), ("Sa", "Ssk", "Sku", "Sz"));
+        let mean_abs = (0..nx)
+            .map(|i| {
+                (2.0 * std::f64::consts::PI * i as f64 / nx as f64)
+                    .cos()
+                    .abs()
+            })
+            .sum::<f64>()
+            / nx as f64;
+        assert!((sa.1 - a * mean_abs).abs() < 1e-15);
+        assert!(
+            ssk.1.abs() < 1e-14 && (sku.1 - 1.5).abs() < 1e-14,
+            "{ssk:?} {sku:?}"
+        );
+        assert!((sz.1 - 2.0 * a).abs() < 1e-15);
     }
 }

@@ -14,6 +14,8 @@ pub(crate) enum Format {
     X3p,
     /// Gwyddion's native format.
     Gwy,
+    /// An instrument's own format, read natively.
+    Native(crate::readers::Native),
     /// Text (UTF-8, or Windows-1252 where it is not UTF-8).
     Text,
     /// A format not read: the line saying what it looks like.
@@ -30,6 +32,9 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
     }
     if starts(crate::gwy::MAGIC) {
         return Format::Gwy;
+    }
+    if let Some(n) = crate::readers::sniff(bytes, ext) {
+        return Format::Native(n);
     }
     if starts(b"\xff\xfe") || starts(b"\xfe\xff") {
         return Format::Other(
@@ -57,35 +62,14 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
         );
     }
     for (magic, what) in [
-        (&b"\x88\x1b\x03\x6f"[..], "a Zygo MetroPro .dat file"),
-        (b"\x88\x1b\x03\x70", "a Zygo MetroPro .dat file"),
-        (b"\x88\x1b\x03\x71", "a Zygo MetroPro .dat file"),
-        (b"VK4_", "a Keyence .vk4 file"),
+        (&b"VK4_"[..], "a Keyence .vk4 file"),
         (b"VK3_", "a Keyence .vk3 file"),
         (b"KPK0", "a Keyence .zon file"),
         (b"KPK1", "a Keyence .zon file"),
-        (b"DIGITAL SURF", "a Digital Surf .sur file"),
-        (b"VCA DATA", "a Bruker .opdx file"),
-        (b"AliconaImaging", "an Alicona .al3d file"),
-        (b"aISO-1.0", "an ISO 25178-71 .sdf file"),
-        (b"bISO-1.0", "an ISO 25178-71 .sdf file"),
         (b"Binary TrueMap", "a TrueMap .tmd file"),
-        (b"FRTM_GLIDERV", "an FRT .frt file"),
         (b"OmniSurf3D", "an OmniSurf3D .os3d file"),
         (b"WSxM file", "a WSxM file"),
         (b"MATLAB", "a MATLAB .mat file"),
-        (
-            b"\\*File list",
-            "a Bruker/Digital Instruments Nanoscope file",
-        ),
-        (
-            b"\\*Force file list",
-            "a Bruker/Digital Instruments Nanoscope file",
-        ),
-        (
-            b"?*File list",
-            "a Bruker/Digital Instruments Nanoscope file",
-        ),
         (
             b"II*\x00",
             "a TIFF image (Olympus LEXT, Park, JPK … write TIFF)",
@@ -105,15 +89,26 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
         return other("a BMP image, not height data");
     }
     match ext {
-        "plu" | "apx" => return other("a Sensofar .plu file"),
         "plux" => return other("a Sensofar .plux file"),
         "spm" | "001" | "002" | "003" if binary(bytes) => {
             return other("a Bruker/Digital Instruments Nanoscope file")
         }
         "mnt" => return other("a Digital Surf MountainsMap .mnt file"),
-        "ibw" => return other("an Igor Pro .ibw file"),
         "mdt" => return other("an NT-MDT .mdt file"),
         _ => {}
+    }
+    if starts(b"fileType      ") {
+        return other("an Agilent (Molecular Imaging) PicoView .mi file");
+    }
+    if !binary(bytes) && bytes[..bytes.len().min(1 << 20)].contains(&0) {
+        // Text lines first, binary data after them (the NUL no text has).
+        let first = String::from_utf8_lossy(&bytes[..bytes.len().min(60)]);
+        let first = first.lines().next().unwrap_or("").trim().to_string();
+        return Format::Other(format!(
+            "a binary file whose first lines are text ('{first}'), in a format not read: \
+             open it in Gwyddion (which reads most instruments' files) and save it as .gwy \
+             or .x3p (or File → Save As → ASCII data matrix, .txt)"
+        ));
     }
     if binary(bytes) {
         return Format::Other(
@@ -215,11 +210,21 @@ mod tests {
         assert!(other(b"\x89HDF\r\n\x1a\n\0", "nc").contains("HDF5"));
         assert!(other(b"\x93NUMPY\x01\x00", "npy").contains("numpy.savetxt"));
         assert!(other(b"II*\x00\x08\0", "tif").contains("TIFF"));
-        assert!(other(b"\\*File list\r\n", "").contains("Nanoscope"));
-        assert!(other(b"\x88\x1b\x03\x70\0", "dat").contains("MetroPro"));
         assert!(other(b"VK4_\0\0", "vk4").contains("Keyence .vk4"));
-        assert!(other(b"date 2020\0\0\0", "plu").contains("Sensofar .plu"));
         assert!(other(b"\0\x01\x02", "bin").contains("Gwyddion"));
+        // Instruments' own files are read.
+        let native = |b: &[u8], ext: &str| matches!(format(b, ext), Format::Native(_));
+        assert!(native(b"\\*File list\r\n", ""));
+        assert!(native(b"\x88\x1b\x03\x70\0", "dat"));
+        assert!(native(b"date 2020\0\0\0", "plu"));
+        assert!(native(b"DIGITAL SURF\0", "sur"));
+        let mut mi = b"fileType      Image\nversion PicoView\n".to_vec();
+        mi.extend_from_slice(&[0; 16]);
+        assert!(other(&mi, "mi").contains("PicoView .mi"));
+        let mut head = b"# Width: 1 um\n1 2\n".repeat(300);
+        head.extend_from_slice(&[7, 0, 0, 0]);
+        assert!(other(&head, "")
+            .starts_with("a binary file whose first lines are text ('# Width: 1 um')"));
         assert!(other(b"\xff\xfe1\0 \0", "txt").starts_with("UTF-16 text"));
     }
 

@@ -26,6 +26,7 @@ use rustfft::num_complex::Complex;
 use rustfft::{Fft, FftPlanner};
 
 use crate::bins::Bins;
+use crate::detrend::Detrend;
 use crate::error::Problem;
 use crate::fill;
 use crate::prepare;
@@ -87,17 +88,28 @@ fn remove_plane(h: &mut [f64], nx: usize, ny: usize, mean: f64) {
     }
 }
 
-/// Mean or plane removed; refuses what is flat after it.
-pub(crate) fn detrend(h: &mut [f64], nx: usize, ny: usize, periodic: bool) -> Result<(), Problem> {
+/// The form `mode` removed (nothing, the mean, the plane or the
+/// quadratic); refuses what is flat after it.
+pub(crate) fn detrend(h: &mut [f64], nx: usize, ny: usize, mode: Detrend) -> Result<(), Problem> {
     let (mean, var) = moments(h)?;
-    if periodic {
-        h.iter_mut().for_each(|v| *v -= mean);
-        return Ok(());
-    }
-    remove_plane(h, nx, ny, mean);
+    let flat = match mode {
+        Detrend::None => return Ok(()),
+        Detrend::Mean => {
+            h.iter_mut().for_each(|v| *v -= mean);
+            return Ok(());
+        }
+        Detrend::Plane => {
+            remove_plane(h, nx, ny, mean);
+            Problem::Flat { plane: true }
+        }
+        Detrend::Curvature => {
+            crate::detrend::remove_quadratic(h, nx, ny)?;
+            Problem::Quadratic
+        }
+    };
     let rest = h.iter().map(|v| v * v).sum::<f64>() / h.len() as f64;
     if rest <= crate::prepare::FLAT * crate::prepare::FLAT * var {
-        return Err(Problem::Flat { plane: true });
+        return Err(flat);
     }
     Ok(())
 }
@@ -164,17 +176,16 @@ fn rows_half(h: &[f64], nx: usize, ny: usize, fft: &Arc<dyn Fft<f64>>) -> Vec<Co
 }
 
 /// A map of nx × ny heights (rows of nx along x, one row per y) spanning
-/// lx × ly metres; undefined points (NaN) are filled first.
+/// lx × ly metres, `mode` removed; undefined points (NaN) are filled first.
 pub(crate) fn map(
     mut h: Vec<f64>,
-    nx: usize,
-    ny: usize,
-    lx: f64,
-    ly: f64,
+    (nx, ny): (usize, usize),
+    (lx, ly): (f64, f64),
     periodic: bool,
+    mode: Detrend,
 ) -> Result<Computed, Problem> {
     let notes: Vec<String> = fill::fill(&mut h, nx, ny, periodic)?.into_iter().collect();
-    prepare::detrend(&mut h, (nx, ny), periodic)?;
+    prepare::detrend(&mut h, (nx, ny), mode)?;
     let real = realspace::areal(&h, nx, ny, lx, ly, periodic);
     let keep = |z: Vec<f64>| {
         let (nx, ny, lx, ly, periodic) = (nx, ny, lx, ly, periodic);
@@ -342,12 +353,17 @@ fn merge_sorted(all: &[(f64, f64)], block: usize) -> Vec<(f64, f64)> {
     out
 }
 
-/// A line of n heights spanning l metres; undefined points (NaN) are
-/// filled first.
-pub(crate) fn line(mut h: Vec<f64>, l: f64, periodic: bool) -> Result<Computed, Problem> {
+/// A line of n heights spanning l metres, `mode` removed; undefined
+/// points (NaN) are filled first.
+pub(crate) fn line(
+    mut h: Vec<f64>,
+    l: f64,
+    periodic: bool,
+    mode: Detrend,
+) -> Result<Computed, Problem> {
     let n = h.len();
     let notes: Vec<String> = fill::fill(&mut h, n, 1, periodic)?.into_iter().collect();
-    detrend(&mut h, n, 1, periodic)?;
+    detrend(&mut h, n, 1, mode)?;
     let real = realspace::profile(&h, l, periodic);
     let s2 = if periodic { 1.0 } else { window_1d(&mut h) };
     let mut buf: Vec<Complex<f64>> = h.iter().map(|&v| Complex::new(v, 0.0)).collect();
@@ -398,7 +414,7 @@ mod tests {
                 h.push(1.0 + a * (qx * x + qy * y).cos());
             }
         }
-        let c = map(h, nx, ny, lx, ly, true).unwrap();
+        let c = map(h, (nx, ny), (lx, ly), true, Detrend::Mean).unwrap();
         let q2 = qx * qx + qy * qy;
         let s = c.table.sums(1e9);
         let rel = |x: f64, y: f64| ((x - y) / y).abs();
@@ -417,23 +433,23 @@ mod tests {
         let h: Vec<f64> = (0..nx * ny).map(|i| ((i * 37 % 11) as f64).sin()).collect();
         let mean = h.iter().sum::<f64>() / h.len() as f64;
         let ms = h.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / h.len() as f64;
-        let c = map(h.clone(), nx, ny, 1.0, 1.0, true).unwrap();
+        let c = map(h.clone(), (nx, ny), (1.0, 1.0), true, Detrend::Mean).unwrap();
         assert!((c.table.sums(1e9)[0] / ms - 1.0).abs() < 1e-14);
-        let c = line(h, 3.0, true).unwrap();
+        let c = line(h, 3.0, true, Detrend::Mean).unwrap();
         assert!((c.table.sums(1e9)[0] / ms - 1.0).abs() < 1e-14);
     }
 
     #[test]
     fn flat_surfaces_are_refused() {
         assert_eq!(
-            map(vec![2.0; 16], 4, 4, 1.0, 1.0, false).err(),
+            map(vec![2.0; 16], (4, 4), (1.0, 1.0), false, Detrend::Plane).err(),
             Some(Problem::Flat { plane: false })
         );
         let plane: Vec<f64> = (0..20)
             .map(|i| 1.0 + 0.5 * (i % 5) as f64 - 0.25 * (i / 5) as f64)
             .collect();
         assert_eq!(
-            map(plane, 5, 4, 1.0, 1.0, false).err(),
+            map(plane, (5, 4), (1.0, 1.0), false, Detrend::Plane).err(),
             Some(Problem::Flat { plane: true })
         );
     }

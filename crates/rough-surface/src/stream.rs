@@ -326,7 +326,7 @@ mod tests {
             Streamed::Matrix { head, rest, sha256 } => {
                 assert_eq!(sha256, sha256_hex(bytes));
                 let r = from_scan(None, rest.scan(&head)?, &Options::default())?;
-                Ok(measured(r, sha256, Vec::new()))
+                Ok(measured(r, sha256, Vec::new(), &Options::default()))
             }
         }
     }

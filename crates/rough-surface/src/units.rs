@@ -15,7 +15,8 @@ pub(crate) fn per_metre(u: &str) -> Option<f64> {
     Some(match u {
         "m" => 1.0,
         "mm" => 1e3,
-        "µm" | "μm" | "um" | "~m" => 1e6,
+        "µm" | "μm" | "um" | "~m" | "micron" | "microns" | "micrometre" | "micrometres"
+        | "micrometer" | "micrometers" => 1e6,
         "nm" => 1e9,
         "Å" | "A" => 1e10,
         "pm" => 1e12,
@@ -120,17 +121,39 @@ pub(crate) fn heights(
     })
 }
 
+/// What the plausibility line advises: only what the file lets the user
+/// say.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Advice {
+    /// The heights' unit (a text map, a file without a height unit).
+    Height,
+    /// The heights' or the x column's unit (an `x z` line scan).
+    HeightOrLateral,
+    /// Nothing: the file (of this format) gives its units.
+    File(&'static str),
+    /// A PSD table's units.
+    Table,
+}
+
 /// The plausibility line: a warning where the rms slope at the largest ζ
 /// is above 10 or below 1e-5, or h_rms is above 1 mm — the marks of heights
-/// read in the wrong unit. `heights` says whether `--height-unit` applies
-/// (maps and line scans; a PSD table's unit is its own).
-pub(crate) fn plausibility(table: &MomentTable, heights: bool) -> Option<String> {
+/// read in the wrong unit — with the way to say the unit where the file
+/// lets one (`advice`).
+pub(crate) fn plausibility(table: &MomentTable, advice: Advice) -> Option<String> {
     let m = table.at_zeta(table.zeta_max());
     let (h, slope) = (m.m0.sqrt(), (2.0 * m.m2).sqrt());
-    let fix = if heights {
-        "--height-unit UNIT to say which"
-    } else {
-        "check the table's units (q in 1/m, C in m⁴ or m³)"
+    let file;
+    let fix = match advice {
+        Advice::Height => "--height-unit UNIT to say which",
+        Advice::HeightOrLateral => {
+            "--height-unit UNIT (the heights) or --lateral-unit UNIT (x) to say which"
+        }
+        Advice::File(format) => {
+            file =
+                format!("the {format} file gives its units: check how it was measured or exported");
+            &file
+        }
+        Advice::Table => "check the table's units (q in 1/m, C in m⁴ or m³)",
     };
     let g = |v: f64| {
         format!("{v:.3}")

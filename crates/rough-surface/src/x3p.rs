@@ -81,6 +81,13 @@ fn other_zip(zip: &Zip<'_>) -> String {
             .to_string()
     } else if has(&|n| n.eq_ignore_ascii_case("index.xml")) {
         crate::hints::hint("a Sensofar .plux file")
+    } else if has(&|n| n == "xl/workbook.xml") {
+        "looks like an Excel spreadsheet (.xlsx): save the sheet of heights as CSV (a \
+         map's rows of heights, or a profile's x and z columns with their units in the \
+         header) and read that"
+            .to_string()
+    } else if has(&|n| n == "word/document.xml" || n == "content.xml") {
+        "looks like an office document, not height data".to_string()
     } else {
         "a zip archive without main.xml: not an x3p file (an x3p holds main.xml \
          and bindata/data.bin)"
@@ -502,5 +509,7 @@ pub(crate) fn read(bytes: &[u8]) -> Result<Grid, Failure> {
         ly: if ny == 1 { 0.0 } else { ny as f64 * dy },
         z,
         notes,
+        format: "x3p",
+        assumed: crate::assumed::Assumed::default(),
     })
 }

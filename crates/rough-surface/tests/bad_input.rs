@@ -74,7 +74,7 @@ fn non_numbers_nan_and_infinity() {
         )),
         "bad surface FILE: 2 of 16 points (12.5 %) are undefined (NaN, empty or \
          masked): up to 10 % are filled, more is refused; crop the data to the \
-         part that was measured"
+         part that was measured, or allow more with --max-undefined PERCENT"
     );
     assert_eq!(
         refuse(&map(SIZE, &["1 2 3 4", "1 2 3 4", "1 2 3 4", "1 2 3 -inf"])),

@@ -24,6 +24,8 @@ fn rel(a: f64, b: f64) -> f64 {
 struct Case {
     q0: f64,
     zeta_max: f64,
+    /// Rq, RΔq, Ra, Rsk, Rku, Rz of the profiles.
+    real: Vec<f64>,
     moments: Vec<[f64; 4]>,
     spectrum: Vec<(f64, f64)>,
 }
@@ -40,6 +42,7 @@ fn reference() -> ((f64, f64), Vec<Case>) {
             "surface" => cases.push(Case::default()),
             "q0" => cases.last_mut().unwrap().q0 = num(w[1]),
             "zeta_max" => cases.last_mut().unwrap().zeta_max = num(w[1]),
+            "real" => cases.last_mut().unwrap().real = w[1..].iter().map(|v| num(v)).collect(),
             "moments" | "spectrum" => section = w[0],
             "end" => section = "",
             _ if section == "moments" => {
@@ -77,7 +80,7 @@ fn a_lay_is_noted_and_read_along_each_direction() {
         .unwrap();
     let ratio = format!("h′x/h′y = {:.1}", sx / sy);
     assert!(note.contains(&ratio), "{note} lacks {ratio}");
-    let (mut worst_m, mut worst_s) = (0f64, 0f64);
+    let (mut worst_m, mut worst_s, mut worst_r) = (0f64, 0f64, 0f64);
     for (d, c) in [Direction::X, Direction::Y].into_iter().zip(&cases) {
         let opts = Options {
             direction: Some(d),
@@ -90,6 +93,18 @@ fn a_lay_is_noted_and_read_along_each_direction() {
             "{}",
             m.summary
         );
+        // The profiles' real-space numbers: Rq and RΔq as SurfaceTopography's
+        // Rq and Rdq, the height parameters as NumPy's of its heights.
+        let r = m.real.unwrap();
+        assert_eq!(r.names(), ("Rq", "RΔq"));
+        let [ra, rsk, rku, rz] = r.heights();
+        assert_eq!((ra.0, rsk.0, rku.0, rz.0), ("Ra", "Rsk", "Rku", "Rz"));
+        let got = [r.rms_height, r.rms_slope, ra.1, rsk.1, rku.1, rz.1];
+        for (k, (g, w)) in got.iter().zip(&c.real).enumerate() {
+            let e = rel(*g, *w);
+            assert!(e < 1e-12, "{d:?} real-space number {k}: {g} vs {w}");
+            worst_r = worst_r.max(e);
+        }
         assert!(rel(m.table.q0(), c.q0) < 1e-15);
         assert!(rel(m.table.zeta_max(), c.zeta_max) < 1e-14);
         for &[zeta, m0, m2, m4] in &c.moments {
@@ -108,5 +123,8 @@ fn a_lay_is_noted_and_read_along_each_direction() {
             worst_s = worst_s.max(e);
         }
     }
-    println!("worst relative error along x and y: moments {worst_m:.1e}, spectrum {worst_s:.1e}");
+    println!(
+        "worst relative error along x and y: moments {worst_m:.1e}, spectrum {worst_s:.1e}, \
+         Rq, RΔq, Ra, Rsk, Rku, Rz {worst_r:.1e}"
+    );
 }

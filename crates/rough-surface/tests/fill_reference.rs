@@ -139,7 +139,8 @@ fn too_many_undefined_points_are_refused_with_their_share() {
         e.problem,
         Problem::Undefined {
             count: 12,
-            total: 100
+            total: 100,
+            allowed: 0.1
         }
     );
     let msg = e.to_string();
@@ -148,6 +149,16 @@ fn too_many_undefined_points_are_refused_with_their_share() {
             && msg.contains("up to 10 % are filled")
             && msg.contains("crop"),
         "{msg}"
+    );
+    // --max-undefined 12 fills them, saying so.
+    let twelve = Options {
+        max_undefined: Some(0.12),
+        ..Options::default()
+    };
+    let m = read(&p, &twelve).unwrap();
+    assert_eq!(
+        m.notes[0],
+        "12 undefined points (12 %) filled (--max-undefined 12 %)"
     );
     // Ten are filled.
     std::fs::write(&p, text.replacen("nan", "1", 2)).unwrap();

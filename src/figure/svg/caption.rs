@@ -4,7 +4,7 @@
 use plotters::prelude::*;
 
 use super::{plot_err, Area, CAPTION_W, CLAIMS, LINE_H};
-use crate::figure::{scene_text, FigureOptions, View};
+use crate::figure::{scene_text, ClaimKind, FigureOptions, View};
 use crate::scene::State;
 
 /// The scene's colour under the chart: dark grey, so that the caption and
@@ -27,12 +27,34 @@ pub(super) fn caption_lines(
         .collect();
     let text = view_caption(view, state);
     lines.extend(wrap(&text, CAPTION_W).into_iter().map(|l| (l, BLACK)));
-    if !matches!(view, View::Slopes | View::Indices | View::Map) {
-        return lines;
+    // The spectrum's fit in full, on lines of its own.
+    if let Some(fit) = (view == View::Spectrum)
+        .then(|| super::spectrum::fit_line(state))
+        .flatten()
+    {
+        lines.extend(wrap(&fit, CAPTION_W).into_iter().map(|l| (l, BLACK)));
     }
-    let claims = crate::figure::shown_claims(state)
+    // Each picture its own claims: the slopes' share and minimum, the
+    // indices' crossing of 1, the map's share and crossing along the
+    // row of the current parameters.
+    let own = |k: ClaimKind| match view {
+        View::Slopes => matches!(k, ClaimKind::ShareHalf | ClaimKind::TotalMinimum),
+        View::Indices => k == ClaimKind::IndexOne,
+        View::Map => matches!(k, ClaimKind::ShareHalf | ClaimKind::IndexOne),
+        _ => false,
+    };
+    let mut claims: Vec<String> = crate::figure::shown_claims(state)
         .into_iter()
-        .map(|c| c.text());
+        .filter(|c| own(c.kind))
+        .map(|c| c.text())
+        .collect();
+    if view == View::Map && !claims.is_empty() {
+        if let Ok(m) = crate::figure::MapSpec::of(state, opts.grid, opts.map_y) {
+            let a = m.y.axis();
+            let v = scene_text::short_value(a, state.params.get(a));
+            claims[0] = format!("along {} = {v}: {}", a.symbol(), claims[0]);
+        }
+    }
     // Claims are packed whole, never broken inside one.
     let mut row = String::new();
     for c in claims {

@@ -7,7 +7,7 @@ use rough_model::{Curves, Scene};
 use super::legend::{Legend, Placed, Sample};
 use super::{
     chart, coincide, guide, line, plot_err, positive_span, title, x_scale, Area, Chart, Scale,
-    Stroke, ELASTIC, GREY, PERSSON, PLASTIC, PSI_ASY, PSI_GW, TOTAL,
+    Stroke, ELASTIC, GREY, PERSSON, PLASTIC, PSI_ASY, PSI_GW, THRESHOLD, TOTAL,
 };
 use crate::figure::{FigureOptions, IndexSeries, LoadCurve};
 use crate::physical::short_number;
@@ -58,7 +58,7 @@ pub(super) fn slopes(
             .filter(|v| **v >= hi * 1e-4),
     );
     // The hardness by its own name (H alone is the Hurst exponent).
-    let norm = if state.size_effect { "H_y" } else { "H0" };
+    let norm = state.hardness_name();
     let y = Scale::around(true, lo, hi, format!("initial slope {norm}·dA/(A0·dp̄)"));
     let mut c = chart(area, &title(state, "initial slopes"), (&x, &y), room)?;
     let mut lg = Legend::default();
@@ -82,6 +82,8 @@ pub(super) fn slopes(
     line(&mut c, &mut lg, xy, (&s.x, &s.total), TOTAL, solid, "total")?;
     let persson = (&s.x[..], &s.persson_elastic[..]);
     let dashed = Stroke::Dashed;
+    // ψ by its name: the index in use.
+    let psi = state.index_name();
     line(
         &mut c,
         &mut lg,
@@ -89,7 +91,7 @@ pub(super) fn slopes(
         persson,
         PERSSON,
         dashed,
-        "Persson elastic √(2/π)/ψ",
+        &format!("Persson elastic √(2/π)/{psi}"),
     )?;
     lg.draw(area, &c, room.is_some())
 }
@@ -113,12 +115,13 @@ pub(super) fn indices(
     let mut lg = Legend::default();
     marker(&mut c, &mut lg, state, (&x, &y))?;
     let r = x.range();
+    // Dashed and darker than the marker's grey: two guides, two looks.
     guide(
         &mut c,
         &mut lg,
         (r.start, 0.0),
         (r.end, 0.0),
-        GREY,
+        THRESHOLD,
         Some("Ψ = 1: plastic above"),
     )?;
     let xy = (&x, &y);
@@ -174,7 +177,7 @@ pub(super) fn load(
 ) -> anyhow::Result<Placed> {
     let l = LoadCurve::compute(state, opts.points)?;
     // The hardness by its own name (H alone is the Hurst exponent).
-    let h = if state.size_effect { "H_y" } else { "H0" };
+    let h = state.hardness_name();
     let x = Scale {
         log: false,
         lo: 0.0,
@@ -187,7 +190,8 @@ pub(super) fn load(
         hi: 1.0,
         desc: "contact area A/A0".into(),
     };
-    let what = format!("areas against load at ψ = {}", short_number(l.psi));
+    let psi = state.index_name();
+    let what = format!("areas against load at {psi} = {}", short_number(l.psi));
     let mut c = chart(area, &title(state, &what), (&x, &y), room)?;
     let mut lg = Legend::default();
     let (tx, ty) = l.tangent_end();
@@ -199,10 +203,7 @@ pub(super) fn load(
     .map_err(plot_err)?;
     lg.paths.push(vec![(0.0, 0.0), (tx, ty)]);
     lg.add(
-        format!(
-            "initial slope S_tot = {} (from the origin)",
-            short_number(l.slopes.total)
-        ),
+        format!("initial slope S_tot = {}", short_number(l.slopes.total)),
         RGBColor(255, 128, 128),
         Sample::Solid(1),
     );

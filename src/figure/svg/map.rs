@@ -81,11 +81,9 @@ pub(super) fn draw(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::
     };
     let segs = contour(&m, &centres(xa, xb, spec.cols), &centres(ya, yb, spec.rows));
     let contour_style = CONTOUR.stroke_width(2);
-    c.draw_series(
-        segs.into_iter()
-            .map(|[a, b]| PathElement::new(vec![a, b], contour_style)),
-    )
-    .map_err(plot_err)?;
+    for [a, b] in segs {
+        super::fine::path(&mut c, vec![a, b], contour_style)?;
+    }
 
     // The current point, where it lies on the map.
     let (fx, fy) = spec.position();

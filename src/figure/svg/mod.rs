@@ -4,10 +4,14 @@
 //! caption under the chart, with the claims located live under it.
 
 mod caption;
+mod contact;
+mod contact_map;
 mod curves;
+mod fine;
 mod legend;
 mod map;
 mod moments;
+mod plot;
 mod spectrum;
 
 use anyhow::anyhow;
@@ -20,6 +24,10 @@ use crate::figure::scene_text;
 use crate::physical::short_number;
 use crate::scene::State;
 use caption::{caption, caption_lines, wrap, SCENE};
+pub use contact::{
+    contact_span, render_contact, render_contact_sweep, sweep_span, ContactLoads, ContactSweep,
+};
+pub use contact_map::{render_contact_map, ContactMap};
 use legend::{Legend, Placed, Sample};
 
 /// Picture size in pixels (SVG user units).
@@ -41,6 +49,9 @@ pub const PLASTIC: RGBColor = RGBColor(0, 0, 255);
 pub const TOTAL: RGBColor = RGBColor(255, 0, 0);
 pub const PERSSON: RGBColor = RGBColor(0, 160, 0);
 const GREY: RGBColor = RGBColor(150, 150, 150);
+/// The indices' Ψ = 1 line: darker than the marker's grey and dashed
+/// (1-px strokes of this colour are dashed by the viewer).
+const THRESHOLD: RGBColor = RGBColor(80, 80, 80);
 const PSI_GW: RGBColor = RGBColor(128, 0, 128);
 const PSI_ASY: RGBColor = RGBColor(230, 120, 0);
 
@@ -55,7 +66,9 @@ fn dash(mut svg: String) -> String {
         let stroke = format!("stroke=\"#{r:02X}{g:02X}{b:02X}\" stroke-width=\"2\"");
         svg = svg.replace(&stroke, &format!("{stroke} stroke-dasharray=\"9 6\""));
     }
-    svg
+    let RGBColor(r, g, b) = THRESHOLD;
+    let stroke = format!("stroke=\"#{r:02X}{g:02X}{b:02X}\" stroke-width=\"1\"");
+    svg.replace(&stroke, &format!("{stroke} stroke-dasharray=\"6 4\""))
 }
 
 /// `view` of `state` as an SVG document (UTF-8 text). Under the chart: the
@@ -84,20 +97,34 @@ pub fn render_moments_svg(state: &State, points: usize) -> anyhow::Result<String
     let draw = |area: &Area, room| moments::draw(area, state, points, room);
     let s = crate::figure::MomentSeries::of(state, points)?;
     let (from, to) = (s.zeta[0], s.zeta[s.len() - 1]);
-    let span = format!("moments = zeta from {from:?} to {to:?}, {points} points (log-spaced)");
+    let span = format!("cutoffs = zeta from {from:?} to {to:?}, {points} points (log-spaced)");
     let mut desc = scene_text::full_lines_of(state, "moments", span);
     desc.extend(crate::figure::moment_comments(state));
     let short = format!("moments at ζ {} … {}", short_number(from), short_number(to));
-    let mut lines: Vec<(String, RGBColor)> = scene_text::short_lines_of(state, Some(short))
+    let what = if state.is_measured() {
+        "The spectrum's moments against the cutoff ζ, summed from the PSD up to ζ (after the \
+         detrend and window): h_rms = √m0, the rms slope h′ = √(2 m2) and the rms curvature \
+         h″ = √(8 m4/3), each in its own panel and unit; dashed, the real-space Sq and Sdq \
+         (Rq and RΔq of a line scan; after the detrend, no window)."
+    } else {
+        "The spectrum's moments against the cutoff ζ: h_rms = √m0, the rms slope h′ = √(2 m2) \
+         and the rms curvature h″ = √(8 m4/3), each in its own panel and unit."
+    };
+    let lines = under(state, Some(short), what);
+    render(&draw, &lines, &format!("{} — moments", state.name), &desc)
+}
+
+/// The lines under a picture that is not one of the explorer's views: the
+/// scene in short with what the picture spans (`span`), then `what` it
+/// shows.
+fn under(state: &State, span: Option<String>, what: &str) -> Vec<(String, RGBColor)> {
+    let mut lines: Vec<(String, RGBColor)> = scene_text::short_lines_of(state, span)
         .iter()
         .flat_map(|l| wrap(l, CAPTION_W))
         .map(|l| (l, SCENE))
         .collect();
-    let what = "The spectrum's moments against the cutoff ζ: h_rms = √m0, the rms slope \
-                h′ = √(2 m2) and the rms curvature h″ = √(8 m4/3); on a measured surface \
-                the real-space Sq and Sdq (Rq and RΔq) beside them.";
     lines.extend(wrap(what, CAPTION_W).into_iter().map(|l| (l, BLACK)));
-    render(&draw, &lines, &format!("{} — moments", state.name), &desc)
+    lines
 }
 
 /// A picture: `draw` fills the chart (the legend inside the plot where no
@@ -130,6 +157,7 @@ fn render_once(
     room: Option<u32>,
 ) -> anyhow::Result<(String, Placed)> {
     let mut buf = String::new();
+    fine::start();
     let placed = {
         let root = SVGBackend::with_string(&mut buf, SIZE).into_drawing_area();
         root.fill(&WHITE).map_err(plot_err)?;
@@ -140,7 +168,7 @@ fn render_once(
         root.present().map_err(plot_err)?;
         placed
     };
-    Ok((buf, placed))
+    Ok((fine::apply(&buf), placed))
 }
 
 /// `text` with XML's special characters escaped, for element content.
@@ -277,32 +305,67 @@ fn chart_with_top<'a, 'b>(
     room: Option<u32>,
     top: u32,
 ) -> anyhow::Result<Chart<'a, 'b>> {
-    let max = ((f64::from(area.dim_in_pixel().0) - 30.0) / TITLE_CHAR_W) as usize;
-    let title = fit_title(title, max);
-    let mut builder = ChartBuilder::on(area);
-    if top == 0 {
-        builder.caption(&title, ("sans-serif", 20));
-    } else {
-        // Room above the plot for a second axis: the title drawn here,
-        // above that room (plotters would label the q axis there too).
-        let w = area.dim_in_pixel().0 as i32;
-        let style = ("sans-serif", 20).into_font().into_text_style(area).pos(
-            plotters::style::text_anchor::Pos::new(
-                plotters::style::text_anchor::HPos::Center,
-                plotters::style::text_anchor::VPos::Top,
-            ),
-        );
-        area.draw(&Text::new(title.clone(), (w / 2, 15), style))
-            .map_err(plot_err)?;
-    }
-    let mut c = builder
+    // The title centred on the picture, not on the plot (which a legend
+    // right of it makes narrower): drawn here, where plotters' caption
+    // would go; with `top`, above the room kept for a second axis
+    // (plotters would label the q axis there too).
+    top_title(area, title)?;
+    let mut c = ChartBuilder::on(area)
         .margin(15)
-        .margin_top(if top == 0 { 15 } else { 15 + 30 + top })
+        .margin_top(if top == 0 { TITLE_H } else { 15 + 30 + top })
         .margin_right(15 + room.unwrap_or(0))
         .x_label_area_size(50)
         .y_label_area_size(70)
         .build_cartesian_2d(x.range(), y.range())
         .map_err(plot_err)?;
+    mesh(&mut c, (x, y))?;
+    Ok(c)
+}
+
+/// Pixels from the picture's top to the plot's, under the title (where
+/// plotters' own caption would put the plot).
+const TITLE_H: u32 = 41;
+
+/// `title` centred at the top of `area`, where plotters puts a chart's
+/// caption, cut to fit as [`fit_title`] cuts it.
+fn top_title(area: &Area, title: &str) -> anyhow::Result<()> {
+    let max = ((f64::from(area.dim_in_pixel().0) - 30.0) / TITLE_CHAR_W) as usize;
+    let w = area.dim_in_pixel().0 as i32;
+    let style = ("sans-serif", 20).into_font().into_text_style(area).pos(
+        plotters::style::text_anchor::Pos::new(
+            plotters::style::text_anchor::HPos::Center,
+            plotters::style::text_anchor::VPos::Top,
+        ),
+    );
+    area.draw(&Text::new(fit_title(title, max), (w / 2, 15), style))
+        .map_err(plot_err)?;
+    Ok(())
+}
+
+/// One panel of several stacked on `area` (no title; the x axis' labels
+/// and description only when `x_labels`, under the last).
+fn panel<'a, 'b>(
+    area: &'a Area<'b>,
+    (x, y): (&Scale, &Scale),
+    room: Option<u32>,
+    x_labels: bool,
+) -> anyhow::Result<Chart<'a, 'b>> {
+    let mut c = ChartBuilder::on(area)
+        .margin(15)
+        .margin_top(10)
+        .margin_bottom(if x_labels { 15 } else { 10 })
+        .margin_right(15 + room.unwrap_or(0))
+        .x_label_area_size(if x_labels { 50 } else { 0 })
+        .y_label_area_size(70)
+        .build_cartesian_2d(x.range(), y.range())
+        .map_err(plot_err)?;
+    mesh(&mut c, (x, y))?;
+    Ok(c)
+}
+
+/// The grid, ticks, labels and axis descriptions every chart has: one
+/// labelled tick per decade on log axes, six on linear ones.
+fn mesh(c: &mut Chart, (x, y): (&Scale, &Scale)) -> anyhow::Result<()> {
     let (xl, yl) = (|u: &f64| x.label(*u), |u: &f64| y.label(*u));
     let ticks = |s: &Scale| {
         if s.log {
@@ -325,13 +388,13 @@ fn chart_with_top<'a, 'b>(
         .axis_desc_style(("sans-serif", 16))
         .draw()
         .map_err(plot_err)?;
-    Ok(c)
+    Ok(())
 }
 
 /// How a curve is stroked: solid, or dashed so that it stays visible on
 /// top of a curve it coincides with (Persson's line on the total, eq. 13
 /// on Ψ*).
-#[derive(Clone, Copy, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 enum Stroke {
     Solid,
     Dashed,
@@ -369,8 +432,9 @@ fn line(
     // added by colour in `render_svg`): smooth dashes, not pixel-rounded
     // pieces.
     debug_assert!(stroke == Stroke::Solid || DASHED.contains(&colour));
-    c.draw_series(segs.into_iter().map(move |s| PathElement::new(s, style)))
-        .map_err(plot_err)?;
+    for s in segs {
+        fine::path(c, s, style)?;
+    }
     let sample = match stroke {
         Stroke::Dashed => Sample::Dashed,
         Stroke::Solid => Sample::Solid(2),

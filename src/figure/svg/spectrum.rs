@@ -104,18 +104,23 @@ pub(super) fn draw(area: &Area, state: &State, room: Option<u32>) -> anyhow::Res
             .iter()
             .map(|&q| s.fit_at(q).unwrap_or(f64::NAN))
             .collect();
-        let label = format!(
-            "power law fitted over the fit band {}…{} /m: {}",
-            short_number(f.q_lo),
-            short_number(f.q_hi),
-            fit_words(&f, s.fit_h_rms)
-        );
+        // The legend names the fit; its band and h_rms are said in full
+        // under the chart ([`fit_line`]).
+        let label = match f.verdict().words() {
+            Some(w) => format!("power law fit: {} — {w}", hurst_words(&f)),
+            None => format!("power law fit: {}", hurst_words(&f)),
+        };
         line(&mut c, &mut lg, xy, (&qs, &ys), FIT, Stroke::Dashed, &label)?;
         let r = y.range();
         let mut named = false;
         for q in [f.q_lo, f.q_hi] {
             if x.contains(q) {
-                let label = (!named).then_some("the fit band's ends");
+                let band = format!(
+                    "the fit band {}…{} /m",
+                    short_number(f.q_lo),
+                    short_number(f.q_hi)
+                );
+                let label = (!named).then_some(band.as_str());
                 named = true;
                 guide(
                     &mut c,
@@ -148,10 +153,23 @@ pub(super) fn draw(area: &Area, state: &State, room: Option<u32>) -> anyhow::Res
     lg.draw(area, &c, room.is_some())
 }
 
-/// "H = 0.81 ± 0.03, h_rms of the fitted power law 12 nm (18 points)", or
-/// why the band is not self-affine.
-pub fn fit_words(f: &rough_surface::PowerLawFit, h_rms: Option<f64>) -> String {
-    let h = if f.hurst_se.is_finite() {
+/// The fit said in full under the chart: "The power law fitted over the
+/// fit band 1e5…1e9 /m: H = 0.8 ± 0.01, h_rms of the fitted power law
+/// 1.982e-8 m (5 points)."; `None` without a fit.
+pub(super) fn fit_line(state: &State) -> Option<String> {
+    let s = SpectrumSeries::of(state).ok()?;
+    let f = s.power_law?;
+    Some(format!(
+        "The power law fitted over the fit band {}…{} /m: {}.",
+        short_number(f.q_lo),
+        short_number(f.q_hi),
+        fit_words(&f, s.fit_h_rms)
+    ))
+}
+
+/// "H = 0.81 ± 0.03", or "H = 0.81" without a standard error.
+fn hurst_words(f: &rough_surface::PowerLawFit) -> String {
+    if f.hurst_se.is_finite() {
         format!(
             "H = {} ± {}",
             short_number(f.hurst),
@@ -159,12 +177,19 @@ pub fn fit_words(f: &rough_surface::PowerLawFit, h_rms: Option<f64>) -> String {
         )
     } else {
         format!("H = {}", short_number(f.hurst))
-    };
+    }
+}
+
+/// "H = 0.81 ± 0.03, h_rms of the fitted power law 12 nm (18 points)" (a
+/// length as the scene line prints one), or
+/// why the band is not self-affine.
+pub fn fit_words(f: &rough_surface::PowerLawFit, h_rms: Option<f64>) -> String {
+    let h = hurst_words(f);
     match (f.verdict().words(), h_rms) {
         (Some(w), _) => format!("{h} — {w} ({} points)", f.points),
         (None, Some(hr)) => format!(
-            "{h}, h_rms of the fitted power law {} m ({} points)",
-            short_number(hr),
+            "{h}, h_rms of the fitted power law {} ({} points)",
+            short_length(hr),
             f.points
         ),
         (None, None) => format!("{h} ({} points)", f.points),

@@ -56,6 +56,31 @@ struct Inner {
     poll: Option<Open>,
 }
 
+impl Inner {
+    /// `name`, or `name-2`, `name-3` … when a student here (or one whose
+    /// answer the last poll keeps) already has it: the roster and the
+    /// CSV tell them apart.
+    fn distinct(&self, name: &str) -> String {
+        let taken = |n: &str| {
+            self.seats.values().any(|s| s.name == n)
+                || (self.poll.as_ref()).is_some_and(|o| o.answers.values().any(|a| a.0 == n))
+        };
+        if !taken(name) {
+            return name.to_string();
+        }
+        (2..)
+            .map(|k| {
+                // Cut to NAME_CHARS with its number kept.
+                let suffix = format!("-{k}");
+                let keep = NAME_CHARS.saturating_sub(suffix.chars().count());
+                let base: String = name.chars().take(keep).collect();
+                format!("{base}{suffix}")
+            })
+            .find(|n| !taken(n))
+            .unwrap_or_else(|| name.to_string())
+    }
+}
+
 /// A place in the class, from [`Class::join`].
 pub type SeatId = u64;
 
@@ -110,10 +135,11 @@ impl Class {
         let mut c = self.lock();
         c.next_seat += 1;
         let id = c.next_seat;
+        let name = c.distinct(name);
         c.seats.insert(
             id,
             Student {
-                name: name.to_string(),
+                name,
                 addr,
                 following,
                 size,
@@ -124,6 +150,11 @@ impl Class {
         drop(c);
         self.changed();
         id
+    }
+
+    /// The name a seat has in the class (made distinct at [`Class::join`]).
+    pub fn name(&self, id: SeatId) -> Option<String> {
+        self.lock().seats.get(&id).map(|s| s.name.clone())
     }
 
     /// The lecturer removes a student: their session ends, told why;
@@ -229,166 +260,4 @@ impl Class {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::serve::follow::Shown;
-    use crate::tui::class::{Ask, Question, UNICODE};
-    use rough_model::Axis;
-
-    fn shown() -> Shown {
-        let app = crate::tui::app::App::new(
-            crate::presets::load("fig2").unwrap(),
-            crate::tui::theme::Theme::plain(),
-            (80, 24),
-        );
-        Shown::of(&app)
-    }
-
-    fn question() -> Question {
-        Question {
-            axis: Axis::Zeta,
-            ask: Ask::Share { rising: true },
-            truth: 321.5,
-        }
-    }
-
-    const HOME: IpAddr = IpAddr::V4(std::net::Ipv4Addr::LOCALHOST);
-
-    #[test]
-    fn names_are_escaped_and_cut() {
-        assert_eq!(clean_name("alice"), "alice");
-        assert_eq!(clean_name(""), "(no name)");
-        assert_eq!(clean_name("a\x1b[31mb"), "a\\x1b[31mb");
-        assert_eq!(clean_name("x\u{202e}y\u{85}"), "x\\u{202e}y\\x85");
-        assert_eq!(clean_name("a\\b"), "a\\\\b");
-        let long = clean_name(&"é".repeat(10_000));
-        assert_eq!(long.chars().count(), NAME_CHARS);
-        assert!(long.ends_with("é…"), "{long}");
-        let ctl = clean_name(&"\x07".repeat(100));
-        assert_eq!(ctl.chars().count(), NAME_CHARS);
-        assert!(ctl.starts_with("\\x07\\x07"), "{ctl}");
-        assert!(!ctl.chars().any(char::is_control));
-        assert_eq!(clean_name(&"b".repeat(32)), "b".repeat(32));
-    }
-
-    #[test]
-    fn the_roster_counts_and_wakes_only_the_lecturer() {
-        let class = Class::default();
-        let mut roster = class.watch_roster();
-        let mut poll = class.watch_poll();
-        let a = class.join("alice", HOME, (100, 30), "braille", true);
-        let b = class.join("bob", HOME, (60, 20), "ascii", true);
-        assert!(roster.has_changed().unwrap());
-        roster.mark_unchanged();
-        class.note(a, Note::Key);
-        assert!(!roster.has_changed().unwrap(), "a key woke the lecturer");
-        class.note(b, Note::Following(false));
-        class.note(b, Note::Size(80, 24));
-        assert!(roster.has_changed().unwrap());
-        assert!(
-            !poll.has_changed().unwrap(),
-            "a roster change woke students"
-        );
-        let v = class.view();
-        assert_eq!(
-            v.line(&UNICODE),
-            "2 students · 1 following · 1 on their own"
-        );
-        assert_eq!(v.seats[1].marker, "ascii");
-        assert_eq!(
-            class.summary().unwrap(),
-            "class: 2 students, 1 following, 1 on their own"
-        );
-        class.leave(a);
-        class.leave(b);
-        assert_eq!(class.summary(), None);
-        poll.mark_unchanged();
-    }
-
-    #[test]
-    fn a_poll_is_answered_revealed_and_refuses_late_answers() {
-        let class = Class::default();
-        let a = class.join("alice", HOME, (100, 30), "braille", true);
-        let b = class.join("b,\"ob\"", HOME, (100, 30), "braille", true);
-        let c = class.join("carol", HOME, (100, 30), "braille", true);
-        let mut poll = class.watch_poll();
-        assert_eq!(class.answer(a, 1, 100.0), Err(Refused::NoPoll));
-        let id = class.open(question(), shown());
-        assert!(poll.has_changed().unwrap());
-        assert!(!poll.borrow_and_update().as_ref().unwrap().revealed);
-        class.answer(a, id, 100.0).unwrap();
-        class.answer(b, id, 1000.0).unwrap();
-        // A second Enter replaces the first answer.
-        class.answer(a, id, 200.0).unwrap();
-        assert!(!poll.has_changed().unwrap(), "an answer woke students");
-        let v = class.view();
-        assert_eq!(v.line(&UNICODE), "3 students · 2/3 answered");
-        assert_eq!(v.seats[2].state, SeatState::Answering);
-        assert_eq!(v.seats[0].state, SeatState::Answered);
-        // Bob leaves: his answer stays and still counts.
-        class.leave(b);
-        assert_eq!(class.view().line(&UNICODE), "2 students · 2/3 answered");
-        assert!(class.reveal());
-        assert!(!class.reveal());
-        assert!(poll.borrow_and_update().as_ref().unwrap().revealed);
-        let state = |v: ClassView| {
-            (
-                v.poll,
-                v.seats.into_iter().map(|s| s.state).collect::<Vec<_>>(),
-            )
-        };
-        let before = (state(class.view()), class.csv());
-        let mut roster = class.watch_roster();
-        roster.mark_unchanged();
-        assert_eq!(class.answer(c, id, 5.0), Err(Refused::Closed));
-        assert_eq!(class.answer(a, id, 5.0), Err(Refused::Closed));
-        // What the student reads in their status line.
-        assert_eq!(
-            Refused::Closed.text(),
-            "too late: the answers were already revealed"
-        );
-        // An answer to a poll that is gone is refused the same way.
-        assert_eq!(class.answer(a, id + 1, 5.0), Err(Refused::Closed));
-        assert_eq!(
-            (state(class.view()), class.csv()),
-            before,
-            "a late answer changed the class"
-        );
-        assert!(
-            !roster.has_changed().unwrap(),
-            "a late answer woke the lecturer"
-        );
-        assert_eq!(
-            class.csv().unwrap(),
-            "question,quantity,unit,truth,name,answer,offset\n\
-             where does the plastic share pass 1/2?,zeta,,321.5,alice,200,-121.5\n\
-             where does the plastic share pass 1/2?,zeta,,321.5,\"b,\"\"ob\"\"\",1000,678.5\n\
-             where does the plastic share pass 1/2?,zeta,,321.5,carol,no answer,\n"
-        );
-        assert_eq!(
-            class.view().line(&UNICODE),
-            "2 students · 2 following · 0 on their own · revealed ζ = 321.5 (2 answers)"
-        );
-        // A revealed poll is not cancelled: it stays for S.
-        assert!(!class.cancel());
-        assert!(class.csv().is_some());
-        // An answer to an older poll is refused once another opened; the
-        // new poll replaces the last one's answers.
-        let id2 = class.open(question(), shown());
-        assert_eq!(class.answer(c, id, 5.0), Err(Refused::Closed));
-        class.answer(c, id2, 5.0).unwrap();
-        // While open, everyone here without an answer is a no-answer row.
-        assert_eq!(
-            class.csv().unwrap().lines().skip(1).collect::<Vec<_>>(),
-            [
-                "where does the plastic share pass 1/2?,zeta,,321.5,carol,5,-316.5",
-                "where does the plastic share pass 1/2?,zeta,,321.5,alice,no answer,"
-            ]
-        );
-        assert!(class.cancel());
-        assert_eq!(class.poll(), None);
-        assert_eq!(class.csv(), None);
-        assert_eq!(class.answer(c, id2, 5.0), Err(Refused::NoPoll));
-        assert_eq!((class.polls(), class.seen()), (2, 3));
-    }
-}
+mod tests;

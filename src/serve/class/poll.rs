@@ -3,10 +3,11 @@
 
 use std::collections::BTreeMap;
 use std::sync::Arc;
+use std::time::SystemTime;
 
 use super::{Class, Inner, SeatId};
 use crate::physical::csv_number;
-use crate::serve::csv::{csv_field, CSV_HEADER};
+use crate::serve::csv::{csv_field, csv_value, utc, CSV_HEADER};
 use crate::serve::follow::Shown;
 use crate::tui::class::Question;
 
@@ -18,6 +19,11 @@ pub struct Poll {
     /// The lecturer's scene when the poll opened: every student answers on it.
     pub scene: Shown,
     pub revealed: bool,
+    /// Revealed after the lecturer changed the scene asked about (the
+    /// truth is the scene's as asked).
+    pub changed: bool,
+    /// The answers, once the lecturer shows them to everyone (`d`).
+    pub answers: Option<Arc<[f64]>>,
 }
 
 /// Why an answer was not taken.
@@ -42,8 +48,8 @@ impl Refused {
 #[derive(Debug)]
 pub(super) struct Open {
     pub(super) poll: Arc<Poll>,
-    /// By seat: the name then, and the answer.
-    pub(super) answers: BTreeMap<u64, (String, f64)>,
+    /// By seat: the name then, the answer and when it came.
+    pub(super) answers: BTreeMap<u64, (String, f64, SystemTime)>,
     /// The students who were here at the reveal without an answer.
     pub(super) silent: Vec<String>,
 }
@@ -59,6 +65,8 @@ impl Class {
             question,
             scene,
             revealed: false,
+            changed: false,
+            answers: None,
         });
         c.poll = Some(Open {
             poll: Arc::clone(&poll),
@@ -71,8 +79,9 @@ impl Class {
         poll.id
     }
 
-    /// Reveals the open poll's answer; whether there was one to reveal.
-    pub fn reveal(&self) -> bool {
+    /// Reveals the open poll's answer (`changed`: the lecturer's scene is
+    /// no longer the one asked about); whether there was one to reveal.
+    pub fn reveal(&self, changed: bool) -> bool {
         let mut c = self.lock();
         let Inner { seats, poll, .. } = &mut *c;
         let Some(open) = poll.as_mut().filter(|o| !o.poll.revealed) else {
@@ -80,6 +89,7 @@ impl Class {
         };
         let mut p = (*open.poll).clone();
         p.revealed = true;
+        p.changed = changed;
         open.poll = Arc::new(p);
         open.silent = seats
             .iter()
@@ -91,6 +101,27 @@ impl Class {
         self.poll.send_replace(Some(poll));
         self.changed();
         true
+    }
+
+    /// Shows the revealed poll's answers to every student (the lecturer's
+    /// `d`); whether there was a revealed poll.
+    pub fn share_answers(&self) -> bool {
+        let mut c = self.lock();
+        let Some(open) = c.poll.as_mut().filter(|o| o.poll.revealed) else {
+            return false;
+        };
+        let mut p = (*open.poll).clone();
+        p.answers = Some(open.answers.values().map(|a| a.1).collect());
+        open.poll = Arc::new(p);
+        let poll = Arc::clone(&open.poll);
+        drop(c);
+        self.poll.send_replace(Some(poll));
+        true
+    }
+
+    /// Whether the last poll is open (asked, not revealed).
+    pub fn poll_open(&self) -> bool {
+        self.lock().poll.as_ref().is_some_and(|o| !o.poll.revealed)
     }
 
     /// Cancels the open poll (its answers are dropped); whether one was
@@ -128,10 +159,11 @@ impl Class {
         let Some(open) = c.poll.as_mut() else {
             return Err(Refused::NoPoll);
         };
-        if open.poll.id != poll || open.poll.revealed || !value.is_finite() {
+        let nowhere = value == crate::tui::class::NOWHERE && open.poll.question.nowhere_ok();
+        if open.poll.id != poll || open.poll.revealed || !(value.is_finite() || nowhere) {
             return Err(Refused::Closed);
         }
-        open.answers.insert(id, (name, value));
+        open.answers.insert(id, (name, value, SystemTime::now()));
         drop(c);
         self.changed();
         Ok(())
@@ -141,7 +173,9 @@ impl Class {
     /// answer in the order students came, then a `no answer` row for each
     /// student here (at the reveal, or now while the poll is open) who
     /// did not answer. Values in the model's units (metres for lengths);
-    /// `offset` is the answer minus the truth.
+    /// `offset` is the answer minus the truth; `step` the lesson's step
+    /// the poll was asked on (empty outside a lesson), `time` when the
+    /// answer came (UTC).
     pub fn csv(&self) -> Option<String> {
         self.csv_rows().map(|rows| format!("{CSV_HEADER}\n{rows}"))
     }
@@ -156,16 +190,24 @@ impl Class {
             csv_field(&ascii.text(&q.text(&crate::tui::class::ASCII))),
             csv_field(&ascii.text(q.axis.symbol())),
             q.unit().to_string(),
-            csv_number::format(q.truth),
+            csv_value(q.truth),
         ]
         .join(",");
+        let step = (o.poll.scene.step.as_ref())
+            .filter(|s| s.left.is_none())
+            .map_or(String::new(), |s| s.at.to_string());
         let mut s = String::new();
-        for (name, v) in o.answers.values() {
-            s.push_str(&format!(
-                "{head},{},{},{}\n",
-                csv_field(name),
-                csv_number::format(*v),
+        for (name, v, at) in o.answers.values() {
+            let offset = if v.is_finite() && q.truth.is_finite() {
                 csv_number::format(*v - q.truth)
+            } else {
+                String::new()
+            };
+            s.push_str(&format!(
+                "{head},{},{},{offset},{step},{}\n",
+                csv_field(name),
+                csv_value(*v),
+                utc(*at)
             ));
         }
         let silent: Vec<String> = if o.poll.revealed {
@@ -178,7 +220,7 @@ impl Class {
                 .collect()
         };
         for name in silent {
-            s.push_str(&format!("{head},{},no answer,\n", csv_field(&name)));
+            s.push_str(&format!("{head},{},no answer,,{step},\n", csv_field(&name)));
         }
         Some(s)
     }

@@ -262,3 +262,28 @@ pub fn plot(
         .legend_position(None)
         .render(g, buf);
 }
+
+/// While a poll's answer waits (see `Classroom::marks_hidden`): `what`
+/// "wait for the reveal: they would answer the poll", wrapped in the
+/// middle of `area` (the graph a view leaves empty); whether it does.
+pub fn withheld(app: &App, what: &str, area: Rect, buf: &mut Buffer) -> bool {
+    let Some(until) = app.class.marks_wait() else {
+        return false;
+    };
+    let g = app.theme.glyphs;
+    let text = format!("{what} wait for {until}: they would answer the poll");
+    let text = g.text(&text);
+    let w = usize::from(area.width.saturating_sub(4)).max(1);
+    let lines = crate::tui::wrap::wrap(&text, w, usize::from(area.height), g.cut());
+    let top = area.y + area.height.saturating_sub(lines.len() as u16) / 2;
+    for (i, l) in lines.iter().enumerate() {
+        let y = top + i as u16;
+        if y >= area.bottom() {
+            break;
+        }
+        let lw = Span::raw(l.as_str()).width() as u16;
+        let x = area.x + area.width.saturating_sub(lw) / 2;
+        Line::styled(l.clone(), app.theme.dim).render(Rect::new(x, y, lw.min(area.width), 1), buf);
+    }
+    true
+}

@@ -14,7 +14,7 @@ use ratatui::widgets::{Block, Borders, Clear, Paragraph, Widget};
 use super::chart;
 use crate::figure::View;
 use crate::tui::app::App;
-use crate::tui::class::{duration, ClassGlyphs, Tally, ASCII, UNICODE};
+use crate::tui::class::{duration, ClassGlyphs, Tally, ASCII, NOWHERE, UNICODE};
 use crate::tui::glyphs::Glyphs;
 use crate::tui::plots::to_plot;
 
@@ -105,7 +105,9 @@ pub fn bins(answers: &[f64], log: bool, dots: (f64, f64), bounds: [f64; 2], g: R
 /// x axis (where the chart's x axis is the polled parameter), the count,
 /// and after the reveal the true value's column.
 pub fn render_poll(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
-    let Some(t) = app.class.view.as_ref().and_then(|v| v.poll.as_ref()) else {
+    // The lecturer's tally, or the answers the lecturer showed everyone.
+    let lecturer = app.class.view.as_ref().and_then(|v| v.poll.as_ref());
+    let Some(t) = lecturer.or(app.class.tally.as_ref()) else {
         return;
     };
     // A revealed poll's answers show on its own sweep only.
@@ -178,8 +180,14 @@ fn count_label(t: &Tally, g: &ClassGlyphs) -> String {
     if t.revealed {
         let q = &t.question;
         let n = t.answers.len();
+        let nowhere = t.answers.iter().filter(|a| **a == NOWHERE).count();
+        let nowhere = if nowhere > 0 {
+            format!(" ({nowhere} nowhere)")
+        } else {
+            String::new()
+        };
         format!(
-            " {}{}{n} {} ",
+            " {}{}{n} {}{nowhere} ",
             q.value(q.truth),
             g.sep,
             if n == 1 { "answer" } else { "answers" }

@@ -8,19 +8,27 @@
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
-use ratatui::style::Style;
+use ratatui::style::{Color, Style};
 use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Dataset, GraphType, Paragraph, Widget, Wrap};
 
 use super::chart::{self, Scale};
-use super::contact_map::{draw_map, map_legend, map_scale};
 use crate::physical::print::{fmt_num, load_text};
 use crate::tui::app::App;
 use crate::tui::contact::{load_value, ContactPane, LOADS};
 use crate::tui::glyphs::Glyphs;
 use crate::tui::layout::Y_LABEL_W;
 use crate::tui::theme::{CurveStyle, Theme};
+
+mod map;
+pub use map::{dithered, map_scale};
+use map::{draw_map, map_legend};
+
+/// The map's colours: elastic light grey, at the hardness blue (the
+/// paper's plastic colour); out of contact the terminal's background.
+const ELASTIC: Color = Color::Gray;
+const PLASTIC: Color = Color::Blue;
 
 /// `v` (a fraction) in per cent with three significant digits.
 pub fn pct(v: f64) -> String {
@@ -56,9 +64,12 @@ pub fn share_pct(plastic: f64, total: f64) -> String {
     }
 }
 
-/// The readout's line at the chosen load, the longest form that fits
-/// `width`.
-pub fn readout(pane: &ContactPane, width: usize, g: Glyphs) -> (String, bool) {
+/// The readout at the chosen load: one line, the longest form that fits
+/// `width`, or where none does (an 80-column screen leaves the panel 46)
+/// two, the simulation's and the theory's, so that nothing is cut. `h`
+/// names the hardness in use (H0, or H_y with the size effect: H alone is
+/// the Hurst exponent). The flag: the line is an error.
+pub fn readout(pane: &ContactPane, width: usize, g: Glyphs, h: &str) -> (Vec<String>, bool) {
     let at = load_text(load_value(pane.load));
     let theory = pane
         .theory
@@ -73,38 +84,55 @@ pub fn readout(pane: &ContactPane, width: usize, g: Glyphs) -> (String, bool) {
         Some(Err(e)) => Err(e.clone()),
         None => Err(String::new()),
     };
-    let (th_full, th_short) = match &theory {
-        Some((a, s)) => (
-            format!("theory: {a} %, {s} % plastic"),
-            format!("th. {a}% {s}%pl"),
+    let th_full = match &theory {
+        Some((a, s)) => format!("theory: {a} %, {s} % plastic"),
+        None => "theory: —".into(),
+    };
+    let th_short = match &theory {
+        Some((a, s)) => format!("th. {a}% {s}%pl"),
+        None => "th. —".into(),
+    };
+    let (forms, split): (Vec<String>, Vec<String>) = match &sim {
+        Ok((a, s)) => (
+            vec![
+                format!("simulation at p̄ = {at} {h}: contact {a} %, {s} % plastic · {th_full}"),
+                format!("p̄ = {at} {h}: sim {a} %, {s} % plastic · {th_full}"),
+                format!("{at} {h}: sim {a}% {s}%pl · {th_short}"),
+            ],
+            vec![
+                format!("p̄ = {at} {h} · sim {a} %, {s} % plastic"),
+                format!("{at} {h} · sim {a}%, {s}% pl"),
+            ],
         ),
-        None => ("theory: —".into(), "th. —".into()),
+        Err(e) if e.is_empty() => (
+            vec![
+                format!("simulation at p̄ = {at} {h}: solving… · {th_full}"),
+                format!("{at} {h}: sim … · {th_short}"),
+            ],
+            vec![format!("p̄ = {at} {h} · sim solving…")],
+        ),
+        Err(e) if e == "-" => (
+            vec![
+                format!("at p̄ = {at} {h}: no simulation · {th_full}"),
+                format!("{at} {h}: no sim. · {th_short}"),
+            ],
+            vec![format!("p̄ = {at} {h} · no simulation")],
+        ),
+        Err(e) => (vec![format!("at p̄ = {at} {h}: {e}")], vec![]),
     };
-    let forms: Vec<String> = match &sim {
-        Ok((a, s)) => vec![
-            format!("simulation at p̄ = {at} H: contact {a} %, {s} % plastic · {th_full}"),
-            format!("p̄ = {at} H: sim {a} %, {s} % plastic · {th_full}"),
-            format!("{at} H: sim {a}% {s}%pl · {th_short}"),
-        ],
-        Err(e) if e.is_empty() => vec![
-            format!("simulation at p̄ = {at} H: solving… · {th_full}"),
-            format!("{at} H: sim … · {th_short}"),
-        ],
-        Err(e) if e == "-" => vec![
-            format!("at p̄ = {at} H: no simulation · {th_full}"),
-            format!("{at} H: no sim. · {th_short}"),
-        ],
-        Err(e) => vec![format!("at p̄ = {at} H: {e}")],
-    };
-    let forms: Vec<String> = forms.iter().map(|f| g.text(f).into_owned()).collect();
+    let text = |f: &String| g.text(f).into_owned();
     let fits = |s: &String| Span::raw(s.as_str()).width() <= width;
-    let line = forms
-        .iter()
-        .find(|s| fits(s))
-        .or(forms.last())
-        .cloned()
-        .unwrap_or_default();
-    (line, matches!(sim, Err(ref e) if !e.is_empty() && e != "-"))
+    let error = matches!(sim, Err(ref e) if !e.is_empty() && e != "-");
+    let first = |forms: &[String]| forms.iter().map(text).find(|s| fits(s));
+    if let Some(line) = first(&forms) {
+        return (vec![line], error);
+    }
+    if let (Some(a), Some(b)) = (first(&split), first(&[th_full.clone(), th_short.clone()])) {
+        return (vec![a, b], error);
+    }
+    // Nothing fits (a very narrow panel): the shortest, cut by the screen.
+    let last = forms.last().map(text).unwrap_or_default();
+    (vec![last], error)
 }
 
 /// The title's right part: the progress bar while solving, else what was
@@ -168,9 +196,11 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
     // The grid of the answer shown: the coarse one until the scene's own
     // grid has solved the chosen load.
     let shown = if pane.chosen_is_coarse() { coarse } else { n };
+    // The hardness in use by its own name (H alone is the Hurst exponent).
+    let h = app.state.hardness_name();
     let head = if pane.sweep {
         format!(
-            "plastic share vs ζ at p̄ = {} H · seed {}",
+            "plastic share vs ζ at p̄ = {} {h} · seed {}",
             load_text(load_value(pane.load)),
             pane.seed
         )
@@ -202,16 +232,28 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
     if area.height < 8 {
         return;
     }
+    // The simulation and the theory beside it are at the marker (and the
+    // sweep's chart is the share itself): while a claim's poll is open
+    // they wait, as the readout's values do.
+    let rest = Rect::new(area.x, area.y + 1, area.width, area.height - 1);
+    if chart::withheld(app, "the simulation and the theory's areas", rest, buf) {
+        return;
+    }
     let row1 = Rect::new(area.x, area.y + 1, area.width, 1);
+    let mut top = 2;
     if pane.sweep {
         let text = "simulation points · theory S_pl/S_tot lines · b: areas vs load";
         Line::styled(gl.text(text).into_owned(), t.dim).render(row1, buf);
     } else {
-        let (line, error) = readout(pane, w, gl);
+        let (lines, error) = readout(pane, w, gl, h);
         let style = if error { t.error } else { Style::new() };
-        Line::styled(line, style).render(row1, buf);
+        for (k, line) in lines.into_iter().enumerate() {
+            let row = Rect::new(area.x, area.y + 1 + k as u16, area.width, 1);
+            Line::styled(line, style).render(row, buf);
+            top = 2 + k as u16;
+        }
     }
-    let body = Rect::new(area.x, area.y + 2, area.width, area.height - 2);
+    let body = Rect::new(area.x, area.y + top, area.width, area.height - top);
     if pane.sweep {
         sweep_chart(app, body, buf);
         return;
@@ -235,7 +277,7 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
     } else {
         format!("{scale} across")
     };
-    map_legend(t, &scale, Rect::new(body.x, body.y, side, 1), buf);
+    map_legend(t, h, &scale, Rect::new(body.x, body.y, side, 1), buf);
     if let Some(why) = &pane.why_not {
         let text = gl.text(why).into_owned();
         Paragraph::new(text)
@@ -322,10 +364,15 @@ fn load_chart(app: &App, area: Rect, buf: &mut Buffer) {
         label(" simulation (T E P)"),
     ]);
     legend.render(Rect { height: 1, ..area }, buf);
+    let h = if app.state.size_effect {
+        "p̄/H_y"
+    } else {
+        "p̄/H0"
+    };
     chart::axes(
         t,
         (&Scale::decades(xb), &Scale::decades(yb)),
-        "p̄/H",
+        h,
         (area, g),
         buf,
     );

@@ -20,7 +20,14 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     } else {
         ("H0", "Ψ_P")
     };
-    let (psi, slope) = (fmt_num(app.readout.psi), fmt_num(p.slope));
+    // At the marker the areas give the share (and Ψ): while a claim's
+    // poll is open they wait, as the readout's values do.
+    let hidden = app.class.marks_hidden();
+    let (psi, slope) = if hidden {
+        ("?".into(), "?".into())
+    } else {
+        (fmt_num(app.readout.psi), fmt_num(p.slope))
+    };
     let gl = t.glyphs;
     let mut title = format!("A/A0 vs p̄/{h} · {psi_name} {psi} · initial slope {slope}");
     if Span::raw(gl.text(&title)).width() > usize::from(area.width) {
@@ -29,15 +36,21 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     }
     let title = vec![Span::styled(title, t.title)];
     chart::title(app, title, area, buf);
-    chart::legend(
-        t,
-        &[&t.elastic, &t.plastic, &t.total, &t.tangent],
-        area,
-        buf,
-    );
+    if !hidden {
+        chart::legend(
+            t,
+            &[&t.elastic, &t.plastic, &t.total, &t.tangent],
+            area,
+            buf,
+        );
+    }
     let bounds = [0.0, 1.0];
     let (x, y) = (Scale::linear(bounds, 5.0), Scale::linear(bounds, 5.0));
     chart::axes(t, (&x, &y), &format!("p̄/{h}"), (area, g), buf);
+    if hidden {
+        chart::withheld(app, "the areas at the marker", g, buf);
+        return;
+    }
     let sets = vec![
         chart::dataset(&t.tangent, &p.tangent),
         chart::dataset(&t.elastic, &p.elastic),

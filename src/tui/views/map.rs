@@ -102,7 +102,13 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         title.push(Span::styled(hint, t.dim));
     }
     Line::from(title).render(Rect { height: 1, ..area }, buf);
-    legend(app, &psi, Rect::new(area.x, area.y + 1, area.width, 1), buf);
+    // While a claim's poll is open the colours wait: along the marker's
+    // row they show where the share passes ½ (and the contour where Ψ
+    // reaches 1); the axes and the current point stay.
+    let hidden = app.class.marks_hidden();
+    if !hidden {
+        legend(app, &psi, Rect::new(area.x, area.y + 1, area.width, 1), buf);
+    }
 
     let bounds = |s: &rough_model::Sweep| {
         let log = s.axis().is_log();
@@ -113,7 +119,13 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         Scale::of_axis(ya, bounds(&spec.y)),
     );
     chart::axes(t, (&x, &y), xa.symbol(), (area, g), buf);
-    cells(app, map, g, buf);
+    if hidden {
+        let what = format!("the map's colours and its {psi} = 1 contour");
+        chart::withheld(app, &what, g, buf);
+    } else {
+        cells(app, map, g, buf);
+    }
+    point(app, map, g, !hidden, buf);
 }
 
 /// The scale's legend: its ends with the thresholds, the contour and the
@@ -226,7 +238,16 @@ fn cells(app: &App, map: &RegimeMap, g: Rect, buf: &mut Buffer) {
             }
         }
     }
-    // The current point, when it lies on the map.
+}
+
+/// The current point, when it lies on the map: on its share's colour
+/// when `shares` (the cells are drawn).
+fn point(app: &App, map: &RegimeMap, g: Rect, shares: bool, buf: &mut Buffer) {
+    let spec = &map.spec;
+    let (cols, rows) = (spec.cols, spec.rows);
+    if cols != usize::from(g.width) || rows != 2 * usize::from(g.height) {
+        return;
+    }
     let (fx, fy) = spec.position();
     if !((0.0..=1.0).contains(&fx) && (0.0..=1.0).contains(&fy)) {
         return;
@@ -235,10 +256,14 @@ fn cells(app: &App, map: &RegimeMap, g: Rect, buf: &mut Buffer) {
     let row = (fy * (rows - 1) as f64).round() as usize;
     let r = (rows - 1 - row) / 2;
     let cell = &mut buf[(g.x + c as u16, g.y + r as u16)];
-    if color {
-        let bg = rgb(map.share_at(c, row));
-        cell.set_symbol(gl.map_point())
-            .set_style(point_style().bg(bg));
+    let t = &app.theme;
+    if t.color {
+        let style = if shares {
+            point_style().bg(share_color(t.palette, map.share_at(c, row)))
+        } else {
+            point_style()
+        };
+        cell.set_symbol(t.glyphs.map_point()).set_style(style);
     } else {
         cell.set_symbol(POINT_CHAR);
     }

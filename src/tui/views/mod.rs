@@ -6,8 +6,8 @@ mod chart;
 pub mod class;
 pub mod compact;
 pub mod contact;
-pub mod contact_map;
 mod indices;
+mod join;
 mod load;
 mod map;
 pub(crate) mod overlap;
@@ -34,7 +34,11 @@ use crate::tui::wrap::wrap;
 
 impl Widget for &App {
     fn render(self, area: Rect, buf: &mut Buffer) {
-        let Some(r) = Regions::of(area) else {
+        if self.class.join_shown {
+            return join::render(self, area, buf);
+        }
+        let rows = crate::tui::caption::rows(self);
+        let Some(r) = Regions::with_caption(area, rows) else {
             if compact::applies(self) {
                 compact::render(self, area, buf);
             } else {
@@ -46,7 +50,7 @@ impl Widget for &App {
         render_caption(self, r.caption, buf);
         side::render_sliders(self, r.sliders, r.slider_rows, buf);
         side::render_readout(self, r.readout, buf);
-        let chart = (r.chart, r.graph);
+        let chart = (r.chart, r.graph_of(self.view));
         match self.view {
             View::Slopes => slopes::render(self, chart, buf),
             View::Indices => indices::render(self, chart, buf),
@@ -171,13 +175,7 @@ fn render_caption(app: &App, area: Rect, buf: &mut Buffer) {
     let rows = usize::from(area.height.saturating_sub(1)).saturating_sub(lines.len());
     // While a poll is open the caption (which may name the answer) waits.
     // (A lesson's captions are its author's, written for the poll.)
-    let open = app.class.open_question().is_some() && app.class.step.is_none();
-    let caption = if open {
-        "(the caption shows after the reveal)"
-    } else {
-        app.state.caption.as_deref().unwrap_or("")
-    };
-    let text = g.text(caption);
+    let text = g.text(crate::tui::caption::text(app));
     lines.extend(
         wrap(&text, usize::from(area.width), rows, g.cut())
             .into_iter()
@@ -209,7 +207,13 @@ fn render_caption(app: &App, area: Rect, buf: &mut Buffer) {
         Paragraph::new(lines).render(area, buf);
         return;
     }
-    let claims = claims_line(&app.claims, usize::from(area.width), g);
+    let claims = if app.class.claims_hidden() {
+        // A lesson's step before a poll: the claims would answer it.
+        g.text("(this step's claims show after the lesson's next poll)")
+            .into_owned()
+    } else {
+        claims_line(&app.claims, usize::from(area.width), g)
+    };
     lines.push(Line::styled(claims, t.claims));
     Paragraph::new(lines).render(area, buf);
 }

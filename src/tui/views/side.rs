@@ -11,7 +11,6 @@ use rough_model::Axis;
 use crate::physical::print::{fmt_len, fmt_num, fmt_param, fmt_rel, fmt_share, fmt_short};
 use crate::physical::short_number;
 use crate::tui::app::App;
-use crate::tui::class::Ask;
 use crate::tui::glyphs::SliderBar;
 use crate::tui::theme::CurveStyle;
 
@@ -180,14 +179,13 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
     // padded into columns (wider columns for the ASCII names).
     let tx = |text: &str| g.text(text).into_owned();
     let num = |v: f64| tx(&fmt_num(v));
-    // While a poll is open the values that answer it are hidden: the
-    // plastic share and the slopes for the share, the indices for Ψ = 1,
-    // the slopes for the total slope's minimum.
-    let (hide_psi, hide_slopes) = match app.class.hidden_question().map(|q| q.ask) {
-        Some(Ask::Share { .. } | Ask::Minimum) => (false, true),
-        Some(Ask::Index { .. }) => (true, false),
-        _ => (false, false),
-    };
+    // While a claim's poll is open (or a step hides its claims) the values
+    // at the marker wait: the share and the slopes that make it give a
+    // share's ½ or the total's minimum, the indices a Ψ = 1; and each
+    // brackets the others' answers as the regime marks do (the share is
+    // a function of the index in use).
+    let hide = app.class.marks_hidden();
+    let (hide_psi, hide_slopes) = (hide, hide);
     let psi = |v: f64| if hide_psi { HIDDEN.into() } else { num(v) };
     let slope = |v: f64| if hide_slopes { HIDDEN.into() } else { num(v) };
     let len = |m: f64| tx(&fmt_len(m));
@@ -249,7 +247,10 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
         Line::from(slopes1),
         Line::from(slopes2),
         if hide_slopes {
-            Line::raw(format!("plastic {HIDDEN}  (until the reveal)"))
+            Line::raw(format!(
+                "plastic {HIDDEN}  (until {})",
+                app.class.marks_wait().unwrap_or("the reveal")
+            ))
         } else {
             Line::from(vec![
                 Span::raw(format!("plastic {}  ", fmt_share(sl.plastic_share()))),
@@ -272,6 +273,17 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
             Line::raw(pair(a, len(rs.rms_height), b, num(rs.rms_slope))),
         );
         at += 1;
+        // Where there is room: Sa and Sz, Ssk and Sku beside them.
+        if usize::from(area.height) > lines.len() + 2 {
+            let [sa, ssk, sku, sz] = rs.amplitude_names();
+            let p = rs.amplitude;
+            lines.insert(7, Line::raw(pair(sa, len(p.mean_abs), sz, len(p.range))));
+            lines.insert(
+                8,
+                Line::raw(pair(ssk, num(p.skewness), sku, num(p.kurtosis))),
+            );
+            at += 2;
+        }
     }
     // Where there is room: the longest wavelength (the power law's q0,
     // set with q0=… or l=… at the value prompt; a surface's own).

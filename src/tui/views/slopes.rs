@@ -4,6 +4,7 @@
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::Span;
+use ratatui::widgets::Widget;
 
 use super::chart::{self, Scale};
 use super::overlap;
@@ -19,7 +20,7 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         return;
     }
     let p = &app.plot;
-    let norm = if app.state.size_effect { "H_y" } else { "H0" };
+    let norm = app.state.hardness_name();
     let title = vec![Span::styled(
         format!("slope {norm}·dA/dp̄/A0 vs {}", axis.symbol()),
         t.title,
@@ -28,7 +29,7 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     let bounds = (p.x_bounds, p.y_bounds);
     // Draw order, later over earlier: Persson's reference curve last, so
     // that it shows even where it equals the total (fig3) or the elastic
-    // curve; a curve left with under a quarter of its cells visible is
+    // curve; a curve left with under a twentieth of its cells visible is
     // named in the legend as lying under the one that hides it.
     // (The order of `overlap::Cover::of`.)
     let curves = [
@@ -108,12 +109,19 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         names.push((&t.ghost, if fits { label } else { "ghost".into() }));
     }
     chart::legend_named(t, &names, area, buf);
+    reading_line(app, Rect::new(area.x, area.y + 2, area.width, 1), buf);
     let (x, y) = (Scale::of_axis(axis, p.x_bounds), Scale::decades(p.y_bounds));
     chart::axes(t, (&x, &y), axis.symbol(), (area, g), buf);
     // Where the regime changes along the sweep, on the x axis line; a mark
     // whose cell is taken by another sits in the nearest free one beside it.
+    // Not while a poll's answer is hidden: the marks bracket it.
     let mut taken: Vec<u16> = Vec::new();
-    for (v, mark) in &p.regime_marks {
+    let marks = if app.class.marks_hidden() {
+        &[][..]
+    } else {
+        &p.regime_marks[..]
+    };
+    for (v, mark) in marks {
         let Some(col) = chart::col_of(g, t.glyphs.dots(), p.x_bounds, *v) else {
             continue;
         };
@@ -143,6 +151,31 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     }
     sets.extend(curves.iter().map(|(c, data)| chart::dataset(c, data)));
     chart::plot(sets, bounds, g, buf);
+}
+
+/// Which reading of the elastic/plastic split the shares use (the
+/// program's reading of the paper's Appendix A, docs/model.md): the
+/// longest form that fits `row`.
+fn reading_line(app: &App, row: Rect, buf: &mut Buffer) {
+    let h = app.state.hardness_name();
+    let forms = [
+        format!(
+            "shares: elastic area = Appendix A's mass on [0, {h}], plastic the rest \
+             (not Persson's erf)"
+        ),
+        format!("shares: elastic = Appendix A's mass on [0, {h}], not Persson's erf"),
+        format!("shares: elastic = App. A's mass on [0, {h}] (? help)"),
+        format!("shares: elastic = App. A's mass on [0, {h}]"),
+    ];
+    let g = app.theme.glyphs;
+    let w = usize::from(row.width);
+    if let Some(f) = forms
+        .iter()
+        .map(|f| g.text(f).into_owned())
+        .find(|f| Span::raw(f.as_str()).width() <= w)
+    {
+        ratatui::text::Line::styled(f, app.theme.dim).render(row, buf);
+    }
 }
 
 /// A curve's name without qualifiers, for "total = Persson here".

@@ -1,6 +1,6 @@
-//! The contact view's map: the periodic cell at the chosen load, each
-//! point a block of nodes drawn by error diffusion of the block's shares
-//! (out of contact, elastic, at the hardness), its legend and scale.
+//! The contact view's map: the solved surface's nodes drawn on the
+//! terminal's points, each block's shares dithered (not its most loaded
+//! node), with its legend and scale.
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
@@ -8,22 +8,19 @@ use ratatui::style::{Color, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::Widget;
 
+use super::{ELASTIC, PLASTIC};
 use crate::contact::scene::Node;
 use crate::tui::theme::Theme;
 
-/// The map's colours: elastic light grey, at the hardness blue (the
-/// paper's plastic colour); out of contact the terminal's background.
-const ELASTIC: Color = Color::Gray;
-const PLASTIC: Color = Color::Blue;
-
-/// The map's legend in `area` (one row), with its scale where it fits.
-pub(super) fn map_legend(t: &Theme, scale: &str, area: Rect, buf: &mut Buffer) {
+/// The map's legend in `area` (one row), the hardness named `h`, with its
+/// scale where it fits.
+pub(super) fn map_legend(t: &Theme, h: &str, scale: &str, area: Rect, buf: &mut Buffer) {
     let (e, p) = node_look(t, Node::Elastic, Node::Plastic);
     let mut spans = vec![
         Span::styled(e.0, e.1),
         Span::raw(" elastic "),
         Span::styled(p.0, p.1),
-        Span::raw(" at H"),
+        Span::raw(format!(" at {h}")),
     ];
     let tail = t.glyphs.text(&format!(" · {scale}")).into_owned();
     let used: usize = spans.iter().map(Span::width).sum();

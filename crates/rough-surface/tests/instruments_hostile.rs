@@ -1,0 +1,477 @@
+//! Damaged and hostile instruments' files, one reader at a time: files cut
+//! short, sizes that lie, dimensions beyond any file, offsets past the end
+//! — each refused with one line naming the format and the problem, never a
+//! panic, and never an allocation beyond what the file's size allows (a
+//! counting allocator watches every test here). Then every reader's real
+//! file mutated at random (`FUZZ_CASES` cases a reader, 48 by default).
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::io::Read;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use proptest::prelude::*;
+use rough_surface::{parse_named, read_grid_named, Options};
+
+/// The system allocator, recording the largest single allocation.
+struct Counting;
+
+static LARGEST: AtomicUsize = AtomicUsize::new(0);
+
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, l: Layout) -> *mut u8 {
+        LARGEST.fetch_max(l.size(), Ordering::Relaxed);
+        System.alloc(l)
+    }
+    unsafe fn dealloc(&self, p: *mut u8, l: Layout) {
+        System.dealloc(p, l)
+    }
+    unsafe fn alloc_zeroed(&self, l: Layout) -> *mut u8 {
+        LARGEST.fetch_max(l.size(), Ordering::Relaxed);
+        System.alloc_zeroed(l)
+    }
+    unsafe fn realloc(&self, p: *mut u8, l: Layout, n: usize) -> *mut u8 {
+        LARGEST.fetch_max(n, Ordering::Relaxed);
+        System.realloc(p, l, n)
+    }
+}
+
+#[global_allocator]
+static ALLOC: Counting = Counting;
+
+/// Every allocation stays below this (the largest file is 4 MB, its
+/// heights 2.5 MB; a mutated header can claim at most what the file holds).
+const CEILING: usize = 64 << 20;
+
+fn dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/instruments")
+}
+
+/// An example file's bytes (stored gzip-compressed).
+fn bytes(name: &str) -> Vec<u8> {
+    let gz = std::fs::read(dir().join(format!("{name}.gz"))).unwrap();
+    let mut out = Vec::new();
+    flate2::read::GzDecoder::new(&gz[..])
+        .read_to_end(&mut out)
+        .unwrap();
+    out
+}
+
+/// The refusal of `b` (a file named `name`) as a line; that no
+/// allocation passed the ceiling.
+fn refuse(name: &str, b: &[u8]) -> String {
+    let e = read_grid_named(b, name, &Options::default()).expect_err("refused");
+    assert!(LARGEST.load(Ordering::Relaxed) < CEILING);
+    let line = e.1.to_string();
+    assert!(!line.contains('\n'), "{line}");
+    line
+}
+
+/// The file cut short at several places: each refused, naming `format`.
+fn truncated(name: &str, format: &str) {
+    let full = bytes(name);
+    for cut in [600, full.len() / 4, full.len() / 2] {
+        let e = refuse(name, &full[..cut.min(full.len() - 1)]);
+        assert!(e.starts_with(format), "{name} cut at {cut}: {e}");
+    }
+    // Cut before what tells it apart (its magic, an Igor wave's 384 bytes
+    // of headers and their checksum), it is a binary file not read.
+    for cut in [1, 100] {
+        let e = refuse(name, &full[..cut]);
+        let told = e.starts_with(format) || e.starts_with("a binary file");
+        assert!(told || e.starts_with("text: "), "{name} cut at {cut}: {e}");
+    }
+}
+
+fn put(b: &mut [u8], at: usize, v: &[u8]) {
+    b[at..at + v.len()].copy_from_slice(v);
+}
+
+/// The first place `what` occurs in `b`.
+fn find(b: &[u8], what: &[u8]) -> usize {
+    b.windows(what.len()).position(|w| w == what).unwrap()
+}
+
+#[test]
+fn digital_surf_sur() {
+    truncated("sur-2.sur", "Digital Surf .sur: ");
+    let full = bytes("sur-2.sur");
+    // Sizes beyond any file, and a count that does not match them.
+    let mut b = full.clone();
+    put(&mut b, 108, &(1i32 << 20).to_le_bytes());
+    put(&mut b, 112, &(1i32 << 10).to_le_bytes());
+    put(&mut b, 116, &(1u32 << 30).to_le_bytes());
+    assert_eq!(
+        refuse("x.sur", &b),
+        "Digital Surf .sur: the heights claims 1048576 × 1024 points: more than the \
+         67108864 a file is read with"
+    );
+    put(&mut b, 116, &7u32.to_le_bytes());
+    assert!(refuse("x.sur", &b).contains("do not make its count of 7"));
+    // A comment that pushes the heights past the end.
+    let mut b = full.clone();
+    put(&mut b, 334, &u16::MAX.to_le_bytes());
+    assert!(refuse("x.sur", &b).contains("the file holds 1090480 bytes"));
+    let mut b = full.clone();
+    put(&mut b, 98, &12u16.to_le_bytes());
+    assert_eq!(
+        refuse("x.sur", &b),
+        "Digital Surf .sur: heights of 12 bits: 16 or 32 bits are read"
+    );
+    let mut b = full;
+    put(&mut b, 212, b"furlong\0");
+    assert!(refuse("x.sur", &b).contains("the unit of the heights is 'furlong'"));
+}
+
+#[test]
+fn sensofar_plu() {
+    truncated("plu-1.plu", "Sensofar .plu: ");
+    let full = bytes("plu-1.plu");
+    let mut b = full.clone();
+    put(&mut b, 500, &u32::MAX.to_le_bytes());
+    put(&mut b, 504, &u32::MAX.to_le_bytes());
+    assert!(refuse("x.plu", &b).contains("more than the 67108864"));
+    let mut b = full.clone();
+    put(&mut b, 500, &2000u32.to_le_bytes());
+    assert!(refuse("x.plu", &b).contains("but the file holds 3230225 bytes"));
+    let mut b = full.clone();
+    b[489] = 200;
+    assert!(refuse("x.plu", &b).starts_with("Sensofar .plu: "));
+    let mut b = full;
+    put(&mut b, 428, &1u32.to_le_bytes());
+    assert_eq!(
+        refuse("x.plu", &b),
+        "Sensofar .plu: measurement type 1: a topography (type 3) is read, this is a profile"
+    );
+}
+
+#[test]
+fn nanoscope_di() {
+    truncated("di-3.di", "Nanoscope: ");
+    let full = bytes("di-3.di");
+    // The header cut before its end line.
+    assert!(refuse("x.di", &full[..20000]).contains("no '\\*File list end' line"));
+    let mut b = full.clone();
+    let at = find(&b, b"\\Data offset: 40960");
+    b.splice(at + 19..at + 19, *b"99");
+    assert!(refuse("x.di", &b).contains("image 0 ends at byte 4227171 but the file holds"));
+    // A data length that cannot hold the image (a wrong number of lines
+    // is mended from the scan list, as SurfaceTopography mends it).
+    let mut b = full.clone();
+    let at = find(&b, b"\\Data length: 131072");
+    put(&mut b, at, b"\\Data length: 131070");
+    assert!(refuse("x.di", &b).contains("does not fit its data length of 131070 bytes"));
+    // The first image's own Samps/line (after its data offset).
+    let mut b = full.clone();
+    let image = find(&b, b"\\Data offset: 40960");
+    let at = image + find(&b[image..], b"\\Samps/line: 256");
+    put(&mut b, at, b"\\Samps/line: 2x6");
+    assert_eq!(
+        refuse("x.di", &b),
+        "Nanoscope: image 0's 'samps/line' is not a count"
+    );
+    // Force curves and text data are named.
+    let mut b = full;
+    put(&mut b, 0, b"\\*Force file list\r\n");
+    assert!(refuse("x.di", &b).contains("force curves"));
+}
+
+#[test]
+fn wyko_opd() {
+    truncated("opd-1.opd", "Wyko .opd: ");
+    let full = bytes("opd-1.opd");
+    // The 'Raw' array claims more columns than its block holds.
+    let mut b = full.clone();
+    put(&mut b, 24020, &u16::MAX.to_le_bytes());
+    assert!(refuse("x.opd", &b).contains("Raw of 65535 × 480 points takes 125827200 bytes"));
+    let mut b = full.clone();
+    put(&mut b, 20, &7i32.to_le_bytes());
+    assert!(refuse("x.opd", &b).contains("not a multiple of 24 bytes"));
+    let mut b = full;
+    put(&mut b, 20, &(24 * 10_000_000i32).to_le_bytes());
+    assert!(refuse("x.opd", &b).contains("runs past the end of the file"));
+}
+
+#[test]
+fn zygo_metropro_dat() {
+    truncated("metropro-1.dat", "Zygo MetroPro .dat: ");
+    let full = bytes("metropro-1.dat");
+    let mut b = full.clone();
+    put(&mut b, 68, &u16::MAX.to_be_bytes());
+    put(&mut b, 70, &u16::MAX.to_be_bytes());
+    assert!(refuse("x.dat", &b).contains("claims 65535 × 65535 points: more than"));
+    let mut b = full.clone();
+    put(&mut b, 6, &1000u32.to_be_bytes());
+    assert!(refuse("x.dat", &b).contains("a header of 1000 bytes"));
+    let mut b = full;
+    put(&mut b, 218, &7i16.to_be_bytes());
+    assert!(refuse("x.dat", &b).contains("the phase resolution is 7"));
+}
+
+#[test]
+fn alicona_al3d() {
+    truncated("al3d-1.al3d", "Alicona .al3d: ");
+    let full = bytes("al3d-1.al3d");
+    let field = |s: &str| {
+        let mut v = s.as_bytes().to_vec();
+        v.resize(30, 0);
+        v
+    };
+    let mut b = full.clone();
+    put(&mut b, 121 + 20, &field("9999"));
+    assert!(refuse("x.al3d", &b).contains("but the file holds"));
+    let mut b = full.clone();
+    put(&mut b, 121 + 20, &field("99999999"));
+    assert!(refuse("x.al3d", &b).contains("more than the 67108864"));
+    let mut b = full.clone();
+    put(&mut b, 329 + 20, &field("18446744073709551615"));
+    assert!(refuse("x.al3d", &b).starts_with("Alicona .al3d: "));
+    let mut b = full;
+    put(&mut b, 17 + 52 + 20, &field("4000000000"));
+    assert!(refuse("x.al3d", &b).contains("more than the file holds"));
+}
+
+#[test]
+fn nanosurf_nid() {
+    truncated("nid-1.nid", "Nanosurf .nid: ");
+    let full = bytes("nid-1.nid");
+    let mut b = full.clone();
+    let at = find(&b, b"Lines=256\r\nFrame");
+    b.splice(at + 6..at + 6, *b"99");
+    assert!(
+        refuse("x.nid", &b).contains("a data set of 256 × 99256 points is larger than the file")
+    );
+    let mut b = full.clone();
+    let at = find(&b, b"#!");
+    b[at] = b'%';
+    assert!(refuse("x.nid", &b).starts_with("Nanosurf .nid: "));
+    let mut b = full;
+    let at = find(&b, b"GroupCount=2");
+    put(&mut b, at, b"GroupCount=9");
+    assert!(refuse("x.nid", &b).contains("no 'Gr2-Count'"));
+}
+
+/// The checksum of an Igor wave's headers made right again.
+fn igor_checksum(b: &mut [u8]) {
+    put(b, 2, &[0, 0]);
+    let sum = b[..384].chunks_exact(2).fold(0i16, |a, c| {
+        a.wrapping_add(i16::from_le_bytes([c[0], c[1]]))
+    });
+    put(b, 2, &sum.wrapping_neg().to_le_bytes());
+}
+
+#[test]
+fn igor_ibw() {
+    truncated("spot_1-1000nm.ibw", "Igor .ibw: ");
+    let full = bytes("spot_1-1000nm.ibw");
+    let mut b = full.clone();
+    put(&mut b, 64 + 68, &i32::MAX.to_le_bytes());
+    igor_checksum(&mut b);
+    assert!(refuse("x.ibw", &b).contains("more than the 67108864"));
+    let mut b = full.clone();
+    put(&mut b, 64 + 68 + 8, &100i32.to_le_bytes());
+    igor_checksum(&mut b);
+    assert!(refuse("x.ibw", &b).contains("but the file holds"));
+    let mut b = full.clone();
+    put(&mut b, 12, &i32::MAX.to_le_bytes());
+    igor_checksum(&mut b);
+    assert!(refuse("x.ibw", &b).contains("the note at byte"));
+    let mut b = full;
+    put(&mut b, 64 + 16, &3i16.to_le_bytes());
+    igor_checksum(&mut b);
+    assert_eq!(refuse("x.ibw", &b), "Igor .ibw: a wave of complex numbers");
+}
+
+#[test]
+fn iso_sdf() {
+    let full = bytes("sdf-1.sdf");
+    let text = String::from_utf8(full.clone()).unwrap();
+    let e = refuse(
+        "x.sdf",
+        text.replace("NumPoints = 7", "NumPoints = 9999999")
+            .as_bytes(),
+    );
+    assert!(e.contains("more than the file holds"), "{e}");
+    let e = refuse("x.sdf", &full[..full.len() * 2 / 3]);
+    assert!(e.contains("the file is truncated"), "{e}");
+    let e = refuse("x.sdf", text.replace("Zscale", "Zskale").as_bytes());
+    assert_eq!(e, "ISO 25178-71 .sdf: the header has no 'Zscale'");
+    // A binary one: its header, then fewer values than it claims.
+    let mut b = b"bISO-1.0".to_vec();
+    b.extend_from_slice(&[b' '; 34]);
+    b.extend_from_slice(&300u16.to_le_bytes());
+    b.extend_from_slice(&200u16.to_le_bytes());
+    for v in [1e-6f64, 1e-6, 1e-9, 1e-9] {
+        b.extend_from_slice(&v.to_le_bytes());
+    }
+    b.extend_from_slice(&[0, 5, 0]);
+    b.extend_from_slice(&[0u8; 1000]);
+    assert!(refuse("x.sdf", &b).contains("300 × 200 points takes 120000 bytes from byte 81"));
+}
+
+#[test]
+fn bruker_opdx() {
+    truncated("opdx-3.opdx", "Bruker .opdx: ");
+    let full = bytes("opdx-3.opdx");
+    let mut b = full.clone();
+    let at = find(&b, b"NumPoints") + 10;
+    put(&mut b, at, &u64::MAX.to_le_bytes());
+    assert!(refuse("x.opdx", &b).starts_with("Bruker .opdx: "));
+    let mut b = full.clone();
+    put(&mut b, 12, &u32::MAX.to_le_bytes());
+    assert!(refuse("x.opdx", &b).contains("runs past the end of the file"));
+    // Containers nested beyond any file are refused, not recursed into.
+    let mut nest = full[..12].to_vec();
+    for _ in 0..100_000 {
+        nest.extend_from_slice(&1u32.to_le_bytes());
+        nest.extend_from_slice(b"c\x7d\x04");
+        nest.extend_from_slice(&(1u32 << 30).to_le_bytes());
+    }
+    let e = refuse("x.opdx", &nest);
+    assert!(
+        e.contains("nested deeper than 64") || e.contains("runs past"),
+        "{e}"
+    );
+}
+
+#[test]
+fn frt_frt() {
+    truncated("frt-2.frt", "FRT .frt: ");
+    let full = bytes("frt-2.frt");
+    let mut b = full.clone();
+    // Block 0x66's points.
+    put(&mut b, 54, &u32::MAX.to_le_bytes());
+    assert!(refuse("x.frt", &b).contains("do not fit the heights' block"));
+    let mut b = full.clone();
+    put(&mut b, 20, &u32::MAX.to_le_bytes());
+    assert!(refuse("x.frt", &b).contains("claims 4294967295 bytes"));
+    let mut b = full;
+    put(&mut b, 12, b"2.00");
+    assert_eq!(
+        refuse("x.frt", &b),
+        "FRT .frt: version '2.00': 1.00 and 1.01 are read"
+    );
+}
+
+#[test]
+fn gzip_nests() {
+    use std::io::Write;
+    // A gzip file inside one.
+    let mut e = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::fast());
+    e.write_all(&bytes("sdf-1.sdf")).unwrap();
+    let inner = e.finish().unwrap();
+    let mut e = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::fast());
+    e.write_all(&inner).unwrap();
+    let twice = e.finish().unwrap();
+    let r = parse_named(&twice, "x.sdf.gz", &Options::default()).unwrap_err();
+    assert_eq!(
+        r.1.to_string(),
+        "a gzip-compressed file inside a gzip-compressed file"
+    );
+}
+
+/// A file changed: bytes set or flipped, a piece cut out or repeated;
+/// half the changes in its first 64 KiB, where the headers are.
+fn mutate(b: &[u8], ops: &[(u8, usize, u8)]) -> Vec<u8> {
+    let mut b = b.to_vec();
+    for &(op, at, v) in ops {
+        if b.is_empty() {
+            break;
+        }
+        let span = if op & 0x80 != 0 {
+            b.len().min(1 << 16)
+        } else {
+            b.len()
+        };
+        let i = at % span;
+        match op % 4 {
+            0 => b[i] = v,
+            1 => b[i] ^= 1 << (v % 8),
+            2 => {
+                let n = (v as usize).min(b.len() - i);
+                b.drain(i..i + n);
+            }
+            _ => {
+                let piece = b[i..(i + v as usize).min(b.len())].to_vec();
+                b.splice(i..i, piece);
+            }
+        }
+    }
+    b
+}
+
+/// Each reader's example files, as they are named.
+const FILES: [&str; 14] = [
+    "sur-2.sur",
+    "plu-1.plu",
+    "di-2.di",
+    "di-5.di",
+    "opd-1.opd",
+    "metropro-1.dat",
+    "al3d-1.al3d",
+    "nid-1.nid",
+    "spot_1-1000nm.ibw",
+    "10x10-one_channel_without_name.ibw",
+    "sdf-1.sdf",
+    "opdx-3.opdx",
+    "frt-1.frt",
+    "frt-2.frt",
+];
+
+fn cases() -> u32 {
+    std::env::var("FUZZ_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(48)
+}
+
+static RUNS: AtomicUsize = AtomicUsize::new(0);
+static REFUSED: AtomicUsize = AtomicUsize::new(0);
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(cases() * FILES.len() as u32))]
+
+    #[test]
+    fn mutated_files_never_panic(
+        which in 0..FILES.len(),
+        ops in prop::collection::vec((any::<u8>(), any::<usize>(), any::<u8>()), 1..6),
+        cut in any::<usize>(),
+    ) {
+        thread_local!(static CACHE: std::cell::RefCell<Vec<Option<Vec<u8>>>> =
+            std::cell::RefCell::new(vec![None; FILES.len()]));
+        let name = FILES[which];
+        let original = CACHE.with(|c| {
+            c.borrow_mut()[which].get_or_insert_with(|| bytes(name)).clone()
+        });
+        let mut b = mutate(&original, &ops);
+        if cut % 5 == 0 && !b.is_empty() {
+            b.truncate(cut % b.len());
+        }
+        let r = read_grid_named(&b, name, &Options::default());
+        RUNS.fetch_add(1, Ordering::Relaxed);
+        match &r {
+            Err((_, p)) => {
+                REFUSED.fetch_add(1, Ordering::Relaxed);
+                let line = p.to_string();
+                prop_assert!(!line.is_empty() && !line.contains('\n'), "{}", line);
+            }
+            Ok(g) => prop_assert_eq!(g.z.len(), g.nx * g.ny),
+        }
+        // The small files through the whole pipeline too.
+        if original.len() < 100_000 {
+            let _ = parse_named(&b, name, &Options::default());
+        }
+        prop_assert!(LARGEST.load(Ordering::Relaxed) < CEILING);
+    }
+}
+
+#[test]
+fn zz_fuzz_counts() {
+    // Printed for the record (run after the fuzz when single-threaded).
+    eprintln!(
+        "fuzz: {} mutated files read, {} refused; largest allocation {} bytes",
+        RUNS.load(Ordering::Relaxed),
+        REFUSED.load(Ordering::Relaxed),
+        LARGEST.load(Ordering::Relaxed)
+    );
+}

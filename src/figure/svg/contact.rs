@@ -1,0 +1,202 @@
+//! The contact simulation's pictures (`export --view contact|contact-sweep`)
+//! in the style of every other picture: the scene under the chart and in
+//! `<desc>`, powers of ten on the log axes, the points whole inside the
+//! axes, the legend where nothing is drawn, the hardness named H0 or H_y.
+//! The numbers come from the simulation (`crate::contact`, through
+//! export): this module only draws them.
+
+use plotters::prelude::*;
+
+use super::plot::{self, Mark, Series};
+use super::{render, under, Scale, Stroke, ELASTIC, PLASTIC, TOTAL};
+use crate::physical::short_number;
+use crate::scene::State;
+
+/// The contact view's numbers as its picture draws them.
+#[derive(Clone, Debug, Default)]
+pub struct ContactLoads {
+    /// The solved surface in words: "1024 × 1024 nodes, seed 1".
+    pub surface: String,
+    /// The index in use (Ψ* with the size effect, Ψ_P without), at which
+    /// the theory's areas are computed.
+    pub psi: f64,
+    /// The loads p̄/H_use.
+    pub p_over_h: Vec<f64>,
+    /// The simulated A/A0 at each load: total, elastic, plastic.
+    pub area: [Vec<f64>; 3],
+    /// Their standard deviations over several surfaces, where there are
+    /// several.
+    pub sd: Option<[Vec<f64>; 3]>,
+    /// The theory's areas (total, elastic, plastic) at `theory_p`.
+    pub theory_p: Vec<f64>,
+    pub theory: [Vec<f64>; 3],
+}
+
+/// The ζ sweep's numbers as its picture draws them.
+#[derive(Clone, Debug, Default)]
+pub struct ContactSweep {
+    /// The solved surfaces in words: "seed 1, 8 nodes per shortest
+    /// wavelength".
+    pub surface: String,
+    /// The load p̄/H_use of every point.
+    pub load: f64,
+    pub zeta: Vec<f64>,
+    /// The simulated plastic share A_pl/A, ± `sd` where given.
+    pub share: Vec<f64>,
+    pub sd: Option<Vec<f64>>,
+    /// The theory's plastic share at `theory_zeta`.
+    pub theory_zeta: Vec<f64>,
+    pub theory_share: Vec<f64>,
+}
+
+/// The index in use by its name: "Ψ_P = 0.4901".
+fn psi_text(state: &State, psi: f64) -> String {
+    let name = state.index_name();
+    format!("{name} = {}", short_number(psi))
+}
+
+/// What the contact view spans, in full (its pictures' `<desc>` and its
+/// CSV's `#` lines): "contact = p_over_h = pbar/H0 from 0.001 to 1, 13
+/// loads (log-spaced)".
+pub fn contact_span(state: &State, loads: &[f64]) -> String {
+    let full = |v: f64| crate::physical::csv_number::format(v);
+    format!(
+        "contact = p_over_h = pbar/{} from {} to {}, {} loads (log-spaced)",
+        state.hardness_name(),
+        full(loads.first().copied().unwrap_or(f64::NAN)),
+        full(loads.last().copied().unwrap_or(f64::NAN)),
+        loads.len()
+    )
+}
+
+/// What the ζ sweep spans, in full.
+pub fn sweep_span(state: &State, load: f64) -> String {
+    format!(
+        "contact-sweep = zeta = 1, 2, 4, …, 128 (a measured map: those it resolves), each on \
+         its own grid, at p_over_h = pbar/{} = {}",
+        state.hardness_name(),
+        crate::physical::csv_number::format(load)
+    )
+}
+
+/// A/A0 against p̄/H_use, both log: the simulation's points beside the
+/// theory's curves.
+pub fn render_contact(state: &State, d: &ContactLoads) -> anyhow::Result<String> {
+    let h = state.hardness_name();
+    let sim = d.area.iter().flatten();
+    // The floor: the least simulated area or theoretical total; the
+    // theory's elastic and plastic parts are cut there.
+    let (lo, hi) = super::positive_span(sim.chain(&d.theory[0]));
+    let (plo, phi) = super::positive_span(d.p_over_h.iter().chain(&d.theory_p));
+    let x = Scale::padded(true, plo, phi, 0.03, format!("load p̄/{h}"));
+    let y = Scale::padded(true, lo, hi, 0.03, "contact area A/A0".into());
+    let names = ["total", "elastic", "plastic"];
+    let colours = [TOTAL, ELASTIC, PLASTIC];
+    let sd_words = if d.sd.is_some() { " (mean ± sd)" } else { "" };
+    let mut series = vec![];
+    for k in 0..3 {
+        series.push(Series {
+            label: format!("{}: theory", names[k]),
+            colour: colours[k],
+            mark: Mark::Line(Stroke::Solid),
+            x: &d.theory_p,
+            y: &d.theory[k],
+            sd: None,
+        });
+    }
+    // The total's dots larger, under the elastic ones: where the two
+    // coincide (light loads) both show.
+    for (k, r) in [(0, 5), (1, 3), (2, 3)] {
+        series.push(Series {
+            label: format!("{}: simulation{sd_words}", names[k]),
+            colour: colours[k],
+            mark: Mark::Dots(r),
+            x: &d.p_over_h,
+            y: &d.area[k],
+            sd: d.sd.as_ref().map(|s| &s[k][..]),
+        });
+    }
+    let what = "contact area against the load";
+    let title = super::title(state, what);
+    let draw = |area: &super::Area, room| plot::draw(area, &title, (&x, &y), &series, room);
+    let short = format!(
+        "p̄/{h} {} … {} · {}",
+        short_number(plo),
+        short_number(phi),
+        d.surface
+    );
+    let caption = format!(
+        "Contact area against the load over the hardness in use {h}: the boundary-element \
+         simulation of the scene's surface (points: an elastic–perfectly-plastic half-space, \
+         the pressure capped at {h}) beside the theory's finite-load areas (lines, the {} \
+         model at {}).",
+        state.model.label(),
+        psi_text(state, d.psi)
+    );
+    let lines = under(state, Some(short), &caption);
+    let mut desc = crate::figure::scene_text::full_lines_of(
+        state,
+        "contact",
+        contact_span(state, &d.p_over_h),
+    );
+    desc.push(format!("simulation = {}", d.surface));
+    render(&draw, &lines, &format!("{} — {what}", state.name), &desc)
+}
+
+/// The plastic share of the contact area against ζ at one load: the
+/// simulation's points beside the theory's line.
+pub fn render_contact_sweep(state: &State, d: &ContactSweep) -> anyhow::Result<String> {
+    let h = state.hardness_name();
+    let (zlo, zhi) = super::positive_span(d.zeta.iter().chain(&d.theory_zeta));
+    let x = Scale::padded(true, zlo, zhi, 0.03, "ζ = q1/q0".into());
+    let y = Scale::padded(false, 0.0, 1.0, 0.04, "plastic share A_pl/A".into());
+    let sd_words = if d.sd.is_some() { " (mean ± sd)" } else { "" };
+    let series = [
+        Series {
+            label: "theory".into(),
+            colour: PLASTIC,
+            mark: Mark::Line(Stroke::Solid),
+            x: &d.theory_zeta,
+            y: &d.theory_share,
+            sd: None,
+        },
+        Series {
+            label: format!("simulation{sd_words}"),
+            colour: PLASTIC,
+            mark: Mark::Dots(5),
+            x: &d.zeta,
+            y: &d.share,
+            sd: d.sd.as_deref(),
+        },
+    ];
+    let load = short_number(d.load);
+    let what = format!("plastic share against ζ at p̄ = {load} {h}");
+    let title = super::title(state, &what);
+    let draw = |area: &super::Area, room| plot::draw(area, &title, (&x, &y), &series, room);
+    let short = format!(
+        "ζ {} … {} at p̄ = {load} {h} · {}",
+        short_number(zlo),
+        short_number(zhi),
+        d.surface
+    );
+    let hy = if state.size_effect {
+        " (H_y the size-dependent hardness at each ζ)"
+    } else {
+        ""
+    };
+    let caption = format!(
+        "Plastic share of the contact area against the magnification ζ at p̄ = {load} {h}{hy}: \
+         the boundary-element simulation (points, each ζ on its own grid of at least 8 nodes \
+         per shortest wavelength) beside the theory's finite-load areas (line, the {} model).",
+        state.model.label()
+    );
+    let lines = under(state, Some(short), &caption);
+    let mut desc =
+        crate::figure::scene_text::full_lines_of(state, "contact-sweep", sweep_span(state, d.load));
+    desc.push(format!("simulation = {}", d.surface));
+    render(&draw, &lines, &format!("{} — {what}", state.name), &desc)
+}
+
+/// The colours of the map's nodes: out of contact white, elastic grey,
+/// at the hardness the paper's plastic blue.
+pub(super) const NODE_ELASTIC: RGBColor = RGBColor(140, 140, 140);
