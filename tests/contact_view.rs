@@ -77,8 +77,9 @@ fn tab_reaches_the_contact_view_and_its_result_comes_in() {
         text.contains("simulation at p̄ = 0.01 H0: contact"),
         "{text}"
     );
-    assert!(text.contains("simulation 32² · seed 1"), "{text}");
-    assert!(text.contains("13 solved"), "{text}");
+    // Four surfaces by default, their thirteen loads each.
+    assert!(text.contains("simulation 32² · seeds 1–4"), "{text}");
+    assert!(text.contains("52 solved"), "{text}");
 }
 
 #[test]
@@ -93,17 +94,37 @@ fn the_readout_gives_the_simulation_and_the_theory_at_the_chosen_load() {
         roughtui::tui::views::contact::readout(&a.contact, 200, Glyphs::Braille, "H0");
     let line = lines.join("\n");
     assert!(!error);
-    use roughtui::tui::views::contact::{pct, share_pct};
+    use roughtui::tui::views::contact::{pct, pct_pm, share_pct};
+    // The mean ± sample standard deviation over the four seeds' areas.
+    let areas: Vec<f64> = std::iter::once(&a.contact.results)
+        .chain(&a.contact.seed_results)
+        .map(|rs| {
+            rs[a.contact.load]
+                .as_ref()
+                .unwrap()
+                .as_ref()
+                .unwrap()
+                .result
+                .area
+        })
+        .collect();
+    assert_eq!(areas.len(), 4);
+    let mean = areas.iter().sum::<f64>() / 4.0;
+    let sd = (areas.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / 3.0).sqrt();
+    let [st, _, pl] = a.contact.at_load(a.contact.load).unwrap();
+    assert_eq!((st.n, st.mean, st.sd), (4, mean, sd));
     assert_eq!(
         line,
         format!(
             "simulation at p̄ = 0.01 H0: contact {} %, {} % plastic · theory: {} %, {} % plastic",
-            pct(r.area),
-            share_pct(r.plastic_area, r.area),
+            pct_pm(mean, sd),
+            share_pct(pl.mean, mean),
             pct(t.total),
             share_pct(t.plastic, t.total)
         )
     );
+    assert!(line.contains(" ± "), "{line}");
+    assert_eq!(pct_pm(0.021, 0.001), "2.10 ± 0.10");
     // The numbers of docs/theory-vs-simulation.md (fig2, ζ = 16, seed 1).
     assert_eq!(pct(r.area), "3.91", "{line}");
     assert_eq!(pct(t.total), "2.31", "{line}");
@@ -185,7 +206,7 @@ fn a_coarse_answer_first_and_leaving_stops_the_work() {
     assert!(s.result.area > 0.0 && s.result.residual <= 1e-8);
     let text = screen(&a);
     assert!(
-        text.contains("simulation 256² coarse, 512² to come · seed 1"),
+        text.contains("simulation 256² coarse, 512² to come · seeds 1–4"),
         "{text}"
     );
     // Away: the job ends at its next iteration and nothing more is solved.
@@ -219,7 +240,7 @@ fn results_are_cached_and_shared_between_explorers() {
     settle(&mut a);
     settle(&mut b);
     let solves = engine.solves.load(std::sync::atomic::Ordering::Relaxed);
-    assert_eq!(solves, 13, "two explorers on one scene solve it once");
+    assert_eq!(solves, 52, "two explorers on one scene solve it once");
     // Away and back: from the cache, no job.
     a.state.params = a.state.params.with(Axis::Zeta, 2.0).unwrap();
     update(&mut a, Message::Tick);
@@ -227,7 +248,7 @@ fn results_are_cached_and_shared_between_explorers() {
     a.state.params = a.state.params.with(Axis::Zeta, 4.0).unwrap();
     update(&mut a, Message::Tick);
     assert!(!a.contact.busy());
-    assert_eq!(engine.solves.load(std::sync::atomic::Ordering::Relaxed), 26);
+    assert_eq!(engine.solves.load(std::sync::atomic::Ordering::Relaxed), 104);
     assert!(a.contact.results.iter().all(|r| r.is_some()));
     // Another seed is another surface.
     ch(&mut a, 'r');

@@ -12,7 +12,7 @@ use rough_model::{areas, psi_in_use, slopes, Axis, Model};
 use crate::contact::engine::{Engine, Outcome, Progress, Task, Ticket, Waker};
 use crate::contact::measured::{self, Fetch};
 use crate::contact::scene::{unsolvable, SceneKey};
-use crate::contact::{Sampling, DEFAULT_SEED, MAX_GRID};
+use crate::contact::{Sampling, Stat, DEFAULT_SEED, MAX_GRID};
 use crate::scene::State;
 
 /// Loads of the contact view, p̄/H_use: 1e-3 to 1, four per decade.
@@ -25,6 +25,10 @@ const THEORY_POINTS: usize = 96;
 /// its surface sampled at every second, fourth … node (256²: a load in
 /// tenths of a second), then on its own grid.
 pub const COARSE_GRID: usize = 256;
+/// Surfaces (seeds) the load plot averages over when the view opens; `R`
+/// steps through [`SEED_CHOICES`].
+pub const DEFAULT_SEEDS: u32 = 4;
+pub const SEED_CHOICES: [u32; 3] = [4, 16, 1];
 
 /// p̄/H of load `k` (0 … [`LOADS`] − 1).
 pub fn load_value(k: usize) -> f64 {
@@ -92,6 +96,12 @@ pub struct ContactPane {
     /// enough), solved first; which of `results` are theirs.
     pub coarse_tasks: Vec<Task>,
     pub coarse: Vec<bool>,
+    /// Surfaces averaged over (load plot of a power law): seeds `seed` …
+    /// `seed + seeds − 1`; the further seeds' tasks and results, each
+    /// [`LOADS`] long.
+    pub seeds: u32,
+    pub seed_tasks: Vec<Vec<Task>>,
+    pub seed_results: Vec<Vec<Option<Outcome>>>,
     pub progress: Progress,
     pub theory: Theory,
     request: Option<Request>,
@@ -122,6 +132,9 @@ impl Default for ContactPane {
             results: vec![],
             coarse_tasks: vec![],
             coarse: vec![],
+            seeds: DEFAULT_SEEDS,
+            seed_tasks: vec![],
+            seed_results: vec![],
             progress: Progress::default(),
             theory: Theory::default(),
             request: None,
@@ -147,6 +160,33 @@ impl ContactPane {
         self.results.get(self.load).and_then(Option::as_ref)
     }
 
+    /// The areas at load `k` over the seeds solved so far (total, elastic,
+    /// plastic; the coarse grid's answer alone while the first seed's is
+    /// not in).
+    pub fn at_load(&self, k: usize) -> Option<[Stat; 3]> {
+        let first = match self.results.get(k)? {
+            Some(Ok(s)) => s,
+            _ => return None,
+        };
+        let mut runs = vec![first.result];
+        if !self.coarse.get(k).copied().unwrap_or(false) {
+            runs.extend(self.seed_results.iter().filter_map(|r| match r.get(k) {
+                Some(Some(Ok(s))) => Some(s.result),
+                _ => None,
+            }));
+        }
+        Some([
+            Stat::of(runs.iter().map(|r| r.area)),
+            Stat::of(runs.iter().map(|r| r.elastic_area)),
+            Stat::of(runs.iter().map(|r| r.plastic_area)),
+        ])
+    }
+
+    /// Seeds of the load plot: those asked for (1 for a measured map).
+    pub fn seeds_asked(&self) -> usize {
+        1 + self.seed_tasks.len()
+    }
+
     /// Whether the chosen load shows the coarse grid's answer.
     pub fn chosen_is_coarse(&self) -> bool {
         !self.sweep && self.coarse.get(self.load).copied().unwrap_or(false)
@@ -166,6 +206,11 @@ impl ContactPane {
         let fine: Vec<Option<Outcome>> = self.tasks.iter().map(|t| self.engine.get(t)).collect();
         self.coarse = vec![false; fine.len()];
         self.results = fine;
+        self.seed_results = self
+            .seed_tasks
+            .iter()
+            .map(|ts| ts.iter().map(|t| self.engine.get(t)).collect())
+            .collect();
         for (i, t) in self.coarse_tasks.iter().enumerate() {
             if self.results.get(i).is_some_and(Option::is_none) {
                 if let Some(Ok(c)) = self.engine.get(t) {
@@ -181,6 +226,7 @@ impl ContactPane {
         self.coarse_tasks
             .iter()
             .chain(&self.tasks)
+            .chain(self.seed_tasks.iter().flatten())
             .copied()
             .collect()
     }
@@ -199,6 +245,12 @@ impl ContactPane {
             order.extend(0..c);
         }
         order.push(c + self.load);
+        // Each further seed's chosen load, so that the spread comes soon.
+        let mut at = c + self.tasks.len();
+        for ts in &self.seed_tasks {
+            order.push(at + self.load.min(ts.len().saturating_sub(1)));
+            at += ts.len();
+        }
         order
     }
 
@@ -251,6 +303,8 @@ impl ContactPane {
             self.results.clear();
             self.coarse_tasks.clear();
             self.coarse.clear();
+            self.seed_tasks.clear();
+            self.seed_results.clear();
             self.theory = Theory::default();
             return;
         }
@@ -269,6 +323,14 @@ impl ContactPane {
                 .as_ref()
                 .map(|r| r.tasks.clone())
                 .unwrap_or_default();
+            self.seed_tasks = vec![];
+            if !self.sweep && self.tasks.len() > LOADS {
+                self.seed_tasks = self.tasks[LOADS..]
+                    .chunks(LOADS)
+                    .map(<[Task]>::to_vec)
+                    .collect();
+                self.tasks.truncate(LOADS);
+            }
             self.coarse_tasks = if self.sweep {
                 vec![]
             } else {
@@ -280,7 +342,11 @@ impl ContactPane {
             self.request = request;
         }
         self.read_results();
-        let all_in = self.tasks.iter().all(|t| self.engine.get(t).is_some());
+        let all_in = self
+            .tasks
+            .iter()
+            .chain(self.seed_tasks.iter().flatten())
+            .all(|t| self.engine.get(t).is_some());
         if self.ticket.is_none() && !all_in {
             let order = self.job_order();
             let t = self
@@ -349,6 +415,14 @@ impl ContactPane {
             match SceneKey::with(state, self.seed, &self.sampling) {
                 Ok(key) => tasks = (0..LOADS).map(|k| Task::new(key, load_value(k))).collect(),
                 Err(e) => self.why_not = Some(format!("{e:#}")),
+            }
+            // The further seeds (a measured map has one surface).
+            if !tasks.is_empty() && !state.is_measured() {
+                for j in 1..u64::from(self.seeds) {
+                    let seed = self.seed.wrapping_add(j);
+                    let key = SceneKey::with(state, seed, &self.sampling).ok()?;
+                    tasks.extend((0..LOADS).map(|k| Task::new(key, load_value(k))));
+                }
             }
         }
         Some(Request { tasks, theory })
@@ -424,6 +498,25 @@ pub fn on_key(app: &mut super::app::App, msg: super::app::Message) {
             app.contact.load = k;
         }
         Message::ContactSweep => pane.sweep = !pane.sweep,
+        Message::ContactSeeds if app.state.is_measured() => app.set_status(
+            "a measured map is one surface: the simulation solves its own heights",
+            true,
+        ),
+        Message::ContactSeeds => {
+            let at = SEED_CHOICES.iter().position(|&s| s == pane.seeds);
+            pane.seeds = SEED_CHOICES[at.map_or(0, |i| (i + 1) % SEED_CHOICES.len())];
+            let n = pane.seeds;
+            let last = pane.seed.wrapping_add(u64::from(n) - 1);
+            let text = if n == 1 {
+                format!("one surface: seed {}", pane.seed)
+            } else {
+                format!(
+                    "{n} surfaces: seeds {}–{last}, mean ± sd (R: more)",
+                    pane.seed
+                )
+            };
+            app.set_status(text, false);
+        }
         Message::ContactSeed if app.state.is_measured() => app.set_status(
             "a measured map has no seed: the simulation solves its own heights",
             true,
