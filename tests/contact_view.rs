@@ -248,7 +248,10 @@ fn results_are_cached_and_shared_between_explorers() {
     a.state.params = a.state.params.with(Axis::Zeta, 4.0).unwrap();
     update(&mut a, Message::Tick);
     assert!(!a.contact.busy());
-    assert_eq!(engine.solves.load(std::sync::atomic::Ordering::Relaxed), 104);
+    assert_eq!(
+        engine.solves.load(std::sync::atomic::Ordering::Relaxed),
+        104
+    );
     assert!(a.contact.results.iter().all(|r| r.is_some()));
     // Another seed is another surface.
     ch(&mut a, 'r');
