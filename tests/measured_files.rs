@@ -246,6 +246,12 @@ fn every_bad_input_is_status_2_with_file_line_and_problem() {
             "line 5: x is not uniformly spaced",
         ),
         (
+            "validity",
+            "X;Y;valid\r\n[mm];[mm];[1/0]\r\n0;1.5;1\r\n0.5;1.2;1\r\n1;1.7;2\r\n1.5;1.1;1\r\n"
+                .to_string(),
+            "line 5: the validity column holds 2: 1 marks a measured point, 0 one not measured",
+        ),
+        (
             "q-order",
             psd(&|i, q| (if i == 3 { 4e5 } else { q }, q.powf(-3.6))),
             "line 5: q must increase",
@@ -298,5 +304,67 @@ fn every_bad_input_is_status_2_with_file_line_and_problem() {
         }
         // The file is left as it was.
         assert_eq!(std::fs::metadata(path).unwrap().len(), before);
+    }
+}
+
+/// A Dektak CSV export and an .hfm profile (three columns a row: empty
+/// trailing cells, a validity column) read as line scans through the
+/// command line: Rq and RΔq in the moments CSV are SurfaceTopography's on
+/// the same values (scripts/profile_columns_reference.py), the .hfm's 33
+/// points not measured filled and said.
+#[test]
+fn three_column_profiles_export_surfacetopographys_numbers() {
+    let reference = std::fs::read_to_string(data("profile_columns_reference.txt")).unwrap();
+    for (file, tol, note) in [
+        (
+            "dektak_profile.csv",
+            1e-12,
+            "read as Windows-1252 (Latin-1) text: line 4 is not UTF-8",
+        ),
+        (
+            "hfm_profile.hfm",
+            1e-11,
+            "33 points not measured (validity 0) read as undefined",
+        ),
+    ] {
+        let want: Vec<f64> = reference
+            .lines()
+            .find(|l| l.starts_with(&format!("real {file} ")))
+            .unwrap()
+            .split_whitespace()
+            .skip(2)
+            .map(|w| w.parse().unwrap())
+            .collect();
+        let out = run(&[
+            "export",
+            "--surface",
+            data(file).to_str().unwrap(),
+            "--view",
+            "moments",
+        ]);
+        assert_eq!(out.status.code(), Some(0));
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert!(
+            err.starts_with(&format!("roughtui: note: {note}\n")),
+            "{file}: {err}"
+        );
+        let csv = String::from_utf8(out.stdout).unwrap();
+        assert!(csv.lines().any(|l| l == format!("# {note}")), "{file}");
+        // "# Rq = 1.74e-8 m, RΔq = 0.0081 (real space, …)"
+        let line = csv.lines().find(|l| l.starts_with("# Rq = ")).unwrap();
+        let rq: f64 = line[7..].split(' ').next().unwrap().parse().unwrap();
+        let rdq: f64 = line
+            .split("RΔq = ")
+            .nth(1)
+            .unwrap()
+            .split(' ')
+            .next()
+            .unwrap()
+            .parse()
+            .unwrap();
+        assert!(
+            rel(rq, want[0]) < tol && rel(rdq, want[1]) < tol,
+            "{file}: {line} vs {want:?}"
+        );
     }
 }

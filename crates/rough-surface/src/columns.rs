@@ -16,12 +16,13 @@
 //!    a header line `# q C` or `# x z`.
 //!
 //! A line scan's x must then be uniform: every x within 1% of the spacing
-//! (plus the rounding of its printed digits: half a unit in the last of
-//! the most significant digits any x of the column shows) of x_0 + i Δx, with
-//! Δx = (x_last − x_0)/(n − 1); a jitter of 1% of Δx moves the phase of
-//! the shortest wave by at most 2π·1%/2, and its PSD by ~1e-3. The scan
-//! spans L = n Δx (SurfaceTopography's XYZ reader, whose own test is an
-//! absolute 1e-6 in file units).
+//! (plus the rounding of its printed digits, see [`Precision`]) of the
+//! least-squares line x_i = a + i Δx, so that the rounding of the first and
+//! last x does not set the spacing (a Dektak export prints x to 0.1 µm at a
+//! spacing of 0.156 µm); a jitter of 1% of Δx moves the phase of the
+//! shortest wave by at most 2π·1%/2, and its PSD by ~1e-3. The scan spans
+//! L = n Δx (as SurfaceTopography's XYZ reader, which takes Δx from the
+//! end points and reads x uniform only to an absolute 1e-6 in file units).
 
 use rough_model::Dim;
 
@@ -39,7 +40,10 @@ enum Hint {
 }
 
 fn hint(lines: &[(usize, &str)], header: &Header) -> Option<Hint> {
-    let (mut psd, mut scan) = (false, header.x_unit.is_some());
+    let (mut psd, mut scan) = (
+        false,
+        header.x_unit.is_some() || crate::colunits::names_profile(lines),
+    );
     for (_, text) in lines {
         let lower = text.to_lowercase();
         let words: Vec<&str> = lower
@@ -107,6 +111,45 @@ fn digits(field: &str) -> i32 {
         .count() as i32
 }
 
+/// The power of ten of the last digit printed in `field` ("0.2" → −1,
+/// "1.250e-06" → −9, "1500" → 0).
+fn last_place(field: &str) -> i32 {
+    let (mantissa, exp) = match field.split_once(['e', 'E']) {
+        Some((m, e)) => (m, e.parse::<i32>().unwrap_or(0)),
+        None => (field, 0),
+    };
+    let decimals = mantissa.split_once('.').map_or(0, |(_, f)| {
+        f.chars().take_while(char::is_ascii_digit).count() as i32
+    });
+    exp.saturating_sub(decimals)
+}
+
+/// How finely a column of x is printed: the most significant digits any
+/// field shows (a `%e` format shows the same number everywhere, the
+/// shortest round-trip format up to 17 somewhere) and the finest decimal
+/// place any shows (a fixed `%.1f` format, as a Dektak export's, the same
+/// place everywhere). An x is known to half a unit in the coarser of the
+/// two: its `digits`-th significant digit, or the column's `place`.
+#[derive(Clone, Copy, Debug)]
+struct Precision {
+    digits: i32,
+    place: i32,
+}
+
+impl Precision {
+    fn of(fields: &[&str]) -> Precision {
+        Precision {
+            digits: fields.iter().map(|f| digits(f)).max().unwrap_or(17).max(1),
+            place: fields.iter().map(|f| last_place(f)).min().unwrap_or(-300),
+        }
+    }
+
+    /// Half a unit in the last digit `x` is known to.
+    fn resolution(self, x: f64) -> f64 {
+        resolution(x, self.digits).max(0.5 * 10f64.powi(self.place.max(-300)))
+    }
+}
+
 /// Half a unit in the `d`-th significant digit of `x` (0 for x = 0: a
 /// printed zero is exact).
 fn resolution(x: f64, d: i32) -> f64 {
@@ -117,12 +160,27 @@ fn resolution(x: f64, d: i32) -> f64 {
     }
 }
 
+/// The least-squares line through (i, x_i): its intercept and slope.
+fn line_fit(x: &[f64]) -> (f64, f64) {
+    let n = x.len();
+    let mi = (n - 1) as f64 / 2.0;
+    let mx = x.iter().sum::<f64>() / n as f64;
+    let (mut sii, mut six) = (0.0, 0.0);
+    for (i, v) in x.iter().enumerate() {
+        let d = i as f64 - mi;
+        sii += d * d;
+        six += d * (v - mx);
+    }
+    let dx = six / sii;
+    (mx - dx * mi, dx)
+}
+
 /// The spacing of uniform x, or the first x off the grid (its index).
 fn uniform(x: &[f64], fields: &[&str]) -> Result<f64, (usize, Problem)> {
     let n = x.len();
     let (x0, xl) = (x[0], x[n - 1]);
-    let dx = (xl - x0) / (n - 1) as f64;
-    if dx.is_nan() || dx <= 0.0 {
+    let (a, dx) = line_fit(x);
+    if xl <= x0 || xl.is_nan() || x0.is_nan() || dx.is_nan() || dx <= 0.0 {
         return Err((
             n - 1,
             Problem::Unknown(format!(
@@ -130,14 +188,25 @@ fn uniform(x: &[f64], fields: &[&str]) -> Result<f64, (usize, Problem)> {
             )),
         ));
     }
-    // The column's printing precision: the most significant digits any x
-    // shows (a fixed format shows the same number everywhere; the
-    // shortest round-trip format shows up to 17 somewhere).
-    let d = fields.iter().map(|f| digits(f)).max().unwrap_or(17).max(1);
-    let ends = resolution(x0, d) + resolution(xl, d);
+    let p = Precision::of(fields);
+    // The fitted line's own error: each x is off by at most its
+    // resolution, which moves the line by at most twice the largest.
+    let line = 2.0 * p.resolution(x0).max(p.resolution(xl));
     for (i, &xi) in x.iter().enumerate() {
-        let expected = x0 + i as f64 * dx;
-        if (xi - expected).abs() > 0.01 * dx + resolution(xi, d) + ends {
+        // Off the line, or a step off the spacing (a sample left out
+        // moves the line by half a step only).
+        let (expected, off) = match i.checked_sub(1).map(|j| x[j]) {
+            Some(prev)
+                if (xi - prev - dx).abs() > 0.02 * dx + p.resolution(xi) + p.resolution(prev) =>
+            {
+                (prev + dx, true)
+            }
+            _ => {
+                let e = a + i as f64 * dx;
+                (e, (xi - e).abs() > 0.01 * dx + p.resolution(xi) + line)
+            }
+        };
+        if off {
             return Err((
                 i,
                 Problem::NonUniform {
@@ -310,6 +379,54 @@ mod tests {
         assert_eq!(resolution(1.25e-6, 4), 0.5e-9);
         assert_eq!(resolution(350.0, 2), 5.0);
         assert_eq!(resolution(0.0, 2), 0.0);
+    }
+
+    #[test]
+    fn printed_places() {
+        assert_eq!(last_place("0.2"), -1);
+        assert_eq!(last_place("1499.8"), -1);
+        assert_eq!(last_place("1.250e-06"), -9);
+        assert_eq!(last_place("1500"), 0);
+        assert_eq!(last_place("0.5e-2147483648"), i32::MIN);
+        let p = Precision::of(&["0.0", "0.2", "1499.8"]);
+        assert_eq!((p.digits, p.place), (5, -1));
+        // A fixed-point column is known to its decimal place everywhere.
+        assert!((p.resolution(0.2) - 0.05).abs() < 1e-15);
+        let p = Precision::of(&["1.250e-06", "1.250e-03"]);
+        assert!((p.resolution(1.25e-3) - 0.5e-6).abs() < 1e-20);
+    }
+
+    /// x = 0.156 i printed to one decimal, as a Dektak export prints it: the
+    /// least-squares spacing (numpy's `polyfit(i, round(0.156 i, 1), 1)`)
+    /// is within 0.07 % of the true one, where the end points' (6.1 − 0)/39
+    /// is 0.26 % off; the end points' rounding to 5 significant digits used
+    /// to refuse the column as not uniform.
+    #[test]
+    fn least_squares_spacing_of_few_digits() {
+        let fields: Vec<String> = (0..40)
+            .map(|i| format!("{:.1}", 0.156 * i as f64))
+            .collect();
+        let refs: Vec<&str> = fields.iter().map(String::as_str).collect();
+        let x: Vec<f64> = refs.iter().map(|f| f.parse().unwrap()).collect();
+        let dx = uniform(&x, &refs).unwrap();
+        assert!((dx - 0.15590056285178233).abs() < 1e-14, "{dx}");
+        assert!(((dx - 0.156) / 0.156).abs() < 7e-4);
+        let ends = (x[39] - x[0]) / 39.0;
+        assert!(((ends - 0.156) / 0.156).abs() > 2.5e-3);
+        // A 1500 µm scan of 9600 points printed so (Dektak's own layout).
+        let fields: Vec<String> = (0..9600)
+            .map(|i| format!("{:.1}", 0.15625 * i as f64 + 0.003))
+            .collect();
+        let refs: Vec<&str> = fields.iter().map(String::as_str).collect();
+        let x: Vec<f64> = refs.iter().map(|f| f.parse().unwrap()).collect();
+        let dx = uniform(&x, &refs).unwrap();
+        assert!(((dx - 0.15625) / 0.15625).abs() < 1e-6, "{dx}");
+        // A sample left out is still found.
+        let mut gap = x.clone();
+        gap.remove(4000);
+        let mut f2 = refs.clone();
+        f2.remove(4000);
+        assert!(uniform(&gap, &f2).is_err());
     }
 
     #[test]

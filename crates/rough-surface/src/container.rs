@@ -10,6 +10,7 @@ use std::io::{Cursor, Read};
 
 use zip::ZipArchive;
 
+use crate::detrend::Detrend;
 use crate::error::{Failure, Problem};
 use crate::measured::{Measured, Options};
 use crate::units::HeightUnit;
@@ -30,6 +31,11 @@ struct Topography {
     name: String,
     file: String,
     unit: Option<String>,
+    /// The form contact.engineering removes (`detrend_mode`: `center`,
+    /// `height`, `curvature`; `slope` has no counterpart here).
+    detrend: Option<Detrend>,
+    /// contact.engineering's height scale (`height_scale`), as written.
+    height_scale: Option<String>,
 }
 
 /// Whether the zip `bytes` is a contact.engineering container.
@@ -82,6 +88,15 @@ fn topographies(meta: &str) -> Vec<Topography> {
                 top.name = v.to_string();
             } else if let Some(v) = value(line, "unit") {
                 top.unit = Some(v.to_string());
+            } else if let Some(v) = value(line, "height_scale") {
+                top.height_scale = Some(v.to_string());
+            } else if let Some(v) = value(line, "detrend_mode") {
+                top.detrend = match v {
+                    "center" => Some(Detrend::Mean),
+                    "height" => Some(Detrend::Plane),
+                    "curvature" => Some(Detrend::Curvature),
+                    _ => None,
+                };
             }
         }
         if let Some(v) = value(line, "original") {
@@ -95,6 +110,11 @@ fn topographies(meta: &str) -> Vec<Topography> {
         }
     }
     out
+}
+
+/// A member's extension as the readers take it.
+fn ext_of(file: &str) -> String {
+    crate::readers::gz::extension(std::path::Path::new(file))
 }
 
 /// How a member's bytes (named by their extension) are read as a file.
@@ -136,7 +156,43 @@ pub(crate) fn read(bytes: &[u8], opts: &Options, parse: Parse<'_>) -> Result<Mea
     };
     let one = |zip: &mut ZipArchive<Cursor<&[u8]>>, t: &Topography| -> Result<Measured, Failure> {
         let data = member(zip, &t.file, crate::limits::MAX_BYTES)?;
-        let ext = crate::readers::gz::extension(std::path::Path::new(&t.file));
+        // The form contact.engineering removes, unless --detrend says
+        // another (periodic data keep their mean).
+        let inner = match t.detrend {
+            Some(d) if opts.detrend.is_none() && !opts.periodic && d != inner.detrend_mode() => {
+                Options {
+                    detrend: Some(d),
+                    ..inner.clone()
+                }
+            }
+            _ => inner.clone(),
+        };
+        let from_meta = inner.detrend != opts.detrend;
+        // A text file's height scale set on contact.engineering (an
+        // instrument's file gives its own, which meta.yml repeats).
+        let scale = t
+            .height_scale
+            .as_deref()
+            .filter(|v| v.parse::<f64>() != Ok(1.0))
+            .filter(|_| {
+                crate::sniff::format(&data, &ext_of(&t.file)) == crate::sniff::Format::Text
+            });
+        let parse = |data: &[u8], o: &Options, ext: &str| {
+            parse(data, o, ext).map(|mut m| {
+                if from_meta {
+                    for n in &mut m.notes {
+                        *n = n.replace("(--detrend ", "(meta.yml's detrend_mode ");
+                    }
+                }
+                if let Some(v) = scale {
+                    m.notes.push(format!(
+                        "meta.yml's height_scale {v} is not applied: heights as the file gives them"
+                    ));
+                }
+                m
+            })
+        };
+        let ext = ext_of(&t.file);
         let m = parse(&data, &inner, &ext)?;
         // The file names no unit: the container's says it.
         let unitless = m
@@ -227,7 +283,7 @@ mod tests {
         let meta = "creation_time: x\nsurfaces:\n- category: exp\n  name: s\n  topographies:\n  \
                     - creator:\n      name: Lars\n    datafile:\n      original: a_X.asc\n    \
                     name: a.asc\n    size: !!python/tuple\n    - 2.0\n    unit: nm\n  - \
-                    datafile:\n      original: b.001\n    name: \"b 2\"\n    unit: mm\n  \
+                    datafile:\n      original: b.001\n    detrend_mode: curvature\n    height_scale: 0.5\n    name: \"b 2\"\n    unit: mm\n  \
                     name: the surface\n";
         assert_eq!(
             topographies(meta),
@@ -235,12 +291,16 @@ mod tests {
                 Topography {
                     name: "a.asc".into(),
                     file: "a_X.asc".into(),
-                    unit: Some("nm".into())
+                    unit: Some("nm".into()),
+                    detrend: None,
+                    height_scale: None,
                 },
                 Topography {
                     name: "b 2".into(),
                     file: "b.001".into(),
-                    unit: Some("mm".into())
+                    unit: Some("mm".into()),
+                    detrend: Some(Detrend::Curvature),
+                    height_scale: Some("0.5".into()),
                 }
             ]
         );

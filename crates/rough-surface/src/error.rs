@@ -139,13 +139,18 @@ impl fmt::Display for Problem {
                 x,
                 expected,
                 spacing,
-            } => write!(
-                f,
-                "x is not uniformly spaced: x = {x} where the spacing {spacing} \
-                 from the first and last x puts {expected} (a line scan needs \
+            } => {
+                // Computed numbers to 6 significant digits, the file's x as written.
+                let g = |v: &f64| format!("{v:.5e}").parse::<f64>().unwrap_or(*v);
+                let (expected, spacing) = (g(expected), g(spacing));
+                write!(
+                    f,
+                    "x is not uniformly spaced: x = {x} where the least-squares spacing \
+                 {spacing} puts {expected} (a line scan needs \
                  uniform x, to 1% of the spacing beyond the rounding of the \
                  printed digits)"
-            ),
+                )
+            }
             Problem::Ambiguous => write!(
                 f,
                 "two columns that could be a line scan (x z) or a PSD table \

@@ -42,6 +42,7 @@ mod stream;
 mod text;
 mod threads;
 mod units;
+mod validity;
 mod x3p;
 
 pub use amplitude::Amplitude;

@@ -425,6 +425,11 @@ pub(crate) fn from_scan(
             Problem::Several("several channels: one channel per file, please".to_string()),
         ));
     }
+    let mut scan = scan;
+    let profile_notes = match text {
+        Some(_) => crate::validity::as_profile(&mut scan, &header)?,
+        None => Vec::new(),
+    };
     if scan.cols == 3 && scan.rows() >= 4 && !header.has_size() {
         return Err((
             scan.row_lines.first().copied(),
@@ -441,10 +446,11 @@ pub(crate) fn from_scan(
             "a height matrix: its sizes' unit is its header's ('# Width: 12 µm')",
         ));
     }
-    let (kind, computed) = match text {
+    let (kind, mut computed) = match text {
         Some(text) if columns => columns::read(text, scan, &header, opts)?,
         _ => matrix::read(scan, &header, opts)?,
     };
+    computed.notes.splice(0..0, profile_notes);
     if let (Some(u), Kind::Psd { .. }) = (opts.lateral_unit, kind) {
         return Err(no_lateral(u, "a PSD table"));
     }

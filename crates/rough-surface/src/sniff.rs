@@ -36,10 +36,8 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
     if let Some(n) = crate::readers::sniff(bytes, ext) {
         return Format::Native(n);
     }
-    if starts(b"\xff\xfe") || starts(b"\xfe\xff") {
-        return Format::Other(
-            "UTF-16 text (Windows' \"Unicode\"): save it as UTF-8 or ANSI text".to_string(),
-        );
+    if utf16(bytes).is_some() {
+        return Format::Text;
     }
     if starts(b"GWYO") || starts(b"GWYQ") {
         return other("a Gwyddion file of another version");
@@ -142,10 +140,52 @@ const CP1252: [char; 32] = [
     '\u{90}', '‘', '’', '“', '”', '•', '–', '—', '˜', '™', 'š', '›', 'œ', '\u{9d}', 'ž', 'Ÿ',
 ];
 
-/// Text bytes as a string: UTF-8 when they are, else Windows-1252
-/// (Latin-1's superset, what Gwyddion and instruments on Windows write:
-/// `µm` as byte 0xB5), with a note saying so.
+/// Whether `bytes` start with a UTF-16 byte-order mark (Windows'
+/// "Unicode" text), big-endian or not.
+fn utf16(bytes: &[u8]) -> Option<bool> {
+    match bytes {
+        [0xff, 0xfe, ..] => Some(false),
+        [0xfe, 0xff, ..] => Some(true),
+        _ => None,
+    }
+}
+
+/// Text bytes as a string: UTF-16 after its byte-order mark (Windows'
+/// "Unicode"), UTF-8 when they are, else Windows-1252 (Latin-1's
+/// superset, what Gwyddion and instruments on Windows write: `µm` as byte
+/// 0xB5), with a note where not UTF-8.
 pub(crate) fn decode(bytes: &[u8]) -> Result<(Cow<'_, str>, Option<String>), Failure> {
+    if let Some(big) = utf16(bytes) {
+        let unit = |c: &[u8]| {
+            let b = [c[0], c[1]];
+            if big {
+                u16::from_be_bytes(b)
+            } else {
+                u16::from_le_bytes(b)
+            }
+        };
+        // An odd last byte is a unit cut in half: a lone surrogate stands
+        // for it, refused below.
+        let units = bytes[2..]
+            .chunks_exact(2)
+            .map(unit)
+            .chain((bytes.len() % 2 == 1).then_some(0xdc00));
+        let mut t = String::with_capacity(bytes.len() / 2);
+        let mut line = 1;
+        for c in char::decode_utf16(units) {
+            match c {
+                Ok(c) if c != '\0' => {
+                    line += usize::from(c == '\n');
+                    t.push(c);
+                }
+                _ => return Err((Some(line), Problem::NotText)),
+            }
+        }
+        return Ok((
+            Cow::Owned(t),
+            Some("read as UTF-16 text (Windows' \"Unicode\")".to_string()),
+        ));
+    }
     match std::str::from_utf8(bytes) {
         Ok(t) => Ok((Cow::Borrowed(t), None)),
         Err(e) => {
@@ -225,7 +265,20 @@ mod tests {
         head.extend_from_slice(&[7, 0, 0, 0]);
         assert!(other(&head, "")
             .starts_with("a binary file whose first lines are text ('# Width: 1 um')"));
-        assert!(other(b"\xff\xfe1\0 \0", "txt").starts_with("UTF-16 text"));
+        assert_eq!(format(b"\xff\xfe1\0 \0", "txt"), Format::Text);
+        let (t, note) = decode(b"\xff\xfex\0 \0\xb5\0m\0\n\x001\0").unwrap();
+        assert_eq!(
+            (t.as_ref(), note.unwrap().as_str()),
+            ("x µm\n1", "read as UTF-16 text (Windows' \"Unicode\")")
+        );
+        assert_eq!(
+            decode(b"\xfe\xff\0x\0\n\0\0").unwrap_err(),
+            (Some(2), Problem::NotText)
+        );
+        assert_eq!(
+            decode(b"\xff\xfe1\0\n\0\x32").unwrap_err(),
+            (Some(2), Problem::NotText)
+        );
     }
 
     #[test]

@@ -150,7 +150,13 @@ fn read_in(
         return whole(first, file);
     };
     let matrix = match h.first {
-        Some((_, _, cols)) => !crate::ce::is_ce(&h.header) && header.is_matrix(cols),
+        // Three columns without a size are a profile or a point cloud,
+        // read whole.
+        Some((_, _, cols)) => {
+            !crate::ce::is_ce(&h.header)
+                && header.is_matrix(cols)
+                && (cols != 3 || header.has_size())
+        }
         None => false,
     };
     if !matrix {
@@ -362,11 +368,17 @@ mod tests {
             let cut = t.trim_end();
             assert_eq!(streamed(cut, block).unwrap().table, whole.table);
         }
-        // Two columns are not streamed.
+        // Two columns are not streamed, nor three without a size (a
+        // profile's validity column or empty cells, or a point cloud).
         let two = "1 2\n3 4\n5 6\n7 8\n";
         assert!(matches!(
             read_in(two.as_bytes(), (16, ""), 0, 4).unwrap(),
             Streamed::Whole(b) if b == two.as_bytes()
+        ));
+        let three = "X;Y;valid\n1;2;1\n3;4;0\n5;6;1\n7;8;1\n";
+        assert!(matches!(
+            read_in(three.as_bytes(), (40, ""), 0, 4).unwrap(),
+            Streamed::Whole(b) if b == three.as_bytes()
         ));
     }
 }

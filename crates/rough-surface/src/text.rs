@@ -203,7 +203,9 @@ fn columns(first: (usize, bool), rest: &str) -> usize {
     for r in rows {
         let Ok((n, open)) = r else { break };
         all_open &= open;
-        one_more |= n + usize::from(open) == first.0 + 1;
+        // A full row past the first's cells (not one like the first, nor
+        // a row cut short).
+        one_more |= !open && n == first.0 + 1;
     }
     first.0 + usize::from(first.1 && one_more && !all_open)
 }
@@ -383,6 +385,8 @@ mod tests {
             (2, vec![Some(1.), Some(2.), Some(3.), Some(4.)])
         );
         assert_eq!(nan("1,2,,\n3,4,,\n").0, 3);
+        // A Dektak profile cut inside its last row: still three cells.
+        assert_eq!(head("1,2,,\n3,4,,\n5,6\n").unwrap().first.unwrap().2, 3);
         assert_eq!(nan("nan 2 NaN -nan\n").1, vec![None, Some(2.), None, None]);
         assert_eq!(
             head("1 inf\n").err().unwrap(),

@@ -20,6 +20,9 @@ pub(crate) fn per_metre(u: &str) -> Option<f64> {
         "nm" => 1e9,
         "Å" | "A" => 1e10,
         "pm" => 1e12,
+        // A unit as a word in any case ("Micrometer" in a Dektak header);
+        // symbols keep theirs (mm is not Mm).
+        _ if u.chars().count() > 3 && u != u.to_lowercase() => return per_metre(&u.to_lowercase()),
         _ => return None,
     })
 }

@@ -163,7 +163,7 @@ fn non_uniform_line_scans() {
     assert_eq!(
         refuse(t),
         "bad surface FILE, line 5: x is not uniformly spaced: x = 0.0000035 where \
-         the spacing 0.000001 from the first and last x puts 0.000003 (a line scan \
+         the least-squares spacing 0.00000105 puts 0.00000305 (a line scan \
          needs uniform x, to 1% of the spacing beyond the rounding of the printed digits)"
     );
     // Without the header line the content says it is a scan.
@@ -299,6 +299,89 @@ fn other_refusals() {
     assert!(e.to_string().contains(": cannot read: "), "{e}");
 }
 
+/// Three columns: a profile's validity column or empty trailing cells
+/// (read as x z, `profile_columns.rs`), else an XYZ point cloud.
+#[test]
+fn three_column_profiles() {
+    let hfm = |rows: &[&str]| {
+        let mut t = String::from("X;Y;valid\r\n[mm];[mm];[1/0]\r\n");
+        for r in rows {
+            t.push_str(r);
+            t.push_str("\r\n");
+        }
+        t
+    };
+    let good = [
+        "0.0;1.5;1",
+        "0.5;1.2;1",
+        "1.0;1.7;1",
+        "1.5;1.1;1",
+        "2.0;1.4;1",
+    ];
+    let f = file(hfm(&good).as_bytes());
+    assert!(read(&f.path, &Options::default()).is_ok());
+    let mut bad = good;
+    bad[2] = "1.0;1.7;2";
+    assert_eq!(
+        refuse(&hfm(&bad)),
+        "bad surface FILE, line 5: the validity column holds 2: 1 marks a measured \
+         point, 0 one not measured"
+    );
+    bad[2] = "1.0;1.7;";
+    assert_eq!(
+        refuse(&hfm(&bad)),
+        "bad surface FILE, line 5: the validity column holds nothing: 1 marks a \
+         measured point, 0 one not measured"
+    );
+    let none: Vec<String> = good.iter().map(|r| r.replace(";1", ";0")).collect();
+    let none: Vec<&str> = none.iter().map(String::as_str).collect();
+    assert!(
+        refuse(&hfm(&none)).contains("5 of 5 points (100 %) are undefined"),
+        "{}",
+        refuse(&hfm(&none))
+    );
+    assert_eq!(
+        refuse(&hfm(&good[..3])),
+        "bad surface FILE: 3 points along the line: at least 4 are needed"
+    );
+    // A Dektak export: the header block, then `x,z,,`.
+    let dektak = "Scan Parameters\r\r\nStylus,Radius: 2.5 um\r\nScan Data\r\r\n\
+                  Lateral um,Raw Micrometer,\r\n";
+    let rows = [
+        "0.0,-0.00933,,",
+        "0.2,-0.00760,,",
+        "0.3,-0.00644,,",
+        "0.5,-0.00498,,",
+    ];
+    let t = format!("{dektak}{}\r\n", rows.join("\r\n"));
+    let f = file(t.as_bytes());
+    assert!(read(&f.path, &Options::default()).is_ok());
+    // Cut off inside its last row.
+    assert_eq!(
+        refuse(&t[..t.len() - 5]),
+        "bad surface FILE, line 8: 2 columns where the first row has 3"
+    );
+    // x running backwards.
+    let back = format!(
+        "{dektak}{}\r\n",
+        rows.iter().rev().cloned().collect::<Vec<_>>().join("\r\n")
+    );
+    assert!(refuse(&back).starts_with("bad surface FILE, line 8: x must increase"));
+    // A third number in one row: no longer empty trailing cells, so a
+    // point cloud's message, as any three numbers a row.
+    let cloud = t.replacen("0.2,-0.00760,,", "0.2,-0.00760,7,", 1);
+    assert!(refuse(&cloud).contains("three numbers a row: looks like an XYZ point cloud"));
+    assert_eq!(
+        refuse("x y z\n0 0 1\n1 0 2\n0 1 3\n1 1 4\n"),
+        "bad surface FILE, line 2: three numbers a row: looks like an XYZ point cloud (x y z), \
+         a regular grid of heights is needed: open it in Gwyddion as XYZ data, rasterize it \
+         (XYZ Data → Rasterize) and save it as .gwy or .x3p (or File → Save As → ASCII data \
+         matrix)"
+    );
+    // A validity column named, but the values of an XYZ cloud: refused.
+    assert!(refuse("x;y;valid\n0;0;5\n1;0;2\n0;1;3\n1;1;4\n").contains("validity column holds 5"));
+}
+
 #[test]
 fn a_file_is_never_changed() {
     let text = map(SIZE, &GOOD);
@@ -326,11 +409,54 @@ proptest! {
             Just("Height: 1 nm".to_string()), Just("x".to_string()),
             Just("Columns: Wavevector (1/m), PSD (m³)".to_string()),
             Just("q/π × 2D PSD".to_string()), Just(",".to_string()),
+            Just("X;Y;valid".to_string()), Just("[mm];[mm];[1/0]".to_string()),
+            Just("Lateral um,Raw Micrometer,".to_string()), Just(",,".to_string()),
+            Just(";".to_string()),
         ], 0..6), 0..12),
         periodic in any::<bool>(),
         pixel in prop::option::of(prop_oneof![Just(1e-6), Just(0.0), Just(f64::NAN)]),
     ) {
         let text: String = lines.iter().map(|l| l.join(" ") + "\n").collect();
         let _ = parse(text.as_bytes(), &Options { periodic, pixel_size: pixel, ..Options::default() });
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+
+    /// The Dektak and .hfm profiles cut anywhere and with a byte changed:
+    /// a result or a refusal, never a panic.
+    #[test]
+    fn cut_and_changed_profiles_never_panic(
+        which in any::<bool>(),
+        cut in 0.0f64..1.0,
+        at in 0.0f64..1.0,
+        byte in prop_oneof![Just(b';'), Just(b','), Just(b'0'), Just(b'\n'), Just(b'-'), Just(b'e'), any::<u8>()],
+    ) {
+        let name = if which { "dektak_profile.csv" } else { "hfm_profile.hfm" };
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data").join(name);
+        let mut bytes = std::fs::read(path).unwrap();
+        bytes.truncate((cut * bytes.len() as f64) as usize);
+        if !bytes.is_empty() {
+            let i = ((at * bytes.len() as f64) as usize).min(bytes.len() - 1);
+            bytes[i] = byte;
+        }
+        let _ = parse(&bytes, &Options::default());
+    }
+
+    /// Anything after a UTF-16 byte-order mark, odd lengths and lone
+    /// surrogates included: a result or a refusal, never a panic.
+    #[test]
+    fn utf16_never_panics(
+        big in any::<bool>(),
+        text in "[0-9 ,;.\n\re-]{0,80}",
+        tail in prop::collection::vec(any::<u8>(), 0..5),
+    ) {
+        let mut bytes = if big { vec![0xfe, 0xff] } else { vec![0xff, 0xfe] };
+        for u in text.encode_utf16() {
+            bytes.extend(if big { u.to_be_bytes() } else { u.to_le_bytes() });
+        }
+        bytes.extend(tail);
+        let _ = parse(&bytes, &Options::default());
     }
 }

@@ -316,3 +316,93 @@ fn gzip_compressed_text() {
         "{e}"
     );
 }
+
+/// A contact.engineering container's stylus profile is read as
+/// contact.engineering reads it: meta.yml's `detrend_mode: curvature`
+/// (said in a note), its unit mm — Rq equal to SurfaceTopography's
+/// `read_container` (scripts/container_reference.py) within 1e-12, RΔq
+/// too once scaled by its end points' spacing over our least-squares one
+/// (1 + 2.5e-7); `--detrend` overrides meta.yml.
+#[test]
+fn a_containers_detrend_mode_is_read() {
+    let text = std::fs::read_to_string(dir().join("container_reference.txt")).unwrap();
+    let w: Vec<&str> = text
+        .lines()
+        .find(|l| !l.starts_with('#'))
+        .unwrap()
+        .split_whitespace()
+        .collect();
+    let num = |s: &str| s.parse::<f64>().unwrap();
+    let (rq, rdq, ends, ls) = (num(w[3]), num(w[4]), num(w[5]), num(w[6]));
+    let opts = Options {
+        series: Some(w[1].to_string()),
+        ..Options::default()
+    };
+    let m = read(&dir().join(w[0]), &opts).unwrap();
+    assert!(matches!(m.kind, Kind::Line { n: 3001, .. }), "{:?}", m.kind);
+    assert!(
+        m.notes.iter().any(|n| n
+            == "parabola removed before the spectrum and Rq (meta.yml's detrend_mode \
+                curvature; the default removes the line)"),
+        "{:?}",
+        m.notes
+    );
+    let r = m.real.unwrap();
+    assert!(
+        ((r.rms_height - rq) / rq).abs() < 1e-12,
+        "{} vs {rq}",
+        r.rms_height
+    );
+    let scaled = rdq * ends / ls;
+    assert!(
+        ((r.rms_slope - scaled) / scaled).abs() < 1e-12,
+        "{} vs {scaled}",
+        r.rms_slope
+    );
+    // --detrend plane: the line only, as asked.
+    let plane = Options {
+        detrend: Some(rough_surface::Detrend::Plane),
+        ..opts
+    };
+    let m = read(&dir().join(w[0]), &plane).unwrap();
+    assert!(
+        m.notes.iter().all(|n| !n.contains("detrend")),
+        "{:?}",
+        m.notes
+    );
+    assert!(m.real.unwrap().rms_height > 1.04 * rq);
+}
+
+/// A text topography whose height scale was set on contact.engineering:
+/// not applied, and said.
+#[test]
+fn a_text_topographys_height_scale_is_said() {
+    use std::io::Write;
+    let d = tempfile::tempdir().unwrap();
+    let p = d.path().join("twin.zip");
+    let mut w = zip::ZipWriter::new(std::fs::File::create(&p).unwrap());
+    let o = zip::write::SimpleFileOptions::default();
+    w.start_file("meta.yml", o).unwrap();
+    w.write_all(
+        b"surfaces:\n- name: s\n  topographies:\n  - datafile:\n      original: p.txt\n    \
+          detrend_mode: height\n    height_scale: 0.5\n    name: p.txt\n    unit: um\n",
+    )
+    .unwrap();
+    w.start_file("p.txt", o).unwrap();
+    for i in 0..64 {
+        writeln!(w, "{} {}", i as f64 * 0.1, ((i * 7) % 11) as f64 * 0.01).unwrap();
+    }
+    w.finish().unwrap();
+    let m = read(&p, &Options::default()).unwrap();
+    assert_eq!(
+        m.notes.last().unwrap(),
+        "meta.yml's height_scale 0.5 is not applied: heights as the file gives them"
+    );
+    assert!(
+        m.notes
+            .iter()
+            .any(|n| n == "x read in µm (meta.yml's unit)"),
+        "{:?}",
+        m.notes
+    );
+}
