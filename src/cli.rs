@@ -296,6 +296,10 @@ pub enum ViewArg {
     /// The simulated contact map at p̄ = 0.01 H (SVG; CSV: a row of 0 out
     /// of contact, 1 elastic, 2 at the hardness per grid row).
     ContactMap,
+    /// The simulation at p̄ = 0.01 H on 4, 8 and 16 nodes per shortest
+    /// wavelength and cells of 1, 2 and 4 longest wavelengths, over the
+    /// seeds (CSV).
+    ContactConvergence,
 }
 
 impl ViewArg {
@@ -309,9 +313,11 @@ impl ViewArg {
             ViewArg::Map => View::Map,
             ViewArg::Load => View::Load,
             ViewArg::Spectrum => View::Spectrum,
-            ViewArg::Moments | ViewArg::Contact | ViewArg::ContactSweep | ViewArg::ContactMap => {
-                return None
-            }
+            ViewArg::Moments
+            | ViewArg::Contact
+            | ViewArg::ContactSweep
+            | ViewArg::ContactMap
+            | ViewArg::ContactConvergence => return None,
         })
     }
 }

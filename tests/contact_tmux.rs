@@ -16,14 +16,19 @@ fn tab_to_the_contact_view_shows_the_progress_then_the_result() {
     let p = Pane::start("contact", dir.path(), (160, 48), &[], &["--set", "zeta=32"]);
     p.wait_text("slope H0·dA/dp̄/A0 vs ζ");
     p.keys(&["Tab", "Tab", "Tab", "Tab"]);
-    let s = p.wait_text("simulation 256² · seed 1");
+    p.wait_text("simulation 256² · seeds 1–4");
+    // R: sixteen surfaces, then one.
+    p.keys(&["R"]);
+    p.wait_text("16 surfaces: seeds 1–16");
+    p.keys(&["R"]);
+    p.wait_text("one surface: seed 1");
+    let s = p.wait_text("simulation 256² · seed 1 ");
     assert!(s.contains("solving") || s.contains("13 solved"), "{s}");
-    p.wait_text("solving");
     // No key pressed from here: the explorer redraws as the solver works.
     let s = p.wait_text("13 solved");
     assert!(
         s.contains(
-            "simulation at p̄ = 0.01 H0: contact 2.34 %, 1.5 % plastic · theory: 2.01 %, 7.9 % plastic"
+            "simulation at p̄ = 0.01 H0: contact 3.03 %, 1.2 % plastic · theory: 2.01 %, 7.9 % plastic"
         ),
         "{s}"
     );

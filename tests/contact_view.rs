@@ -77,8 +77,9 @@ fn tab_reaches_the_contact_view_and_its_result_comes_in() {
         text.contains("simulation at p̄ = 0.01 H0: contact"),
         "{text}"
     );
-    assert!(text.contains("simulation 32² · seed 1"), "{text}");
-    assert!(text.contains("13 solved"), "{text}");
+    // Four surfaces by default, their thirteen loads each.
+    assert!(text.contains("simulation 32² · seeds 1–4"), "{text}");
+    assert!(text.contains("52 solved"), "{text}");
 }
 
 #[test]
@@ -93,19 +94,39 @@ fn the_readout_gives_the_simulation_and_the_theory_at_the_chosen_load() {
         roughtui::tui::views::contact::readout(&a.contact, 200, Glyphs::Braille, "H0");
     let line = lines.join("\n");
     assert!(!error);
-    use roughtui::tui::views::contact::{pct, share_pct};
+    use roughtui::tui::views::contact::{pct, pct_pm, share_pct};
+    // The mean ± sample standard deviation over the four seeds' areas.
+    let areas: Vec<f64> = std::iter::once(&a.contact.results)
+        .chain(&a.contact.seed_results)
+        .map(|rs| {
+            rs[a.contact.load]
+                .as_ref()
+                .unwrap()
+                .as_ref()
+                .unwrap()
+                .result
+                .area
+        })
+        .collect();
+    assert_eq!(areas.len(), 4);
+    let mean = areas.iter().sum::<f64>() / 4.0;
+    let sd = (areas.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / 3.0).sqrt();
+    let [st, _, pl] = a.contact.at_load(a.contact.load).unwrap();
+    assert_eq!((st.n, st.mean, st.sd), (4, mean, sd));
     assert_eq!(
         line,
         format!(
             "simulation at p̄ = 0.01 H0: contact {} %, {} % plastic · theory: {} %, {} % plastic",
-            pct(r.area),
-            share_pct(r.plastic_area, r.area),
+            pct_pm(mean, sd),
+            share_pct(pl.mean, mean),
             pct(t.total),
             share_pct(t.plastic, t.total)
         )
     );
+    assert!(line.contains(" ± "), "{line}");
+    assert_eq!(pct_pm(0.021, 0.001), "2.10 ± 0.10");
     // The numbers of docs/theory-vs-simulation.md (fig2, ζ = 16, seed 1).
-    assert_eq!(pct(r.area), "4.46", "{line}");
+    assert_eq!(pct(r.area), "3.91", "{line}");
     assert_eq!(pct(t.total), "2.31", "{line}");
     // ] and [ move the load a quarter decade; the readout follows.
     ch(&mut a, ']');
@@ -160,6 +181,55 @@ fn a_change_of_the_scene_cancels_the_job() {
     assert!(solved_old < 13, "{solved_old} of the old loads solved");
 }
 
+/// A grid finer than 256² first shows the same surface sampled on 256²
+/// (every second node of 512²), saying so, then its own; leaving the view
+/// stops the job (no core stays busy), coming back goes on.
+#[test]
+fn a_coarse_answer_first_and_leaving_stops_the_work() {
+    let engine = Engine::new(1);
+    let mut a = app_at(64.0, (120, 36), Theme::colored(), &engine);
+    to_contact(&mut a);
+    assert_eq!(a.contact.grids(), (Some(512), Some(256)));
+    assert_eq!(a.contact.coarse_tasks.len(), 13);
+    let start = Instant::now();
+    while a.contact.chosen().is_none() {
+        assert!(
+            start.elapsed() < Duration::from_secs(60),
+            "no coarse answer"
+        );
+        std::thread::sleep(Duration::from_millis(5));
+        update(&mut a, Message::Tick);
+    }
+    assert!(a.contact.chosen_is_coarse());
+    let s = a.contact.chosen().unwrap().as_ref().unwrap();
+    assert_eq!(s.map.len(), 256 * 256);
+    assert!(s.result.area > 0.0 && s.result.residual <= 1e-8);
+    let text = screen(&a);
+    assert!(
+        text.contains("simulation 256² coarse, 512² to come · seeds 1–4"),
+        "{text}"
+    );
+    // Away: the job ends at its next iteration and nothing more is solved.
+    press(&mut a, KeyCode::Tab, KeyModifiers::NONE);
+    assert_ne!(a.view, View::Contact);
+    update(&mut a, Message::Tick);
+    let start = Instant::now();
+    while engine.running() > 0 {
+        assert!(start.elapsed() < Duration::from_secs(10), "still working");
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    let solves = engine.solves.load(std::sync::atomic::Ordering::Relaxed);
+    std::thread::sleep(Duration::from_millis(300));
+    assert_eq!(
+        engine.solves.load(std::sync::atomic::Ordering::Relaxed),
+        solves
+    );
+    // Back: the job goes on from what the cache holds.
+    to_contact(&mut a);
+    assert!(a.contact.busy());
+    assert!(a.contact.chosen().is_some());
+}
+
 #[test]
 fn results_are_cached_and_shared_between_explorers() {
     let engine = Engine::new(2);
@@ -170,7 +240,7 @@ fn results_are_cached_and_shared_between_explorers() {
     settle(&mut a);
     settle(&mut b);
     let solves = engine.solves.load(std::sync::atomic::Ordering::Relaxed);
-    assert_eq!(solves, 13, "two explorers on one scene solve it once");
+    assert_eq!(solves, 52, "two explorers on one scene solve it once");
     // Away and back: from the cache, no job.
     a.state.params = a.state.params.with(Axis::Zeta, 2.0).unwrap();
     update(&mut a, Message::Tick);
@@ -178,7 +248,10 @@ fn results_are_cached_and_shared_between_explorers() {
     a.state.params = a.state.params.with(Axis::Zeta, 4.0).unwrap();
     update(&mut a, Message::Tick);
     assert!(!a.contact.busy());
-    assert_eq!(engine.solves.load(std::sync::atomic::Ordering::Relaxed), 26);
+    assert_eq!(
+        engine.solves.load(std::sync::atomic::Ordering::Relaxed),
+        104
+    );
     assert!(a.contact.results.iter().all(|r| r.is_some()));
     // Another seed is another surface.
     ch(&mut a, 'r');

@@ -47,17 +47,17 @@ fn a_class_solves_the_lecturers_contact_scene_once() {
     room.keys("lect", &["Tab", "Tab", "Tab", "Tab"]);
     let all = ["lect", "ada", "bob"];
     room.wait_all(&all, "the contact view", 30, |s| {
-        s.contains("simulation 256² · seed 1")
+        s.contains("simulation 256² · seeds 1–4")
     });
-    let done = room.wait_all(&all, "the result", 90, |s| s.contains("13 solved"));
+    let done = room.wait_all(&all, "the result", 90, |s| s.contains("52 solved"));
     for s in &done {
         assert!(
-            s.contains("contact 2.34 %, 1.5 % plastic · theory: 2.01 %, 7.9 % plastic"),
+            s.contains("contact 2.93 ± 0.14 %, 2.3 % plastic · theory: 2.01 %, 7.9 % plastic"),
             "{s}"
         );
     }
     let log = srv.wait_log("the job's end", 30, |l| {
-        l.contains("contact: 13 solutions on 256² (seed 1)")
+        l.contains("contact: 52 solutions on 256² (seed 1)")
     });
     assert_eq!(log.matches("contact: ").count(), 1, "{log}");
     // The lecturer's next load: the students follow, nothing is solved again.

@@ -201,9 +201,10 @@ pub(crate) fn parse_contact_grid(s: &str) -> Result<usize, String> {
     }
 }
 
-/// `--per-wavelength K`: nodes per shortest wavelength, 2 … 64.
+/// `--per-wavelength K`: nodes per shortest wavelength, 3 … 64 (more than
+/// two hold the shortest wavelength).
 pub(crate) fn parse_per_wavelength(s: &str) -> Result<u32, String> {
-    whole_in(s, 2, 64).map(|n| n as u32)
+    whole_in(s, 3, 64).map(|n| n as u32)
 }
 
 /// `--grid COLSxROWS`, each side a whole number (checked against the map's

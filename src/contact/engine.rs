@@ -77,6 +77,12 @@ pub struct Progress {
     /// The first residual of the task being solved (for the bar).
     pub first_residual: f64,
     pub finished: bool,
+    /// Work of the tasks ended and of all, in nodes solved (a coarse
+    /// grid's task counts for its few nodes).
+    pub work_done: f64,
+    pub work_total: f64,
+    /// When the job got its core.
+    pub started: Option<Instant>,
 }
 
 impl Progress {
@@ -93,14 +99,44 @@ impl Progress {
         } else {
             0.0
         };
+        if self.work_total > 0.0 && self.done < self.total {
+            // The task under way weighs as the tasks left do on average.
+            let each = (self.work_total - self.work_done) / (self.total - self.done) as f64;
+            return ((self.work_done + part * each) / self.work_total).clamp(0.0, 1.0);
+        }
         ((self.done as f64 + part) / self.total as f64).clamp(0.0, 1.0)
     }
+
+    /// The time left, from the time taken so far and the work done (none
+    /// before a twentieth is done: too early to say).
+    pub fn left(&self) -> Option<Duration> {
+        let f = self.fraction();
+        let took = self.started?.elapsed().as_secs_f64();
+        if self.finished || self.queued || f < 0.05 {
+            return None;
+        }
+        Some(Duration::from_secs_f64(took * (1.0 - f) / f))
+    }
+}
+
+/// The work of a task: the nodes of its grid times the iterations a load
+/// takes, which grow with the load (fig2 at 1024²: 44 at p̄ = 1e-3 H to
+/// 213 at 0.56 H, about 1 + 4/3 per quarter decade … five times as many);
+/// p̄ = H is all at the hardness and takes none.
+fn work(task: &Task) -> f64 {
+    let nodes = (task.scene.side() as f64).powi(2);
+    let p = task.p_over_h();
+    if p >= 1.0 {
+        return 0.1 * nodes;
+    }
+    nodes * (1.0 + (p.log10() + 3.0).max(0.0) * 4.0 / 3.0)
 }
 
 struct Job {
     tasks: Vec<Task>,
-    /// Index into `tasks` of the one to solve next if not yet done.
-    first: AtomicUsize,
+    /// Indices into `tasks` of those to solve next, in order, if not yet
+    /// done (then the rest in the list's order).
+    first: Mutex<Vec<usize>>,
     cancel: AtomicBool,
     state: Mutex<JobState>,
 }
@@ -146,7 +182,17 @@ impl Ticket {
 
     /// Solve task `i` of the list next (the explorer's chosen load).
     pub fn prefer(&self, i: usize) {
-        self.job.first.store(i, Ordering::Relaxed);
+        self.prefer_in_order(&[i]);
+    }
+
+    /// Solve these tasks of the list next, in this order (a coarse grid's
+    /// chosen load, then its other loads, then the fine grid's chosen one).
+    pub fn prefer_in_order(&self, order: &[usize]) {
+        if let Ok(mut f) = self.job.first.lock() {
+            if f.as_slice() != order {
+                *f = order.to_vec();
+            }
+        }
     }
 
     pub fn tasks(&self) -> &[Task] {
@@ -261,18 +307,21 @@ impl Engine {
                 _ => false,
             };
             if joined {
-                job.first.store(first, Ordering::Relaxed);
+                if let Ok(mut f) = job.first.lock() {
+                    *f = vec![first];
+                }
                 return Ticket { job, id };
             }
         }
         let job = Arc::new(Job {
-            first: AtomicUsize::new(first),
+            first: Mutex::new(vec![first]),
             cancel: AtomicBool::new(false),
             state: Mutex::new(JobState {
                 holders: 1,
                 wakers: vec![(id, wake)],
                 progress: Progress {
                     total: tasks.len(),
+                    work_total: tasks.iter().map(work).sum(),
                     queued: true,
                     ..Progress::default()
                 },
@@ -327,7 +376,10 @@ impl Engine {
 
     fn work(&self, job: &Arc<Job>) {
         if self.acquire(job) {
-            job.set(|p| p.queued = false);
+            job.set(|p| {
+                p.queued = false;
+                p.started = Some(Instant::now());
+            });
             job.wake();
             let (start, before) = (Instant::now(), self.solves.load(Ordering::Relaxed));
             self.solve_all(job);
@@ -358,12 +410,12 @@ impl Engine {
             if job.cancel.load(Ordering::Relaxed) {
                 return;
             }
-            let first = job.first.load(Ordering::Relaxed).min(n.saturating_sub(1));
-            let next = if n > 0 && !ended[first] {
-                Some(first)
-            } else {
-                ended.iter().position(|e| !e)
-            };
+            let preferred = job
+                .first
+                .lock()
+                .map(|f| f.iter().copied().find(|&i| i < n && !ended[i]))
+                .unwrap_or(None);
+            let next = preferred.or_else(|| ended.iter().position(|e| !e));
             let Some(i) = next else { return };
             ended[i] = true;
             let task = job.tasks[i];
@@ -378,6 +430,7 @@ impl Engine {
             }
             job.set(|p| {
                 p.done += 1;
+                p.work_done += work(&task);
                 p.iteration = 0;
                 p.residual = 0.0;
                 p.first_residual = 0.0;

@@ -13,6 +13,7 @@
 //! ([`Seeds`], [`Stat`]). Pressures are in units of E*, so the cap is
 //! H_use/E*.
 
+pub mod convergence;
 pub mod engine;
 pub mod ensemble;
 pub mod local;
@@ -313,7 +314,7 @@ fn comments(
     Ok(())
 }
 
-fn push_row(buf: &mut String, fields: &[f64]) {
+pub(crate) fn push_row(buf: &mut String, fields: &[f64]) {
     for (k, v) in fields.iter().enumerate() {
         if k > 0 {
             buf.push(',');

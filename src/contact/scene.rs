@@ -24,8 +24,11 @@ pub struct SceneKey {
     rms_slope: u64,
     /// H_use/E*, the pressure cap (f64 bits).
     hardness: u64,
-    /// Grid side.
+    /// Grid side of the surface.
     pub n: usize,
+    /// Halvings of the grid solved: the surface sampled at every 2^coarse-th
+    /// node of its n × n grid (0: all of them), a coarse answer first.
+    pub coarse: u8,
     /// The cell side in longest wavelengths (1 for a measured map).
     pub cell: u32,
     /// A hardness per asperity: H0/E* and R* (m) of the size-effect law, as
@@ -81,6 +84,7 @@ impl SceneKey {
                 rms_slope: surface.spectrum.rms_slope.to_bits(),
                 hardness: hardness.to_bits(),
                 n: plan.n,
+                coarse: 0,
                 cell: 1,
                 local,
                 seed: 0,
@@ -95,11 +99,31 @@ impl SceneKey {
             rms_slope: surface.spectrum.rms_slope.to_bits(),
             hardness: hardness.to_bits(),
             n: sampling.side(p.zeta())?,
+            coarse: 0,
             cell: sampling.cell,
             local,
             seed,
             surface: None,
         })
+    }
+
+    /// The side of the grid solved: n, or n halved `coarse` times.
+    pub fn side(&self) -> usize {
+        self.n >> self.coarse
+    }
+
+    /// The same surface sampled on a grid of at most `most` nodes a side
+    /// (at every second, fourth … node), if it is a power law's on a finer
+    /// grid than that; a measured map has no coarse answer.
+    pub fn coarser(&self, most: usize) -> Option<SceneKey> {
+        if self.surface.is_some() || self.coarse > 0 || self.n <= most {
+            return None;
+        }
+        let mut coarse = 0u8;
+        while (self.n >> coarse) > most {
+            coarse += 1;
+        }
+        Some(SceneKey { coarse, ..*self })
     }
 
     /// H_use/E*.
@@ -151,6 +175,11 @@ impl SceneKey {
         }
         let k = self.rms_slope() / got;
         h.iter_mut().for_each(|v| *v *= k);
+        let mut side = n;
+        for _ in 0..self.coarse {
+            h = rough_contact::restrict(&h, side);
+            side /= 2;
+        }
         Ok(h)
     }
 
@@ -164,7 +193,7 @@ impl SceneKey {
         let h = self.heights()?;
         Ok(Contact::new(
             h,
-            self.n,
+            self.side(),
             self.length(),
             1.0,
             Boundary::Periodic,

@@ -71,6 +71,9 @@ pub fn export(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
     if args.view == crate::cli::ViewArg::ContactMap {
         return export_map(args, out);
     }
+    if args.view == crate::cli::ViewArg::ContactConvergence {
+        return export_convergence(args, out);
+    }
     let sweep = args.view == crate::cli::ViewArg::ContactSweep;
     let name = if sweep { "contact-sweep" } else { "contact" };
     for (given, opt) in [
@@ -323,4 +326,32 @@ fn export_map(args: &ExportArgs, out: &mut impl std::io::Write) -> anyhow::Resul
     }
     out.flush()?;
     Ok(())
+}
+
+/// `roughtui export --view contact-convergence`: the scene at p̄ = 0.01 H on
+/// 4, 8, 16 nodes per shortest wavelength × cells of 1, 2, 4.
+fn export_convergence(args: &ExportArgs, out: &mut impl std::io::Write) -> anyhow::Result<()> {
+    for (given, opt) in [
+        (args.grid.is_some(), "--grid"),
+        (args.map_y.is_some(), "--map-y"),
+        (args.sweep.is_some(), "--sweep"),
+        (args.points.is_some(), "--points"),
+        (args.cell.is_some(), "--cell"),
+        (args.contact_grid.is_some(), "--contact-grid"),
+        (args.per_wavelength.is_some(), "--per-wavelength"),
+    ] {
+        if given {
+            bail!(
+                "{opt} does not apply to --view contact-convergence: it solves the scene's \
+                 surface at p̄ = {SWEEP_LOAD} H on 4, 8 and 16 nodes per shortest wavelength and \
+                 cells of 1, 2 and 4 (--seed and --seeds pick the surfaces)"
+            );
+        }
+    }
+    if args.format == FormatArg::Svg {
+        bail!("--view contact-convergence is a table: CSV only");
+    }
+    let state = super::state_of(args)?;
+    let spec = spec_of(args, &state)?;
+    contact::convergence::write(out, &state, &spec, SWEEP_LOAD)
 }

@@ -252,6 +252,7 @@ fn edits(msg: &Message) -> bool {
             | M::ContactLoad { .. }
             | M::ContactSweep
             | M::ContactSeed
+            | M::ContactSeeds
             | M::MoveFitBand { .. }
             | M::AutoFitBand
             // Typing a slider's value: the lecturer's next move would

@@ -570,9 +570,10 @@ pub fn update(app: &mut App, msg: Message) {
             };
             app.set_status(text, false);
         }
-        Message::ContactLoad { .. } | Message::ContactSweep | Message::ContactSeed => {
-            super::contact::on_key(app, msg)
-        }
+        Message::ContactLoad { .. }
+        | Message::ContactSweep
+        | Message::ContactSeed
+        | Message::ContactSeeds => super::contact::on_key(app, msg),
         Message::Tick => {}
         Message::Quit => app.quit = true,
     }

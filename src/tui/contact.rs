@@ -12,7 +12,7 @@ use rough_model::{areas, psi_in_use, slopes, Axis, Model};
 use crate::contact::engine::{Engine, Outcome, Progress, Task, Ticket, Waker};
 use crate::contact::measured::{self, Fetch};
 use crate::contact::scene::{unsolvable, SceneKey};
-use crate::contact::{Sampling, DEFAULT_SEED, MAX_GRID};
+use crate::contact::{Sampling, Stat, DEFAULT_SEED, MAX_GRID};
 use crate::scene::State;
 
 /// Loads of the contact view, p̄/H_use: 1e-3 to 1, four per decade.
@@ -21,6 +21,14 @@ pub const LOADS: usize = 13;
 pub const DEFAULT_LOAD: usize = 4;
 /// Points along a theory curve.
 const THEORY_POINTS: usize = 96;
+/// The coarse answer's grid side at most: a finer scene is first solved on
+/// its surface sampled at every second, fourth … node (256²: a load in
+/// tenths of a second), then on its own grid.
+pub const COARSE_GRID: usize = 256;
+/// Surfaces (seeds) the load plot averages over when the view opens; `R`
+/// steps through [`SEED_CHOICES`].
+pub const DEFAULT_SEEDS: u32 = 4;
+pub const SEED_CHOICES: [u32; 3] = [4, 16, 1];
 
 /// p̄/H of load `k` (0 … [`LOADS`] − 1).
 pub fn load_value(k: usize) -> f64 {
@@ -80,9 +88,20 @@ pub struct ContactPane {
     pub zetas: Vec<f64>,
     /// Why the scene cannot be simulated (then nothing is requested).
     pub why_not: Option<String>,
-    /// The tasks on screen and what the cache holds for each.
+    /// The tasks on screen and what is shown for each: the cache's result,
+    /// or while it is not in, the coarse grid's ([`ContactPane::coarse`]).
     pub tasks: Vec<Task>,
     pub results: Vec<Option<Outcome>>,
+    /// The same loads on a coarse grid (empty when the grid is coarse
+    /// enough), solved first; which of `results` are theirs.
+    pub coarse_tasks: Vec<Task>,
+    pub coarse: Vec<bool>,
+    /// Surfaces averaged over (load plot of a power law): seeds `seed` …
+    /// `seed + seeds − 1`; the further seeds' tasks and results, each
+    /// [`LOADS`] long.
+    pub seeds: u32,
+    pub seed_tasks: Vec<Vec<Task>>,
+    pub seed_results: Vec<Vec<Option<Outcome>>>,
     pub progress: Progress,
     pub theory: Theory,
     request: Option<Request>,
@@ -111,6 +130,11 @@ impl Default for ContactPane {
             why_not: None,
             tasks: vec![],
             results: vec![],
+            coarse_tasks: vec![],
+            coarse: vec![],
+            seeds: DEFAULT_SEEDS,
+            seed_tasks: vec![],
+            seed_results: vec![],
             progress: Progress::default(),
             theory: Theory::default(),
             request: None,
@@ -136,6 +160,100 @@ impl ContactPane {
         self.results.get(self.load).and_then(Option::as_ref)
     }
 
+    /// The areas at load `k` over the seeds solved so far (total, elastic,
+    /// plastic; the coarse grid's answer alone while the first seed's is
+    /// not in).
+    pub fn at_load(&self, k: usize) -> Option<[Stat; 3]> {
+        let first = match self.results.get(k)? {
+            Some(Ok(s)) => s,
+            _ => return None,
+        };
+        let mut runs = vec![first.result];
+        if !self.coarse.get(k).copied().unwrap_or(false) {
+            runs.extend(self.seed_results.iter().filter_map(|r| match r.get(k) {
+                Some(Some(Ok(s))) => Some(s.result),
+                _ => None,
+            }));
+        }
+        Some([
+            Stat::of(runs.iter().map(|r| r.area)),
+            Stat::of(runs.iter().map(|r| r.elastic_area)),
+            Stat::of(runs.iter().map(|r| r.plastic_area)),
+        ])
+    }
+
+    /// Seeds of the load plot: those asked for (1 for a measured map).
+    pub fn seeds_asked(&self) -> usize {
+        1 + self.seed_tasks.len()
+    }
+
+    /// Whether the chosen load shows the coarse grid's answer.
+    pub fn chosen_is_coarse(&self) -> bool {
+        !self.sweep && self.coarse.get(self.load).copied().unwrap_or(false)
+    }
+
+    /// The grid side of the scene, and of its coarse answer if any.
+    pub fn grids(&self) -> (Option<usize>, Option<usize>) {
+        (
+            self.tasks.first().map(|t| t.scene.side()),
+            self.coarse_tasks.first().map(|t| t.scene.side()),
+        )
+    }
+
+    /// Reads what the cache holds: each task's result, or the coarse
+    /// grid's while it is not in.
+    fn read_results(&mut self) {
+        let fine: Vec<Option<Outcome>> = self.tasks.iter().map(|t| self.engine.get(t)).collect();
+        self.coarse = vec![false; fine.len()];
+        self.results = fine;
+        self.seed_results = self
+            .seed_tasks
+            .iter()
+            .map(|ts| ts.iter().map(|t| self.engine.get(t)).collect())
+            .collect();
+        for (i, t) in self.coarse_tasks.iter().enumerate() {
+            if self.results.get(i).is_some_and(Option::is_none) {
+                if let Some(Ok(c)) = self.engine.get(t) {
+                    self.results[i] = Some(Ok(c));
+                    self.coarse[i] = true;
+                }
+            }
+        }
+    }
+
+    /// The job's tasks: the coarse grid's, then the scene's own.
+    fn job_tasks(&self) -> Vec<Task> {
+        self.coarse_tasks
+            .iter()
+            .chain(&self.tasks)
+            .chain(self.seed_tasks.iter().flatten())
+            .copied()
+            .collect()
+    }
+
+    /// The order the job solves in: the chosen load on the coarse grid,
+    /// the coarse grid's other loads, then the chosen load on the scene's
+    /// grid (then its other loads in turn, each from the last answer).
+    fn job_order(&self) -> Vec<usize> {
+        let c = self.coarse_tasks.len();
+        if self.sweep {
+            return vec![0];
+        }
+        let mut order = vec![];
+        if c > 0 {
+            order.push(self.load.min(c - 1));
+            order.extend(0..c);
+        }
+        order.push(c + self.load);
+        // Each further seed's chosen load, so that the spread comes soon.
+        let mut at = c + self.tasks.len();
+        for ts in &self.seed_tasks {
+            order.push(at + self.load.min(ts.len().saturating_sub(1)));
+            at += ts.len();
+        }
+        order
+    }
+
     /// Brings the pane up to `state`: a changed scene cancels the job on
     /// the old one (by dropping its ticket) and, if `shown`, requests the
     /// new one; the results are read from the cache.
@@ -143,10 +261,13 @@ impl ContactPane {
         self.seed = state.seed.unwrap_or(DEFAULT_SEED);
         if !shown {
             // Off screen nothing is worked out (a measured map's scene
-            // would read its heights from the file): a job on the scene
-            // last shown goes on, one on another scene stops. A read of
-            // heights goes on too, but nobody waits on it here.
+            // would read its heights from the file) and the job stops at
+            // its next iteration (what it solved stays in the cache; back
+            // in the view it goes on from there). A read of heights goes
+            // on, but nobody waits on it here.
             self.reading = false;
+            self.ticket = None;
+            self.progress = Progress::default();
             if !self.scene.as_ref().is_some_and(|s| same_scene(s, state)) {
                 self.ticket = None;
                 self.progress = Progress::default();
@@ -180,6 +301,10 @@ impl ContactPane {
             self.scene = None;
             self.tasks.clear();
             self.results.clear();
+            self.coarse_tasks.clear();
+            self.coarse.clear();
+            self.seed_tasks.clear();
+            self.seed_results.clear();
             self.theory = Theory::default();
             return;
         }
@@ -198,25 +323,43 @@ impl ContactPane {
                 .as_ref()
                 .map(|r| r.tasks.clone())
                 .unwrap_or_default();
+            self.seed_tasks = vec![];
+            if !self.sweep && self.tasks.len() > LOADS {
+                self.seed_tasks = self.tasks[LOADS..]
+                    .chunks(LOADS)
+                    .map(<[Task]>::to_vec)
+                    .collect();
+                self.tasks.truncate(LOADS);
+            }
+            self.coarse_tasks = if self.sweep {
+                vec![]
+            } else {
+                self.tasks
+                    .iter()
+                    .map_while(|t| Some(Task::new(t.scene.coarser(COARSE_GRID)?, t.p_over_h())))
+                    .collect()
+            };
             self.request = request;
         }
-        self.results = self.tasks.iter().map(|t| self.engine.get(t)).collect();
-        let all_in = self.results.iter().all(Option::is_some);
+        self.read_results();
+        let all_in = self
+            .tasks
+            .iter()
+            .chain(self.seed_tasks.iter().flatten())
+            .all(|t| self.engine.get(t).is_some());
         if self.ticket.is_none() && !all_in {
-            let first = if self.sweep { 0 } else { self.load };
+            let order = self.job_order();
             let t = self
                 .engine
-                .request(self.tasks.clone(), first, Arc::clone(&self.waker));
+                .request(self.job_tasks(), order[0], Arc::clone(&self.waker));
             self.ticket = Some(t);
         }
         if let Some(t) = &self.ticket {
-            if !self.sweep {
-                t.prefer(self.load);
-            }
+            t.prefer_in_order(&self.job_order());
             self.progress = t.progress();
             if self.progress.finished {
                 // Read once more: the last result came with the end.
-                self.results = self.tasks.iter().map(|t| self.engine.get(t)).collect();
+                self.read_results();
             }
         } else {
             self.progress = Progress {
@@ -272,6 +415,14 @@ impl ContactPane {
             match SceneKey::with(state, self.seed, &self.sampling) {
                 Ok(key) => tasks = (0..LOADS).map(|k| Task::new(key, load_value(k))).collect(),
                 Err(e) => self.why_not = Some(format!("{e:#}")),
+            }
+            // The further seeds (a measured map has one surface).
+            if !tasks.is_empty() && !state.is_measured() {
+                for j in 1..u64::from(self.seeds) {
+                    let seed = self.seed.wrapping_add(j);
+                    let key = SceneKey::with(state, seed, &self.sampling).ok()?;
+                    tasks.extend((0..LOADS).map(|k| Task::new(key, load_value(k))));
+                }
             }
         }
         Some(Request { tasks, theory })
@@ -347,6 +498,25 @@ pub fn on_key(app: &mut super::app::App, msg: super::app::Message) {
             app.contact.load = k;
         }
         Message::ContactSweep => pane.sweep = !pane.sweep,
+        Message::ContactSeeds if app.state.is_measured() => app.set_status(
+            "a measured map is one surface: the simulation solves its own heights",
+            true,
+        ),
+        Message::ContactSeeds => {
+            let at = SEED_CHOICES.iter().position(|&s| s == pane.seeds);
+            pane.seeds = SEED_CHOICES[at.map_or(0, |i| (i + 1) % SEED_CHOICES.len())];
+            let n = pane.seeds;
+            let last = pane.seed.wrapping_add(u64::from(n) - 1);
+            let text = if n == 1 {
+                format!("one surface: seed {}", pane.seed)
+            } else {
+                format!(
+                    "{n} surfaces: seeds {}–{last}, mean ± sd (R: more)",
+                    pane.seed
+                )
+            };
+            app.set_status(text, false);
+        }
         Message::ContactSeed if app.state.is_measured() => app.set_status(
             "a measured map has no seed: the simulation solves its own heights",
             true,

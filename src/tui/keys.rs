@@ -266,6 +266,7 @@ pub const BINDINGS: &[Binding] = &[
     bind(ContactView, &[(ch('['), M::ContactLoad { up: false }), (ch(']'), M::ContactLoad { up: true })], "[ ]", "contact view: lower / higher load p̄/H (¼ decade)", Some("[] load")),
     bind(ContactView, &[(ch('b'), M::ContactSweep)], "b", "contact view: plastic share vs ζ / areas vs load", Some("b vs ζ")),
     bind(ContactView, &[(ch('r'), M::ContactSeed)], "r", "contact view: another surface (next seed)", None),
+    bind(ContactView, &[(ch('R'), M::ContactSeeds)], "R", "contact view: seeds 4 / 16 / 1 (mean ± sd over the surfaces)", Some("R seeds")),
     bind(Main, &[(ch('y'), M::NextMapY)], "y", "the regime map's next y parameter", Some("y map axis")),
     bind(NotStudent, &[(ch('s'), M::StartSave)], "s", "save a snapshot here (.ron)", Some("s save")),
     bind(Student, &[(ch('s'), M::StartSave)], "s", "show the snapshot (.ron) to copy; y there: clipboard", Some("s snapshot")),

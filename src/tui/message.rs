@@ -105,12 +105,14 @@ pub enum Message {
     /// SSH after asking the terminal for its size).
     Redraw,
     /// The contact view's keys: the next or previous load, the plastic
-    /// share against ζ (`b`), another surface (`r`: the next seed).
+    /// share against ζ (`b`), another surface (`r`: the next seed), how
+    /// many surfaces (`R`: 1, 4 or 16 seeds).
     ContactLoad {
         up: bool,
     },
     ContactSweep,
     ContactSeed,
+    ContactSeeds,
     /// The contact solver made progress (sent by the session, not a key).
     Tick,
     Quit,

@@ -79,9 +79,11 @@ fn check_grid(n: usize, length: f64) -> Result<(), ContactError> {
     Ok(())
 }
 
-/// A periodic Gaussian surface on an n × n grid of side `length`: white
-/// noise from `seed` filtered by √C(q) (every mode's amplitude random, its
-/// phase uniform), mean zero. Row-major, heights in the units of √Z·q^…
+/// A periodic Gaussian surface on an n × n grid of side `length`: every
+/// mode of the band a random amplitude (Rayleigh) and phase from `seed`,
+/// mean zero; the same surface on every grid that holds the band (n more
+/// than twice the largest wavenumber q1 L/2π). Row-major, heights in the
+/// units of √Z·q^…
 pub fn synthesise(
     n: usize,
     length: f64,
@@ -101,18 +103,43 @@ pub fn synthesise(
             "power law {spectrum:?}: needs Z, q0 > 0, q1 ≥ q0 and 0 < H ≤ 1"
         )));
     }
+    let dq = 2.0 * std::f64::consts::PI / length;
+    // The modes are drawn one by one over the band in a fixed order of
+    // their integer wavenumbers, so that a seed gives the same surface on
+    // every grid that holds the band (a coarse grid's surface is the fine
+    // one's, sampled): k = (kx, ky) with kx > 0, or kx = 0 and ky > 0, each
+    // H_k = n² dq √C(|q|) (a + ib)/√2 with a, b standard normal (so
+    // ⟨|H_k|²⟩ = n⁴ C dq², ⟨h²⟩ = Σ C dq²), H_−k its conjugate.
+    let top = (spectrum.q1 / dq * (1.0 + 1e-9)).floor();
+    let big = top as usize;
+    if !top.is_finite() || 2 * big + 2 > n {
+        return Err(ContactError::Input(format!(
+            "a {n} × {n} grid cannot hold wavevectors up to {top} × 2π/L: it needs at least {} \
+             nodes a side (more than two per shortest wavelength)",
+            2 * big + 2
+        )));
+    }
     let mut rng = Normal(ChaCha8Rng::seed_from_u64(seed), None);
-    let noise: Vec<f64> = (0..n * n).map(|_| rng.next()).collect();
     let mut fft = Fft2::new(n);
     let mut spec = vec![Complex64::new(0.0, 0.0); fft.m() * n];
-    fft.forward(&noise, &mut spec);
-    let dq = 2.0 * std::f64::consts::PI / length;
-    // ⟨|W_k|²⟩ = n² for white noise; |H_k|² must be n⁴ C dq².
-    let gain = n as f64 * dq;
-    for kx in 0..fft.m() {
-        for ky in 0..n {
-            let q = dq * signed(kx, n).hypot(signed(ky, n));
-            spec[kx * n + ky] *= gain * spectrum.psd(q).sqrt();
+    let gain = (n * n) as f64 * dq * std::f64::consts::FRAC_1_SQRT_2;
+    let m = big as i64;
+    for kx in 0..=m {
+        for ky in -m..=m {
+            if kx == 0 && ky <= 0 {
+                continue;
+            }
+            let q = dq * (kx as f64).hypot(ky as f64);
+            let c = spectrum.psd(q);
+            if c == 0.0 {
+                continue;
+            }
+            let v = Complex64::new(rng.next(), rng.next()) * (gain * c.sqrt());
+            let row = ky.rem_euclid(n as i64) as usize;
+            spec[kx as usize * n + row] = v;
+            if kx == 0 {
+                spec[(-ky).rem_euclid(n as i64) as usize] = v.conj();
+            }
         }
     }
     let mut h = vec![0.0; n * n];

@@ -180,6 +180,33 @@ fn synthesis_has_the_spectrum_it_was_asked_for() {
     assert!((ratio - 1.0).abs() < 0.05, "⟨|∇h|²⟩ ratio {ratio}");
 }
 
+/// A seed is one surface: on a grid twice as fine it has the same modes, so
+/// the coarse grid's heights are the fine grid's at every other node (the
+/// convergence view and a coarse answer first rely on it); a grid with two
+/// nodes or fewer per shortest wavelength is refused.
+#[test]
+fn a_seed_is_the_same_surface_on_every_grid() {
+    let law = PowerLaw {
+        z: 1.0,
+        hurst: 0.8,
+        q0: 2.0 * 2.0 * std::f64::consts::PI,
+        q1: 24.0 * 2.0 * std::f64::consts::PI,
+        rolloff: true,
+    };
+    let coarse = synthesise(64, 1.0, &law, 7).unwrap();
+    let fine = synthesise(256, 1.0, &law, 7).unwrap();
+    let scale = coarse.iter().map(|v| v.abs()).fold(0.0, f64::max);
+    for y in 0..64 {
+        for x in 0..64 {
+            let d = (coarse[y * 64 + x] - fine[4 * y * 256 + 4 * x]).abs();
+            assert!(d <= 1e-12 * scale, "node ({x}, {y}): {d:e}");
+        }
+    }
+    assert_ne!(coarse, synthesise(64, 1.0, &law, 8).unwrap());
+    let e = synthesise(32, 1.0, &law, 7).unwrap_err().to_string();
+    assert!(e.contains("at least 50 nodes"), "{e}");
+}
+
 /// A cell of four longest wavelengths with the roll-off: below q0 the
 /// spectrum is flat at C(q0), so ⟨h²⟩ gains C(q0) dq² per mode there.
 #[test]

@@ -46,6 +46,17 @@ pub fn pct(v: f64) -> String {
     }
 }
 
+/// A mean and its spread in per cent, the spread to the mean's last
+/// digit ("2.10 ± 0.10"; "0.0312 ± 0.0040").
+pub fn pct_pm(mean: f64, sd: f64) -> String {
+    let m = pct(mean);
+    let decimals = m.split_once('.').map_or(0, |(_, d)| d.len());
+    if !sd.is_finite() {
+        return m;
+    }
+    format!("{m} ± {:.*}", decimals, 100.0 * sd)
+}
+
 /// A plastic share in per cent: whole from 10 %, one decimal below ("0"
 /// exactly none, "<0.1" a trace).
 pub fn share_pct(plastic: f64, total: f64) -> String {
@@ -77,10 +88,12 @@ pub fn readout(pane: &ContactPane, width: usize, g: Glyphs, h: &str) -> (Vec<Str
         .map(|a| (pct(a.total), share_pct(a.plastic, a.total)));
     let sim = match pane.chosen() {
         _ if pane.why_not.is_some() => Err("-".into()),
-        Some(Ok(s)) => Ok((
-            pct(s.result.area),
-            share_pct(s.result.plastic_area, s.result.area),
-        )),
+        // Over the seeds solved so far: mean ± sample standard deviation.
+        Some(Ok(_)) => match pane.at_load(pane.load) {
+            Some([a, _, p]) if a.n > 1 => Ok((pct_pm(a.mean, a.sd), share_pct(p.mean, a.mean))),
+            Some([a, _, p]) => Ok((pct(a.mean), share_pct(p.mean, a.mean))),
+            None => Err(String::new()),
+        },
         Some(Err(e)) => Err(e.clone()),
         None => Err(String::new()),
     };
@@ -101,7 +114,8 @@ pub fn readout(pane: &ContactPane, width: usize, g: Glyphs, h: &str) -> (Vec<Str
             ],
             vec![
                 format!("p̄ = {at} {h} · sim {a} %, {s} % plastic"),
-                format!("{at} {h} · sim {a}%, {s}% pl"),
+                format!("p̄ = {at} {h} · sim {}%, {s}% pl", a.replace(" ± ", "±")),
+                format!("{at} {h} · sim {}%, {s}% pl", a.replace(" ± ", "±")),
             ],
         ),
         Err(e) if e.is_empty() => (
@@ -135,6 +149,22 @@ pub fn readout(pane: &ContactPane, width: usize, g: Glyphs, h: &str) -> (Vec<Str
     (vec![last], error)
 }
 
+/// "seed 1", "seeds 1–4", or while they come in "seeds 1–4, 2 in" (at the
+/// chosen load).
+fn seeds_words(pane: &ContactPane) -> String {
+    let asked = pane.seeds_asked();
+    if asked == 1 {
+        return format!("seed {}", pane.seed);
+    }
+    let last = pane.seed.wrapping_add(asked as u64 - 1);
+    let got = pane.at_load(pane.load).map_or(0, |s| s[0].n);
+    if got < asked && !pane.chosen_is_coarse() {
+        format!("seeds {}–{last}, {got} in", pane.seed)
+    } else {
+        format!("seeds {}–{last}", pane.seed)
+    }
+}
+
 /// The title's right part: the progress bar while solving, else what was
 /// solved.
 fn progress_text(app: &App, width: usize) -> String {
@@ -155,8 +185,15 @@ fn progress_text(app: &App, width: usize) -> String {
         } else {
             ("█", "░")
         };
+        let left = match p.left() {
+            Some(d) if d.as_secs_f64() >= 90.0 => {
+                format!(", {:.0} min left", d.as_secs_f64() / 60.0)
+            }
+            Some(d) => format!(", {:.0} s left", d.as_secs_f64().max(1.0)),
+            None => String::new(),
+        };
         return format!(
-            "solving {}/{} [{}{}] {:.0} %",
+            "solving {}/{} [{}{}] {:.0} %{left}",
             p.done,
             p.total,
             on.repeat(full.min(cells)),
@@ -164,15 +201,18 @@ fn progress_text(app: &App, width: usize) -> String {
             100.0 * p.fraction()
         );
     }
-    let secs: f64 = pane
-        .results
-        .iter()
+    let all = || {
+        pane.results
+            .iter()
+            .chain(pane.seed_results.iter().flatten())
+    };
+    let secs: f64 = all()
         .flatten()
         .filter_map(|r| r.as_ref().ok())
         .map(|s| s.took.as_secs_f64())
         .sum();
-    let failed = pane.results.iter().flatten().filter(|r| r.is_err()).count();
-    let mut text = format!("{} solved, {:.1} s", pane.tasks.len() - failed, secs);
+    let failed = all().flatten().filter(|r| r.is_err()).count();
+    let mut text = format!("{} solved, {:.1} s", all().count() - failed, secs);
     if failed > 0 {
         text.push_str(&format!(", {failed} failed"));
     }
@@ -185,7 +225,10 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
     let gl = t.glyphs;
     let pane = &app.contact;
     let w = usize::from(area.width);
-    let n = pane.tasks.first().map(|t| t.scene.n);
+    let (n, coarse) = pane.grids();
+    // The grid of the answer shown: the coarse one until the scene's own
+    // grid has solved the chosen load.
+    let shown = if pane.chosen_is_coarse() { coarse } else { n };
     // The hardness in use by its own name (H alone is the Hurst exponent).
     let h = app.state.hardness_name();
     let head = if pane.sweep {
@@ -201,7 +244,12 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
             .is_some_and(|t| t.scene.surface.is_some());
         match n {
             Some(n) if measured => format!("simulation {n}² · measured map"),
-            Some(n) => format!("simulation {n}² · seed {}", pane.seed),
+            Some(n) if shown != Some(n) => format!(
+                "simulation {}² coarse, {n}² to come · {}",
+                shown.unwrap_or(0),
+                seeds_words(pane)
+            ),
+            Some(n) => format!("simulation {n}² · {}", seeds_words(pane)),
             None => "simulation".into(),
         }
     };
@@ -255,7 +303,7 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
         body.height,
     );
     let half = t.color && !t.glyphs.ascii_only();
-    let scale = map_scale(n.unwrap_or(0), usize::from(side));
+    let scale = map_scale(shown.unwrap_or(0), usize::from(side));
     // Without half blocks a character is one point across and two up.
     let scale = if half {
         scale
@@ -270,7 +318,7 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
             .wrap(Wrap { trim: true })
             .render(Rect::new(body.x, body.y + 1, side.max(1), rows), buf);
     } else if let Some(Ok(s)) = pane.chosen() {
-        let nn = n.unwrap_or(0);
+        let nn = (s.map.len() as f64).sqrt().round() as usize;
         draw_map(t, &s.map, nn, map, buf);
     }
     load_chart(app, chart, buf);
@@ -311,14 +359,11 @@ fn load_chart(app: &App, area: Rect, buf: &mut Buffer) {
         return;
     };
     let mut sims: [Vec<(f64, f64)>; 3] = Default::default();
-    for (k, r) in pane.results.iter().enumerate().take(LOADS) {
-        if let Some(Ok(s)) = r {
+    // Each load's means over the seeds solved so far.
+    for k in 0..pane.results.len().min(LOADS) {
+        if let Some(stats) = pane.at_load(k) {
             let x = load_value(k).log10();
-            let r = &s.result;
-            for (v, out) in [r.area, r.elastic_area, r.plastic_area]
-                .into_iter()
-                .zip(sims.iter_mut())
-            {
+            for (v, out) in stats.iter().map(|s| s.mean).zip(sims.iter_mut()) {
                 if v > 0.0 {
                     out.push((x, v.log10()));
                 }
