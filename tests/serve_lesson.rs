@@ -55,6 +55,7 @@ fn a_lesson_steps_polls_into_one_csv_and_everyone_follows() {
         assert!(help.contains(k), "{k}:\n{help}");
     }
     room.keys("lect", &["Escape"]);
+    room.wait("lect", "the help closed", 20, |s| !s.contains("help 1/"));
     let claim = |fig: &str, i: usize| {
         roughtui::figure::claims(&roughtui::presets::load(fig).unwrap())[i].at
     };
