@@ -20,17 +20,7 @@ pub fn fmt_value(axis: Axis, v: f64) -> String {
     if !matches!(axis, Axis::HRms | Axis::RStar) {
         return short_number(v);
     }
-    let a = v.abs();
-    let (scale, unit) = if a < 1e-6 {
-        (1e9, "nm")
-    } else if a < 1e-3 {
-        (1e6, "µm")
-    } else if a < 1.0 {
-        (1e3, "mm")
-    } else {
-        (1.0, "m")
-    };
-    format!("{} {unit}", short_number(v * scale))
+    crate::physical::short_length(v)
 }
 
 /// The answer, or the truth, of a poll that allows "nowhere in the
