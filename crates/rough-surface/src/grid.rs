@@ -32,6 +32,34 @@ pub struct Grid {
 }
 
 impl Grid {
+    /// An instrument file's map (a profile where `ny` is 1: its `ly` is 0):
+    /// `nx × ny` heights `z` over `lx × ly` metres, with `notes` and, where
+    /// `z` holds undefined points, a note counting them as the file calls
+    /// them (`what`: "points not measured").
+    pub(crate) fn of_file(
+        format: &'static str,
+        (nx, ny): (usize, usize),
+        (lx, ly): (f64, f64),
+        z: Vec<f64>,
+        mut notes: Vec<String>,
+        what: &str,
+    ) -> Grid {
+        let undefined = z.iter().filter(|v| v.is_nan()).count();
+        if undefined > 0 {
+            notes.push(format!("{undefined} {what} read as undefined"));
+        }
+        Grid {
+            nx,
+            ny,
+            lx,
+            ly: if ny == 1 { 0.0 } else { ly },
+            z,
+            notes,
+            format,
+            assumed: Default::default(),
+        }
+    }
+
     /// A profile (one row) rather than a map.
     pub fn is_profile(&self) -> bool {
         self.ny == 1

@@ -87,20 +87,14 @@ pub(crate) fn read(bytes: &[u8]) -> Result<Grid, Failure> {
             }
         })
         .collect();
-    let undefined = z.iter().filter(|v| v.is_nan()).count();
-    let notes = (undefined > 0)
-        .then(|| format!("{undefined} invalid points read as undefined"))
-        .into_iter()
-        .collect();
     let (nx, ny) = (nx as usize, ny as usize);
-    Ok(Grid {
-        nx,
-        ny,
-        lx: nx as f64 * dx,
-        ly: if ny == 1 { 0.0 } else { ny as f64 * dy },
+    let size = (nx as f64 * dx, ny as f64 * dy);
+    Ok(Grid::of_file(
+        NAME,
+        (nx, ny),
+        size,
         z,
-        notes,
-        format: NAME,
-        assumed: Default::default(),
-    })
+        vec![],
+        "invalid points",
+    ))
 }

@@ -155,21 +155,14 @@ pub(crate) fn read(bytes: &[u8], choice: Option<&str>) -> Result<Grid, Failure> 
             return Err(b.bad(format!("the size along {what} is {v}")));
         }
     }
-    let undefined = z.iter().filter(|v| v.is_nan()).count();
-    let mut notes: Vec<String> = chan::note(&chans, n).into_iter().collect();
-    if undefined > 0 {
-        notes.push(format!(
-            "{undefined} points not measured (value 1) read as undefined"
-        ));
-    }
-    Ok(Grid {
-        nx,
-        ny,
-        lx: lx.abs(),
-        ly: if ny == 1 { 0.0 } else { ly.abs() },
+    let notes: Vec<String> = chan::note(&chans, n).into_iter().collect();
+    let what = "points not measured (value 1)";
+    Ok(Grid::of_file(
+        NAME,
+        (nx, ny),
+        (lx.abs(), ly.abs()),
         z,
         notes,
-        format: NAME,
-        assumed: Default::default(),
-    })
+        what,
+    ))
 }

@@ -80,20 +80,8 @@ pub(crate) fn read(bytes: &[u8]) -> Result<Grid, Failure> {
             }
         })
         .collect();
-    let undefined = z.iter().filter(|v| v.is_nan()).count();
-    let notes = (undefined > 0)
-        .then(|| format!("{undefined} points not measured read as undefined"))
-        .into_iter()
-        .collect();
     let (nx, ny) = (nx as usize, ny as usize);
-    Ok(Grid {
-        nx,
-        ny,
-        lx: nx as f64 * res,
-        ly: if ny == 1 { 0.0 } else { ny as f64 * res },
-        z,
-        notes,
-        format: NAME,
-        assumed: Default::default(),
-    })
+    let size = (nx as f64 * res, ny as f64 * res);
+    let what = "points not measured";
+    Ok(Grid::of_file(NAME, (nx, ny), size, z, vec![], what))
 }

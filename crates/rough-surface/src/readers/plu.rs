@@ -87,22 +87,9 @@ pub(crate) fn read(bytes: &[u8], choice: Option<&str>) -> Result<Grid, Failure> 
             }
         })
         .collect();
-    let mut notes: Vec<String> = chan::note(&chans, n).into_iter().collect();
-    let undefined = z.iter().filter(|v| v.is_nan()).count();
-    if undefined > 0 {
-        notes.push(format!(
-            "{undefined} points not measured (1000001) read as undefined"
-        ));
-    }
+    let notes: Vec<String> = chan::note(&chans, n).into_iter().collect();
     let (nx, ny) = (l.nx as usize, l.ny as usize);
-    Ok(Grid {
-        nx,
-        ny,
-        lx: nx as f64 * dx * 1e-6,
-        ly: if ny == 1 { 0.0 } else { ny as f64 * dy * 1e-6 },
-        z,
-        notes,
-        format: NAME,
-        assumed: Default::default(),
-    })
+    let size = (nx as f64 * dx * 1e-6, ny as f64 * dy * 1e-6);
+    let what = "points not measured (1000001)";
+    Ok(Grid::of_file(NAME, (nx, ny), size, z, notes, what))
 }

@@ -100,21 +100,7 @@ pub(crate) fn read(bytes: &[u8]) -> Result<Grid, Failure> {
         3 => flip_rows(&mut z, nx),
         _ => {}
     }
-    let undefined = z.iter().filter(|v| v.is_nan()).count();
-    let mut notes = Vec::new();
-    if undefined > 0 {
-        notes.push(format!(
-            "{undefined} non-measured points (marked zmin − 2) read as undefined"
-        ));
-    }
-    Ok(Grid {
-        nx,
-        ny,
-        lx: nx as f64 * dx * mx,
-        ly: if ny == 1 { 0.0 } else { ny as f64 * dy * my },
-        z,
-        notes,
-        format: NAME,
-        assumed: Default::default(),
-    })
+    let size = (nx as f64 * dx * mx, ny as f64 * dy * my);
+    let what = "non-measured points (marked zmin − 2)";
+    Ok(Grid::of_file(NAME, (nx, ny), size, z, vec![], what))
 }
