@@ -200,10 +200,21 @@ pub fn render_contact_map(state: &State, m: &ContactMap, span: String) -> anyhow
         None => format!("load p̄ = {load} {hy} · {n}×{n} nodes of the measured map"),
     };
     let square = match m.seed {
-        Some(_) => format!(
-            "the periodic cell of side L = 2π/q0 = {}",
-            short_length(m.side)
-        ),
+        Some(_) => {
+            // The cell is K longest wavelengths a side (`--cell K`).
+            let k = (m.side * state.params.q0() / std::f64::consts::TAU).round();
+            if k <= 1.0 {
+                format!(
+                    "the periodic cell of one longest wavelength, L = 2π/q0 = {}",
+                    short_length(m.side)
+                )
+            } else {
+                format!(
+                    "the periodic cell of {k} longest wavelengths, {k} · 2π/q0 = {}",
+                    short_length(m.side)
+                )
+            }
+        }
         None => format!("the measured map's square of side {}", short_length(m.side)),
     };
     let caption = format!(
