@@ -93,14 +93,14 @@ impl Fft2 {
         min_len(self.n * self.n)
     }
 
-    /// Forward transform of the real field `input` (n × n, row-major) into
-    /// `out` (m × n, transposed). Unnormalised.
-    pub(crate) fn forward(&mut self, input: &[f64], out: &mut [Complex64]) {
+    /// The real rows of `input` (each n long) transformed into the first
+    /// rows of `self.rows` (each m long), `k` rows a task on every worker.
+    fn rows_forward(&mut self, input: &[f64], k: usize) {
         let (n, m) = (self.n, self.m);
-        let k = self.rows_per_task(n);
+        let rows = input.len() / n;
         let r2c = &self.r2c;
         let min = self.min_tasks();
-        self.rows
+        self.rows[..rows * m]
             .par_chunks_mut(k * m)
             .zip(input.par_chunks(k * n))
             .zip(self.workers.par_iter_mut())
@@ -112,6 +112,15 @@ impl Fft2 {
                         .expect("buffer sizes fixed at planning");
                 }
             });
+    }
+
+    /// Forward transform of the real field `input` (n × n, row-major) into
+    /// `out` (m × n, transposed). Unnormalised.
+    pub(crate) fn forward(&mut self, input: &[f64], out: &mut [Complex64]) {
+        let (n, m) = (self.n, self.m);
+        let min = self.min_tasks();
+        let k = self.rows_per_task(n);
+        self.rows_forward(input, k);
         transpose_par(&self.rows, out, n, m, min);
         let kc = self.rows_per_task(m);
         let col = &self.col_fwd;
@@ -192,20 +201,8 @@ impl Fft2 {
         let (n, m) = (self.n, self.m);
         let (rows_in, rows_out) = (input.len() / n, out.len() / n);
         let min = self.min_tasks();
-        let r2c = &self.r2c;
         let k = rows_in.div_ceil(self.workers.len()).max(1);
-        self.rows[..rows_in * m]
-            .par_chunks_mut(k * m)
-            .zip(input.par_chunks(k * n))
-            .zip(self.workers.par_iter_mut())
-            .with_min_len(min)
-            .for_each(|((dst, src), w)| {
-                for (d, s) in dst.chunks_exact_mut(m).zip(src.chunks_exact(n)) {
-                    w.real_row.copy_from_slice(s);
-                    r2c.process_with_scratch(&mut w.real_row, d, &mut w.scratch)
-                        .expect("buffer sizes fixed at planning");
-                }
-            });
+        self.rows_forward(input, k);
         let tasks = self.workers.len();
         let per = m.div_ceil(tasks);
         let rows = Shared(self.rows.as_mut_ptr());
