@@ -294,6 +294,71 @@ fn b_shows_the_plastic_share_against_zeta() {
     assert!(!a.contact.sweep);
 }
 
+/// `b` averages over the pane's seeds as the load plot does: each point
+/// the mean of the seeds' plastic shares, ± one sd drawn, the title and
+/// the legend saying how many.
+#[test]
+fn b_averages_the_plastic_share_over_the_seeds() {
+    use roughtui::contact::{Grid, Sampling};
+    let engine = Engine::new(2);
+    let mut a = app_at(4.0, (120, 36), Theme::colored(), &engine);
+    // 64 nodes a side hold ζ = 1 … 16 (five points; fast in a debug build).
+    a.contact.sampling = Sampling {
+        cell: 1,
+        grid: Grid::Side(64),
+        ..Sampling::default()
+    };
+    to_contact(&mut a);
+    // p̄ = 0.1 H0: part of the contact at the hardness.
+    for _ in 0..4 {
+        ch(&mut a, ']');
+    }
+    ch(&mut a, 'b');
+    assert_eq!(a.contact.zetas, [1.0, 2.0, 4.0, 8.0, 16.0]);
+    assert_eq!(a.contact.tasks.len(), 10);
+    assert_eq!(a.contact.seed_tasks.len(), 3, "four seeds by default");
+    let seeds: Vec<u64> = std::iter::once(&a.contact.tasks)
+        .chain(&a.contact.seed_tasks)
+        .map(|ts| ts[0].scene.seed)
+        .collect();
+    assert_eq!(seeds, [1, 2, 3, 4]);
+    settle(&mut a);
+    assert_eq!(a.contact.seeds_in(), 4);
+    // At ζ = 16, size effect off: the mean and sample sd of the four
+    // seeds' own shares.
+    let shares: Vec<f64> = std::iter::once(&a.contact.results)
+        .chain(&a.contact.seed_results)
+        .map(|rs| {
+            let r = rs[4].as_ref().unwrap().as_ref().unwrap().result;
+            r.plastic_area / r.area
+        })
+        .collect();
+    let mean = shares.iter().sum::<f64>() / 4.0;
+    let sd = (shares.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / 3.0).sqrt();
+    let st = a.contact.share_at(0, 4).unwrap();
+    assert_eq!(st.n, 4);
+    assert!((st.mean - mean).abs() < 1e-15 && (st.sd - sd).abs() < 1e-15);
+    assert!(st.sd > 0.0, "four surfaces differ: {shares:?}");
+    let text = screen(&a);
+    assert!(
+        text.contains("plastic share vs ζ at p̄ = 0.1 H0 · seeds 1–4"),
+        "{text}"
+    );
+    assert!(text.contains("mean ± sd of 4 seeds"), "{text}");
+    // R: sixteen seeds, then one, as on the load plot.
+    ch(&mut a, 'R');
+    assert_eq!(a.contact.seed_tasks.len(), 15);
+    ch(&mut a, 'R');
+    assert!(a.contact.seed_tasks.is_empty());
+    settle(&mut a);
+    let text = screen(&a);
+    assert!(
+        text.contains("plastic share vs ζ at p̄ = 0.1 H0 · seed 1"),
+        "{text}"
+    );
+    assert_eq!(a.contact.share_at(0, 4).unwrap().n, 1);
+}
+
 #[test]
 fn beyond_the_grid_the_view_says_what_it_resolves() {
     let engine = Engine::new(1);

@@ -99,9 +99,9 @@ pub struct ContactPane {
     /// enough), solved first; which of `results` are theirs.
     pub coarse_tasks: Vec<Task>,
     pub coarse: Vec<bool>,
-    /// Surfaces averaged over (load plot of a power law): seeds `seed` …
-    /// `seed + seeds − 1`; the further seeds' tasks and results, each
-    /// [`LOADS`] long.
+    /// Surfaces averaged over (a power law's load plot and `b` plot):
+    /// seeds `seed` … `seed + seeds − 1`; the further seeds' tasks and
+    /// results, each as long as `tasks`.
     pub seeds: u32,
     pub seed_tasks: Vec<Vec<Task>>,
     pub seed_results: Vec<Vec<Option<Outcome>>>,
@@ -185,9 +185,32 @@ impl ContactPane {
         ])
     }
 
-    /// Seeds of the load plot: those asked for (1 for a measured map).
+    /// Seeds of the plot: those asked for (1 for a measured map).
     pub fn seeds_asked(&self) -> usize {
         1 + self.seed_tasks.len()
+    }
+
+    /// Seeds whose every task is in (the `b` plot's seeds landed).
+    pub fn seeds_in(&self) -> usize {
+        let done = |rs: &[Option<Outcome>]| !rs.is_empty() && rs.iter().all(Option::is_some);
+        usize::from(done(&self.results)) + self.seed_results.iter().filter(|r| done(r)).count()
+    }
+
+    /// The `b` plot's plastic share S_pl/S_tot at ζ number `k`, size effect
+    /// off (`set` 0) or on (1), over the seeds solved so far (a seed
+    /// without contact there left out).
+    pub fn share_at(&self, set: usize, k: usize) -> Option<Stat> {
+        let i = set * self.zetas.len() + k;
+        let runs = std::iter::once(&self.results)
+            .chain(&self.seed_results)
+            .filter_map(|rs| match rs.get(i) {
+                Some(Some(Ok(s))) if s.result.area > 0.0 => {
+                    Some(s.result.plastic_area / s.result.area)
+                }
+                _ => None,
+            });
+        let st = Stat::of(runs);
+        (st.n > 0).then_some(st)
     }
 
     /// Whether the chosen load shows the coarse grid's answer.
@@ -327,12 +350,19 @@ impl ContactPane {
                 .map(|r| r.tasks.clone())
                 .unwrap_or_default();
             self.seed_tasks = vec![];
-            if !self.sweep && self.tasks.len() > LOADS {
-                self.seed_tasks = self.tasks[LOADS..]
-                    .chunks(LOADS)
+            // A seed's tasks: the loads, or b's ζ without and with the
+            // size effect.
+            let per = if self.sweep {
+                2 * self.zetas.len()
+            } else {
+                LOADS
+            };
+            if per > 0 && self.tasks.len() > per {
+                self.seed_tasks = self.tasks[per..]
+                    .chunks(per)
                     .map(<[Task]>::to_vec)
                     .collect();
-                self.tasks.truncate(LOADS);
+                self.tasks.truncate(per);
             }
             self.coarse_tasks = if self.sweep {
                 vec![]
@@ -405,13 +435,18 @@ impl ContactPane {
                 self.why_not = None;
             }
             self.zetas = keys;
-            for se in [false, true] {
-                for &z in &self.zetas {
-                    let mut s = state.clone();
-                    s.size_effect = se;
-                    s.params = s.params.with(Axis::Zeta, z).ok()?;
-                    let key = SceneKey::with(&s, self.seed, &self.sampling).ok()?;
-                    tasks.push(Task::new(key, load_value(self.load)));
+            // Each seed's sweep in turn (a measured map has one surface).
+            let seeds = if state.is_measured() { 1 } else { self.seeds };
+            for j in 0..u64::from(seeds) {
+                let seed = self.seed.wrapping_add(j);
+                for se in [false, true] {
+                    for &z in &self.zetas {
+                        let mut s = state.clone();
+                        s.size_effect = se;
+                        s.params = s.params.with(Axis::Zeta, z).ok()?;
+                        let key = SceneKey::with(&s, seed, &self.sampling).ok()?;
+                        tasks.push(Task::new(key, load_value(self.load)));
+                    }
                 }
             }
         } else if self.why_not.is_none() {

@@ -14,6 +14,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Dataset, GraphType, Paragraph, Widget, Wrap};
 
 use super::chart::{self, Scale};
+use crate::contact::Stat;
 use crate::physical::print::{fmt_num, load_text};
 use crate::tui::app::App;
 use crate::tui::contact::{load_value, ContactPane, LOADS};
@@ -150,14 +151,18 @@ pub fn readout(pane: &ContactPane, width: usize, g: Glyphs, h: &str) -> (Vec<Str
 }
 
 /// "seed 1", "seeds 1–4", or while they come in "seeds 1–4, 2 in" (at the
-/// chosen load).
+/// chosen load; in `b`'s plot, those whose whole sweep is in).
 fn seeds_words(pane: &ContactPane) -> String {
     let asked = pane.seeds_asked();
     if asked == 1 {
         return format!("seed {}", pane.seed);
     }
     let last = pane.seed.wrapping_add(asked as u64 - 1);
-    let got = pane.at_load(pane.load).map_or(0, |s| s[0].n);
+    let got = if pane.sweep {
+        pane.seeds_in()
+    } else {
+        pane.at_load(pane.load).map_or(0, |s| s[0].n)
+    };
     if got < asked && !pane.chosen_is_coarse() {
         format!("seeds {}–{last}, {got} in", pane.seed)
     } else {
@@ -233,9 +238,9 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
     let h = app.state.hardness_name();
     let head = if pane.sweep {
         format!(
-            "plastic share vs ζ at p̄ = {} {h} · seed {}",
+            "plastic share vs ζ at p̄ = {} {h} · {}",
             load_text(load_value(pane.load)),
-            pane.seed
+            seeds_words(pane)
         )
     } else {
         let measured = pane
@@ -275,8 +280,13 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
     let row1 = Rect::new(area.x, area.y + 1, area.width, 1);
     let mut top = 2;
     if pane.sweep {
-        let text = "simulation points · theory S_pl/S_tot lines · b: areas vs load";
-        Line::styled(gl.text(text).into_owned(), t.dim).render(row1, buf);
+        let n = pane.seeds_asked();
+        let text = if n > 1 {
+            format!("simulation: mean ± sd of {n} seeds · theory S_pl/S_tot lines · b: vs load")
+        } else {
+            "simulation points · theory S_pl/S_tot lines · b: areas vs load".into()
+        };
+        Line::styled(gl.text(&text).into_owned(), t.dim).render(row1, buf);
     } else {
         let (lines, error) = readout(pane, w, gl, h);
         let style = if error { t.error } else { Style::new() };
@@ -359,13 +369,15 @@ fn load_chart(app: &App, area: Rect, buf: &mut Buffer) {
         return;
     };
     let mut sims: [Vec<(f64, f64)>; 3] = Default::default();
-    // Each load's means over the seeds solved so far.
+    // Each load's means over the seeds solved so far, and their spread.
+    let mut spread: [Vec<(f64, Stat)>; 3] = Default::default();
     for k in 0..pane.results.len().min(LOADS) {
         if let Some(stats) = pane.at_load(k) {
             let x = load_value(k).log10();
-            for (v, out) in stats.iter().map(|s| s.mean).zip(sims.iter_mut()) {
-                if v > 0.0 {
-                    out.push((x, v.log10()));
+            for ((st, out), sd) in stats.iter().zip(sims.iter_mut()).zip(spread.iter_mut()) {
+                if st.mean > 0.0 {
+                    out.push((x, st.mean.log10()));
+                    sd.push((x, *st));
                 }
             }
         }
@@ -380,6 +392,13 @@ fn load_chart(app: &App, area: Rect, buf: &mut Buffer) {
         .fold(0.0, f64::min);
     let y0 = lowest.floor().clamp(-6.0, -1.0);
     let (xb, yb) = ([-3.0, 0.0], [y0, 0.0]);
+    // ± one sd on the log axis: a mean − sd at or below zero runs to the
+    // axis.
+    let log = |v: f64| if v > 0.0 { v.log10().max(y0) } else { y0 };
+    let bars: Vec<Vec<Vec<(f64, f64)>>> = spread
+        .iter()
+        .map(|set| sd_bars(set, 0.0, |m, sd| (log(m - sd), log(m + sd).min(0.0))))
+        .collect();
     let label = |s: &str| Span::raw(t.glyphs.text(s).into_owned());
     let legend = Line::from(vec![
         Span::styled(t.total.sample, t.total.style),
@@ -419,6 +438,7 @@ fn load_chart(app: &App, area: Rect, buf: &mut Buffer) {
         .enumerate()
         .rev()
     {
+        sets.extend(bars[k].iter().map(|b| chart::dataset(c, b)));
         sets.push(scatter(point(t, c, ch), &sims[k]));
     }
     chart::plot(sets, (xb, yb), g, buf);
@@ -438,18 +458,26 @@ fn sweep_chart(app: &App, area: Rect, buf: &mut Buffer) {
         return;
     }
     let zs = &pane.zetas;
+    let hi = zs.last().copied().unwrap_or(2.0).log10();
+    // The means over the seeds solved so far, ± one sd (the two sets'
+    // bars a little apart, so that neither hides the other).
     let mut sims: [Vec<(f64, f64)>; 2] = Default::default();
-    for (i, r) in pane.results.iter().enumerate() {
-        let (set, k) = (i / zs.len(), i % zs.len());
-        if let (Some(Ok(s)), Some(out)) = (r, sims.get_mut(set)) {
-            let r = &s.result;
-            if r.area > 0.0 {
-                out.push((zs[k].log10(), r.plastic_area / r.area));
+    let mut spread: [Vec<(f64, Stat)>; 2] = Default::default();
+    for (set, (out, sd)) in sims.iter_mut().zip(spread.iter_mut()).enumerate() {
+        for (k, z) in zs.iter().enumerate() {
+            if let Some(st) = pane.share_at(set, k) {
+                out.push((z.log10(), st.mean));
+                sd.push((z.log10(), st));
             }
         }
     }
-    let hi = zs.last().copied().unwrap_or(2.0).log10();
     let (xb, yb) = ([0.0, hi], [0.0, 1.0]);
+    let nudge = 0.006 * hi.max(0.3);
+    let bars: Vec<Vec<Vec<(f64, f64)>>> = spread
+        .iter()
+        .zip([-nudge, nudge])
+        .map(|(set, dx)| sd_bars(set, dx, |m, sd| ((m - sd).max(0.0), (m + sd).min(1.0))))
+        .collect();
     let (off, on) = (&t.psi_p, &t.psi_star);
     let name = |s: &str| Span::raw(t.glyphs.text(s).into_owned());
     let p_off = point(t, off, 'o');
@@ -474,7 +502,28 @@ fn sweep_chart(app: &App, area: Rect, buf: &mut Buffer) {
     for (c, data) in [off, on].into_iter().zip(theory) {
         sets.push(chart::dataset(c, data));
     }
+    for (c, b) in [off, on].into_iter().zip(&bars) {
+        sets.extend(b.iter().map(|b| chart::dataset(c, b)));
+    }
     sets.push(scatter(p_off, &sims[0]));
     sets.push(scatter(p_on, &sims[1]));
     chart::plot(sets, (xb, yb), g, buf);
+}
+
+/// One vertical bar of ± one standard deviation for each point of more
+/// than one seed, at x + `dx`, from `ends(mean, sd)` (the axis's
+/// coordinates).
+fn sd_bars(
+    points: &[(f64, Stat)],
+    dx: f64,
+    ends: impl Fn(f64, f64) -> (f64, f64),
+) -> Vec<Vec<(f64, f64)>> {
+    points
+        .iter()
+        .filter(|(_, st)| st.n > 1 && st.sd.is_finite() && st.sd > 0.0)
+        .map(|&(x, st)| {
+            let (lo, hi) = ends(st.mean, st.sd);
+            vec![(x + dx, lo), (x + dx, hi)]
+        })
+        .collect()
 }
