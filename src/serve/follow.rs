@@ -253,6 +253,7 @@ fn edits(msg: &Message) -> bool {
             | M::ContactSweep
             | M::ContactSeed
             | M::ContactSeeds
+            | M::ContactTable
             | M::MoveFitBand { .. }
             | M::AutoFitBand
             // Typing a slider's value: the lecturer's next move would

@@ -573,7 +573,8 @@ pub fn update(app: &mut App, msg: Message) {
         Message::ContactLoad { .. }
         | Message::ContactSweep
         | Message::ContactSeed
-        | Message::ContactSeeds => super::contact::on_key(app, msg),
+        | Message::ContactSeeds
+        | Message::ContactTable => super::contact::on_key(app, msg),
         Message::Tick => {}
         Message::Quit => app.quit = true,
     }

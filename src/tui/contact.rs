@@ -15,6 +15,7 @@ use crate::contact::scene::{unsolvable, SceneKey};
 use crate::contact::{Sampling, Stat, DEFAULT_SEED, MAX_GRID};
 use crate::scene::State;
 
+pub mod convergence;
 mod keys;
 pub use keys::{on_key, picture};
 
@@ -107,6 +108,10 @@ pub struct ContactPane {
     pub seed_results: Vec<Vec<Option<Outcome>>>,
     pub progress: Progress,
     pub theory: Theory,
+    /// `t`: the convergence table at the chosen load in place of the plot
+    /// (the plot's job waits meanwhile).
+    pub table: bool,
+    pub convergence: convergence::Convergence,
     request: Option<Request>,
     ticket: Option<Ticket>,
     /// The scene [`ContactPane::request`] was worked out for.
@@ -140,6 +145,8 @@ impl Default for ContactPane {
             seed_results: vec![],
             progress: Progress::default(),
             theory: Theory::default(),
+            table: false,
+            convergence: convergence::Convergence::default(),
             request: None,
             ticket: None,
             scene: None,
@@ -152,7 +159,9 @@ impl ContactPane {
     /// Whether a job is under way for the scene on screen (the session
     /// then wakes for its progress).
     pub fn busy(&self) -> bool {
-        self.reading || (self.ticket.is_some() && !self.progress.finished)
+        self.reading
+            || (self.ticket.is_some() && !self.progress.finished)
+            || self.convergence.busy()
     }
 
     /// The result for the chosen load (load plot), if solved.
@@ -294,6 +303,7 @@ impl ContactPane {
             self.reading = false;
             self.ticket = None;
             self.progress = Progress::default();
+            self.convergence.stop();
             if !self.scene.as_ref().is_some_and(|s| same_scene(s, state)) {
                 self.ticket = None;
                 self.progress = Progress::default();
@@ -302,6 +312,19 @@ impl ContactPane {
             }
             return;
         }
+        // The convergence table on screen: its job alone (the plot's
+        // waits, going on from the cache when the table is closed).
+        if self.table {
+            self.reading = false;
+            self.ticket = None;
+            self.progress = Progress::default();
+            let seeds = (self.seed, self.seeds);
+            let p = load_value(self.load);
+            let c = &mut self.convergence;
+            c.refresh(&self.engine, &self.waker, state, seeds, &self.sampling, p);
+            return;
+        }
+        self.convergence.stop();
         // A measured map's heights are read off this thread first.
         let fetched = measured::fetch(state, &self.waker);
         self.reading = fetched == Fetch::Reading;

@@ -106,13 +106,14 @@ pub enum Message {
     Redraw,
     /// The contact view's keys: the next or previous load, the plastic
     /// share against ζ (`b`), another surface (`r`: the next seed), how
-    /// many surfaces (`R`: 1, 4 or 16 seeds).
+    /// many surfaces (`R`: 1, 4 or 16 seeds), the convergence table (`t`).
     ContactLoad {
         up: bool,
     },
     ContactSweep,
     ContactSeed,
     ContactSeeds,
+    ContactTable,
     /// The contact solver made progress (sent by the session, not a key).
     Tick,
     Quit,

@@ -1,5 +1,6 @@
-//! The contact view's keys (`[ ]`, `b`, `r`, `R`) and its picture (`p`).
+//! The contact view's keys (`[ ]`, `b`, `r`, `R`, `t`) and its picture (`p`).
 
+use super::convergence::MEASURED;
 use super::{load_value, LOADS, SEED_CHOICES};
 use crate::tui::app::{App, Message};
 
@@ -21,7 +22,27 @@ pub fn on_key(app: &mut App, msg: Message) {
             }
             app.contact.load = k;
         }
+        // From the table, b shows its plot of the plastic share.
+        Message::ContactSweep if pane.table => {
+            pane.table = false;
+            pane.sweep = true;
+        }
         Message::ContactSweep => pane.sweep = !pane.sweep,
+        Message::ContactTable if app.state.is_measured() && !pane.table => {
+            app.set_status(MEASURED, true);
+        }
+        Message::ContactTable => {
+            pane.table = !pane.table;
+            let text = if pane.table {
+                "convergence at the chosen load: 4, 8, 16 nodes per shortest wavelength × cells \
+                 of 1, 2, 4 longest wavelengths, the smallest grids first (t: back)"
+            } else if pane.sweep {
+                "back to the plastic share against ζ (t: the convergence table)"
+            } else {
+                "back to the areas against the load (t: the convergence table)"
+            };
+            app.set_status(text, false);
+        }
         Message::ContactSeeds if app.state.is_measured() => app.set_status(
             "a measured map is one surface: the simulation solves its own heights",
             true,
@@ -58,6 +79,12 @@ pub fn on_key(app: &mut App, msg: Message) {
 /// The contact view's picture (`p`): the contact map at the chosen load.
 pub fn picture(app: &App) -> anyhow::Result<String> {
     let pane = &app.contact;
+    if pane.table {
+        anyhow::bail!(
+            "no picture of the convergence table: roughtui export --view contact-convergence \
+             writes it as CSV"
+        );
+    }
     if pane.sweep {
         anyhow::bail!(
             "no picture of b's plot here: roughtui export --view contact-sweep --format svg \

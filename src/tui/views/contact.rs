@@ -14,6 +14,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Dataset, GraphType, Paragraph, Widget, Wrap};
 
 use super::chart::{self, Scale};
+use crate::contact::engine::Progress;
 use crate::contact::Stat;
 use crate::physical::print::{fmt_num, load_text};
 use crate::tui::app::App;
@@ -22,6 +23,7 @@ use crate::tui::glyphs::Glyphs;
 use crate::tui::layout::Y_LABEL_W;
 use crate::tui::theme::{CurveStyle, Theme};
 
+mod convergence;
 mod map;
 pub use map::{dithered, map_scale};
 use map::{draw_map, map_legend};
@@ -170,6 +172,53 @@ fn seeds_words(pane: &ContactPane) -> String {
     }
 }
 
+/// A job's progress in at most `room` columns, the longest form that fits
+/// ("solving 3/13 [███░░░] 25 %, 4 s left" … "25 %, 4 s left"; the time
+/// left is kept longest), or that it waits for a core.
+pub(super) fn progress_fit(p: &Progress, gl: Glyphs, room: usize) -> String {
+    let full = progress_bar(p, gl, 12);
+    if p.queued {
+        return full;
+    }
+    let short = progress_bar(p, gl, 4);
+    let tail = short.split_once("] ").map_or("", |(_, t)| t).to_string();
+    let no_verb = short.trim_start_matches("solving ").to_string();
+    [full, short, no_verb, tail]
+        .into_iter()
+        .find(|f| Span::raw(f.as_str()).width() <= room)
+        .unwrap_or_default()
+}
+
+/// A job's progress: "solving 3/13 [███░░░] 25 %, 4 s left" (a bar of
+/// `width` cells, 4 to 12), or that it waits for a core.
+pub(super) fn progress_bar(p: &Progress, gl: Glyphs, width: usize) -> String {
+    if p.queued {
+        return "waiting for a free core".into();
+    }
+    let cells = width.clamp(4, 12);
+    let full = (p.fraction() * cells as f64).round() as usize;
+    let (on, off) = if gl.ascii_only() {
+        ("#", "-")
+    } else {
+        ("█", "░")
+    };
+    let left = match p.left() {
+        Some(d) if d.as_secs_f64() >= 90.0 => {
+            format!(", {:.0} min left", d.as_secs_f64() / 60.0)
+        }
+        Some(d) => format!(", {:.0} s left", d.as_secs_f64().max(1.0)),
+        None => String::new(),
+    };
+    format!(
+        "solving {}/{} [{}{}] {:.0} %{left}",
+        p.done,
+        p.total,
+        on.repeat(full.min(cells)),
+        off.repeat(cells - full.min(cells)),
+        100.0 * p.fraction()
+    )
+}
+
 /// The title's right part: the progress bar while solving, else what was
 /// solved.
 fn progress_text(app: &App, width: usize) -> String {
@@ -180,31 +229,7 @@ fn progress_text(app: &App, width: usize) -> String {
         return String::new();
     }
     if pane.busy() {
-        if p.queued {
-            return "waiting for a free core".into();
-        }
-        let cells = width.clamp(4, 12);
-        let full = (p.fraction() * cells as f64).round() as usize;
-        let (on, off) = if gl.ascii_only() {
-            ("#", "-")
-        } else {
-            ("█", "░")
-        };
-        let left = match p.left() {
-            Some(d) if d.as_secs_f64() >= 90.0 => {
-                format!(", {:.0} min left", d.as_secs_f64() / 60.0)
-            }
-            Some(d) => format!(", {:.0} s left", d.as_secs_f64().max(1.0)),
-            None => String::new(),
-        };
-        return format!(
-            "solving {}/{} [{}{}] {:.0} %{left}",
-            p.done,
-            p.total,
-            on.repeat(full.min(cells)),
-            off.repeat(cells - full.min(cells)),
-            100.0 * p.fraction()
-        );
+        return progress_fit(p, gl, width);
     }
     let all = || {
         pane.results
@@ -229,6 +254,10 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
     let t = &app.theme;
     let gl = t.glyphs;
     let pane = &app.contact;
+    if pane.table {
+        convergence::render(app, area, buf);
+        return;
+    }
     let w = usize::from(area.width);
     let (n, coarse) = pane.grids();
     // The grid of the answer shown: the coarse one until the scene's own
@@ -259,9 +288,9 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
         }
     };
     let head = gl.text(&head).into_owned();
-    let right = progress_text(app, 12);
-    let mut spans = vec![Span::styled(head.clone(), t.title)];
     let used = Span::raw(head.as_str()).width();
+    let right = progress_text(app, w.saturating_sub(used + 2));
+    let mut spans = vec![Span::styled(head.clone(), t.title)];
     if used + 2 + Span::raw(right.as_str()).width() <= w {
         spans.push(Span::raw("  "));
         spans.push(Span::styled(gl.text(&right).into_owned(), t.dim));
