@@ -9,6 +9,7 @@ use rough_model::Axis;
 use crate::figure::View;
 use crate::scene::State;
 use crate::tui::app::{App, Message};
+use crate::tui::contact::ContactPane;
 
 /// What a lecturer's explorer shows: the scene (parameters, sweep, model,
 /// moments), the selected slider, the view, the map's y axis, and the
@@ -21,8 +22,8 @@ pub struct Shown {
     pub map_y: Option<Axis>,
     pub modified: bool,
     pub file: Option<String>,
-    /// The contact view's load and plot (`b`).
-    pub contact: (usize, bool),
+    /// The contact view's load, plot, seeds and table.
+    pub contact: ContactShown,
     /// The lesson's step, when the lecturer leads one.
     pub step: Option<crate::lesson::StepLine>,
 }
@@ -36,7 +37,7 @@ impl Shown {
             map_y: app.map_y,
             modified: app.modified,
             file: app.file.clone(),
-            contact: (app.contact.load, app.contact.sweep),
+            contact: ContactShown::of(&app.contact),
             step: app.class.step.clone(),
         }
     }
@@ -44,8 +45,8 @@ impl Shown {
     /// Makes `app` show this.
     pub fn apply(&self, app: &mut App) {
         let c = &mut app.contact;
-        let moved = (c.load, c.sweep) != self.contact;
-        (c.load, c.sweep) = self.contact;
+        let moved = ContactShown::of(c) != self.contact;
+        self.contact.set(c);
         app.show(&self.state, self.selected, self.view, self.map_y);
         if moved {
             crate::tui::app::update(app, Message::Tick);
@@ -53,6 +54,32 @@ impl Shown {
         app.modified = self.modified;
         app.file.clone_from(&self.file);
         app.class.step.clone_from(&self.step);
+    }
+}
+
+/// What the contact view shows of a scene: the load (`[ ]`), the plot
+/// (`b`), how many seeds it averages over (`R`) and whether the
+/// convergence table is up (`t`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ContactShown {
+    pub load: usize,
+    pub sweep: bool,
+    pub seeds: u32,
+    pub table: bool,
+}
+
+impl ContactShown {
+    pub fn of(c: &ContactPane) -> ContactShown {
+        ContactShown {
+            load: c.load,
+            sweep: c.sweep,
+            seeds: c.seeds,
+            table: c.table,
+        }
+    }
+
+    fn set(&self, c: &mut ContactPane) {
+        (c.load, c.sweep, c.seeds, c.table) = (self.load, self.sweep, self.seeds, self.table);
     }
 }
 
@@ -297,6 +324,54 @@ mod tests {
         Shown::of(&lecturer).apply(&mut student);
         assert!(student.modified);
         assert_eq!(student.file.as_deref(), Some("class.ron"));
+    }
+
+    /// A follower's contact view takes the lecturer's load, plot, seed
+    /// count and convergence table: the same tasks, so one job for both.
+    #[test]
+    fn a_follower_takes_the_lecturers_seeds_and_table() {
+        let engine = crate::contact::engine::Engine::new(1);
+        let mut lecturer = fig("fig2");
+        let mut student = fig("fig2");
+        lecturer.contact.engine = std::sync::Arc::clone(&engine);
+        student.contact.engine = std::sync::Arc::clone(&engine);
+        for _ in 0..4 {
+            update(&mut lecturer, Message::NextView);
+        }
+        assert_eq!(lecturer.view, View::Contact);
+        update(&mut lecturer, Message::ContactSeeds);
+        assert_eq!(lecturer.contact.seeds, 16);
+        update(&mut lecturer, Message::ContactLoad { up: true });
+        Shown::of(&lecturer).apply(&mut student);
+        assert_eq!(student.view, View::Contact);
+        assert_eq!((student.contact.seeds, student.contact.load), (16, 5));
+        assert_eq!(student.contact.seeds_asked(), 16);
+        assert_eq!(student.contact.seed_tasks, lecturer.contact.seed_tasks);
+        // The table, and back.
+        update(&mut lecturer, Message::ContactTable);
+        assert!(lecturer.contact.table);
+        Shown::of(&lecturer).apply(&mut student);
+        assert!(student.contact.table);
+        let tasks = |a: &App| -> Vec<_> {
+            a.contact
+                .convergence
+                .rows
+                .iter()
+                .flat_map(|r| r.tasks.clone())
+                .collect()
+        };
+        assert_eq!(
+            tasks(&student).len(),
+            8 * 16,
+            "fig2's 16/λ in 4 cells is 8192²"
+        );
+        assert_eq!(tasks(&student), tasks(&lecturer));
+        update(&mut lecturer, Message::ContactSeeds);
+        update(&mut lecturer, Message::ContactTable);
+        Shown::of(&lecturer).apply(&mut student);
+        assert!(!student.contact.table);
+        assert_eq!(student.contact.seeds, 1);
+        assert!(student.contact.seed_tasks.is_empty());
     }
 
     #[test]

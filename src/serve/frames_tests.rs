@@ -22,9 +22,13 @@ use crate::serve::wire::{Input, Wire, WireIn};
 use crate::serve::Shared;
 
 fn shared() -> Arc<Shared> {
+    shared_with(crate::presets::load("fig2").unwrap())
+}
+
+fn shared_with(state: crate::scene::State) -> Arc<Shared> {
     Arc::new(Shared {
         contact: crate::contact::engine::Engine::new(1),
-        state: crate::presets::load("fig2").unwrap(),
+        state,
         lecturer_keys: LecturerKeys::default(),
         idle_timeout: Duration::from_secs(600),
         class_code: None,
@@ -465,4 +469,45 @@ async fn a_follower_with_a_screen_of_their_own_renders_it() {
         );
     }
     no_mismatch(frames);
+}
+
+/// Students following the lecturer into the contact view take the
+/// lecturer's seed count (`R`) and convergence table (`t`), not only the
+/// load and the plot: they see what the lecturer sees.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn followers_take_the_lecturers_seeds_and_convergence_table() {
+    // ζ = 4: grids of 32² to 256², quick in a debug build.
+    let mut state = crate::presets::load("fig2").unwrap();
+    state.params = state.params.with(rough_model::Axis::Zeta, 4.0).unwrap();
+    let shared = shared_with(state);
+    let lecturer = Client::start(&shared, Role::Lecturer, (120, 36), UTF8);
+    until(&[&lecturer], "the lecturer", |s| s.contains("Readout")).await;
+    let a = Client::start(&shared, Role::Student, (120, 36), UTF8);
+    let small = Client::start(&shared, Role::Student, (80, 24), UTF8);
+    until(&[&a, &small], "following", |s| {
+        s.contains("following the lecturer")
+    })
+    .await;
+    lecturer.key("\t\t\t\t").await;
+    let all = [&lecturer, &a, &small];
+    until(&all, "the contact view", |s| {
+        s.contains("simulation 32² · seeds 1–4")
+    })
+    .await;
+    lecturer.key("R").await;
+    until(&all, "sixteen seeds", |s| {
+        s.contains("simulation 32² · seeds 1–16")
+    })
+    .await;
+    lecturer.key("t").await;
+    until(&all, "the convergence table", |s| {
+        s.contains("convergence at p̄ = 0.01 H0 · seeds 1–16") && s.contains("n/λ")
+    })
+    .await;
+    // Back to the plot on one surface.
+    lecturer.key("tR").await;
+    until(&all, "one seed", |s| {
+        s.contains("simulation 32² · seed 1") && !s.contains("convergence at")
+    })
+    .await;
 }
