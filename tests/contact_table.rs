@@ -183,3 +183,23 @@ fn a_measured_map_has_no_convergence_table() {
         st.text
     );
 }
+
+/// `t` is named in the contact view's help and, where it fits, its footer.
+#[test]
+fn the_help_and_the_footer_name_t() {
+    let engine = Engine::new(1);
+    let mut a = app_at(4.0, (200, 40), &engine);
+    to_contact(&mut a);
+    let footer = screen(&a).lines().last().unwrap().to_string();
+    assert!(footer.contains("t converge"), "{footer}");
+    ch(&mut a, '?');
+    let mut s = String::new();
+    for _ in 0..4 {
+        s.push_str(&screen(&a));
+        press(&mut a, KeyCode::Right, KeyModifiers::NONE);
+    }
+    assert!(
+        s.contains("t              contact view: convergence table (grids × cells) / the plot"),
+        "{s}"
+    );
+}
