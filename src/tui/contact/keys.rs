@@ -26,6 +26,10 @@ pub fn on_key(app: &mut App, msg: Message) {
         Message::ContactSweep if pane.table => {
             pane.table = false;
             pane.sweep = true;
+            app.set_status(
+                "the plastic share against ζ (b: the areas against the load, t: the table)",
+                false,
+            );
         }
         Message::ContactSweep => pane.sweep = !pane.sweep,
         Message::ContactTable if app.state.is_measured() && !pane.table => {

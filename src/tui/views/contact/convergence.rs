@@ -118,11 +118,11 @@ pub(super) fn render(app: &App, area: Rect, buf: &mut Buffer) {
             ))
         })
         .collect();
-    notes.push(
+    notes.push(format!(
         "n/λ: nodes per shortest wavelength 2π/(ζq0); K: the cell in longest wavelengths \
-         2π/q0; grid: the power of two giving as many nodes; ◀ the plot's sampling."
-            .into(),
-    );
+         2π/q0; grid: the power of two giving as many nodes; {} the plot's sampling.",
+        mark(gl)
+    ));
     if y + 1 < area.bottom() {
         Paragraph::new(gl.text(&notes.join(" ")).into_owned())
             .style(t.dim)
@@ -131,6 +131,15 @@ pub(super) fn render(app: &App, area: Rect, buf: &mut Buffer) {
                 Rect::new(area.x, y + 1, area.width, area.bottom() - y - 1),
                 buf,
             );
+    }
+}
+
+/// The mark of the plot's own row.
+fn mark(gl: Glyphs) -> &'static str {
+    if gl.ascii_only() {
+        "<"
+    } else {
+        "◀"
     }
 }
 
@@ -203,7 +212,7 @@ fn table(rows: &[Row], w: usize, gl: Glyphs, seeds: usize, own: (Grid, u32)) -> 
                 }
             }
             if (Grid::PerWavelength(r.per_wavelength), r.cell) == own {
-                line.push("◀".into());
+                line.push(mark(gl).into());
             }
             cells.push(line);
         }
