@@ -149,6 +149,24 @@ fn beyond_the_grid_a_pair_says_why_and_leaving_stops_the_work() {
     assert!(a.contact.busy());
     std::thread::sleep(Duration::from_millis(200));
     update(&mut a, Message::Tick);
+    // t again: the table's job stops at its next iteration (its first
+    // 2048² solve, seconds in a debug build, dropped unfinished) and the
+    // plot's takes the engine's one core.
+    let first = a.contact.convergence.rows[0].tasks[0];
+    ch(&mut a, 't');
+    assert!(!a.contact.table && !a.contact.convergence.busy());
+    let start = Instant::now();
+    while a.contact.progress.queued || a.contact.progress.started.is_none() {
+        assert!(
+            start.elapsed() < Duration::from_secs(10),
+            "the table's job holds the core"
+        );
+        std::thread::sleep(Duration::from_millis(10));
+        update(&mut a, Message::Tick);
+    }
+    assert!(engine.get(&first).is_none(), "the table's solve went on");
+    ch(&mut a, 't');
+    assert!(a.contact.convergence.busy());
     press(&mut a, KeyCode::Tab, KeyModifiers::NONE);
     assert!(!a.contact.busy());
     let start = Instant::now();
