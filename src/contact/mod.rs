@@ -18,6 +18,7 @@ pub mod engine;
 pub mod ensemble;
 pub mod local;
 pub mod measured;
+mod progress;
 mod rows;
 pub mod sampling;
 pub mod scene;

@@ -402,7 +402,7 @@ impl ContactPane {
             .tasks
             .iter()
             .chain(self.seed_tasks.iter().flatten())
-            .all(|t| self.engine.get(t).is_some());
+            .all(|t| self.engine.has(t, t.scene.seed == self.seed));
         if self.ticket.is_none() && !all_in {
             let order = self.job_order();
             let t = self

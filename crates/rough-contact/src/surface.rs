@@ -79,10 +79,48 @@ fn check_grid(n: usize, length: f64) -> Result<(), ContactError> {
     Ok(())
 }
 
-/// A periodic Gaussian surface on an n × n grid of side `length`: every
-/// mode of the band a random amplitude (Rayleigh) and phase from `seed`,
-/// mean zero; the same surface on every grid that holds the band (n more
-/// than twice the largest wavenumber q1 L/2π). Row-major, heights in the
+/// Nodes per shortest wavelength of the reference grid a seed's noise is
+/// drawn on ([`reference_grid`]).
+pub const REFERENCE_PER_WAVELENGTH: f64 = 8.0;
+/// Smallest reference grid side.
+pub const REFERENCE_MIN: usize = 32;
+/// Largest reference grid side; a band wider than it holds (more than
+/// 512 shortest wavelengths a side) is drawn on the smallest grid holding
+/// it.
+pub const REFERENCE_MAX: usize = 4096;
+
+/// The grid a seed's white noise is drawn on for a band reaching `span`
+/// wavelengths a side (q1 L/2π): the power of two giving at least
+/// [`REFERENCE_PER_WAVELENGTH`] nodes per shortest wavelength, at least
+/// [`REFERENCE_MIN`], or beyond [`REFERENCE_MAX`] the smallest power of
+/// two holding the band. It depends on the band only, never on the grid a
+/// surface is asked for, so that a seed is one surface on every grid.
+pub fn reference_grid(span: f64) -> usize {
+    let top = span.floor().max(0.0) as usize;
+    // A band of exactly k wavelengths (up to rounding) takes 8k nodes.
+    let need = (REFERENCE_PER_WAVELENGTH * span * (1.0 - 1e-9))
+        .ceil()
+        .max(1.0);
+    let n = if need <= REFERENCE_MAX as f64 {
+        (need as usize).next_power_of_two().max(REFERENCE_MIN)
+    } else {
+        0
+    };
+    if n == 0 || n > REFERENCE_MAX {
+        (2 * top + 2).next_power_of_two().max(REFERENCE_MIN)
+    } else {
+        n
+    }
+}
+
+/// A periodic Gaussian surface on an n × n grid of side `length`: white
+/// noise from `seed` on the band's [`reference_grid`], filtered by √C(q)
+/// (every mode's amplitude random, its phase uniform), mean zero; on
+/// another grid the same modes (so a seed is one surface on every grid
+/// that holds the band — n more than twice the largest wavenumber
+/// q1 L/2π — and a coarse grid's surface is the fine one's, sampled).
+/// On the reference grid this is the white noise filtered there, as
+/// roughtui has always drawn a seed's surface. Row-major, heights in the
 /// units of √Z·q^…
 pub fn synthesise(
     n: usize,
@@ -104,46 +142,57 @@ pub fn synthesise(
         )));
     }
     let dq = 2.0 * std::f64::consts::PI / length;
-    // The modes are drawn one by one over the band in a fixed order of
-    // their integer wavenumbers, so that a seed gives the same surface on
-    // every grid that holds the band (a coarse grid's surface is the fine
-    // one's, sampled): k = (kx, ky) with kx > 0, or kx = 0 and ky > 0, each
-    // H_k = n² dq √C(|q|) (a + ib)/√2 with a, b standard normal (so
-    // ⟨|H_k|²⟩ = n⁴ C dq², ⟨h²⟩ = Σ C dq²), H_−k its conjugate.
-    let top = (spectrum.q1 / dq * (1.0 + 1e-9)).floor();
-    let big = top as usize;
-    if !top.is_finite() || 2 * big + 2 > n {
+    let span = spectrum.q1 / dq * (1.0 + 1e-9);
+    let top = span.floor();
+    if !top.is_finite() || 2.0 * top + 2.0 > n as f64 {
         return Err(ContactError::Input(format!(
             "a {n} × {n} grid cannot hold wavevectors up to {top} × 2π/L: it needs at least {} \
              nodes a side (more than two per shortest wavelength)",
-            2 * big + 2
+            2.0 * top + 2.0
         )));
     }
+    let nr = reference_grid(spectrum.q1 / dq);
+    // The seed's noise on the reference grid, filtered there:
+    // ⟨|W_k|²⟩ = nr² for white noise; |H_k|² must be nr⁴ C dq².
     let mut rng = Normal(ChaCha8Rng::seed_from_u64(seed), None);
-    let mut fft = Fft2::new(n);
-    let mut spec = vec![Complex64::new(0.0, 0.0); fft.m() * n];
-    let gain = (n * n) as f64 * dq * std::f64::consts::FRAC_1_SQRT_2;
-    let m = big as i64;
+    let noise: Vec<f64> = (0..nr * nr).map(|_| rng.next()).collect();
+    let mut fft = Fft2::new(nr);
+    let mut spec = vec![Complex64::new(0.0, 0.0); fft.m() * nr];
+    fft.forward(&noise, &mut spec);
+    drop(noise);
+    let gain = nr as f64 * dq;
+    for kx in 0..fft.m() {
+        for ky in 0..nr {
+            let q = dq * signed(kx, nr).hypot(signed(ky, nr));
+            spec[kx * nr + ky] *= gain * spectrum.psd(q).sqrt();
+        }
+    }
+    if nr == n {
+        let mut h = vec![0.0; n * n];
+        fft.inverse(&mut spec, &mut h);
+        return Ok(h);
+    }
+    // The band's modes on the grid asked for (H_k scales as n²).
+    let mut out = Fft2::new(n);
+    let mut placed = vec![Complex64::new(0.0, 0.0); out.m() * n];
+    let scale = (n as f64 / nr as f64).powi(2);
+    let m = top as i64;
     for kx in 0..=m {
         for ky in -m..=m {
-            if kx == 0 && ky <= 0 {
-                continue;
-            }
             let q = dq * (kx as f64).hypot(ky as f64);
-            let c = spectrum.psd(q);
-            if c == 0.0 {
+            if spectrum.psd(q) == 0.0 {
                 continue;
             }
-            let v = Complex64::new(rng.next(), rng.next()) * (gain * c.sqrt());
-            let row = ky.rem_euclid(n as i64) as usize;
-            spec[kx as usize * n + row] = v;
-            if kx == 0 {
-                spec[(-ky).rem_euclid(n as i64) as usize] = v.conj();
-            }
+            let (kx, from, to) = (
+                kx as usize,
+                ky.rem_euclid(nr as i64) as usize,
+                ky.rem_euclid(n as i64) as usize,
+            );
+            placed[kx * n + to] = spec[kx * nr + from] * scale;
         }
     }
     let mut h = vec![0.0; n * n];
-    fft.inverse(&mut spec, &mut h);
+    out.inverse(&mut placed, &mut h);
     Ok(h)
 }
 
