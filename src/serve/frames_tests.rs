@@ -32,6 +32,7 @@ fn shared() -> Arc<Shared> {
         class: Class::default(),
         log: Log::new(true),
         marker: None,
+        sampling: crate::tui::contact::ContactPane::default().sampling,
         follow: watch::Sender::new(None),
         last: Mutex::new(None),
         lecturers: AtomicUsize::new(0),
