@@ -374,3 +374,37 @@ fn a_seed_keeps_its_surface_and_its_answer() {
         }
     }
 }
+
+/// The explorer and `serve` take the simulation's options as export does
+/// (checked before a terminal is taken or a port opened), and a measured
+/// map refuses them in one line with status 2.
+#[test]
+fn the_explorer_and_serve_take_the_simulations_options() {
+    let example = concat!(env!("CARGO_MANIFEST_DIR"), "/surfaces/example.txt");
+    for cmd in [&[][..], &["serve"][..]] {
+        for (opt, value) in [("--cell", "2"), ("--contact-grid", "256")] {
+            let mut args: Vec<&str> = cmd.to_vec();
+            args.extend(["--surface", example, opt, value]);
+            let out = run(&args);
+            let err = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+            assert_eq!(
+                err.trim(),
+                format!(
+                    "roughtui: {opt} does not apply to a measured map: it is solved on its own \
+                     heights, its square and grid set by the data and ζ"
+                )
+            );
+        }
+        let mut args: Vec<&str> = cmd.to_vec();
+        args.extend(["--preset", "fig2", "--cell", "2", "--hardness", "asperity"]);
+        let out = std::process::Command::new(common::cli::BIN)
+            .args(&args)
+            .env("ROUGHTUI_CHECK_ONLY", "1")
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(0), "{args:?}");
+        let out = run(&["--preset", "fig2", "--cell", "65"]);
+        assert_eq!(out.status.code(), Some(2));
+    }
+}
