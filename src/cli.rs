@@ -34,6 +34,8 @@ pub struct Cli {
     pub source: Source,
     #[command(flatten)]
     pub setup: Setup,
+    #[command(flatten)]
+    pub simulate: Simulate,
     /// What the explorer draws with: braille dots, half blocks, blocks or
     /// ASCII only [default: from the locale and TERM]. `M` switches.
     #[arg(long, value_enum, value_name = "SET")]
@@ -262,8 +264,17 @@ pub struct ExportArgs {
     /// the CSV gives means and sample standard deviations (default 1).
     #[arg(long, value_name = "N", value_parser = parse_seeds)]
     pub seeds: Option<u32>,
+    #[command(flatten)]
+    pub simulate: Simulate,
+}
+
+/// How the contact simulation samples a power-law scene (export's contact
+/// views, the explorer's contact view, a served class's).
+#[derive(Debug, Args, Clone, Default)]
+pub struct Simulate {
     /// The simulated cell's side in longest wavelengths 2π/q0, the spectrum
-    /// flat below q0 (contact views; default 2).
+    /// flat below q0 (contact views; default 2 in export, 1 in the
+    /// explorer, whose first answer must come quickly).
     #[arg(long, value_name = "K", value_parser = parse_cell)]
     pub cell: Option<u32>,
     /// The simulation's grid, nodes a side, a power of two (contact views;
@@ -278,6 +289,54 @@ pub struct ExportArgs {
     /// everywhere (default), or each contact patch that of its asperity.
     #[arg(long, value_enum)]
     pub hardness: Option<HardnessArg>,
+}
+
+impl Simulate {
+    /// `base` with what the command line sets.
+    pub fn sampling(&self, base: crate::contact::Sampling) -> crate::contact::Sampling {
+        use crate::contact::{Grid, Hardness};
+        let mut s = base;
+        if let Some(k) = self.cell {
+            s.cell = k;
+        }
+        if let Some(n) = self.contact_grid {
+            s.grid = Grid::Side(n);
+        }
+        if let Some(k) = self.per_wavelength {
+            s.grid = Grid::PerWavelength(k);
+        }
+        match self.hardness {
+            Some(HardnessArg::Asperity) => s.hardness = Hardness::Asperity,
+            Some(HardnessArg::Global) => s.hardness = Hardness::Global,
+            None => {}
+        }
+        s
+    }
+
+    /// The options given, by name (a measured map refuses them).
+    pub fn given(&self) -> [(bool, &'static str); 4] {
+        [
+            (self.hardness.is_some(), "--hardness"),
+            (self.cell.is_some(), "--cell"),
+            (self.contact_grid.is_some(), "--contact-grid"),
+            (self.per_wavelength.is_some(), "--per-wavelength"),
+        ]
+    }
+
+    /// Refuses the options that do not apply to `state`: a measured map is
+    /// solved on its own heights, its square and grid set by the data and
+    /// ζ; a hardness per asperity needs the size effect.
+    pub fn check(&self, state: &crate::scene::State) -> anyhow::Result<()> {
+        if state.is_measured() {
+            if let Some((_, opt)) = self.given().into_iter().skip(1).find(|(g, _)| *g) {
+                anyhow::bail!(
+                    "{opt} does not apply to a measured map: it is solved on its own heights, \
+                     its square and grid set by the data and ζ"
+                );
+            }
+        }
+        Ok(())
+    }
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -391,6 +450,8 @@ pub struct ServeArgs {
     pub source: Source,
     #[command(flatten)]
     pub setup: Setup,
+    #[command(flatten)]
+    pub simulate: Simulate,
     /// Most connections at once.
     #[arg(long, default_value_t = 64, value_parser = clap::value_parser!(u32).range(1..=10_000))]
     pub max_sessions: u32,

@@ -86,6 +86,7 @@ fn run(cli: Cli) -> anyhow::Result<()> {
                 Some(l) => l.steps[0].state.clone(),
                 None => load_source(&a.source, &a.setup)?,
             };
+            a.simulate.check(&state)?;
             if let Some(w) = state.surface_warning() {
                 println!("warning: {w}");
             }
@@ -118,6 +119,7 @@ fn run(cli: Cli) -> anyhow::Result<()> {
                 quiet: a.quiet,
                 marker: a.marker.map(Into::into),
                 lesson,
+                simulate: a.simulate.clone(),
             })
         }
         None => {
@@ -130,6 +132,7 @@ fn run(cli: Cli) -> anyhow::Result<()> {
                 Some(l) => l.steps[0].state.clone(),
                 None => load_source(&cli.source, &cli.setup)?,
             };
+            cli.simulate.check(&state)?;
             if check_only() {
                 return Ok(());
             }
@@ -138,6 +141,7 @@ fn run(cli: Cli) -> anyhow::Result<()> {
                 cli.source.load.as_deref(),
                 cli.marker.map(Into::into),
                 lesson,
+                &cli.simulate,
             )
         }
     }

@@ -28,7 +28,7 @@ fn tab_to_the_contact_view_shows_the_progress_then_the_result() {
     let s = p.wait_text("13 solved");
     assert!(
         s.contains(
-            "simulation at p̄ = 0.01 H0: contact 3.03 %, 1.2 % plastic · theory: 2.01 %, 7.9 % plastic"
+            "simulation at p̄ = 0.01 H0: contact 2.34 %, 1.5 % plastic · theory: 2.01 %, 7.9 % plastic"
         ),
         "{s}"
     );

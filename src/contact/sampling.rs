@@ -7,8 +7,8 @@ use anyhow::bail;
 
 /// The cell when none is given: K = 2 longest wavelengths a side
 /// (docs/theory-vs-simulation.md, "What the comparison shows": over eight
-/// seeds of fig2 at ζ = 16 the area scatters by 12 % at K = 1, 8 % at
-/// K = 2 and 3 % at K = 4, which takes four times the nodes of K = 2).
+/// seeds of fig2 at ζ = 16 the area scatters by 11 % at K = 1, 6 % at
+/// K = 2 and 4 % at K = 4, which takes four times the nodes of K = 2).
 pub const DEFAULT_CELL: u32 = 2;
 /// Largest cell, in longest wavelengths.
 pub const MAX_CELL: u32 = 64;

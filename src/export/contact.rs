@@ -11,8 +11,8 @@ use rough_model::{areas, Axis};
 use crate::cli::{ExportArgs, FormatArg};
 use crate::contact::scene::{classify, SceneKey};
 use crate::contact::{
-    self, load_rows, sweep_rows, Grid, Sampling, Seeds, Simulation, Spec, DEFAULT_LOADS,
-    DEFAULT_SEED, MAX_LOADS, SWEEP_LOAD,
+    self, load_rows, sweep_rows, Sampling, Seeds, Simulation, Spec, DEFAULT_LOADS, DEFAULT_SEED,
+    MAX_LOADS, SWEEP_LOAD,
 };
 pub use crate::contact::{CONTACT_HEADER, SWEEP_HEADER};
 use crate::figure::scene_text::full_lines_of;
@@ -22,43 +22,16 @@ use crate::scene::State;
 
 /// The options of the contact views only.
 pub fn contact_options(args: &ExportArgs) -> [(bool, &'static str); 5] {
-    [
-        (args.seeds.is_some(), "--seeds"),
-        (args.hardness.is_some(), "--hardness"),
-        (args.cell.is_some(), "--cell"),
-        (args.contact_grid.is_some(), "--contact-grid"),
-        (args.per_wavelength.is_some(), "--per-wavelength"),
-    ]
+    let [h, c, g, k] = args.simulate.given();
+    [(args.seeds.is_some(), "--seeds"), h, c, g, k]
 }
 
 /// What `args` ask to simulate of `state`: the sampling and the seeds
 /// (the snapshot's seed first when --seed is not given).
 pub fn spec_of(args: &ExportArgs, state: &State) -> anyhow::Result<Spec> {
-    if state.is_measured() {
-        for (given, opt) in contact_options(args).into_iter().skip(2) {
-            if given {
-                bail!(
-                    "{opt} does not apply to a measured map: it is solved on its own heights, \
-                     its square and grid set by the data and ζ"
-                );
-            }
-        }
-    }
-    let mut sampling = Sampling::default();
-    if let Some(k) = args.cell {
-        sampling.cell = k;
-    }
-    if let Some(n) = args.contact_grid {
-        sampling.grid = Grid::Side(n);
-    }
-    if let Some(k) = args.per_wavelength {
-        sampling.grid = Grid::PerWavelength(k);
-    }
-    if args.hardness == Some(crate::cli::HardnessArg::Asperity) {
-        sampling.hardness = contact::Hardness::Asperity;
-    }
+    args.simulate.check(state)?;
     Ok(Spec {
-        sampling,
+        sampling: args.simulate.sampling(Sampling::default()),
         seeds: Seeds {
             first: args.seed.or(state.seed).unwrap_or(DEFAULT_SEED),
             count: args.seeds.unwrap_or(1),
@@ -336,9 +309,9 @@ fn export_convergence(args: &ExportArgs, out: &mut impl std::io::Write) -> anyho
         (args.map_y.is_some(), "--map-y"),
         (args.sweep.is_some(), "--sweep"),
         (args.points.is_some(), "--points"),
-        (args.cell.is_some(), "--cell"),
-        (args.contact_grid.is_some(), "--contact-grid"),
-        (args.per_wavelength.is_some(), "--per-wavelength"),
+        (args.simulate.cell.is_some(), "--cell"),
+        (args.simulate.contact_grid.is_some(), "--contact-grid"),
+        (args.simulate.per_wavelength.is_some(), "--per-wavelength"),
     ] {
         if given {
             bail!(

@@ -36,6 +36,7 @@ fn shared_with(state: crate::scene::State) -> Arc<Shared> {
         class: Class::default(),
         log: Log::new(true),
         marker: None,
+        sampling: crate::tui::contact::ContactPane::default().sampling,
         follow: watch::Sender::new(None),
         last: Mutex::new(None),
         lecturers: AtomicUsize::new(0),

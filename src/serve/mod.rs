@@ -82,6 +82,9 @@ pub struct Options {
     pub marker: Option<crate::tui::glyphs::Glyphs>,
     /// `--lesson`: the lesson the lecturer leads.
     pub lesson: Option<crate::lesson::Lesson>,
+    /// `--cell`, `--contact-grid`, `--per-wavelength`, `--hardness`: every
+    /// session's contact simulation.
+    pub simulate: crate::cli::Simulate,
 }
 
 /// Connections over a limit that are still told so (the class is full),
@@ -106,6 +109,8 @@ pub struct Shared {
     pub log: Log,
     /// `--marker`, if given.
     pub marker: Option<crate::tui::glyphs::Glyphs>,
+    /// How every session's contact view samples the scene.
+    pub sampling: crate::contact::Sampling,
     /// The lecturer's latest state; `None` while no lecturer is connected.
     pub follow: watch::Sender<Option<Arc<Shown>>>,
     /// What the lecturer showed last, kept after they leave: a lecturer who
@@ -276,6 +281,9 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         class: Class::default(),
         log,
         marker: opts.marker,
+        sampling: opts
+            .simulate
+            .sampling(crate::tui::contact::ContactPane::default().sampling),
         follow: watch::Sender::new(None),
         last: Mutex::new(None),
         lecturers: AtomicUsize::new(0),

@@ -224,6 +224,7 @@ async fn run(start: Start) {
     let wake = Arc::clone(&solver);
     ex.app.contact.waker = Arc::new(move || wake.notify_one());
     ex.app.contact.engine = Arc::clone(&shared.contact);
+    ex.app.contact.sampling = shared.sampling;
     // The first screen's line on switching the drawing, until the first
     // key or HINT_FOR.
     // (Not in a browser: xterm.js draws braille, and M is in the help.)

@@ -58,6 +58,7 @@ pub fn run(
     file: Option<&std::path::Path>,
     marker: Option<glyphs::Glyphs>,
     lesson: Option<crate::lesson::Lesson>,
+    simulate: &crate::cli::Simulate,
 ) -> anyhow::Result<()> {
     let mut frame_log = match std::env::var_os("ROUGHTUI_FRAME_LOG") {
         Some(p) => Some(
@@ -85,6 +86,9 @@ pub fn run(
     let _guard = term::Guard;
     let (w, h) = crossterm::terminal::size()?;
     let mut session = Session::new(out, state, caps.theme(), (w, h))?;
+    // --cell, --contact-grid, --per-wavelength, --hardness: the contact
+    // view's simulation (one longest wavelength unless --cell says).
+    session.app.contact.sampling = simulate.sampling(session.app.contact.sampling);
     session.app.file = file
         .and_then(|f| f.file_name())
         .map(|f| f.to_string_lossy().into_owned());
