@@ -12,37 +12,16 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use crossterm::event::{KeyCode, KeyModifiers};
-use rough_model::Axis;
 use roughtui::contact::engine::Engine;
 use roughtui::contact::{Seeds, Spec};
-use roughtui::figure::View;
-use roughtui::presets;
 use roughtui::tui::app::{update, App, Message};
 use roughtui::tui::theme::Theme;
 
 use common::app::{ch, press, screen};
+use common::contact::{settle, to_contact};
 
 fn app_at(zeta: f64, size: (u16, u16), engine: &Arc<Engine>) -> App {
-    let mut s = presets::load("fig2").unwrap();
-    s.params = s.params.with(Axis::Zeta, zeta).unwrap();
-    let mut a = App::new(s, Theme::colored(), size);
-    a.contact.engine = Arc::clone(engine);
-    a
-}
-
-fn to_contact(a: &mut App) {
-    while a.view != View::Contact {
-        press(a, KeyCode::Tab, KeyModifiers::NONE);
-    }
-}
-
-fn settle(a: &mut App) {
-    let start = Instant::now();
-    while a.contact.busy() {
-        assert!(start.elapsed() < Duration::from_secs(300), "solver hung");
-        std::thread::sleep(Duration::from_millis(5));
-        update(a, Message::Tick);
-    }
+    common::contact::app_at(zeta, size, Theme::colored(), engine)
 }
 
 #[test]

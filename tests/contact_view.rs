@@ -6,7 +6,6 @@
 
 mod common;
 
-use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use crossterm::event::{KeyCode, KeyModifiers};
@@ -19,31 +18,7 @@ use roughtui::tui::glyphs::Glyphs;
 use roughtui::tui::theme::Theme;
 
 use common::app::{ch, press, screen};
-
-/// fig2 at ζ = `zeta` on its own engine.
-fn app_at(zeta: f64, size: (u16, u16), theme: Theme, engine: &Arc<Engine>) -> App {
-    let mut s = presets::load("fig2").unwrap();
-    s.params = s.params.with(Axis::Zeta, zeta).unwrap();
-    let mut a = App::new(s, theme, size);
-    a.contact.engine = Arc::clone(engine);
-    a
-}
-
-fn to_contact(a: &mut App) {
-    while a.view != View::Contact {
-        press(a, KeyCode::Tab, KeyModifiers::NONE);
-    }
-}
-
-/// Ticks until the job for the scene on screen has ended.
-fn settle(a: &mut App) {
-    let start = Instant::now();
-    while a.contact.busy() {
-        assert!(start.elapsed() < Duration::from_secs(120), "solver hung");
-        std::thread::sleep(Duration::from_millis(5));
-        update(a, Message::Tick);
-    }
-}
+use common::contact::{app_at, settle, to_contact};
 
 #[test]
 fn tab_reaches_the_contact_view_and_its_result_comes_in() {

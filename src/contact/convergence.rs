@@ -38,6 +38,16 @@ pub struct Solved {
     pub iterations: Stat,
 }
 
+/// A solve's plastic share S_pl/S_tot; NaN without contact (left out of
+/// a [`Stat`]).
+pub fn share(r: &rough_contact::LoadResult) -> f64 {
+    if r.area > 0.0 {
+        r.plastic_area / r.area
+    } else {
+        f64::NAN
+    }
+}
+
 /// The pairs of [`PER_WAVELENGTH`] × [`CELLS`] at p̄/H = `p_over_h`,
 /// smallest grids first; `on_point` is told each as it is solved.
 pub fn points(
@@ -69,13 +79,6 @@ pub fn points(
                     })?;
                     runs.push(r);
                 }
-                let share = |r: &rough_contact::LoadResult| {
-                    if r.area > 0.0 {
-                        r.plastic_area / r.area
-                    } else {
-                        f64::NAN
-                    }
-                };
                 Ok(Solved {
                     grid,
                     area: Stat::of(runs.iter().map(|r| r.area)),

@@ -6,6 +6,7 @@ pub mod app;
 pub mod browser;
 pub mod cli;
 pub mod client;
+pub mod contact;
 pub mod lecture;
 pub mod measured;
 pub mod room;

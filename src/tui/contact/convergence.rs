@@ -7,7 +7,7 @@
 
 use std::sync::Arc;
 
-use crate::contact::convergence::{CELLS, PER_WAVELENGTH};
+use crate::contact::convergence::{share, CELLS, PER_WAVELENGTH};
 use crate::contact::engine::{Engine, Outcome, Progress, Task, Ticket, Waker};
 use crate::contact::sampling::{bytes_words, BYTES_PER_NODE};
 use crate::contact::scene::SceneKey;
@@ -55,13 +55,6 @@ impl Row {
         if runs.is_empty() {
             return None;
         }
-        let share = |r: &rough_contact::LoadResult| {
-            if r.area > 0.0 {
-                r.plastic_area / r.area
-            } else {
-                f64::NAN
-            }
-        };
         Some(RowStats {
             area: Stat::of(runs.iter().map(|s| s.result.area)),
             share: Stat::of(runs.iter().map(|s| share(&s.result))),

@@ -249,6 +249,18 @@ fn progress_text(app: &App, width: usize) -> String {
     text
 }
 
+/// The panel's first row: the title `head`, and right of it `right` (the
+/// progress) where it fits.
+pub(super) fn title_line(t: &Theme, (head, right): (&str, &str), area: Rect, buf: &mut Buffer) {
+    let width = |s: &str| Span::raw(s).width();
+    let mut spans = vec![Span::styled(head.to_string(), t.title)];
+    if !right.is_empty() && width(head) + 2 + width(right) <= usize::from(area.width) {
+        spans.push(Span::raw("  "));
+        spans.push(Span::styled(t.glyphs.text(right).into_owned(), t.dim));
+    }
+    Line::from(spans).render(Rect { height: 1, ..area }, buf);
+}
+
 /// The chart panel `area` (its graph `_g` is not used: the panel is split).
 pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
     let t = &app.theme;
@@ -290,12 +302,7 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
     let head = gl.text(&head).into_owned();
     let used = Span::raw(head.as_str()).width();
     let right = progress_text(app, w.saturating_sub(used + 2));
-    let mut spans = vec![Span::styled(head.clone(), t.title)];
-    if used + 2 + Span::raw(right.as_str()).width() <= w {
-        spans.push(Span::raw("  "));
-        spans.push(Span::styled(gl.text(&right).into_owned(), t.dim));
-    }
-    Line::from(spans).render(Rect { height: 1, ..area }, buf);
+    title_line(t, (&head, &right), area, buf);
     if area.height < 8 {
         return;
     }

@@ -9,7 +9,7 @@ use ratatui::style::Style;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Widget, Wrap};
 
-use super::{pct, pct_pm, progress_fit, share_pct};
+use super::{pct, pct_pm, progress_fit, share_pct, title_line};
 use crate::contact::{Grid, Stat};
 use crate::physical::print::load_text;
 use crate::tui::app::App;
@@ -53,12 +53,7 @@ pub(super) fn render(app: &App, area: Rect, buf: &mut Buffer) {
             .fold((0, 0.0), |(n, s), r| (n + 1, s + r.took.as_secs_f64()));
         format!("{n} solved, {secs:.1} s")
     };
-    let mut spans = vec![Span::styled(head.clone(), t.title)];
-    if !right.is_empty() && used + 2 + Span::raw(right.as_str()).width() <= w {
-        spans.push(Span::raw("  "));
-        spans.push(Span::styled(gl.text(&right).into_owned(), t.dim));
-    }
-    Line::from(spans).render(Rect { height: 1, ..area }, buf);
+    title_line(t, (&head, &right), area, buf);
     if area.height < 4 {
         return;
     }
