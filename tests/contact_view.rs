@@ -269,6 +269,50 @@ fn b_shows_the_plastic_share_against_zeta() {
     assert!(!a.contact.sweep);
 }
 
+/// `A` gives each contact patch its asperity's hardness: without the size
+/// effect the view says to switch it on; with it the scene is solved with
+/// a cap per node, the title says so, and `b` compares the bulk's one cap
+/// (size effect off) with the hardness per asperity (on).
+#[test]
+fn a_gives_each_asperity_its_hardness() {
+    let engine = Engine::new(1);
+    let mut a = app_at(4.0, (160, 48), Theme::colored(), &engine);
+    a.contact.seeds = 1;
+    to_contact(&mut a);
+    ch(&mut a, 'A');
+    assert_eq!(
+        a.contact.sampling.hardness,
+        roughtui::contact::Hardness::Asperity
+    );
+    let text = screen(&a);
+    assert!(
+        text.contains("the size effect's, so e switches it on"),
+        "{text}"
+    );
+    assert!(
+        text.contains("a hardness per asperity is the size"),
+        "{text}"
+    );
+    ch(&mut a, 'e');
+    settle(&mut a);
+    let text = screen(&a);
+    assert!(
+        text.contains("simulation 32² · seed 1 · cell 1 · 8 nodes/λ · H per asperity"),
+        "{text}"
+    );
+    assert!(a.contact.tasks.iter().all(|t| t.scene.local.is_some()));
+    let r = a.contact.chosen().unwrap().as_ref().unwrap();
+    assert!(r.result.area > 0.0);
+    ch(&mut a, 'b');
+    let (off, on) = a.contact.tasks.split_at(a.contact.tasks.len() / 2);
+    assert!(off.iter().all(|t| t.scene.local.is_none()));
+    assert!(on.iter().all(|t| t.scene.local.is_some()));
+    assert!(screen(&a).contains("H_y per asperity (points)"));
+    ch(&mut a, 'A');
+    assert!(a.contact.tasks.iter().all(|t| t.scene.local.is_none()));
+    assert!(screen(&a).contains("one hardness cap for every node"));
+}
+
 /// `b` averages over the pane's seeds as the load plot does: each point
 /// the mean of the seeds' plastic shares, ± one sd drawn, the title and
 /// the legend saying how many.

@@ -58,14 +58,15 @@ impl Shown {
 }
 
 /// What the contact view shows of a scene: the load (`[ ]`), the plot
-/// (`b`), how many seeds it averages over (`R`) and whether the
-/// convergence table is up (`t`).
+/// (`b`), how many seeds it averages over (`R`), whether the convergence
+/// table is up (`t`) and where the hardness applies (`A`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct ContactShown {
     pub load: usize,
     pub sweep: bool,
     pub seeds: u32,
     pub table: bool,
+    pub hardness: crate::contact::Hardness,
 }
 
 impl ContactShown {
@@ -75,11 +76,13 @@ impl ContactShown {
             sweep: c.sweep,
             seeds: c.seeds,
             table: c.table,
+            hardness: c.sampling.hardness,
         }
     }
 
     fn set(&self, c: &mut ContactPane) {
         (c.load, c.sweep, c.seeds, c.table) = (self.load, self.sweep, self.seeds, self.table);
+        c.sampling.hardness = self.hardness;
     }
 }
 
@@ -281,6 +284,7 @@ fn edits(msg: &Message) -> bool {
             | M::ContactSeed
             | M::ContactSeeds
             | M::ContactTable
+            | M::ContactHardness
             | M::MoveFitBand { .. }
             | M::AutoFitBand
             // Typing a slider's value: the lecturer's next move would
@@ -372,6 +376,22 @@ mod tests {
         assert!(!student.contact.table);
         assert_eq!(student.contact.seeds, 1);
         assert!(student.contact.seed_tasks.is_empty());
+        // A hardness per asperity (A), with the size effect on (e): the
+        // follower solves the lecturer's tasks, each with its law.
+        update(&mut lecturer, Message::ToggleSizeEffect);
+        update(&mut lecturer, Message::ContactHardness);
+        Shown::of(&lecturer).apply(&mut student);
+        assert_eq!(
+            student.contact.sampling.hardness,
+            crate::contact::Hardness::Asperity
+        );
+        assert!(student
+            .contact
+            .tasks
+            .iter()
+            .all(|t| t.scene.local.is_some()));
+        assert!(!student.contact.tasks.is_empty());
+        assert_eq!(student.contact.tasks, lecturer.contact.tasks);
     }
 
     #[test]

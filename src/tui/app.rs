@@ -574,7 +574,8 @@ pub fn update(app: &mut App, msg: Message) {
         | Message::ContactSweep
         | Message::ContactSeed
         | Message::ContactSeeds
-        | Message::ContactTable => super::contact::on_key(app, msg),
+        | Message::ContactTable
+        | Message::ContactHardness => super::contact::on_key(app, msg),
         Message::Tick => {}
         Message::Quit => app.quit = true,
     }

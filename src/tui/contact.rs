@@ -463,11 +463,21 @@ impl ContactPane {
             for j in 0..u64::from(seeds) {
                 let seed = self.seed.wrapping_add(j);
                 for se in [false, true] {
+                    // Without the size effect the bulk's one cap: a
+                    // hardness per asperity is the size effect's.
+                    let sampling = Sampling {
+                        hardness: if se {
+                            self.sampling.hardness
+                        } else {
+                            crate::contact::Hardness::Global
+                        },
+                        ..self.sampling
+                    };
                     for &z in &self.zetas {
                         let mut s = state.clone();
                         s.size_effect = se;
                         s.params = s.params.with(Axis::Zeta, z).ok()?;
-                        let key = SceneKey::with(&s, seed, &self.sampling).ok()?;
+                        let key = SceneKey::with(&s, seed, &sampling).ok()?;
                         tasks.push(Task::new(key, load_value(self.load)));
                     }
                 }

@@ -268,6 +268,7 @@ pub const BINDINGS: &[Binding] = &[
     bind(ContactView, &[(ch('r'), M::ContactSeed)], "r", "contact view: another surface (next seed)", None),
     bind(ContactView, &[(ch('R'), M::ContactSeeds)], "R", "contact view: seeds 4 / 16 / 1 (mean ± sd over the surfaces)", Some("R seeds")),
     bind(ContactView, &[(ch('t'), M::ContactTable)], "t", "contact view: convergence table (grids × cells) / the plot", Some("t converge")),
+    bind(ContactView, &[(ch('A'), M::ContactHardness)], "A", "contact view: one hardness cap / each asperity's (size effect)", None),
     bind(Main, &[(ch('y'), M::NextMapY)], "y", "the regime map's next y parameter", Some("y map axis")),
     bind(NotStudent, &[(ch('s'), M::StartSave)], "s", "save a snapshot here (.ron)", Some("s save")),
     bind(Student, &[(ch('s'), M::StartSave)], "s", "show the snapshot (.ron) to copy; y there: clipboard", Some("s snapshot")),

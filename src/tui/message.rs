@@ -106,7 +106,8 @@ pub enum Message {
     Redraw,
     /// The contact view's keys: the next or previous load, the plastic
     /// share against ζ (`b`), another surface (`r`: the next seed), how
-    /// many surfaces (`R`: 1, 4 or 16 seeds), the convergence table (`t`).
+    /// many surfaces (`R`: 1, 4 or 16 seeds), the convergence table (`t`),
+    /// one hardness cap or each asperity's (`A`).
     ContactLoad {
         up: bool,
     },
@@ -114,6 +115,7 @@ pub enum Message {
     ContactSeed,
     ContactSeeds,
     ContactTable,
+    ContactHardness,
     /// The contact solver made progress (sent by the session, not a key).
     Tick,
     Quit,

@@ -47,6 +47,26 @@ pub fn on_key(app: &mut App, msg: Message) {
             };
             app.set_status(text, false);
         }
+        Message::ContactHardness => {
+            use crate::contact::Hardness;
+            let asperity = pane.sampling.hardness == Hardness::Global;
+            pane.sampling.hardness = if asperity {
+                Hardness::Asperity
+            } else {
+                Hardness::Global
+            };
+            let text = match (asperity, app.state.size_effect) {
+                (true, true) => {
+                    "hardness per asperity: each contact patch H0 √(1 + R*/(1.2 R)), R the \
+                     radius of its asperity (A: one cap)"
+                }
+                (true, false) => {
+                    "hardness per asperity: the size effect's, so e switches it on (A: one cap)"
+                }
+                (false, _) => "one hardness cap for every node, the theory's (A: per asperity)",
+            };
+            app.set_status(text, false);
+        }
         Message::ContactSeeds if app.state.is_measured() => app.set_status(
             "a measured map is one surface: the simulation solves its own heights",
             true,

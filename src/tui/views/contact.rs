@@ -299,6 +299,42 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
             None => "simulation".into(),
         }
     };
+    // How the power law is sampled, where there is room beside the
+    // progress: the cell, the nodes per shortest wavelength, and a hardness
+    // per asperity (which must show whenever it is on).
+    let head = match (n, pane.tasks.first()) {
+        (Some(n), Some(task)) if task.scene.surface.is_none() => {
+            let s = &pane.sampling;
+            let per = s.per_wavelength(n, task.scene.zeta());
+            let per = if (per - per.round()).abs() < 0.05 {
+                format!("{per:.0}")
+            } else {
+                format!("{per:.1}")
+            };
+            let asperity = s.hardness == crate::contact::Hardness::Asperity;
+            // The sweep's grids differ by ζ; their nodes per wavelength not.
+            let per = if pane.sweep {
+                String::new()
+            } else {
+                format!(" · {per} nodes/λ")
+            };
+            let long = format!(
+                "{head} · cell {}{per}{}",
+                s.cell,
+                if asperity { " · H per asperity" } else { "" }
+            );
+            let short = format!("{head} · H per asperity");
+            let room = |t: &str| Span::raw(gl.text(t).as_ref()).width() + 18 <= w;
+            if room(&long) {
+                long
+            } else if asperity {
+                short
+            } else {
+                head
+            }
+        }
+        _ => head,
+    };
     let head = gl.text(&head).into_owned();
     let used = Span::raw(head.as_str()).width();
     let right = progress_text(app, w.saturating_sub(used + 2));
@@ -528,7 +564,13 @@ fn sweep_chart(app: &App, area: Rect, buf: &mut Buffer) {
         name(" H0  "),
         Span::styled(on.sample, on.style),
         Span::styled(ch(p_on.1), p_on.0),
-        name(" H_y (size effect)"),
+        name(
+            if pane.sampling.hardness == crate::contact::Hardness::Asperity {
+                " H_y per asperity (points), H_y(R_s) (line)"
+            } else {
+                " H_y (size effect)"
+            },
+        ),
     ])
     .render(Rect { height: 1, ..area }, buf);
     let x = Scale::of_axis(rough_model::Axis::Zeta, xb);
