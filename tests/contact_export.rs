@@ -408,3 +408,51 @@ fn the_explorer_and_serve_take_the_simulations_options() {
         assert_eq!(out.status.code(), Some(2));
     }
 }
+
+/// With a hardness per asperity the loads above what the asperities can
+/// carry have no contact solution (the bulk would yield): they are named
+/// in `# not solved` lines and left out, the others solved (the picture
+/// draws those and says why the rest are missing).
+#[test]
+fn loads_beyond_the_asperities_hardness_are_named_not_solved() {
+    let args = [
+        "export",
+        "--view",
+        "contact",
+        "--preset",
+        "fig2",
+        "--set",
+        "zeta=8",
+        "--cell",
+        "1",
+        "--size-effect",
+        "on",
+        "--hardness",
+        "asperity",
+    ];
+    let csv = stdout(&args);
+    let (comments, _, rows) = parse(&csv);
+    let not: Vec<&&str> = comments
+        .iter()
+        .filter(|c| c.starts_with("# not solved: "))
+        .collect();
+    assert!(!not.is_empty(), "{comments:?}");
+    assert!(
+        not.iter()
+            .any(|c| c.starts_with("# not solved: p̄/H = 1, seed 1: the mean pressure")),
+        "{not:?}"
+    );
+    assert!(
+        not.iter().all(|c| c.ends_with("the bulk would yield")),
+        "{not:?}"
+    );
+    assert_eq!(rows.len() + not.len(), 13);
+    assert_eq!(rows[0][0], 0.001);
+    for r in &rows {
+        assert!(r[1] > 0.0 && r[3] <= r[1], "{r:?}");
+    }
+    let mut svg_args = args.to_vec();
+    svg_args.extend(["--format", "svg"]);
+    let svg = stdout(&svg_args);
+    assert!(svg.contains("loads beyond what the asperities carry are not solved"));
+}

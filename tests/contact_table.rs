@@ -130,14 +130,17 @@ fn beyond_the_grid_a_pair_says_why_and_leaving_stops_the_work() {
     update(&mut a, Message::Tick);
     // t again: the table's job stops at its next iteration (its first
     // 2048² solve, seconds in a debug build, dropped unfinished) and the
-    // plot's takes the engine's one core.
+    // plot's takes the engine's one core. The surface's synthesis is not
+    // interrupted: at ζ = 512 a seed's noise is drawn and transformed on
+    // its 4096² reference grid (0.8 s in a release build, 7 s in a debug
+    // one, more on a busy machine).
     let first = a.contact.convergence.rows[0].tasks[0];
     ch(&mut a, 't');
     assert!(!a.contact.table && !a.contact.convergence.busy());
     let start = Instant::now();
     while a.contact.progress.queued || a.contact.progress.started.is_none() {
         assert!(
-            start.elapsed() < Duration::from_secs(10),
+            start.elapsed() < Duration::from_secs(60),
             "the table's job holds the core"
         );
         std::thread::sleep(Duration::from_millis(10));
@@ -150,7 +153,7 @@ fn beyond_the_grid_a_pair_says_why_and_leaving_stops_the_work() {
     assert!(!a.contact.busy());
     let start = Instant::now();
     while engine.running() > 0 {
-        assert!(start.elapsed() < Duration::from_secs(20), "still working");
+        assert!(start.elapsed() < Duration::from_secs(60), "still working");
         std::thread::sleep(Duration::from_millis(10));
     }
 }

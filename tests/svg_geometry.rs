@@ -269,6 +269,7 @@ fn the_contact_picture_keeps_its_points_whole_and_its_legend_clear() {
         .collect();
     for state in [fig2(), roughtui::presets::load("fig3").unwrap()] {
         let d = ContactLoads {
+            per_asperity: false,
             surface: "128×128 nodes, seed 1".into(),
             psi: 0.49,
             p_over_h: loads.clone(),
@@ -306,6 +307,7 @@ fn the_contact_picture_keeps_its_points_whole_and_its_legend_clear() {
     // With standard deviations (several seeds): error bars, still clear.
     let sd: Vec<f64> = area.iter().map(|a| 0.1 * a).collect();
     let d = ContactLoads {
+        per_asperity: false,
         surface: "128×128 nodes, 4 seeds".into(),
         psi: 0.49,
         p_over_h: loads.clone(),

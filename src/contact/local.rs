@@ -59,6 +59,34 @@ pub struct Local {
     pub elastic_iterations: usize,
 }
 
+/// How [`solve`]'s refusal of a load beyond the asperities' hardness
+/// begins ([`Beyond::of`] knows it by that).
+const BEYOND: &str = "the mean pressure ";
+
+/// A load above what the asperities' hardness can carry: no contact
+/// solution exists (the bulk would yield), so the load is not solved —
+/// the physics' limit, not a failure.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Beyond(pub String);
+
+impl Beyond {
+    /// The refusal of [`solve`] for a load beyond the asperities' hardness.
+    pub fn of(e: &ContactError) -> Option<Beyond> {
+        match e {
+            ContactError::Input(s) if s.starts_with(BEYOND) => Some(Beyond(s.clone())),
+            _ => None,
+        }
+    }
+}
+
+impl std::fmt::Display for Beyond {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for Beyond {}
+
 /// Solves `contact` at mean pressure `p_mean` with a cap per asperity
 /// (`global`, the theory's cap, bounds the load: p̄ ≤ the caps' mean is
 /// checked). Returns the result, the caps and what the asperities were.
@@ -84,7 +112,7 @@ pub fn solve(
     let mean = caps.iter().sum::<f64>() / caps.len() as f64;
     if p_mean > mean {
         return Err(ContactError::Input(format!(
-            "the mean pressure {p_mean:.4e} E* is above what the asperities' hardness can carry \
+            "{BEYOND}{p_mean:.4e} E* is above what the asperities' hardness can carry \
              (their mean {mean:.4e} E*): the bulk would yield"
         )));
     }

@@ -149,7 +149,11 @@ impl Simulation {
                     law,
                     &Options::default(),
                     progress,
-                )?;
+                )
+                .map_err(|e| match local::Beyond::of(&e) {
+                    Some(b) => anyhow::Error::new(b),
+                    None => anyhow::Error::new(e),
+                })?;
                 self.last_local = Some(info);
                 r
             }
@@ -333,7 +337,7 @@ pub fn write_contact(
     spec: &Spec,
     scene: &[String],
 ) -> anyhow::Result<()> {
-    let (sim, rows, heights) = load_rows(state, points, spec)?;
+    let (sim, rows, heights, beyond) = load_rows(state, points, spec)?;
     let mut buf = String::new();
     for r in &rows {
         push_row(
@@ -357,6 +361,9 @@ pub fn write_contact(
         );
     }
     comments(out, scene, state, &sim, spec, &heights)?;
+    for b in &beyond {
+        writeln!(out, "# not solved: {b}")?;
+    }
     writeln!(out, "{CONTACT_HEADER}")?;
     out.write_all(buf.as_bytes())?;
     out.flush()?;

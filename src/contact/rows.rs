@@ -60,38 +60,59 @@ fn check_seeds(state: &State, spec: &Spec) -> anyhow::Result<()> {
 
 /// The scene at `points` loads from 1e-3 H to H for each seed of `spec`
 /// (each load warm-started from the last); the first seed's simulation (for
-/// the parameter lines) and the rms heights of the realisations.
+/// the parameter lines), the rms heights of the realisations, and the
+/// loads not solved: with a hardness per asperity, those above what the
+/// asperities can carry (for any seed), each with why — their rows are
+/// left out.
 pub fn load_rows(
     state: &State,
     points: usize,
     spec: &Spec,
-) -> anyhow::Result<(Simulation, Vec<LoadRow>, Stat)> {
+) -> anyhow::Result<(Simulation, Vec<LoadRow>, Stat, Vec<String>)> {
     check_seeds(state, spec)?;
     let loads = loads(points);
     let mut runs: Vec<Vec<LoadResult>> = vec![vec![]; loads.len()];
-    let mut theory = vec![];
+    let mut theory: Vec<Option<Areas>> = vec![None; loads.len()];
+    let mut beyond: Vec<Option<String>> = vec![None; loads.len()];
     let (mut first, mut heights) = (None, vec![]);
     for seed in spec.seeds.iter() {
         let mut sim = Simulation::with(state, seed, &spec.sampling)?;
         heights.push(sim.contact.h_rms());
-        theory.clear();
         for (k, &p_over_h) in loads.iter().enumerate() {
-            let (r, t) = sim
-                .solve(p_over_h, &mut |_, _| true)
-                .with_context(|| format!("contact at p̄/H = {p_over_h}, seed {seed}"))?;
-            runs[k].push(r);
-            theory.push(t);
+            match sim.solve(p_over_h, &mut |_, _| true) {
+                Ok((r, t)) => {
+                    runs[k].push(r);
+                    theory[k] = Some(t);
+                }
+                Err(e) if e.downcast_ref::<super::local::Beyond>().is_some() => {
+                    beyond[k].get_or_insert(format!("p̄/H = {p_over_h}, seed {seed}: {e}"));
+                }
+                Err(e) => {
+                    return Err(e.context(format!("contact at p̄/H = {p_over_h}, seed {seed}")))
+                }
+            }
         }
         first.get_or_insert(sim);
     }
     let first = first.ok_or_else(|| anyhow::anyhow!("no seed to solve"))?;
-    let rows = loads
-        .into_iter()
-        .zip(runs)
-        .zip(theory)
-        .map(|((p, r), t)| LoadRow::of(p, r, t))
-        .collect();
-    Ok((first, rows, Stat::of(heights)))
+    let mut rows = vec![];
+    for (((p, r), t), b) in loads.into_iter().zip(runs).zip(theory).zip(&beyond) {
+        if let (Some(t), None) = (t, b) {
+            rows.push(LoadRow::of(p, r, t));
+        }
+    }
+    if rows.is_empty() {
+        bail!(
+            "no load solved: {}",
+            beyond.iter().flatten().next().map_or("", String::as_str)
+        );
+    }
+    Ok((
+        first,
+        rows,
+        Stat::of(heights),
+        beyond.into_iter().flatten().collect(),
+    ))
 }
 
 /// One magnification of the ζ sweep, over the seeds.

@@ -30,6 +30,9 @@ pub struct ContactLoads {
     /// The theory's areas (total, elastic, plastic) at `theory_p`.
     pub theory_p: Vec<f64>,
     pub theory: [Vec<f64>; 3],
+    /// Each asperity capped at its own hardness (`--hardness asperity`)
+    /// instead of one cap.
+    pub per_asperity: bool,
 }
 
 /// The ζ sweep's numbers as its picture draws them.
@@ -125,11 +128,17 @@ pub fn render_contact(state: &State, d: &ContactLoads) -> anyhow::Result<String>
         short_number(phi),
         d.surface
     );
+    let cap = if d.per_asperity {
+        "each asperity's pressure capped at its own hardness H0 √(1 + R*/(1.2 R)), R its \
+         curvature radius; loads beyond what the asperities carry are not solved"
+            .to_string()
+    } else {
+        format!("the pressure capped at {h}")
+    };
     let caption = format!(
         "Contact area against the load over the hardness in use {h}: the boundary-element \
          simulation of the scene's surface (points: an elastic–perfectly-plastic half-space, \
-         the pressure capped at {h}) beside the theory's finite-load areas (lines, the {} \
-         model at {}).",
+         {cap}) beside the theory's finite-load areas (lines, the {} model at {}).",
         state.model.label(),
         psi_text(state, d.psi)
     );
