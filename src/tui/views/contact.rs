@@ -25,8 +25,11 @@ use crate::tui::theme::{CurveStyle, Theme};
 
 mod convergence;
 mod map;
+mod title;
+
 pub use map::{dithered, map_scale};
 use map::{draw_map, map_legend};
+use title::seeds_words;
 
 /// The map's colours: elastic light grey, at the hardness blue (the
 /// paper's plastic colour); out of contact the terminal's background.
@@ -150,26 +153,6 @@ pub fn readout(pane: &ContactPane, width: usize, g: Glyphs, h: &str) -> (Vec<Str
     // Nothing fits (a very narrow panel): the shortest, cut by the screen.
     let last = forms.last().map(text).unwrap_or_default();
     (vec![last], error)
-}
-
-/// "seed 1", "seeds 1–4", or while they come in "seeds 1–4, 2 in" (at the
-/// chosen load; in `b`'s plot, those whose whole sweep is in).
-fn seeds_words(pane: &ContactPane) -> String {
-    let asked = pane.seeds_asked();
-    if asked == 1 {
-        return format!("seed {}", pane.seed);
-    }
-    let last = pane.seed.wrapping_add(asked as u64 - 1);
-    let got = if pane.sweep {
-        pane.seeds_in()
-    } else {
-        pane.at_load(pane.load).map_or(0, |s| s[0].n)
-    };
-    if got < asked && !pane.chosen_is_coarse() {
-        format!("seeds {}–{last}, {got} in", pane.seed)
-    } else {
-        format!("seeds {}–{last}", pane.seed)
-    }
 }
 
 /// A job's progress in at most `room` columns, the longest form that fits
@@ -299,42 +282,7 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
             None => "simulation".into(),
         }
     };
-    // How the power law is sampled, where there is room beside the
-    // progress: the cell, the nodes per shortest wavelength, and a hardness
-    // per asperity (which must show whenever it is on).
-    let head = match (n, pane.tasks.first()) {
-        (Some(n), Some(task)) if task.scene.surface.is_none() => {
-            let s = &pane.sampling;
-            let per = s.per_wavelength(n, task.scene.zeta());
-            let per = if (per - per.round()).abs() < 0.05 {
-                format!("{per:.0}")
-            } else {
-                format!("{per:.1}")
-            };
-            let asperity = s.hardness == crate::contact::Hardness::Asperity;
-            // The sweep's grids differ by ζ; their nodes per wavelength not.
-            let per = if pane.sweep {
-                String::new()
-            } else {
-                format!(" · {per} nodes/λ")
-            };
-            let long = format!(
-                "{head} · cell {}{per}{}",
-                s.cell,
-                if asperity { " · H per asperity" } else { "" }
-            );
-            let short = format!("{head} · H per asperity");
-            let room = |t: &str| Span::raw(gl.text(t).as_ref()).width() + 18 <= w;
-            if room(&long) {
-                long
-            } else if asperity {
-                short
-            } else {
-                head
-            }
-        }
-        _ => head,
-    };
+    let head = title::with_sampling(pane, gl, head, (n, w));
     let head = gl.text(&head).into_owned();
     let used = Span::raw(head.as_str()).width();
     let right = progress_text(app, w.saturating_sub(used + 2));
