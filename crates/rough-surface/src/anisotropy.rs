@@ -75,7 +75,14 @@ fn sig(v: f64) -> String {
     } else {
         2
     };
+    if v == 0.0 {
+        return "0".into();
+    }
     let e = v.abs().log10().floor() as i32;
+    if !(-6..=15).contains(&e) {
+        // Far from 1 (a flat or degenerate map's ratio): scientific.
+        return format!("{v:.1e}");
+    }
     let decimals = (digits - 1 - e).max(0) as usize;
     let s = format!("{v:.decimals$}");
     if s.contains('.') && v.abs() >= 1.0 {
@@ -92,6 +99,11 @@ mod tests {
     #[test]
     fn notes_for_people() {
         assert_eq!(sig(3.4), "3.4");
+        // A mutated file's flat map: a zero or vanishing spread, no panic.
+        assert_eq!(sig(0.0), "0");
+        assert_eq!(sig(-0.0), "0");
+        assert_eq!(sig(1e-300), "1.0e-300");
+        assert_eq!(sig(f64::MIN_POSITIVE / 4.0), "5.6e-309");
         assert_eq!(sig(0.7312), "0.73");
         assert_eq!(sig(11.31), "11.3");
         assert_eq!(sig(250.4), "250");
