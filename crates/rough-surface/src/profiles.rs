@@ -61,6 +61,7 @@ pub(crate) fn profiles(
     }
     let scale = s2 / (n as f64).powi(2) / count as f64;
     let dq = 2.0 * PI / l;
+    crate::spectrum::wavevectors(dq, PI * n as f64 / l, &format!("{l:e} m"))?;
     let mut bins = Bins::new(dq, PI * n as f64 / l);
     let mut terms = Vec::with_capacity(n - 1);
     for (k, p) in power.iter().enumerate().skip(1) {

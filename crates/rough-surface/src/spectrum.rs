@@ -230,6 +230,7 @@ pub(crate) fn map(
         2.0 * PI * ny as f64 / ly / ny as f64,
     );
     let qmax = PI * (nx as f64 / lx).min(ny as f64 / ly);
+    wavevectors(gx.min(gy), qmax, &format!("{lx:e} m × {ly:e} m"))?;
     // ky and ny − ky lie at the same |q|: one term for both. Blocks of kx
     // on several threads, each with its own bins and slope sums.
     let qy: Vec<f64> = (0..=ny / 2).map(|j| freq(j, ny, ly)).collect();
@@ -353,6 +354,19 @@ fn merge_sorted(all: &[(f64, f64)], block: usize) -> Vec<(f64, f64)> {
     out
 }
 
+/// Refuses sizes that give no finite wavevector range from `lo` to `hi`
+/// (a file whose header claims a zero, infinite or vanishing size).
+pub(crate) fn wavevectors(lo: f64, hi: f64, size: &str) -> Result<(), Problem> {
+    if lo.is_finite() && hi.is_finite() && lo > 0.0 && hi >= lo {
+        Ok(())
+    } else {
+        Err(Problem::BadHeader(format!(
+            "the size {size} gives no finite range of wavevectors (from {lo:e} to {hi:e} 1/m): \
+             the file's lateral size or pixel size cannot be right"
+        )))
+    }
+}
+
 /// A line of n heights spanning l metres, `mode` removed; undefined
 /// points (NaN) are filled first.
 pub(crate) fn line(
@@ -375,6 +389,7 @@ pub(crate) fn line(
     // power_spectrum_from_profile: q = dq·k for 1 ≤ k < n//2, C1D = |Δx F|²/L,
     // binned from dq to π n/L.
     let dq = 2.0 * PI / l;
+    wavevectors(dq, PI * n as f64 / l, &format!("{l:e} m"))?;
     let mut bins = Bins::new(dq, PI * n as f64 / l);
     let mut terms = Vec::with_capacity(n - 1);
     for (k, f) in buf.iter().enumerate().skip(1) {

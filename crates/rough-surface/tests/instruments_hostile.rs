@@ -10,6 +10,8 @@ use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
+mod fuzz;
+
 use proptest::prelude::*;
 use rough_surface::{parse_named, read_grid_named, Options};
 
@@ -429,7 +431,11 @@ static RUNS: AtomicUsize = AtomicUsize::new(0);
 static REFUSED: AtomicUsize = AtomicUsize::new(0);
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(cases() * FILES.len() as u32))]
+    #![proptest_config(ProptestConfig {
+        cases: cases() * FILES.len() as u32,
+        rng_seed: fuzz::seed(),
+        ..ProptestConfig::default()
+    })]
 
     #[test]
     fn mutated_files_never_panic(
