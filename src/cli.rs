@@ -286,9 +286,24 @@ pub struct Simulate {
     #[arg(long, value_name = "K", value_parser = parse_per_wavelength)]
     pub per_wavelength: Option<u32>,
     /// Where the size effect's hardness applies in the simulation: one cap
-    /// everywhere (default), or each contact patch that of its asperity.
+    /// everywhere (default), each contact patch that of its asperity, or
+    /// each node that of its summit.
     #[arg(long, value_enum)]
     pub hardness: Option<HardnessArg>,
+    /// The load of a ζ sweep (contact-sweep, contact-slopes, the explorer's
+    /// `b`): fixed in H0 at every ζ (default), or a fixed fraction of the
+    /// hardness in use at each ζ (H_y(R_s) with the size effect).
+    #[arg(long, value_enum, value_name = "h0|in-use")]
+    pub load_scale: Option<LoadScaleArg>,
+}
+
+/// `--load-scale`: the unit a ζ sweep's load is fixed in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum LoadScaleArg {
+    /// p̄ a fixed fraction of H0 at every ζ: the same absolute load.
+    H0,
+    /// p̄ a fixed fraction of the hardness in use at each ζ.
+    InUse,
 }
 
 impl Simulate {
@@ -305,8 +320,14 @@ impl Simulate {
         if let Some(k) = self.per_wavelength {
             s.grid = Grid::PerWavelength(k);
         }
+        match self.load_scale {
+            Some(LoadScaleArg::H0) => s.loads = crate::contact::LoadScale::H0,
+            Some(LoadScaleArg::InUse) => s.loads = crate::contact::LoadScale::InUse,
+            None => {}
+        }
         match self.hardness {
             Some(HardnessArg::Asperity) => s.hardness = Hardness::Asperity,
+            Some(HardnessArg::Summit) => s.hardness = Hardness::Summit,
             Some(HardnessArg::Global) => s.hardness = Hardness::Global,
             None => {}
         }
@@ -314,9 +335,10 @@ impl Simulate {
     }
 
     /// The options given, by name (a measured map refuses them).
-    pub fn given(&self) -> [(bool, &'static str); 4] {
+    pub fn given(&self) -> [(bool, &'static str); 5] {
         [
             (self.hardness.is_some(), "--hardness"),
+            (self.load_scale.is_some(), "--load-scale"),
             (self.cell.is_some(), "--cell"),
             (self.contact_grid.is_some(), "--contact-grid"),
             (self.per_wavelength.is_some(), "--per-wavelength"),
@@ -328,7 +350,7 @@ impl Simulate {
     /// ζ; a hardness per asperity needs the size effect.
     pub fn check(&self, state: &crate::scene::State) -> anyhow::Result<()> {
         if state.is_measured() {
-            if let Some((_, opt)) = self.given().into_iter().skip(1).find(|(g, _)| *g) {
+            if let Some((_, opt)) = self.given().into_iter().skip(2).find(|(g, _)| *g) {
                 anyhow::bail!(
                     "{opt} does not apply to a measured map: it is solved on its own heights, \
                      its square and grid set by the data and ζ"
@@ -359,6 +381,12 @@ pub enum ViewArg {
     /// wavelength and cells of 1, 2 and 4 longest wavelengths, over the
     /// seeds (CSV).
     ContactConvergence,
+    /// The simulation's initial slopes H·dA/dp̄/A0 against ζ beside the
+    /// theory's (the paper's figure with the simulation's points).
+    ContactSlopes,
+    /// The synthetic surface the contact views solve, as a height matrix
+    /// (readable by `--surface FILE --periodic` and SurfaceTopography).
+    Surface,
 }
 
 impl ViewArg {
@@ -376,7 +404,9 @@ impl ViewArg {
             | ViewArg::Contact
             | ViewArg::ContactSweep
             | ViewArg::ContactMap
-            | ViewArg::ContactConvergence => return None,
+            | ViewArg::ContactConvergence
+            | ViewArg::ContactSlopes
+            | ViewArg::Surface => return None,
         })
     }
 }
@@ -401,6 +431,10 @@ pub enum HardnessArg {
     /// Each contact patch the size effect's H_y of the asperity under it
     /// (its curvature radius in place of R_s; needs the size effect on).
     Asperity,
+    /// Each node the size effect's H_y of its own summit: steepest ascent
+    /// on the heights to the local maximum, that maximum's curvature radius
+    /// (needs the size effect on).
+    Summit,
 }
 
 /// A parameter on the command line.

@@ -9,6 +9,7 @@
 mod contact;
 mod moments;
 mod slopes;
+mod surface;
 mod views;
 
 use std::io::Write;
@@ -151,6 +152,9 @@ pub fn run(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
         let state = state_of(args)?;
         let points = args.points.unwrap_or(DEFAULT_POINTS);
         return moments::run(args.format, &state, points, out);
+    }
+    if args.view == ViewArg::Surface {
+        return surface::export(args, out);
     }
     if args.view.figure().is_none() {
         return contact::export(args, out);

@@ -574,6 +574,7 @@ impl Bccg {
             mean_gap,
             iterations,
             residual,
+            perimeter: 0.0,
         }
     }
 }

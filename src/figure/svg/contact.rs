@@ -41,8 +41,13 @@ pub struct ContactSweep {
     /// The solved surfaces in words: "seed 1, 8 nodes per shortest
     /// wavelength".
     pub surface: String,
-    /// The load p̄/H_use of every point.
+    /// The load of every point: p̄/H0 (`load_in_h0`), or p̄/H_use at
+    /// each ζ.
     pub load: f64,
+    pub load_in_h0: bool,
+    /// Where the hardness applies, in words ("one cap H_y(R_s)", "each
+    /// node its summit's H_y"), for the caption.
+    pub hardness: String,
     pub zeta: Vec<f64>,
     /// The simulated plastic share A_pl/A, ± `sd` where given.
     pub share: Vec<f64>,
@@ -72,13 +77,21 @@ pub fn contact_span(state: &State, loads: &[f64]) -> String {
     )
 }
 
-/// What the ζ sweep spans, in full.
-pub fn sweep_span(state: &State, load: f64) -> String {
+/// What the ζ sweep spans, in full: its load fixed over H0 (the same at
+/// every ζ, `in_h0`) or over the hardness in use at each ζ.
+pub fn sweep_span(state: &State, load: f64, in_h0: bool) -> String {
+    let at = crate::physical::csv_number::format(load);
+    let load = if in_h0 {
+        format!("at p_over_h0 = pbar/H0 = {at} (the same load at every zeta)")
+    } else {
+        format!(
+            "at p_over_h = pbar/{} = {at} (the hardness in use at each zeta)",
+            state.hardness_name()
+        )
+    };
     format!(
         "contact-sweep = zeta = 1, 2, 4, …, 128 (a measured map: those it resolves), each on \
-         its own grid, at p_over_h = pbar/{} = {}",
-        state.hardness_name(),
-        crate::physical::csv_number::format(load)
+         its own grid, {load}"
     )
 }
 
@@ -179,29 +192,38 @@ pub fn render_contact_sweep(state: &State, d: &ContactSweep) -> anyhow::Result<S
         },
     ];
     let load = short_number(d.load);
-    let what = format!("plastic share against ζ at p̄ = {load} {h}");
+    let unit = if d.load_in_h0 { "H0" } else { h };
+    let what = format!("plastic share against ζ at p̄ = {load} {unit}");
     let title = super::title(state, &what);
     let draw = |area: &super::Area, room| plot::draw(area, &title, (&x, &y), &series, room);
     let short = format!(
-        "ζ {} … {} at p̄ = {load} {h} · {}",
+        "ζ {} … {} at p̄ = {load} {unit} · {}",
         short_number(zlo),
         short_number(zhi),
         d.surface
     );
-    let hy = if state.size_effect {
-        " (H_y the size-dependent hardness at each ζ)"
-    } else {
-        ""
+    let hy = match (d.load_in_h0, state.size_effect) {
+        (true, true) => " (the same load at every ζ; H_y, the size-dependent hardness, grows with ζ)",
+        (true, false) => " (the same load at every ζ)",
+        (false, true) => " (H_y the size-dependent hardness at each ζ: a load that grows with it)",
+        (false, false) => "",
     };
     let caption = format!(
-        "Plastic share of the contact area against the magnification ζ at p̄ = {load} {h}{hy}: \
-         the boundary-element simulation (points, each ζ on its own grid of at least 8 nodes \
-         per shortest wavelength) beside the theory's finite-load areas (line, the {} model).",
+        "Plastic share of the contact area against the magnification ζ at p̄ = {load} \
+         {unit}{hy}, a finite load (secants, not initial slopes): the boundary-element \
+         simulation (points, each ζ on its own grid of at least 8 nodes per shortest \
+         wavelength; the pressure capped at {}) beside the theory's finite-load areas at the \
+         same load (line, the {} model).",
+        d.hardness,
         state.model.label()
     );
     let lines = under(state, Some(short), &caption);
     let mut desc =
-        crate::figure::scene_text::full_lines_of(state, "contact-sweep", sweep_span(state, d.load));
+        crate::figure::scene_text::full_lines_of(
+            state,
+            "contact-sweep",
+            sweep_span(state, d.load, d.load_in_h0),
+        );
     desc.push(format!("simulation = {}", d.surface));
     render(&draw, &lines, &format!("{} — {what}", state.name), &desc)
 }
