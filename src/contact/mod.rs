@@ -23,6 +23,7 @@ mod progress;
 mod rows;
 pub mod sampling;
 pub mod scene;
+pub mod slopes;
 
 use rough_contact::{Contact, LoadResult, Options};
 use rough_model::{areas, Areas};

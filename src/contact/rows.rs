@@ -47,7 +47,7 @@ impl LoadRow {
 
 /// The seeds of `spec` checked against the scene: a measured map has one
 /// realisation only.
-fn check_seeds(state: &State, spec: &Spec) -> anyhow::Result<()> {
+pub(super) fn check_seeds(state: &State, spec: &Spec) -> anyhow::Result<()> {
     if spec.seeds.count == 0 {
         bail!("--seeds 0: at least one realisation is needed");
     }
@@ -176,22 +176,7 @@ pub fn sweep_rows(state: &State, spec: &Spec) -> anyhow::Result<(Simulation, Vec
     let mut rows = vec![];
     let mut first = None;
     let mut heights = vec![];
-    // A measured map's ζ runs from the first that keeps a mode of its
-    // solved square to its data's largest.
-    let zeta_max = state.roughness().zeta_max() * (1.0 + 1e-12);
-    let zeta_min = match measured::heights_of(state)? {
-        Some((_, h)) => measured::lowest_zeta(&h) * (1.0 - 1e-9),
-        None => 0.0,
-    };
-    for zeta in sweep_zetas()
-        .into_iter()
-        .filter(|z| (zeta_min..=zeta_max).contains(z))
-    {
-        let mut s = state.clone();
-        s.params = s
-            .params
-            .with(rough_model::Axis::Zeta, zeta)
-            .map_err(|e| anyhow::anyhow!("ζ = {zeta}: {e}"))?;
+    for (zeta, s) in sweep_states(state)? {
         let ratio = hardness_ratio(&s);
         let p_over_h = spec.sampling.loads.over_in_use(SWEEP_LOAD, ratio);
         let (mut runs, mut theory, mut grid) = (vec![], None, 0);
@@ -241,4 +226,27 @@ pub fn hardness_ratio(state: &State) -> f64 {
         .surface(&state.params, state.moments)
         .indices
         .hardness_in_use(state.size_effect)
+}
+
+/// The scene at each ζ of a sweep: 1, 2, 4, …, 128 (a measured map's from
+/// the first that keeps a mode of its solved square to its data's
+/// largest).
+pub(super) fn sweep_states(state: &State) -> anyhow::Result<Vec<(f64, State)>> {
+    let zeta_max = state.roughness().zeta_max() * (1.0 + 1e-12);
+    let zeta_min = match measured::heights_of(state)? {
+        Some((_, h)) => measured::lowest_zeta(&h) * (1.0 - 1e-9),
+        None => 0.0,
+    };
+    sweep_zetas()
+        .into_iter()
+        .filter(|z| (zeta_min..=zeta_max).contains(z))
+        .map(|zeta| {
+            let mut s = state.clone();
+            s.params = s
+                .params
+                .with(rough_model::Axis::Zeta, zeta)
+                .map_err(|e| anyhow::anyhow!("ζ = {zeta}: {e}"))?;
+            Ok((zeta, s))
+        })
+        .collect()
 }

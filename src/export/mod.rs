@@ -7,6 +7,7 @@
 //! something else.
 
 mod contact;
+mod contact_slopes;
 mod moments;
 mod slopes;
 mod surface;

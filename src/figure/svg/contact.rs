@@ -228,6 +228,111 @@ pub fn render_contact_sweep(state: &State, d: &ContactSweep) -> anyhow::Result<S
     render(&draw, &lines, &format!("{} — {what}", state.name), &desc)
 }
 
+/// The simulated initial slopes against ζ as their picture draws them.
+#[derive(Clone, Debug, Default)]
+pub struct ContactSlopes {
+    /// The solved surfaces in words.
+    pub surface: String,
+    /// Where the hardness applies, in words.
+    pub hardness: String,
+    pub zeta: Vec<f64>,
+    /// The simulated slopes (elastic, plastic, total), mean ± sd.
+    pub slope: [Vec<f64>; 3],
+    pub sd: Option<[Vec<f64>; 3]>,
+    /// The theory's slopes (elastic, plastic, total) and Persson's elastic
+    /// one at `theory_zeta`.
+    pub theory_zeta: Vec<f64>,
+    pub theory: [Vec<f64>; 3],
+    pub persson: Vec<f64>,
+}
+
+/// The paper's figure (initial slopes against ζ, log–log) with the
+/// simulation's points.
+pub fn render_contact_slopes(state: &State, d: &ContactSlopes) -> anyhow::Result<String> {
+    let h = state.hardness_name();
+    let (zlo, zhi) = super::positive_span(d.zeta.iter().chain(&d.theory_zeta));
+    let x = Scale::padded(true, zlo, zhi, 0.03, "ζ = q1/q0".into());
+    let sim = d.slope.iter().flatten();
+    let (_, hi) = super::positive_span(sim.clone().chain(&d.theory[0]).chain(&d.theory[2]));
+    // The floor: four decades under the top, or the least point above it.
+    let (lo, _) = super::positive_span(
+        sim.chain(d.theory.iter().flatten())
+            .filter(|v| **v >= hi * 1e-4),
+    );
+    let y = Scale::padded(true, lo, hi, 0.04, format!("initial slope {h}·dA/(A0·dp̄)"));
+    let names = ["elastic", "plastic", "total"];
+    let colours = [ELASTIC, PLASTIC, TOTAL];
+    let sd_words = if d.sd.is_some() { " (mean ± sd)" } else { "" };
+    let mut series = vec![];
+    for k in 0..3 {
+        series.push(Series {
+            label: format!("{}: theory", names[k]),
+            colour: colours[k],
+            mark: Mark::Line(Stroke::Solid),
+            x: &d.theory_zeta,
+            y: &d.theory[k],
+            sd: None,
+        });
+    }
+    let psi = state.index_name();
+    series.push(Series {
+        label: format!("Persson elastic √(2/π)/{psi}"),
+        colour: super::PERSSON,
+        mark: Mark::Line(Stroke::Dashed),
+        x: &d.theory_zeta,
+        y: &d.persson,
+        sd: None,
+    });
+    let none = |k: usize| {
+        if d.slope[k].iter().any(|v| *v > 0.0) {
+            ""
+        } else {
+            ", 0 everywhere: not on a log axis"
+        }
+    };
+    for (k, r) in [(2, 5), (0, 3), (1, 3)] {
+        series.push(Series {
+            label: format!("{}: simulation{sd_words}{}", names[k], none(k)),
+            colour: colours[k],
+            mark: Mark::Dots(r),
+            x: &d.zeta,
+            y: &d.slope[k],
+            sd: d.sd.as_ref().map(|s| &s[k][..]),
+        });
+    }
+    let what = "initial slopes against ζ, theory and simulation";
+    let title = super::title(state, what);
+    let draw = |area: &super::Area, room| plot::draw(area, &title, (&x, &y), &series, room);
+    let short = format!(
+        "ζ {} … {} · {}",
+        short_number(zlo),
+        short_number(zhi),
+        d.surface
+    );
+    let caption = format!(
+        "Initial slopes {h}·dA/(A0·dp̄) against ζ, the paper's quantity: the theory's (lines, \
+         the {} model at {psi}) and the boundary-element simulation's (points, ζ ≤ 128: each \
+         seed's areas at five light loads p̄/(E* h′) = 0.5 … 8·10⁻³ fitted by A = s·x + c·x² \
+         through the origin over the four lightest, s the slope; the pressure capped at {}). \
+         A plastic slope of 0 has no place on the log axis.",
+        state.model.label(),
+        d.hardness
+    );
+    let lines = under(state, Some(short), &caption);
+    let mut desc = crate::figure::scene_text::full_lines_of(
+        state,
+        "contact-slopes",
+        format!(
+            "contact-slopes = zeta = {} (simulated), theory from {} to {}",
+            d.zeta.iter().map(|z| short_number(*z)).collect::<Vec<_>>().join(", "),
+            short_number(zlo),
+            short_number(zhi)
+        ),
+    );
+    desc.push(format!("simulation = {}", d.surface));
+    render(&draw, &lines, &format!("{} — {what}", state.name), &desc)
+}
+
 /// The colours of the map's nodes: out of contact white, elastic grey,
 /// at the hardness the paper's plastic blue.
 pub(super) const NODE_ELASTIC: RGBColor = RGBColor(140, 140, 140);
