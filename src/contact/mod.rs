@@ -30,7 +30,9 @@ use rough_model::{areas, Areas};
 use scene::SceneKey;
 
 pub(crate) use csv::push_row;
-pub use csv::{write_contact, write_contact_sweep, CONTACT_HEADER, SWEEP_HEADER};
+pub use csv::{
+    theory_split, write_contact, write_contact_sweep, CONTACT_HEADER, PERSSON_KAPPA, SWEEP_HEADER,
+};
 pub use ensemble::{Seeds, Stat};
 pub use rows::{load_rows, sweep_rows, LoadRow, SweepRow};
 pub use sampling::{Grid, Hardness, LoadScale, Sampling, MAX_GRID, MIN_GRID};

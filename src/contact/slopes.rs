@@ -9,7 +9,8 @@
 //! contact areas, about 0.1 … 2 % of A0, at every ζ and hardness), and
 //! each area A(x), x = p̄/H_use, is fitted by least squares with
 //! A = s·x + c·x² through the origin over the four lightest loads: s is the
-//! initial slope, the secant's curvature (c) taken off. The same fit over
+//! initial slope, the secant's curvature (c) taken off, s ≥ 0 (a plastic
+//! area that starts at a threshold load has none). The same fit over
 //! the four heaviest loads gives another s; their difference is the fit's
 //! error (`*_fit_err`): what moving the window by a factor of two changes.
 //! Each seed is fitted alone; the columns are the seeds' means and sample
@@ -74,9 +75,17 @@ impl Run {
     }
 }
 
-/// s of the least-squares fit y = s·x + c·x² through the origin (x scaled
-/// to its largest for the normal equations); one point: y/x.
+/// s of the least-squares fit y = s·x + c·x² through the origin with
+/// s ≥ 0 (x scaled to its largest for the normal equations; one point:
+/// y/x). A part that grows faster than linearly from nothing — a plastic
+/// area that starts at a threshold load — has no initial slope: where the
+/// unconstrained fit's s is negative the constrained one's is 0 (the least
+/// squares are convex in (s, c): their least over s ≥ 0 lies on s = 0).
 pub fn initial_slope(x: &[f64], y: &[f64]) -> f64 {
+    unconstrained_slope(x, y).max(0.0)
+}
+
+fn unconstrained_slope(x: &[f64], y: &[f64]) -> f64 {
     let m = x.iter().cloned().fold(0.0, f64::max);
     if x.len() < 2 || m <= 0.0 {
         return x.first().zip(y.first()).map_or(f64::NAN, |(x, y)| y / x);
@@ -278,4 +287,21 @@ pub fn write(
     out.write_all(buf.as_bytes())?;
     out.flush()?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_fit_takes_the_curvature_off_and_keeps_the_slope_non_negative() {
+        let x = [1.0, 2.0, 4.0, 8.0];
+        // y = 3x − 0.1x²: s = 3 exactly.
+        let y: Vec<f64> = x.iter().map(|x| 3.0 * x - 0.1 * x * x).collect();
+        assert!((initial_slope(&x, &y) - 3.0).abs() < 1e-12);
+        // y = 0.2x² (a threshold's curvature): no initial slope.
+        let y: Vec<f64> = x.iter().map(|x| 0.2 * x * x - 0.05 * x).collect();
+        assert_eq!(initial_slope(&x, &y), 0.0);
+        assert_eq!(initial_slope(&[2.0], &[3.0]), 1.5);
+    }
 }

@@ -18,7 +18,10 @@ use std::io::Write;
 use anyhow::bail;
 use rough_model::Sweep;
 
-pub use contact::{map_picture as contact_map_picture, CONTACT_HEADER, SWEEP_HEADER};
+pub use contact::{
+    hardness_short, map_picture as contact_map_picture, CONTACT_HEADER, SWEEP_HEADER,
+};
+pub use surface::write as write_surface;
 pub use moments::{write_moments, MOMENTS_HEADER};
 pub use slopes::{write_csv, HEADER};
 pub use views::{

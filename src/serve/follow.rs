@@ -58,12 +58,12 @@ impl Shown {
 }
 
 /// What the contact view shows of a scene: the load (`[ ]`), the plot
-/// (`b`), how many seeds it averages over (`R`), whether the convergence
-/// table is up (`t`) and where the hardness applies (`A`).
+/// (`b`, `i`), how many seeds it averages over (`R`), whether the
+/// convergence table is up (`t`) and where the hardness applies (`A`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct ContactShown {
     pub load: usize,
-    pub sweep: bool,
+    pub plot: crate::tui::contact::Plot,
     pub seeds: u32,
     pub table: bool,
     pub hardness: crate::contact::Hardness,
@@ -73,7 +73,7 @@ impl ContactShown {
     pub fn of(c: &ContactPane) -> ContactShown {
         ContactShown {
             load: c.load,
-            sweep: c.sweep,
+            plot: c.plot,
             seeds: c.seeds,
             table: c.table,
             hardness: c.sampling.hardness,
@@ -81,7 +81,7 @@ impl ContactShown {
     }
 
     fn set(&self, c: &mut ContactPane) {
-        (c.load, c.sweep, c.seeds, c.table) = (self.load, self.sweep, self.seeds, self.table);
+        (c.load, c.plot, c.seeds, c.table) = (self.load, self.plot, self.seeds, self.table);
         c.sampling.hardness = self.hardness;
     }
 }
@@ -281,6 +281,7 @@ fn edits(msg: &Message) -> bool {
             | M::NextMapY
             | M::ContactLoad { .. }
             | M::ContactSweep
+            | M::ContactSlopes
             | M::ContactSeed
             | M::ContactSeeds
             | M::ContactTable
