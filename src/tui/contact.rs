@@ -42,7 +42,7 @@ pub(crate) const THEORY_POINTS: usize = 96;
 /// The coarse answer's grid side at most: a finer scene is first solved on
 /// its surface sampled at every second, fourth … node (256²: a load in
 /// tenths of a second), then on its own grid.
-pub const COARSE_GRID: usize = 256;
+pub use crate::contact::COARSE_GRID;
 /// Surfaces (seeds) the load plot averages over when the view opens; `R`
 /// steps through [`SEED_CHOICES`].
 pub const DEFAULT_SEEDS: u32 = 4;

@@ -23,6 +23,8 @@ mod load;
 mod multigrid;
 mod par;
 mod solver;
+mod sparse;
+mod step;
 mod surface;
 
 use std::fmt;

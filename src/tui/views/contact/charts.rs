@@ -132,8 +132,14 @@ pub(super) fn load_chart(app: &App, area: Rect, buf: &mut Buffer) {
             format!(" theory  {} simulation (T E P)", mark(p_total.1)),
         ]
     };
-    let mut forms = head(true).to_vec();
-    forms.extend(head(false));
+    let (long, short) = (head(true), head(false));
+    let forms = [
+        long[0].clone(),
+        long[1].clone(),
+        short[0].clone(),
+        short[1].clone(),
+        long[2].clone(),
+    ];
     let text = fitting(t, &forms, area.width.saturating_sub(2));
     let (theory, rest) = text.split_once(&mark(p_total.1)).unwrap_or((&text, ""));
     Line::from(vec![
