@@ -338,6 +338,9 @@ fn contact_hardness_per_asperity() {
         "on",
         "--cell",
         "1",
+        // Four nodes a wavelength: ζ = 128 on 512², a quick test.
+        "--per-wavelength",
+        "4",
     ];
     let global = stdout(&base);
     let (_, _, g) = parse(&global);

@@ -83,13 +83,14 @@ fn the_theory_columns_are_the_slopes_views() {
 
 #[test]
 fn the_slopes_picture_and_refusals() {
+    // A measured map: its own grid at each ζ it resolves (quick).
+    let example = concat!(env!("CARGO_MANIFEST_DIR"), "/surfaces/example.txt");
     let svg = stdout(&[
-        "export", "--view", "contact-slopes", "--preset", "fig2", "--cell", "1",
-        "--per-wavelength", "4", "--format", "svg",
+        "export", "--view", "contact-slopes", "--surface", example, "--format", "svg",
     ]);
     let doc = roxmltree::Document::parse(&svg).unwrap();
     let text: String = doc.descendants().filter_map(|n| n.text()).collect();
-    for want in ["total: theory", "total: simulation", "Initial slopes H0·dA/(A0·dp̄)"] {
+    for want in ["total: theory", "total: simulation", "Initial slopes H_y·dA/(A0·dp̄)"] {
         assert!(text.contains(want), "{want} not in {text}");
     }
     for (extra, needle) in [

@@ -217,7 +217,7 @@ fn slopes_forms(pane: &ContactPane) -> Vec<Vec<String>> {
     let Some((k, [_, pl, tot])) = at else {
         return vec![vec!["initial slopes: solving the light loads…".into()]];
     };
-    let z = fmt_num(pane.zetas[k]);
+    let z = crate::physical::print::fmt_short(rough_model::Axis::Zeta, pane.zetas[k]);
     let share = |p: f64, t: f64| if t > 0.0 { share_pct(p, t) } else { "—".into() };
     let sim_share = share(pl.mean, tot.mean);
     let th = pane
