@@ -11,7 +11,10 @@ pub const PRESETS: [(&str, &str); 5] = [
     ("fig2", include_str!("../presets/fig2.ron")),
     ("fig3", include_str!("../presets/fig3.ron")),
     ("fig4", include_str!("../presets/fig4.ron")),
-    ("elastic-again", include_str!("../presets/elastic-again.ron")),
+    (
+        "elastic-again",
+        include_str!("../presets/elastic-again.ron"),
+    ),
 ];
 
 /// The names, for error messages and help.

@@ -82,11 +82,14 @@ fn contact_view_csv() {
         "{comments:#?}"
     );
     assert!(
-        comments.iter().any(|c| c.starts_with("# hardness = global: one cap H0/E* = 0.01")),
+        comments
+            .iter()
+            .any(|c| c.starts_with("# hardness = global: one cap H0/E* = 0.01")),
         "{comments:#?}"
     );
     assert!(
-        comments.iter().any(|c| c.starts_with("# kappa = A/A0 over pbar/(E* h') at the lightest load")
+        comments.iter().any(|c| c
+            .starts_with("# kappa = A/A0 over pbar/(E* h') at the lightest load")
             && c.contains("Persson's theory: sqrt(8/pi) = 1.5957691216057308")),
         "{comments:#?}"
     );
@@ -104,7 +107,10 @@ fn contact_view_csv() {
         // Without the size effect the load over H0 is the load over H_use;
         // the corrected area is the area less the perimeter's overcount.
         assert_eq!(r[14], r[0]);
-        assert!(r[15] <= r[1] && (r[15] > 0.9 * r[1] || r[1] < 0.02), "{r:?}");
+        assert!(
+            r[15] <= r[1] && (r[15] > 0.9 * r[1] || r[1] < 0.02),
+            "{r:?}"
+        );
         last = r[1];
     }
     // At p̄ = H everything is at the hardness, in both.

@@ -30,8 +30,15 @@ fn the_theory_columns_are_the_slopes_views() {
     // keeps the test quick: 4 nodes per wavelength, at least 256²).
     for preset in ["fig2", "fig3"] {
         let csv = stdout(&[
-            "export", "--view", "contact-slopes", "--preset", preset, "--cell", "1",
-            "--per-wavelength", "4",
+            "export",
+            "--view",
+            "contact-slopes",
+            "--preset",
+            preset,
+            "--cell",
+            "1",
+            "--per-wavelength",
+            "4",
         ]);
         let (comments, header, rows) = parse(&csv);
         assert!(header.starts_with(
@@ -40,12 +47,23 @@ fn the_theory_columns_are_the_slopes_views() {
              theory_total_slope,seeds"
         ));
         assert!(
-            comments.iter().any(|c| c.starts_with("# slopes = initial slopes")
-                && c.contains("fitted by A = s x + c x^2 through the origin over the 4 lightest")),
+            comments
+                .iter()
+                .any(|c| c.starts_with("# slopes = initial slopes")
+                    && c.contains(
+                        "fitted by A = s x + c x^2 through the origin over the 4 lightest"
+                    )),
             "{comments:#?}"
         );
         let slopes = stdout(&[
-            "export", "--view", "slopes", "--preset", preset, "--sweep", "zeta:1:128", "--points",
+            "export",
+            "--view",
+            "slopes",
+            "--preset",
+            preset,
+            "--sweep",
+            "zeta:1:128",
+            "--points",
             "8",
         ]);
         let (_, sh, srows) = parse(&slopes);
@@ -86,15 +104,28 @@ fn the_slopes_picture_and_refusals() {
     // A measured map: its own grid at each ζ it resolves (quick).
     let example = concat!(env!("CARGO_MANIFEST_DIR"), "/surfaces/example.txt");
     let svg = stdout(&[
-        "export", "--view", "contact-slopes", "--surface", example, "--format", "svg",
+        "export",
+        "--view",
+        "contact-slopes",
+        "--surface",
+        example,
+        "--format",
+        "svg",
     ]);
     let doc = roxmltree::Document::parse(&svg).unwrap();
     let text: String = doc.descendants().filter_map(|n| n.text()).collect();
-    for want in ["total: theory", "total: simulation", "Initial slopes H_y·dA/(A0·dp̄)"] {
+    for want in [
+        "total: theory",
+        "total: simulation",
+        "Initial slopes H_y·dA/(A0·dp̄)",
+    ] {
         assert!(text.contains(want), "{want} not in {text}");
     }
     for (extra, needle) in [
-        (vec!["--points", "3"], "--points does not apply to --view contact-slopes"),
+        (
+            vec!["--points", "3"],
+            "--points does not apply to --view contact-slopes",
+        ),
         (
             vec!["--load-scale", "in-use"],
             "--load-scale does not apply to --view contact-slopes",

@@ -107,7 +107,9 @@ fn the_exported_surface_gives_tamaas_the_contact_views_areas() {
 fn the_exported_surface_reads_back_as_a_measured_map() {
     let dir = tempfile_dir("surface");
     let path = dir.join("fig2-z8.txt");
-    let scene = ["--preset", "fig2", "--set", "zeta=8", "--cell", "1", "--seed", "3"];
+    let scene = [
+        "--preset", "fig2", "--set", "zeta=8", "--cell", "1", "--seed", "3",
+    ];
     let text = stdout(&[&["export", "--view", "surface"], &scene[..]].concat());
     let lines: Vec<&str> = text.lines().collect();
     assert_eq!(
@@ -124,16 +126,38 @@ fn the_exported_surface_reads_back_as_a_measured_map() {
          0.00006283185307179586 m (a cell of 1 longest wavelength), 8 nodes per shortest \
          wavelength, seed 3"
     )));
-    let data: Vec<&str> = lines.iter().copied().filter(|l| !l.starts_with('#')).collect();
+    let data: Vec<&str> = lines
+        .iter()
+        .copied()
+        .filter(|l| !l.starts_with('#'))
+        .collect();
     assert_eq!(data.len(), 64);
     assert!(data.iter().all(|l| l.split(' ').count() == 64));
     std::fs::write(&path, &text).unwrap();
     let p = path.to_str().unwrap();
     let measured = stdout(&[
-        "export", "--view", "contact", "--surface", p, "--periodic", "--set", "zeta=8", "--set",
-        "h0-over-e=0.01", "--size-effect", "off", "--points", "3",
+        "export",
+        "--view",
+        "contact",
+        "--surface",
+        p,
+        "--periodic",
+        "--set",
+        "zeta=8",
+        "--set",
+        "h0-over-e=0.01",
+        "--size-effect",
+        "off",
+        "--points",
+        "3",
     ]);
-    let synthetic = stdout(&[&["export", "--view", "contact", "--points", "3"], &scene[..]].concat());
+    let synthetic = stdout(
+        &[
+            &["export", "--view", "contact", "--points", "3"],
+            &scene[..],
+        ]
+        .concat(),
+    );
     for (a, b) in rows(&measured).iter().zip(rows(&synthetic)) {
         // The same heights (a Fourier low-pass at ζ q0 that keeps every mode
         // aside): the same nodes in contact and at the hardness.
@@ -146,9 +170,18 @@ fn the_exported_surface_reads_back_as_a_measured_map() {
 #[test]
 fn the_surface_view_refuses_what_does_not_apply() {
     for (extra, needle) in [
-        (vec!["--seeds", "2"], "--seeds does not apply to --view surface"),
-        (vec!["--points", "3"], "--points does not apply to --view surface"),
-        (vec!["--hardness", "summit"], "--hardness does not apply to --view surface"),
+        (
+            vec!["--seeds", "2"],
+            "--seeds does not apply to --view surface",
+        ),
+        (
+            vec!["--points", "3"],
+            "--points does not apply to --view surface",
+        ),
+        (
+            vec!["--hardness", "summit"],
+            "--hardness does not apply to --view surface",
+        ),
         (vec!["--format", "svg"], "a height matrix: text only"),
         (
             vec!["--surface", "surfaces/example.txt"],

@@ -271,10 +271,17 @@ fn b_shows_the_plastic_share_against_zeta() {
     assert!(off.iter().all(|t| t.p_over_h() == 1e-3));
     for t in on {
         let h_y = t.scene.hardness() / 0.01;
-        assert!((t.p_over_h() * h_y / 1e-3 - 1.0).abs() < 1e-12, "{}", t.p_over_h());
+        assert!(
+            (t.p_over_h() * h_y / 1e-3 - 1.0).abs() < 1e-12,
+            "{}",
+            t.p_over_h()
+        );
     }
     let text = screen(&a);
-    assert!(text.contains("plastic share vs ζ at p̄ = 0.001 H0"), "{text}");
+    assert!(
+        text.contains("plastic share vs ζ at p̄ = 0.001 H0"),
+        "{text}"
+    );
     assert!(text.contains("H0") && text.contains("H_y(R_s)"), "{text}");
     ch(&mut a, 'b');
     assert_eq!(a.contact.plot, Plot::Load);
@@ -317,7 +324,10 @@ fn i_shows_the_initial_slopes_against_zeta() {
     assert_eq!(files.len(), 2, "{files:?}");
     let svg = files.iter().find(|f| f.ends_with(".svg")).unwrap();
     let svg = std::fs::read_to_string(dir.path().join(svg)).unwrap();
-    assert!(svg.contains("initial slopes against ζ, theory and simulation"), "{svg}");
+    assert!(
+        svg.contains("initial slopes against ζ, theory and simulation"),
+        "{svg}"
+    );
     ch(&mut a, 'b');
     assert_eq!(a.contact.plot, Plot::Share);
     ch(&mut a, 'b');
@@ -498,8 +508,15 @@ fn p_saves_the_contact_map_at_the_chosen_load() {
     // The picture and the surface's heights, as the view solves them.
     let files = common::files_in(dir.path());
     assert_eq!(files.len(), 2, "{files:?}");
-    assert!(files.iter().all(|f| f.starts_with("fig2-contact")), "{files:?}");
-    assert!(st.text.contains("--surface FILE --periodic reads them"), "{}", st.text);
+    assert!(
+        files.iter().all(|f| f.starts_with("fig2-contact")),
+        "{files:?}"
+    );
+    assert!(
+        st.text.contains("--surface FILE --periodic reads them"),
+        "{}",
+        st.text
+    );
     let heights = files.iter().find(|f| f.ends_with("-surface.txt")).unwrap();
     let heights = std::fs::read_to_string(dir.path().join(heights)).unwrap();
     assert!(heights.starts_with(

@@ -235,7 +235,10 @@ pub fn write(
         writeln!(out, "# {l}")?;
     }
     let s = &spec.sampling;
-    let p = state.params.with(Axis::Zeta, sim.zeta).unwrap_or(state.params);
+    let p = state
+        .params
+        .with(Axis::Zeta, sim.zeta)
+        .unwrap_or(state.params);
     if let Some(m) = &sim.measured {
         writeln!(
             out,
@@ -259,7 +262,11 @@ pub fn write(
             spec.seeds.words()
         )?;
     }
-    writeln!(out, "# hardness = {}", super::csv::hardness_words(&sim, state))?;
+    writeln!(
+        out,
+        "# hardness = {}",
+        super::csv::hardness_words(&sim, state)
+    )?;
     writeln!(
         out,
         "# slopes = initial slopes {h}·dA/dp̄/A0 (normalised by the theory's hardness in use \

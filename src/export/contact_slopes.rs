@@ -79,7 +79,8 @@ pub fn picture(state: &State, spec: &Spec) -> anyhow::Result<ContactSlopes> {
         hardness: hardness_short(state, spec.sampling.hardness),
         zeta: rows.iter().map(|r| r.zeta).collect(),
         slope: [0, 1, 2].map(|k| stats.iter().map(|s| s[k].mean).collect()),
-        sd: (spec.seeds.count > 1).then(|| [0, 1, 2].map(|k| stats.iter().map(|s| s[k].sd).collect())),
+        sd: (spec.seeds.count > 1)
+            .then(|| [0, 1, 2].map(|k| stats.iter().map(|s| s[k].sd).collect())),
         ..ContactSlopes::default()
     };
     let (from, to) = match state.sweep.axis() {
@@ -87,8 +88,8 @@ pub fn picture(state: &State, spec: &Spec) -> anyhow::Result<ContactSlopes> {
         _ => (1.0, 1e4),
     };
     let to = to.min(state.roughness().zeta_max());
-    let sweep = Sweep::new(Axis::Zeta, from, to.max(from * 1.0001))
-        .map_err(|e| anyhow::anyhow!("{e}"))?;
+    let sweep =
+        Sweep::new(Axis::Zeta, from, to.max(from * 1.0001)).map_err(|e| anyhow::anyhow!("{e}"))?;
     for z in sweep.points(THEORY_POINTS) {
         let Ok(p) = state.params.with(Axis::Zeta, z) else {
             continue;
@@ -103,7 +104,8 @@ pub fn picture(state: &State, spec: &Spec) -> anyhow::Result<ContactSlopes> {
         d.theory[0].push(s.elastic);
         d.theory[1].push(s.plastic);
         d.theory[2].push(s.total);
-        d.persson.push((2.0 / std::f64::consts::PI).sqrt() / psi.to_f64());
+        d.persson
+            .push((2.0 / std::f64::consts::PI).sqrt() / psi.to_f64());
     }
     Ok(d)
 }

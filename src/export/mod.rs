@@ -21,9 +21,9 @@ use rough_model::Sweep;
 pub use contact::{
     hardness_short, map_picture as contact_map_picture, CONTACT_HEADER, SWEEP_HEADER,
 };
-pub use surface::write as write_surface;
 pub use moments::{write_moments, MOMENTS_HEADER};
 pub use slopes::{write_csv, HEADER};
+pub use surface::write as write_surface;
 pub use views::{
     write_indices, write_load, write_map, write_spectrum, INDICES_HEADER, LOAD_HEADER, MAP_HEADER,
     SPECTRUM_HEADER,

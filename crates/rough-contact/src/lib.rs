@@ -95,8 +95,7 @@ pub struct LoadResult {
 /// The share of a node side that a grid's contact area counts too much,
 /// (π − 1 + ln 2)/24 (Yastrebov, Anciaux & Molinari, Tribol. Int. 114,
 /// 2017; Tamaas's `Statistics2D.contact` applies the same).
-pub const PERIMETER_CORRECTION: f64 =
-    (std::f64::consts::PI - 1.0 + std::f64::consts::LN_2) / 24.0;
+pub const PERIMETER_CORRECTION: f64 = (std::f64::consts::PI - 1.0 + std::f64::consts::LN_2) / 24.0;
 
 impl LoadResult {
     /// The contact area less the grid's overcount along the contact's

@@ -26,8 +26,8 @@ use rayon::prelude::*;
 use crate::cap::{class, Cap, Set};
 use crate::fft::Compliance;
 use crate::load::{impose_mean, project};
-use crate::step::step;
 use crate::par::{chunk_len, min_len};
+use crate::step::step;
 use crate::{ContactError, LoadResult, Options};
 
 /// Why an iteration stopped early.

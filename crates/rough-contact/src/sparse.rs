@@ -17,8 +17,11 @@ impl Compliance {
         }
         if self.real.is_none() {
             let n = self.n;
-            let mut spec: Vec<Complex64> =
-                self.kernel.iter().map(|&k| Complex64::new(k, 0.0)).collect();
+            let mut spec: Vec<Complex64> = self
+                .kernel
+                .iter()
+                .map(|&k| Complex64::new(k, 0.0))
+                .collect();
             let mut g = vec![0.0; n * n];
             self.fft.inverse(&mut spec, &mut g);
             self.real = Some(g);

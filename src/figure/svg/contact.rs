@@ -203,7 +203,9 @@ pub fn render_contact_sweep(state: &State, d: &ContactSweep) -> anyhow::Result<S
         d.surface
     );
     let hy = match (d.load_in_h0, state.size_effect) {
-        (true, true) => " (the same load at every ζ; H_y, the size-dependent hardness, grows with ζ)",
+        (true, true) => {
+            " (the same load at every ζ; H_y, the size-dependent hardness, grows with ζ)"
+        }
         (true, false) => " (the same load at every ζ)",
         (false, true) => " (H_y the size-dependent hardness at each ζ: a load that grows with it)",
         (false, false) => "",
@@ -218,12 +220,11 @@ pub fn render_contact_sweep(state: &State, d: &ContactSweep) -> anyhow::Result<S
         state.model.label()
     );
     let lines = under(state, Some(short), &caption);
-    let mut desc =
-        crate::figure::scene_text::full_lines_of(
-            state,
-            "contact-sweep",
-            sweep_span(state, d.load, d.load_in_h0),
-        );
+    let mut desc = crate::figure::scene_text::full_lines_of(
+        state,
+        "contact-sweep",
+        sweep_span(state, d.load, d.load_in_h0),
+    );
     desc.push(format!("simulation = {}", d.surface));
     render(&draw, &lines, &format!("{} — {what}", state.name), &desc)
 }
@@ -324,7 +325,11 @@ pub fn render_contact_slopes(state: &State, d: &ContactSlopes) -> anyhow::Result
         "contact-slopes",
         format!(
             "contact-slopes = zeta = {} (simulated), theory from {} to {}",
-            d.zeta.iter().map(|z| short_number(*z)).collect::<Vec<_>>().join(", "),
+            d.zeta
+                .iter()
+                .map(|z| short_number(*z))
+                .collect::<Vec<_>>()
+                .join(", "),
             short_number(zlo),
             short_number(zhi)
         ),

@@ -56,7 +56,9 @@ pub fn on_key(app: &mut App, msg: Message) {
             } else {
                 match pane.plot {
                     Plot::Share => "back to the plastic share against ζ (t: the convergence table)",
-                    Plot::Slopes => "back to the initial slopes against ζ (t: the convergence table)",
+                    Plot::Slopes => {
+                        "back to the initial slopes against ζ (t: the convergence table)"
+                    }
                     Plot::Load => "back to the areas against the load (t: the convergence table)",
                 }
             };
@@ -161,7 +163,8 @@ pub fn save(app: &mut App, stem: &str) {
     }
     if let Some(bytes) = surface {
         let name = format!("{stem}-surface");
-        match bytes.and_then(|b| crate::snapshot::save_file_new(&dir, &name, "txt", "surface", &b)) {
+        match bytes.and_then(|b| crate::snapshot::save_file_new(&dir, &name, "txt", "surface", &b))
+        {
             Ok(p) => saved.push(p.display().to_string()),
             Err(e) => errors.push(format!("{e:#}")),
         }
@@ -290,7 +293,10 @@ fn slopes_picture(app: &App) -> anyhow::Result<String> {
             .theory_zeta
             .iter()
             .map(|&z| {
-                let p = s.params.with(rough_model::Axis::Zeta, z).unwrap_or(s.params);
+                let p = s
+                    .params
+                    .with(rough_model::Axis::Zeta, z)
+                    .unwrap_or(s.params);
                 let (psi, _) = rough_model::psi_in_use(&p, s.size_effect, s.moments);
                 (2.0 / std::f64::consts::PI).sqrt() / psi.to_f64()
             })

@@ -68,7 +68,7 @@ fn ratio(state: &State, size_effect: bool) -> f64 {
 impl ContactPane {
     /// The ζ of the sweeps the scene can solve (a measured map: those it
     /// resolves); the reason where there is none.
-    fn solvable_zetas(&mut self, state: &State) -> Vec<f64> {
+    fn solvable_zetas(&mut self, state: &State, sampling: &Sampling) -> Vec<f64> {
         let zeta_max = state.roughness().zeta_max() * (1.0 + 1e-12);
         let mut keys = vec![];
         self.why_not = None;
@@ -81,7 +81,7 @@ impl ContactPane {
                 continue;
             };
             s.params = p;
-            match SceneKey::with(&s, self.seed, &self.sampling) {
+            match SceneKey::with(&s, self.seed, sampling) {
                 Ok(_) => keys.push(z),
                 Err(e) => self.why_not = Some(format!("{e:#}")),
             }
@@ -106,7 +106,13 @@ impl ContactPane {
         let seeds = if state.is_measured() { 1 } else { self.seeds };
         match self.plot {
             Plot::Share => {
-                self.zetas = self.solvable_zetas(state);
+                // b's sets give each its own hardness and size effect: the
+                // ζ are those the grid holds.
+                let global = Sampling {
+                    hardness: Hardness::Global,
+                    ..self.sampling
+                };
+                self.zetas = self.solvable_zetas(state, &global);
                 self.sets = share_sets(self.sampling.hardness);
                 // Each seed's sweep in turn, set by set.
                 for j in 0..u64::from(seeds) {
@@ -131,7 +137,8 @@ impl ContactPane {
                 }
             }
             Plot::Slopes => {
-                self.zetas = self.solvable_zetas(state);
+                let sampling = self.sampling;
+                self.zetas = self.solvable_zetas(state, &sampling);
                 // Each seed's ζ in turn, its light loads together (each
                 // from the last).
                 for j in 0..u64::from(seeds) {
@@ -162,9 +169,7 @@ impl ContactPane {
             }
             Plot::Load if self.why_not.is_none() => {
                 match SceneKey::with(state, self.seed, &self.sampling) {
-                    Ok(key) => {
-                        tasks = (0..LOADS).map(|k| Task::new(key, load_value(k))).collect()
-                    }
+                    Ok(key) => tasks = (0..LOADS).map(|k| Task::new(key, load_value(k))).collect(),
                     Err(e) => self.why_not = Some(format!("{e:#}")),
                 }
                 if !tasks.is_empty() {

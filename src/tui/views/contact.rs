@@ -242,6 +242,15 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
             Line::styled(line, style).render(row, buf);
             top = 2 + k as u16;
         }
+        // Where there is room, a row more: κ at the lightest load beside
+        // Persson's, and which split the theory's elastic/plastic reads.
+        if pane.plot == Plot::Load && area.height >= 20 {
+            if let Some(text) = readout::kappa_row(pane, app.state.model, w, gl) {
+                let row = Rect::new(area.x, area.y + top, area.width, 1);
+                Line::styled(text, t.dim).render(row, buf);
+                top += 1;
+            }
+        }
     }
     let body = Rect::new(area.x, area.y + top, area.width, area.height - top);
     match pane.plot {
@@ -268,7 +277,13 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
     } else {
         format!("{scale} across")
     };
-    map_legend(t, cap_name(app), &scale, Rect::new(body.x, body.y, side, 1), buf);
+    map_legend(
+        t,
+        cap_name(app),
+        &scale,
+        Rect::new(body.x, body.y, side, 1),
+        buf,
+    );
     if let Some(why) = &pane.why_not {
         let text = gl.text(why).into_owned();
         Paragraph::new(text)

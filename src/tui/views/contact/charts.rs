@@ -11,7 +11,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Dataset, GraphType, Paragraph, Widget, Wrap};
 
 use super::super::chart::{self, Scale};
-use crate::contact::{Hardness, Stat, PERSSON_KAPPA};
+use crate::contact::{Hardness, Stat};
 use crate::tui::app::App;
 use crate::tui::contact::{load_value, LOADS};
 use crate::tui::layout::Y_LABEL_W;
@@ -107,38 +107,15 @@ pub(super) fn load_chart(app: &App, area: Rect, buf: &mut Buffer) {
         .iter()
         .map(|set| sd_bars(set, 0.0, |m, sd| (log(m - sd), log(m + sd).min(0.0))))
         .collect();
-    // The legend: the theory (and which split it reads), the simulation,
-    // and κ at the lightest load beside Persson's.
+    // The legend: the theory (and which split it reads), the simulation
+    // (κ and the split in words in the row over the map where there is
+    // room).
     let p_total = point(t, &t.total, 'T');
     let split = split_words(app.state.model);
-    let kappa = pane.kappa().map(|k| {
-        let v = if k.n > 1 && k.sd.is_finite() {
-            format!("{:.2}±{:.2}", k.mean, k.sd)
-        } else {
-            format!("{:.2}", k.mean)
-        };
-        (
-            format!(" · κ at 1e-3: {v} (Persson {PERSSON_KAPPA:.2})"),
-            format!(" · κ {v} (P. {PERSSON_KAPPA:.2})"),
-        )
-    });
-    let head = |long: bool| {
-        let k = kappa
-            .as_ref()
-            .map_or(String::new(), |k| if long { k.0.clone() } else { k.1.clone() });
-        [
-            format!(" theory ({split})  {} simulation (T E P){k}", mark(p_total.1)),
-            format!(" theory ({split})  {} sim{k}", mark(p_total.1)),
-            format!(" theory  {} simulation (T E P)", mark(p_total.1)),
-        ]
-    };
-    let (long, short) = (head(true), head(false));
     let forms = [
-        long[0].clone(),
-        long[1].clone(),
-        short[0].clone(),
-        short[1].clone(),
-        long[2].clone(),
+        format!(" theory ({split})  {} simulation (T E P)", mark(p_total.1)),
+        format!(" theory  {} simulation (T E P)", mark(p_total.1)),
+        format!(" theory  {} sim", mark(p_total.1)),
     ];
     let text = fitting(t, &forms, area.width.saturating_sub(2));
     let (theory, rest) = text.split_once(&mark(p_total.1)).unwrap_or((&text, ""));
@@ -261,7 +238,9 @@ pub(super) fn share_chart(app: &App, area: Rect, buf: &mut Buffer) {
         spans.push(Span::raw(format!(" {}  ", set_name(set))));
     }
     spans.push(Span::styled(
-        t.glyphs.text("lines: theory, its areas at the load").into_owned(),
+        t.glyphs
+            .text("lines: theory at the load · a share of 0 on the floor")
+            .into_owned(),
         t.dim,
     ));
     Line::from(spans).render(Rect { height: 1, ..area }, buf);
@@ -321,12 +300,22 @@ pub(super) fn slopes_chart(app: &App, area: Rect, buf: &mut Buffer) {
         .chain(stats.iter().flatten().map(|(_, s)| s.mean.log10()))
         .collect();
     let top = ys.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
-    let top = if top.is_finite() { top.ceil().max(1.0) } else { 1.0 };
+    let top = if top.is_finite() {
+        top.ceil().max(1.0)
+    } else {
+        1.0
+    };
     let low = ys.iter().cloned().fold(f64::INFINITY, f64::min);
     let low = if low.is_finite() { low.floor() } else { -2.0 };
     let yb = [low.max(top - 4.0).min(top - 1.0), top];
     let xb = [0.0, hi];
-    let log = |v: f64| if v > 0.0 { v.log10().clamp(yb[0], yb[1]) } else { yb[0] };
+    let log = |v: f64| {
+        if v > 0.0 {
+            v.log10().clamp(yb[0], yb[1])
+        } else {
+            yb[0]
+        }
+    };
     let sims: Vec<Vec<(f64, f64)>> = stats
         .iter()
         .map(|s| s.iter().map(|(x, st)| (*x, st.mean.log10())).collect())
@@ -348,7 +337,10 @@ pub(super) fn slopes_chart(app: &App, area: Rect, buf: &mut Buffer) {
                 String::new()
             }
         ),
-        format!(" theory  {} simulation (T E P), light-load fit", mark(p_total.1)),
+        format!(
+            " theory  {} simulation (T E P), light-load fit",
+            mark(p_total.1)
+        ),
         format!(" theory  {} sim (T E P)", mark(p_total.1)),
     ];
     let text = fitting(t, &forms, area.width.saturating_sub(2));

@@ -218,7 +218,13 @@ fn slopes_forms(pane: &ContactPane) -> Vec<Vec<String>> {
         return vec![vec!["initial slopes: solving the light loads…".into()]];
     };
     let z = crate::physical::print::fmt_short(rough_model::Axis::Zeta, pane.zetas[k]);
-    let share = |p: f64, t: f64| if t > 0.0 { share_pct(p, t) } else { "—".into() };
+    let share = |p: f64, t: f64| {
+        if t > 0.0 {
+            share_pct(p, t)
+        } else {
+            "—".into()
+        }
+    };
     let sim_share = share(pl.mean, tot.mean);
     let th = pane
         .theory
@@ -257,4 +263,41 @@ fn slopes_forms(pane: &ContactPane) -> Vec<Vec<String>> {
             th_text,
         ],
     ]
+}
+
+/// The row under the load plot's readout: κ at the lightest load, A/A0
+/// over p̄/(E* h′) with its spread over the seeds, beside Persson's
+/// √(8/π), and the theory's split; the longest form that fits.
+pub fn kappa_row(
+    pane: &ContactPane,
+    model: rough_model::Model,
+    width: usize,
+    g: Glyphs,
+) -> Option<String> {
+    let kappa = match pane.kappa() {
+        Some(k) if k.n > 1 && k.sd.is_finite() => format!("{:.2} ± {:.2}", k.mean, k.sd),
+        Some(k) => format!("{:.2}", k.mean),
+        None => "…".into(),
+    };
+    let persson = crate::contact::PERSSON_KAPPA;
+    let (split, short) = match model {
+        rough_model::Model::ClosedForm => {
+            ("the closed form's image solution (App. A)", "App. A image")
+        }
+        rough_model::Model::Exact => ("the exact two-barrier solution", "exact"),
+    };
+    let forms = [
+        format!(
+            "κ = A/A0 ÷ p̄/(E* h′) at 1e-3: {kappa} (Persson √(8/π) = {persson:.2}) · theory's \
+             split: elastic = {split}'s mass on [0, H]"
+        ),
+        format!("κ at 1e-3: {kappa} (Persson {persson:.2}) · theory's split: {split}"),
+        format!("κ {kappa} (Persson {persson:.2}) · split: {short}"),
+        format!("κ {kappa} (Persson {persson:.2})"),
+    ];
+    let text = |f: &String| g.text(f).into_owned();
+    forms
+        .iter()
+        .map(text)
+        .find(|s| Span::raw(s.as_str()).width() <= width)
 }
