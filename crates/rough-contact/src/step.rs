@@ -44,7 +44,7 @@ pub(crate) fn step<C: Cap>(
 ) -> Step {
     let n2 = p.len();
     let (c, min) = (chunk_len(n2), min_len(n2));
-    let parts: Vec<(usize, bool, Count, Option<Vec<(usize, f64)>>)> = p
+    let parts: Vec<Step> = p
         .par_chunks_mut(c)
         .zip(u.par_chunks_mut(c))
         .zip(gap.par_chunks(c))
@@ -97,7 +97,12 @@ pub(crate) fn step<C: Cap>(
                 count.add(v, ci);
                 u[j] -= tau * r[j];
             }
-            (released, clipped, count, off)
+            Step {
+                released,
+                clipped,
+                count,
+                off,
+            }
         })
         .collect();
     let mut all = Step {
@@ -106,11 +111,11 @@ pub(crate) fn step<C: Cap>(
         count: Count::default(),
         off: Some(vec![]),
     };
-    for (r, cl, co, off) in parts {
-        all.released += r;
-        all.clipped |= cl;
-        all.count.merge(&co);
-        all.off = match (all.off, off) {
+    for part in parts {
+        all.released += part.released;
+        all.clipped |= part.clipped;
+        all.count.merge(&part.count);
+        all.off = match (all.off, part.off) {
             (Some(mut a), Some(b)) if a.len() + b.len() <= SPARSE_MAX => {
                 a.extend(b);
                 Some(a)

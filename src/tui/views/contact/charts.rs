@@ -281,9 +281,9 @@ pub(super) fn slopes_chart(app: &App, area: Rect, buf: &mut Buffer) {
     let hi = zs.last().copied().unwrap_or(2.0).log10();
     // total, elastic, plastic as the theory's curves are.
     let mut stats: [Vec<(f64, Stat)>; 3] = Default::default();
-    for k in 0..zs.len() {
+    for (k, z) in zs.iter().enumerate() {
         if let Some([el, pl, tot]) = pane.slopes_at(k) {
-            let x = zs[k].log10();
+            let x = z.log10();
             for (out, st) in stats.iter_mut().zip([tot, el, pl]) {
                 if st.mean > 0.0 {
                     out.push((x, st));
