@@ -337,7 +337,7 @@ fn the_sweep_picture_keeps_its_points_whole_and_its_legend_clear() {
         surface: "seed 1".into(),
         load: 0.01,
         load_in_h0: false,
-        hardness: "one cap H_y(R_s)".into(),
+        hardness: "H_y(R_s) at every node".into(),
         zeta,
         share,
         sd: None,

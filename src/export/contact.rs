@@ -204,8 +204,8 @@ fn sweep_svg(state: &State, spec: &Spec) -> anyhow::Result<String> {
 /// Where the hardness applies, in the pictures' words.
 pub fn hardness_short(state: &State, hardness: contact::Hardness) -> String {
     match hardness {
-        contact::Hardness::Global if state.size_effect => "one cap H_y(R_s)".into(),
-        contact::Hardness::Global => "one cap H0".into(),
+        contact::Hardness::Global if state.size_effect => "H_y(R_s) at every node".into(),
+        contact::Hardness::Global => "H0 at every node".into(),
         contact::Hardness::Asperity => {
             "each asperity's H0 √(1 + R*/(1.2 R)), R its patch's fitted radius".into()
         }

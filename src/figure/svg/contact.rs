@@ -45,7 +45,7 @@ pub struct ContactSweep {
     /// each ζ.
     pub load: f64,
     pub load_in_h0: bool,
-    /// Where the hardness applies, in words ("one cap H_y(R_s)", "each
+    /// Where the hardness applies, in words ("H_y(R_s) at every node", "each
     /// node its summit's H_y"), for the caption.
     pub hardness: String,
     pub zeta: Vec<f64>,
