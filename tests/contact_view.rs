@@ -267,8 +267,13 @@ fn b_shows_the_plastic_share_against_zeta() {
     }
     // The load is fixed in H0: the size effect's tasks are lighter over
     // their H_y.
-    let (off, on) = a.contact.tasks.split_at(8);
-    assert!(off.iter().all(|t| t.p_over_h() == 1e-3));
+    // At each ζ the sets in turn: H0, then H_y(R_s).
+    let off = a.contact.tasks.iter().step_by(2);
+    let on = a.contact.tasks.iter().skip(1).step_by(2);
+    assert!(off.clone().all(|t| t.p_over_h() == 1e-3));
+    assert!(off
+        .zip(on.clone())
+        .all(|(a, b)| a.scene.same_surface(&b.scene)));
     for t in on {
         let h_y = t.scene.hardness() / 0.01;
         assert!(
@@ -369,13 +374,20 @@ fn a_gives_each_asperity_its_hardness() {
     let r = a.contact.chosen().unwrap().as_ref().unwrap();
     assert!(r.result.area > 0.0);
     ch(&mut a, 'b');
-    // H0 (size effect off), H_y(R_s) (on, one cap), per asperity.
-    let third = a.contact.tasks.len() / 3;
-    let (off, rest) = a.contact.tasks.split_at(third);
-    let (global, per) = rest.split_at(third);
-    assert!(off.iter().all(|t| t.scene.local.is_none()));
-    assert!(global.iter().all(|t| t.scene.local.is_none()));
-    assert!(per.iter().all(|t| t.scene.local.is_some()));
+    // At each ζ: H0 (size effect off), H_y(R_s) (on, one cap), per
+    // asperity.
+    let ts = &a.contact.tasks;
+    assert!(ts.iter().step_by(3).all(|t| t.scene.local.is_none()));
+    assert!(ts
+        .iter()
+        .skip(1)
+        .step_by(3)
+        .all(|t| t.scene.local.is_none()));
+    assert!(ts
+        .iter()
+        .skip(2)
+        .step_by(3)
+        .all(|t| t.scene.local.is_some()));
     assert!(screen(&a).contains("per asperity"));
     // A again: per summit, then one cap.
     ch(&mut a, 'A');
@@ -424,7 +436,8 @@ fn b_averages_the_plastic_share_over_the_seeds() {
     let shares: Vec<f64> = std::iter::once(&a.contact.results)
         .chain(&a.contact.seed_results)
         .map(|rs| {
-            let r = rs[4].as_ref().unwrap().as_ref().unwrap().result;
+            // ζ = 16 is the fifth ζ, its first set H0: task 4 × 2 + 0.
+            let r = rs[8].as_ref().unwrap().as_ref().unwrap().result;
             r.plastic_area / r.area
         })
         .collect();

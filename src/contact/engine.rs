@@ -430,10 +430,15 @@ impl Engine {
     ) -> Outcome {
         self.solves.fetch_add(1, Ordering::Relaxed);
         let began = Instant::now();
-        if built.as_ref().map(|b| b.0) != Some(task.scene) {
-            *built = None;
-            let c = task.scene.build().map_err(|e| format!("{e:#}"))?;
-            *built = Some((task.scene, c));
+        // The same heights capped otherwise (b's sets at one ζ) keep the
+        // surface and start from its last answer.
+        match built.as_mut() {
+            Some(b) if b.0.same_surface(&task.scene) => b.0 = task.scene,
+            _ => {
+                *built = None;
+                let c = task.scene.build().map_err(|e| format!("{e:#}"))?;
+                *built = Some((task.scene, c));
+            }
         }
         let Some((_, contact)) = built.as_mut() else {
             return Err("no surface".into());

@@ -113,6 +113,20 @@ impl SceneKey {
         })
     }
 
+    /// Whether `other` solves the same heights on the same grid (it may cap
+    /// them otherwise): a solve of one can start from the other's answer.
+    pub fn same_surface(&self, other: &SceneKey) -> bool {
+        SceneKey {
+            hardness: 0,
+            local: None,
+            ..*self
+        } == SceneKey {
+            hardness: 0,
+            local: None,
+            ..*other
+        }
+    }
+
     /// The side of the grid solved: n, or n halved `coarse` times.
     pub fn side(&self) -> usize {
         self.n >> self.coarse

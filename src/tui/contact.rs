@@ -297,7 +297,8 @@ impl ContactPane {
         if self.plot != Plot::Share {
             return None;
         }
-        let i = set * self.zetas.len() + k;
+        // A seed's tasks: at each ζ, its sets in turn.
+        let i = k * self.sets.len() + set;
         let runs = std::iter::once(&self.results)
             .chain(&self.seed_results)
             .filter_map(|rs| match rs.get(i) {

@@ -114,15 +114,17 @@ impl ContactPane {
                 };
                 self.zetas = self.solvable_zetas(state, &global);
                 self.sets = share_sets(self.sampling.hardness);
-                // Each seed's sweep in turn, set by set.
+                // Each seed's sweep in turn, at each ζ its sets together:
+                // one surface, each set's solve from the last's answer at
+                // the same absolute load.
                 for j in 0..u64::from(seeds) {
                     let seed = self.seed.wrapping_add(j);
-                    for set in &self.sets {
-                        let sampling = Sampling {
-                            hardness: set.hardness,
-                            ..self.sampling
-                        };
-                        for &z in &self.zetas {
+                    for &z in &self.zetas {
+                        for set in &self.sets {
+                            let sampling = Sampling {
+                                hardness: set.hardness,
+                                ..self.sampling
+                            };
                             let mut s = state.clone();
                             s.size_effect = set.size_effect;
                             s.params = s.params.with(Axis::Zeta, z).ok()?;

@@ -115,6 +115,7 @@ pub(super) fn load_chart(app: &App, area: Rect, buf: &mut Buffer) {
     let forms = [
         format!(" theory ({split})  {} simulation (T E P)", mark(p_total.1)),
         format!(" theory  {} simulation (T E P)", mark(p_total.1)),
+        format!(" theory  {} simulation", mark(p_total.1)),
         format!(" theory  {} sim", mark(p_total.1)),
     ];
     let text = fitting(t, &forms, area.width.saturating_sub(2));
