@@ -124,6 +124,9 @@ pub struct ContactPane {
     pub seeds: u32,
     pub seed_tasks: Vec<Vec<Task>>,
     pub seed_results: Vec<Vec<Option<Outcome>>>,
+    /// The further seeds' loads on the coarse grid, each fine load's start
+    /// (not shown: only the drawn seed's coarse answer is).
+    pub seed_coarse: Vec<Vec<Task>>,
     pub progress: Progress,
     pub theory: Theory,
     /// `t`: the convergence table at the chosen load in place of the plot
@@ -162,6 +165,7 @@ impl Default for ContactPane {
             seeds: DEFAULT_SEEDS,
             seed_tasks: vec![],
             seed_results: vec![],
+            seed_coarse: vec![],
             progress: Progress::default(),
             theory: Theory::default(),
             table: false,
@@ -347,12 +351,17 @@ impl ContactPane {
 
     /// The job's tasks: the coarse grid's, then the scene's own.
     fn job_tasks(&self) -> Vec<Task> {
-        self.coarse_tasks
+        let mut all: Vec<Task> = self
+            .coarse_tasks
             .iter()
             .chain(&self.tasks)
-            .chain(self.seed_tasks.iter().flatten())
             .copied()
-            .collect()
+            .collect();
+        for (j, ts) in self.seed_tasks.iter().enumerate() {
+            all.extend(self.seed_coarse.get(j).into_iter().flatten());
+            all.extend(ts);
+        }
+        all
     }
 
     /// The order the job solves in: the chosen load on the coarse grid,
@@ -369,11 +378,16 @@ impl ContactPane {
             order.extend(0..c);
         }
         order.push(c + self.load);
-        // Each further seed's chosen load, so that the spread comes soon.
+        // Each further seed's chosen load (on the coarse grid first, its
+        // start), so that the spread comes soon.
         let mut at = c + self.tasks.len();
-        for ts in &self.seed_tasks {
-            order.push(at + self.load.min(ts.len().saturating_sub(1)));
-            at += ts.len();
+        for (j, ts) in self.seed_tasks.iter().enumerate() {
+            let sc = self.seed_coarse.get(j).map_or(0, Vec::len);
+            if sc > 0 {
+                order.push(at + self.load.min(sc - 1));
+            }
+            order.push(at + sc + self.load.min(ts.len().saturating_sub(1)));
+            at += sc + ts.len();
         }
         order
     }
@@ -442,6 +456,7 @@ impl ContactPane {
             self.coarse_tasks.clear();
             self.coarse.clear();
             self.seed_tasks.clear();
+            self.seed_coarse.clear();
             self.seed_results.clear();
             self.theory = Theory::default();
             return;
@@ -472,13 +487,18 @@ impl ContactPane {
                     .collect();
                 self.tasks.truncate(per);
             }
-            self.coarse_tasks = if self.plot != Plot::Load {
-                vec![]
-            } else {
-                self.tasks
-                    .iter()
+            let coarse = |ts: &[Task]| -> Vec<Task> {
+                ts.iter()
                     .map_while(|t| Some(Task::new(t.scene.coarser(COARSE_GRID)?, t.p_over_h())))
                     .collect()
+            };
+            (self.coarse_tasks, self.seed_coarse) = if self.plot != Plot::Load {
+                (vec![], vec![])
+            } else {
+                (
+                    coarse(&self.tasks),
+                    self.seed_tasks.iter().map(|ts| coarse(ts)).collect(),
+                )
             };
             self.request = request;
         }
