@@ -5,12 +5,13 @@ use std::sync::Arc;
 
 use rough_model::{Dim, MomentTable};
 
-use crate::anisotropy::Slopes;
-use crate::band;
-use crate::detrend::Detrend;
-use crate::fit::{self, PowerLawFit};
-use crate::prepare::Heights;
-use crate::realspace::RealSpace;
+use crate::heights::detrend::Detrend;
+use crate::heights::prepare::Heights;
+use crate::spectrum::anisotropy::Slopes;
+use crate::spectrum::band;
+use crate::spectrum::fit::{self, PowerLawFit};
+use crate::spectrum::profiles::Direction;
+use crate::spectrum::realspace::RealSpace;
 use crate::units::HeightUnit;
 
 /// How to read a file whose content does not say everything.
@@ -36,7 +37,7 @@ pub struct Options {
     /// (`--lateral-unit`).
     pub lateral_unit: Option<HeightUnit>,
     /// The largest share of undefined points filled, 0 to 1
-    /// (`--max-undefined PERCENT`); [`crate::MAX_UNDEFINED`] when `None`.
+    /// (`--max-undefined PERCENT`); [`crate::heights::fill::MAX_UNDEFINED`] when `None`.
     pub max_undefined: Option<f64>,
     /// The form removed before anything is computed (`--detrend`); `None`:
     /// the plane, or the mean of periodic data ([`Options::detrend_mode`]).
@@ -52,22 +53,6 @@ impl Options {
         } else {
             Detrend::Plane
         })
-    }
-}
-
-/// A direction on a map: x along its rows, y across them.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Direction {
-    X,
-    Y,
-}
-
-impl Direction {
-    pub fn name(self) -> &'static str {
-        match self {
-            Direction::X => "x",
-            Direction::Y => "y",
-        }
     }
 }
 
@@ -139,7 +124,7 @@ pub struct Measured {
     pub measurement: Option<String>,
     /// A map's rms slopes along x and along y (its spectrum to the largest
     /// ζ); a note says when they differ by more than
-    /// [`crate::ANISOTROPY_RATIO`].
+    /// [`crate::spectrum::anisotropy::RATIO`].
     pub slopes: Option<Slopes>,
     /// Sq and Sdq of a map, Rq and RΔq of a line scan (real space, after
     /// the detrend, no window); `None` for PSD tables.
@@ -151,7 +136,7 @@ pub struct Measured {
     /// stretch (`band`'s rules); `None` with too few points.
     pub band: Option<(f64, f64)>,
     /// A map's heights for the contact simulation, when read with
-    /// [`crate::read_heights`] ([`Heights`]: filled,
+    /// [`crate::read::read_heights`] ([`Heights`]: filled,
     /// detrended, not windowed); `None` for lines, profiles and PSD tables.
     pub heights: Option<Arc<Heights>>,
 }

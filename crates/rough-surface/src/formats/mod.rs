@@ -1,0 +1,22 @@
+//! The formats and their readers. A file's bytes are told apart by
+//! [`sniff`] (magic bytes, the extension only where a format has none),
+//! unpacked first where gzip-compressed ([`gz`]); then
+//!
+//! - a binary format is read by its reader in [`readers`] — x3p, Gwyddion's
+//!   .gwy and the instruments' own formats, one module a format — to a
+//!   [`readers::grid::Grid`] of heights in metres;
+//! - text by [`text`]: a height matrix, two columns (a line scan or a PSD
+//!   table) or a contact.engineering download; a large matrix is streamed
+//!   ([`stream`]);
+//! - a contact.engineering container ([`container`]) by reading the file it
+//!   holds as any other.
+//!
+//! What is not read gets a line saying how to convert it ([`hints`]).
+
+pub(crate) mod container;
+pub(crate) mod gz;
+pub(crate) mod hints;
+pub(crate) mod readers;
+pub(crate) mod sniff;
+pub(crate) mod stream;
+pub(crate) mod text;
