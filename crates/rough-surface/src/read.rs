@@ -168,7 +168,7 @@ fn grid_of(
     match format {
         sniff::Format::X3p => x3p::read(bytes),
         sniff::Format::Gwy => gwy::read(bytes, opts.channel.as_deref()),
-        sniff::Format::Native(n) => readers::read(*n, bytes, opts),
+        sniff::Format::Native(n) => readers::read(n, bytes, opts),
         sniff::Format::Other(s) => Err((None, Problem::Format(s.clone()))),
         sniff::Format::Text => Err((
             None,
@@ -243,7 +243,7 @@ fn parse_file(
             }
             let what = match format {
                 sniff::Format::X3p => "x3p",
-                sniff::Format::Native(n) => n.name(),
+                sniff::Format::Native(n) => n.name,
                 _ => "Gwyddion .gwy",
             };
             let summary = format!("{what} {}", describe(&kind, opts, ""));

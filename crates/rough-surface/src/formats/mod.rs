@@ -12,6 +12,11 @@
 //!   holds as any other.
 //!
 //! What is not read gets a line saying how to convert it ([`hints`]).
+//!
+//! A new binary format is a module of its own in `readers/`, reading its
+//! bytes to a `Grid`, and a row of `readers::NATIVE` (its name, whether it
+//! holds channels, how its bytes are told, its reader); the line
+//! [`sniff`] gave for it while it was not read goes.
 
 pub(crate) mod container;
 pub(crate) mod gz;

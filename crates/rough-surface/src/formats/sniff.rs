@@ -15,7 +15,7 @@ pub(crate) enum Format {
     /// Gwyddion's native format.
     Gwy,
     /// An instrument's own format, read natively.
-    Native(crate::formats::readers::Native),
+    Native(&'static crate::formats::readers::Native),
     /// Text (UTF-8, or Windows-1252 where it is not UTF-8).
     Text,
     /// A format not read: the line saying what it looks like.

@@ -36,98 +36,118 @@ use crate::error::Failure;
 use crate::formats::readers::grid::Grid;
 use crate::measured::Options;
 
-/// The formats read natively.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Native {
-    Sur,
-    Plu,
-    Di,
-    Opd,
-    MetroPro,
-    Al3d,
-    Nid,
-    Ibw,
-    Sdf,
-    Opdx,
-    Frt,
-}
-
-impl Native {
+/// A format read natively: what it is called, whether it holds channels,
+/// how its bytes are told and how they are read. A new format is a module
+/// of its own and a row of [`NATIVE`].
+pub(crate) struct Native {
     /// The format for people, as messages and summaries name it.
-    pub(crate) fn name(self) -> &'static str {
-        match self {
-            Native::Sur => sur::NAME,
-            Native::Plu => plu::NAME,
-            Native::Di => di::NAME,
-            Native::Opd => opd::NAME,
-            Native::MetroPro => metropro::NAME,
-            Native::Al3d => al3d::NAME,
-            Native::Nid => nid::NAME,
-            Native::Ibw => ibw::NAME,
-            Native::Sdf => sdf::NAME,
-            Native::Opdx => opdx::NAME,
-            Native::Frt => frt::NAME,
-        }
-    }
-
+    pub(crate) name: &'static str,
     /// Whether the format holds several channels (`--channel`).
-    pub(crate) fn has_channels(self) -> bool {
-        !matches!(
-            self,
-            Native::Sur | Native::MetroPro | Native::Al3d | Native::Sdf
-        )
+    channels: bool,
+    /// Whether `bytes`, of a file named with extension `ext` (lower case),
+    /// are in this format: magic bytes, the extension only where the
+    /// format has none.
+    is: fn(bytes: &[u8], ext: &str) -> bool,
+    /// Reads the channel named (a format of channels), else the first of
+    /// heights.
+    read: fn(bytes: &[u8], choice: Option<&str>) -> Result<Grid, Failure>,
+}
+
+impl PartialEq for Native {
+    fn eq(&self, other: &Native) -> bool {
+        self.name == other.name
     }
 }
+
+impl std::fmt::Debug for Native {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name)
+    }
+}
+
+/// The formats read natively, in the order they are told apart (the
+/// first whose bytes match is taken: the extension alone last).
+static NATIVE: [Native; 11] = [
+    Native {
+        name: sur::NAME,
+        channels: false,
+        is: |b, _| b.starts_with(sur::MAGIC),
+        read: |b, _| sur::read(b),
+    },
+    Native {
+        name: di::NAME,
+        channels: true,
+        is: |b, _| di::is_di(b),
+        read: di::read,
+    },
+    Native {
+        name: opd::NAME,
+        channels: true,
+        is: |b, _| b.get(2..).is_some_and(|b| b.starts_with(opd::MAGIC)),
+        read: opd::read,
+    },
+    Native {
+        name: metropro::NAME,
+        channels: false,
+        is: |b, _| metropro::MAGICS.iter().any(|m| b.starts_with(m)),
+        read: |b, _| metropro::read(b),
+    },
+    Native {
+        name: al3d::NAME,
+        channels: false,
+        is: |b, _| b.starts_with(al3d::MAGIC),
+        read: |b, _| al3d::read(b),
+    },
+    Native {
+        name: nid::NAME,
+        channels: true,
+        is: |b, _| b.starts_with(nid::MAGIC),
+        read: nid::read,
+    },
+    Native {
+        name: sdf::NAME,
+        channels: false,
+        is: |b, _| b.starts_with(sdf::ASCII) || b.starts_with(sdf::BINARY),
+        read: |b, _| sdf::read(b),
+    },
+    Native {
+        name: opdx::NAME,
+        channels: true,
+        is: |b, _| b.starts_with(opdx::MAGIC),
+        read: opdx::read,
+    },
+    Native {
+        name: frt::NAME,
+        channels: true,
+        is: |b, _| b.starts_with(frt::MAGIC),
+        read: frt::read,
+    },
+    Native {
+        name: ibw::NAME,
+        channels: true,
+        is: |b, _| ibw::is_ibw(b),
+        read: ibw::read,
+    },
+    Native {
+        name: plu::NAME,
+        channels: true,
+        is: |_, ext| matches!(ext, "plu" | "apx"),
+        read: plu::read,
+    },
+];
 
 /// The native format of `bytes` (a file named with extension `ext`, lower
 /// case), if any.
-pub(crate) fn sniff(bytes: &[u8], ext: &str) -> Option<Native> {
-    let starts = |m: &[u8]| bytes.starts_with(m);
-    Some(if starts(sur::MAGIC) {
-        Native::Sur
-    } else if di::is_di(bytes) {
-        Native::Di
-    } else if bytes.get(2..).is_some_and(|b| b.starts_with(opd::MAGIC)) {
-        Native::Opd
-    } else if metropro::MAGICS.iter().any(|m| starts(m)) {
-        Native::MetroPro
-    } else if starts(al3d::MAGIC) {
-        Native::Al3d
-    } else if starts(nid::MAGIC) {
-        Native::Nid
-    } else if starts(sdf::ASCII) || starts(sdf::BINARY) {
-        Native::Sdf
-    } else if starts(opdx::MAGIC) {
-        Native::Opdx
-    } else if starts(frt::MAGIC) {
-        Native::Frt
-    } else if ibw::is_ibw(bytes) {
-        Native::Ibw
-    } else if matches!(ext, "plu" | "apx") {
-        Native::Plu
-    } else {
-        return None;
-    })
+pub(crate) fn sniff(bytes: &[u8], ext: &str) -> Option<&'static Native> {
+    NATIVE.iter().find(|n| (n.is)(bytes, ext))
 }
 
 /// Reads `bytes` of format `n`: the channel `opts.channel` names, else the
 /// first of heights.
-pub(crate) fn read(n: Native, bytes: &[u8], opts: &Options) -> Result<Grid, Failure> {
+pub(crate) fn read(n: &Native, bytes: &[u8], opts: &Options) -> Result<Grid, Failure> {
     let choice = opts.channel.as_deref();
-    if choice.is_some() && !n.has_channels() {
-        return Err(chan::none(n.name()));
+    if choice.is_some() && !n.channels {
+        return Err(chan::none(n.name));
     }
-    match n {
-        Native::Sur => sur::read(bytes),
-        Native::Plu => plu::read(bytes, choice),
-        Native::Di => di::read(bytes, choice),
-        Native::Opd => opd::read(bytes, choice),
-        Native::MetroPro => metropro::read(bytes),
-        Native::Al3d => al3d::read(bytes),
-        Native::Nid => nid::read(bytes, choice),
-        Native::Ibw => ibw::read(bytes, choice),
-        Native::Sdf => sdf::read(bytes),
-        Native::Opdx => opdx::read(bytes, choice),
-        Native::Frt => frt::read(bytes, choice),
-    }
+    (n.read)(bytes, choice)
 }
