@@ -9,16 +9,14 @@ use sha2::{Digest, Sha256};
 
 use crate::describe::describe;
 use crate::error::{Problem, SurfaceError};
-use crate::formats::readers::grid::Grid;
-use crate::formats::readers::{self, grid, gwy, x3p};
+use crate::formats::readers::grid::{self, Grid};
 use crate::formats::text::{ce, channels, columns, header, matrix, scan};
-use crate::formats::{gz, sniff, stream};
+use crate::formats::{self, gz, sniff, stream};
 use crate::heights::allow;
 use crate::limits::MAX_BYTES;
 use crate::measured::{Kind, Measured, Options};
 use crate::spectrum::{band, compute};
-use crate::units;
-use crate::units::Advice;
+use crate::units::{self, Advice};
 
 /// Reads and computes the surface in `path`. Every refusal names the file
 /// and, where there is one, the line.
@@ -154,27 +152,9 @@ pub fn read_grid_named(
                 Problem::Format("a gzip-compressed file inside a gzip-compressed file".into()),
             ));
         }
-        return grid_of(&sniff::format(&inner, gz::inner(&ext)), &inner, opts);
+        return formats::grid_of(&sniff::format(&inner, gz::inner(&ext)), &inner, opts);
     }
-    grid_of(&sniff::format(bytes, &ext), bytes, opts)
-}
-
-/// The grid of `bytes` in `format`.
-fn grid_of(
-    format: &sniff::Format,
-    bytes: &[u8],
-    opts: &Options,
-) -> Result<Grid, (Option<usize>, Problem)> {
-    match format {
-        sniff::Format::X3p => x3p::read(bytes),
-        sniff::Format::Gwy => gwy::read(bytes, opts.channel.as_deref()),
-        sniff::Format::Native(n) => readers::read(n, bytes, opts),
-        sniff::Format::Other(s) => Err((None, Problem::Format(s.clone()))),
-        sniff::Format::Text => Err((
-            None,
-            Problem::Format("text: not an x3p or .gwy file".to_string()),
-        )),
-    }
+    formats::grid_of(&sniff::format(bytes, &ext), bytes, opts)
 }
 
 /// [`parse`], told the file's extension (lower case) for formats that
@@ -227,8 +207,8 @@ fn parse_file(
             not_a_download(opts)?;
             let (sha256, read) = std::thread::scope(|s| {
                 let hash = s.spawn(|| sha256_hex(bytes));
-                let read =
-                    grid_of(&format, bytes, opts).and_then(|g| grid::compute(g, opts, &mut notes));
+                let read = formats::grid_of(&format, bytes, opts)
+                    .and_then(|g| grid::compute(g, opts, &mut notes));
                 (hash.join().expect("hash thread"), read)
             });
             let (kind, computed) = read?;

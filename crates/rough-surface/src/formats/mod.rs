@@ -25,3 +25,26 @@ pub(crate) mod readers;
 pub(crate) mod sniff;
 pub(crate) mod stream;
 pub(crate) mod text;
+
+use crate::error::{Failure, Problem};
+use crate::formats::readers::grid::Grid;
+use crate::measured::Options;
+
+/// The grid of `bytes` in `format`: its reader's, or the line saying why
+/// there is none.
+pub(crate) fn grid_of(
+    format: &sniff::Format,
+    bytes: &[u8],
+    opts: &Options,
+) -> Result<Grid, Failure> {
+    match format {
+        sniff::Format::X3p => readers::x3p::read(bytes),
+        sniff::Format::Gwy => readers::gwy::read(bytes, opts.channel.as_deref()),
+        sniff::Format::Native(n) => readers::read(n, bytes, opts),
+        sniff::Format::Other(s) => Err((None, Problem::Format(s.clone()))),
+        sniff::Format::Text => Err((
+            None,
+            Problem::Format("text: not an x3p or .gwy file".to_string()),
+        )),
+    }
+}
