@@ -68,11 +68,11 @@ pub enum Problem {
     /// A command-line option that does not apply to this file.
     Option(String),
     /// More undefined points (NaN, empty cells, masked) than are filled
-    /// ([`crate::heights::fill::MAX_UNDEFINED`]).
+    /// ([`crate::MAX_UNDEFINED`]).
     Undefined {
         count: usize,
         total: usize,
-        /// The share filled at most (0–1): [`crate::heights::fill::MAX_UNDEFINED`] or
+        /// The share filled at most (0–1): [`crate::MAX_UNDEFINED`] or
         /// `--max-undefined`'s.
         allowed: f64,
     },

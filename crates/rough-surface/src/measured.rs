@@ -37,7 +37,7 @@ pub struct Options {
     /// (`--lateral-unit`).
     pub lateral_unit: Option<HeightUnit>,
     /// The largest share of undefined points filled, 0 to 1
-    /// (`--max-undefined PERCENT`); [`crate::heights::fill::MAX_UNDEFINED`] when `None`.
+    /// (`--max-undefined PERCENT`); [`crate::MAX_UNDEFINED`] when `None`.
     pub max_undefined: Option<f64>,
     /// The form removed before anything is computed (`--detrend`); `None`:
     /// the plane, or the mean of periodic data ([`Options::detrend_mode`]).
@@ -124,7 +124,7 @@ pub struct Measured {
     pub measurement: Option<String>,
     /// A map's rms slopes along x and along y (its spectrum to the largest
     /// ζ); a note says when they differ by more than
-    /// [`crate::spectrum::anisotropy::RATIO`].
+    /// [`crate::ANISOTROPY_RATIO`].
     pub slopes: Option<Slopes>,
     /// Sq and Sdq of a map, Rq and RΔq of a line scan (real space, after
     /// the detrend, no window); `None` for PSD tables.
@@ -136,7 +136,7 @@ pub struct Measured {
     /// stretch (`band`'s rules); `None` with too few points.
     pub band: Option<(f64, f64)>,
     /// A map's heights for the contact simulation, when read with
-    /// [`crate::read::read_heights`] ([`Heights`]: filled,
+    /// [`crate::read_heights`] ([`Heights`]: filled,
     /// detrended, not windowed); `None` for lines, profiles and PSD tables.
     pub heights: Option<Arc<Heights>>,
 }

@@ -1,6 +1,6 @@
 //! A gzip-compressed file (`.txt.gz`, or any file the readers read,
 //! compressed), read as what it holds: unpacked up to
-//! [`crate::limits::MAX_BYTES`] (a bomb is refused when it passes that, not
+//! [`crate::MAX_BYTES`] (a bomb is refused when it passes that, not
 //! unpacked further), then told apart like any file, by its content and
 //! the name inside the `.gz` (`scan.plu.gz` is a Sensofar file).
 

@@ -6,7 +6,7 @@
 //! heights at once.
 //!
 //! Only a height matrix is streamed (a size header, or other than two
-//! numbers per row, as [`crate::read::parse`] decides): a contact.engineering
+//! numbers per row, as [`crate::parse`] decides): a contact.engineering
 //! download or a two-column table is read whole, as are files below
 //! [`STREAM_FROM`].
 

@@ -173,7 +173,7 @@ pub(crate) fn window(h: &mut [f64], (nx, ny): (usize, usize), (lx, ly): (f64, f6
 /// filled, the mean (periodic) or the least-squares plane removed, no
 /// window. Row-major, `nx` heights a row along x, `ny` rows; metres.
 ///
-/// Kept only when asked ([`crate::read::read_heights`]): the map's own vector
+/// Kept only when asked ([`crate::read_heights`]): the map's own vector
 /// (periodic maps: the buffer the spectrum was computed from, no copy) or
 /// one copy taken before the window (other maps): 8 bytes a point, 128 MiB
 /// for a 4096² map.
@@ -200,11 +200,11 @@ impl std::fmt::Debug for Heights {
 }
 
 std::thread_local! {
-    /// Set while [`crate::read::read_heights`] reads on this thread.
+    /// Set while [`crate::read_heights`] reads on this thread.
     pub(crate) static KEEP_HEIGHTS: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
 }
 
-/// Whether the read under way keeps a map's heights ([`crate::read::read_heights`]).
+/// Whether the read under way keeps a map's heights ([`crate::read_heights`]).
 pub(crate) fn keeping_heights() -> bool {
     KEEP_HEIGHTS.with(|k| k.get())
 }

@@ -37,15 +37,15 @@ use crate::spectrum::realspace::{self, RealSpace};
 pub(crate) struct Computed {
     pub table: MomentTable,
     pub spectrum: Vec<(f64, f64)>,
-    /// What was repaired or noticed on the way ([`crate::measured::Measured::notes`]).
+    /// What was repaired or noticed on the way ([`crate::Measured::notes`]).
     pub notes: Vec<String>,
-    /// A map's rms slopes along x and y ([`crate::measured::Measured::slopes`]).
+    /// A map's rms slopes along x and y ([`crate::Measured::slopes`]).
     pub slopes: Option<Slopes>,
     /// Sq and Sdq (maps), Rq and RΔq (lines); `None` for PSD tables.
     pub real: Option<RealSpace>,
     /// The Fourier modes in each point of `spectrum` (empty for tables).
     pub modes: Vec<f64>,
-    /// A map's detrended heights ([`crate::measured::Measured::heights`]).
+    /// A map's detrended heights ([`crate::Measured::heights`]).
     pub heights: Option<Arc<prepare::Heights>>,
 }
 
@@ -198,7 +198,7 @@ pub(crate) fn map(
             z,
         })
     };
-    // Only when asked ([`crate::read::read_heights`]): a 4096² map's heights are
+    // Only when asked ([`crate::read_heights`]): a 4096² map's heights are
     // 128 MiB, which the explorer does not hold unless the contact
     // simulation wants them. Periodic maps are not windowed: their buffer
     // is kept after the FFT; other maps' are copied before the window.

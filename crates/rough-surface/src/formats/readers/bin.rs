@@ -5,7 +5,7 @@
 
 use crate::error::{Failure, Problem};
 
-/// Heights read at most: as many doubles as [`crate::limits::MAX_BYTES`] holds
+/// Heights read at most: as many doubles as [`crate::MAX_BYTES`] holds
 /// (the x3p reader's limit too).
 pub(crate) const MAX_POINTS: u64 = crate::limits::MAX_BYTES / 8;
 

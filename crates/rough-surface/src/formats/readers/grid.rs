@@ -22,7 +22,7 @@ pub struct Grid {
     /// (masked, invalid, NaN or an infinity in the file) is `f64::NAN`.
     pub z: Vec<f64>,
     /// What the reader assumed, one line each (they go to
-    /// [`crate::measured::Measured::notes`]).
+    /// [`crate::Measured::notes`]).
     pub notes: Vec<String>,
     /// The file's format for people: "x3p", "Digital Surf .sur".
     pub format: &'static str,
@@ -70,7 +70,7 @@ impl Grid {
         self.z.iter().filter(|v| v.is_nan()).count()
     }
 
-    /// What the grid is, for [`crate::measured::Measured::kind`].
+    /// What the grid is, for [`crate::Measured::kind`].
     pub fn kind(&self) -> Kind {
         if self.is_profile() {
             Kind::Line {
