@@ -201,6 +201,7 @@ fn the_crates_know_nothing_of_the_application() {
         "rough-surface",
         "rough-contact",
         "rough-study",
+        "rough-fft",
     ] {
         let dir = Path::new(ROOT).join("crates").join(c);
         let manifest = std::fs::read_to_string(dir.join("Cargo.toml")).unwrap();
@@ -470,6 +471,7 @@ fn no_source_file_is_over_600_lines() {
         "rough-surface",
         "rough-contact",
         "rough-study",
+        "rough-fft",
     ] {
         rust_files(
             &Path::new(ROOT).join("crates").join(c).join("src"),

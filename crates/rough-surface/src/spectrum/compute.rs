@@ -21,9 +21,10 @@
 use std::f64::consts::PI;
 use std::sync::Arc;
 
+use rough_fft::Planner;
 use rough_model::{Dim, MomentTable};
 use rustfft::num_complex::Complex;
-use rustfft::{Fft, FftPlanner};
+use rustfft::Fft;
 
 use crate::error::Problem;
 use crate::heights::detrend::Detrend;
@@ -209,16 +210,16 @@ pub(crate) fn map(
     } else {
         prepare::window(&mut h, (nx, ny), (lx, ly))
     };
-    let mut planner = FftPlanner::<f64>::new();
+    let mut planner = Planner::new();
     let nh = nx / 2 + 1;
-    let half = rows_half(&h, nx, ny, &planner.plan_fft_forward(nx));
+    let half = rows_half(&h, nx, ny, &planner.forward(nx));
     let heights = if wanted {
         Some(copy.unwrap_or_else(|| keep(h)))
     } else {
         drop(h);
         None
     };
-    let fft_y = planner.plan_fft_forward(ny);
+    let fft_y = planner.forward(ny);
 
     let n2 = ((nx * ny) as f64).powi(2);
     let scale = s2 / n2;
@@ -382,9 +383,7 @@ pub(crate) fn line(
     let s2 = if periodic { 1.0 } else { window_1d(&mut h) };
     let mut buf: Vec<Complex<f64>> = h.iter().map(|&v| Complex::new(v, 0.0)).collect();
     drop(h);
-    FftPlanner::<f64>::new()
-        .plan_fft_forward(n)
-        .process(&mut buf);
+    Planner::new().forward(n).process(&mut buf);
     let scale = s2 / (n as f64).powi(2);
     // power_spectrum_from_profile: q = dq·k for 1 ≤ k < n//2, C1D = |Δx F|²/L,
     // binned from dq to π n/L.

@@ -9,9 +9,9 @@
 
 use std::f64::consts::PI;
 
+use rough_fft::Planner;
 use rough_model::{Dim, MomentTable};
 use rustfft::num_complex::Complex;
-use rustfft::FftPlanner;
 
 use crate::error::Problem;
 use crate::heights::detrend::Detrend;
@@ -56,7 +56,7 @@ pub(crate) fn profiles(
         }
     };
     let real = crate::spectrum::realspace::profiles(&h, n, l, periodic);
-    let fft = FftPlanner::<f64>::new().plan_fft_forward(n);
+    let fft = Planner::new().forward(n);
     let mut power = vec![0.0; n];
     let mut buf = vec![Complex::new(0.0, 0.0); n];
     let mut row = vec![0.0; n];
