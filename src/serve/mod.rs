@@ -20,6 +20,7 @@ pub mod log;
 pub mod output;
 pub mod panel;
 pub mod poll;
+pub mod seat;
 pub mod session;
 pub mod stream;
 pub mod term;

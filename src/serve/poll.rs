@@ -14,7 +14,7 @@ use std::time::SystemTime;
 
 use super::class::Poll;
 use super::follow::{Scene, FOLLOWING};
-use super::session::Seat;
+use super::seat::Seat;
 use crate::snapshot;
 use crate::tui::app::Message;
 use crate::tui::class::{Ask, Asked, Question, UNICODE};
