@@ -114,7 +114,7 @@ pub(super) fn on_key(s: &mut Seat, msg: Message) {
                 Some(p) if !p.revealed => {
                     // The lecturer may have moved on since asking: the
                     // truth is the scene's as asked, and says so.
-                    let changed = !crate::tui::caption::same_scene(&app.state, &p.scene.state);
+                    let changed = !crate::scene::same_scene(&app.state, &p.scene.state);
                     class.reveal(changed);
                     // The lesson's step has had its poll: its answer and
                     // its claims show (and, from now on, those of the

@@ -7,7 +7,6 @@ use std::time::SystemTime;
 
 use rough_model::{Axis, Curves, SceneSpec};
 
-use super::caption::{self, KeptCaption};
 use super::class::Classroom;
 use super::ghost::Ghost;
 use super::layout::Regions;
@@ -26,7 +25,7 @@ use super::theme::Theme;
 use super::views::overlap::Cover;
 use crate::figure::{render_svg, shown_claims, Claim, FigureOptions, MapCache, MapSpec, View};
 use crate::presets;
-use crate::scene::State;
+use crate::scene::{swept_out, KeptCaption, State};
 use crate::snapshot;
 
 mod look;
@@ -234,7 +233,7 @@ impl App {
 
     fn curve_key(&self, points: usize) -> CurveKey {
         let mut spec = self.state.scene_spec(Curves::ALL, points);
-        spec.base = caption::swept_out(&self.state, spec.base);
+        spec.base = swept_out(&self.state, spec.base);
         CurveKey { spec }
     }
 
