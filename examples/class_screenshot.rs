@@ -16,9 +16,9 @@ use ratatui::buffer::Buffer;
 use ratatui::style::{Color, Modifier};
 use ratatui::Terminal;
 use rough_model::Axis;
+use roughtui::class::{ClassView, Question, Seat, SeatState, Tally};
 use roughtui::presets;
 use roughtui::tui::app::{step_value, App};
-use roughtui::tui::class::{ClassView, Question, Seat, SeatState, Tally};
 use roughtui::tui::theme::Theme;
 
 const SIZE: (u16, u16) = (100, 30);

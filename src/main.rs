@@ -80,7 +80,7 @@ fn run(cli: Cli) -> anyhow::Result<()> {
             let lesson = a
                 .lesson
                 .as_deref()
-                .map(roughtui::lesson::read)
+                .map(roughtui::class::lesson::read)
                 .transpose()?;
             let state = match &lesson {
                 Some(l) => l.steps[0].state.clone(),
@@ -126,7 +126,7 @@ fn run(cli: Cli) -> anyhow::Result<()> {
             let lesson = cli
                 .lesson
                 .as_deref()
-                .map(roughtui::lesson::read)
+                .map(roughtui::class::lesson::read)
                 .transpose()?;
             let state = match &lesson {
                 Some(l) => l.steps[0].state.clone(),

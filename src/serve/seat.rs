@@ -6,10 +6,10 @@ use std::sync::Arc;
 use tokio::sync::watch;
 
 use super::auth::Role;
-use super::class::{Note, SeatId};
-use super::follow::{Effect, Follow, Scene, Shown, FOLLOWING};
+use super::follow::{Effect, Follow, Scene, FOLLOWING};
 use super::output::FrameBuf;
 use super::Shared;
+use crate::class::{Note, SeatId, Shown};
 use crate::tui::app::Message;
 use crate::tui::glyphs::Glyphs;
 use crate::tui::session::Session;

@@ -20,7 +20,6 @@ use std::io::Write;
 use tokio::time::{sleep_until, Instant};
 
 use super::auth::Role;
-use super::class::{self, clean_name, Note};
 use super::follow::{Effect, Follow, CALLED_BACK, FOLLOWING};
 use super::frames;
 use super::input::{self, Decoder};
@@ -31,6 +30,7 @@ use super::seat::Seat;
 use super::term::{self, ClientTerm};
 pub use super::wire::{Input, Wire, WireIn};
 use super::Shared;
+use crate::class::{self, clean_name, Note};
 use crate::tui::app::{Message, Mode};
 use crate::tui::session::Session;
 
@@ -153,7 +153,7 @@ async fn run(start: Start) {
         } else if let Some(lesson) = &shared.lesson {
             // Before the lecturer comes: the lesson's first step, its
             // claims hidden as the lesson says (they may answer a poll).
-            let at = crate::lesson::LessonAt::new(Arc::clone(lesson), 0);
+            let at = class::LessonAt::new(Arc::clone(lesson), 0);
             s.ex.app.class.step = Some(at.line());
         }
         let following = s.follow.following();

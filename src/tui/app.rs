@@ -7,7 +7,6 @@ use std::time::SystemTime;
 
 use rough_model::{Axis, Curves, SceneSpec};
 
-use super::class::Classroom;
 use super::ghost::Ghost;
 use super::layout::Regions;
 use super::line_edit::LineEdit;
@@ -23,12 +22,14 @@ pub use super::status::Hint;
 pub use super::steps::{default_range, step_value, HURST_STEPS, LOG_STEPS};
 use super::theme::Theme;
 use super::views::overlap::Cover;
+use crate::class::Classroom;
 use crate::figure::{render_svg, shown_claims, Claim, FigureOptions, MapCache, MapSpec, View};
 use crate::presets;
 use crate::scene::{swept_out, KeptCaption, State};
 use crate::snapshot;
 
 mod look;
+mod shown;
 pub use look::Look;
 
 #[derive(Clone, Debug, PartialEq)]
@@ -539,7 +540,7 @@ pub fn update(app: &mut App, msg: Message) {
         }
         Message::ClassChoose { down } => super::class::choose(app, down),
         Message::RemoveStudent => super::class::remove(app),
-        Message::LessonStep { next } => crate::lesson::step(app, next),
+        Message::LessonStep { next } => super::class::step(app, next),
         Message::OpenScenes
         | Message::SceneMove { .. }
         | Message::ScenePick

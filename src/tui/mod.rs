@@ -57,7 +57,7 @@ pub fn run(
     state: State,
     file: Option<&std::path::Path>,
     marker: Option<glyphs::Glyphs>,
-    lesson: Option<crate::lesson::Lesson>,
+    lesson: Option<crate::class::Lesson>,
     simulate: &crate::cli::Simulate,
 ) -> anyhow::Result<()> {
     let mut frame_log = match std::env::var_os("ROUGHTUI_FRAME_LOG") {
@@ -94,9 +94,7 @@ pub fn run(
         .map(|f| f.to_string_lossy().into_owned());
     if let Some(lesson) = lesson {
         // Rehearsing a lesson alone: its first step, n / N to go on.
-        session.app.class.lesson =
-            Some(crate::lesson::LessonAt::new(std::sync::Arc::new(lesson), 0));
-        crate::lesson::show(&mut session.app);
+        class::start_lesson(&mut session.app, std::sync::Arc::new(lesson));
     }
     if let Some(why) = why {
         let g = caps.glyphs;

@@ -12,9 +12,9 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Clear, Paragraph, Widget};
 
 use super::chart;
+use crate::class::{duration, ClassGlyphs, Tally, ASCII, NOWHERE, UNICODE};
 use crate::figure::View;
 use crate::tui::app::App;
-use crate::tui::class::{duration, ClassGlyphs, Tally, ASCII, NOWHERE, UNICODE};
 use crate::tui::glyphs::Glyphs;
 use crate::tui::plots::to_plot;
 

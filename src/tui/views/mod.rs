@@ -199,10 +199,7 @@ fn render_caption(app: &App, area: Rect, buf: &mut Buffer) {
         } else {
             ""
         };
-        let text = format!(
-            "this step asks: {}{how}",
-            q.text(&crate::tui::class::UNICODE)
-        );
+        let text = format!("this step asks: {}{how}", q.text(&crate::class::UNICODE));
         lines.push(Line::styled(g.text(&text).into_owned(), t.title));
         Paragraph::new(lines).render(area, buf);
         return;

@@ -20,9 +20,7 @@ use tokio::sync::watch;
 mod names;
 mod poll;
 
-pub use super::csv::CSV_HEADER;
-pub use crate::tui::class::duration;
-use crate::tui::class::{ClassGlyphs, ClassView, Seat, SeatState, Tally};
+use super::{ClassGlyphs, ClassView, Seat, SeatState, Tally};
 pub use names::{clean_name, NAME_CHARS};
 use poll::Open;
 pub use poll::{Poll, Refused};
@@ -248,7 +246,7 @@ impl Class {
     pub fn summary(&self) -> Option<String> {
         const CONSOLE: ClassGlyphs = ClassGlyphs {
             sep: ", ",
-            ..crate::tui::class::ASCII
+            ..super::ASCII
         };
         (self.students() > 0).then(|| format!("class: {}", self.view().line(&CONSOLE)))
     }
@@ -260,4 +258,4 @@ impl Class {
 }
 
 #[cfg(test)]
-mod tests;
+mod room_tests;

@@ -1,6 +1,12 @@
-//! Unit tests of what an explorer shows of a class.
+//! Unit tests of the class as a screen shows it: the questions, the
+//! class line, a student's poll line.
+
+use std::time::Duration;
+
+use rough_model::Axis;
 
 use super::*;
+use crate::figure::View;
 
 fn q(axis: Axis, ask: Ask, truth: f64) -> Question {
     Question { axis, ask, truth }
