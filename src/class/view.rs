@@ -4,7 +4,7 @@
 
 use std::time::Duration;
 
-use super::{fmt_value, ClassGlyphs, Question};
+use super::{fmt_value, ClassGlyphs, Question, NOWHERE};
 
 /// One student as the lecturer's class list shows them.
 #[derive(Clone, Debug, PartialEq)]
@@ -54,6 +54,30 @@ pub struct Tally {
     pub revealed: bool,
     /// The poll scene's sweep: the histogram shows on a chart along it.
     pub sweep: rough_model::Sweep,
+}
+
+impl Tally {
+    /// "23/31 answered", or "ζ = 321.5 · 23 answers (2 nowhere)" after
+    /// the reveal: what the histogram of the answers says.
+    pub fn count(&self, g: &ClassGlyphs) -> String {
+        if !self.revealed {
+            return format!("{}/{} answered", self.answers.len(), self.asked);
+        }
+        let q = &self.question;
+        let n = self.answers.len();
+        let nowhere = self.answers.iter().filter(|a| **a == NOWHERE).count();
+        let nowhere = if nowhere > 0 {
+            format!(" ({nowhere} nowhere)")
+        } else {
+            String::new()
+        };
+        format!(
+            "{}{}{n} {}{nowhere}",
+            q.value(q.truth),
+            g.sep,
+            if n == 1 { "answer" } else { "answers" }
+        )
+    }
 }
 
 /// What the lecturer's explorer shows about the class.

@@ -144,3 +144,19 @@ fn a_students_line_fits_80_columns() {
         "the model: ζ = 321.5 - you did not answer - Enter dismisses"
     );
 }
+
+#[test]
+fn the_tally_says_its_count_then_the_truth() {
+    let mut t = Tally {
+        question: q(Axis::Zeta, Ask::ShareEver, 321.5),
+        answers: vec![100.0, NOWHERE, 400.0],
+        asked: 5,
+        revealed: false,
+        sweep: crate::presets::load("fig2").unwrap().sweep,
+    };
+    assert_eq!(t.count(&UNICODE), "3/5 answered");
+    t.revealed = true;
+    assert_eq!(t.count(&UNICODE), "ζ = 321.5 · 3 answers (1 nowhere)");
+    t.answers.truncate(1);
+    assert_eq!(t.count(&ASCII), "ζ = 321.5 - 1 answer");
+}

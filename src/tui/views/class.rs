@@ -12,7 +12,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Clear, Paragraph, Widget};
 
 use super::chart;
-use crate::class::{duration, ClassGlyphs, Tally, ASCII, NOWHERE, UNICODE};
+use crate::class::{duration, ClassGlyphs, ASCII, UNICODE};
 use crate::figure::View;
 use crate::tui::app::App;
 use crate::tui::glyphs::Glyphs;
@@ -118,7 +118,7 @@ pub fn render_poll(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     let dots = app.theme.glyphs.dots();
     let axis = t.question.axis;
     let along = app.state.sweep.axis() == axis && app.view != View::Load;
-    let mut label = count_label(t, &UNICODE);
+    let mut label = format!(" {} ", t.count(&UNICODE));
     if !along {
         label.push_str(&format!("· on a chart along {} ", axis.symbol()));
     }
@@ -172,28 +172,6 @@ pub fn render_poll(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
                 }
             }
         }
-    }
-}
-
-/// "23/31 answered", or "ζ = 321.5 · 23 answers" after the reveal.
-fn count_label(t: &Tally, g: &ClassGlyphs) -> String {
-    if t.revealed {
-        let q = &t.question;
-        let n = t.answers.len();
-        let nowhere = t.answers.iter().filter(|a| **a == NOWHERE).count();
-        let nowhere = if nowhere > 0 {
-            format!(" ({nowhere} nowhere)")
-        } else {
-            String::new()
-        };
-        format!(
-            " {}{}{n} {}{nowhere} ",
-            q.value(q.truth),
-            g.sep,
-            if n == 1 { "answer" } else { "answers" }
-        )
-    } else {
-        format!(" {}/{} answered ", t.answers.len(), t.asked)
     }
 }
 
