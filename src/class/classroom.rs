@@ -95,6 +95,33 @@ impl Classroom {
         self.hidden_question().is_some() || self.step.as_ref().is_some_and(|s| s.hides_claims())
     }
 
+    /// Whether the scene's caption (which may name the answer) waits for
+    /// the reveal: while a poll is open outside a lesson (a lesson's
+    /// captions are written for its polls).
+    pub fn caption_waits(&self) -> bool {
+        self.open_question().is_some() && self.step.is_none()
+    }
+
+    /// What the claims' row shows: the claims, or what the class puts in
+    /// their place.
+    pub fn claims_row(&self) -> ClaimsRow<'_> {
+        if let Some(a) = &self.asked {
+            return ClaimsRow::Asked(a);
+        }
+        let tally = self.view.as_ref().and_then(|v| v.poll.as_ref());
+        if let Some(t) = tally.filter(|t| !t.revealed) {
+            return ClaimsRow::Open(t);
+        }
+        if let Some(q) = self.hidden_question() {
+            return ClaimsRow::Asks(q);
+        }
+        if self.claims_hidden() {
+            ClaimsRow::Waiting
+        } else {
+            ClaimsRow::Claims
+        }
+    }
+
     /// Leads `lesson` from its first step: the step to show.
     pub fn start_lesson(&mut self, lesson: Arc<Lesson>) -> Option<StepScene> {
         self.lesson = Some(LessonAt::new(lesson, 0));
@@ -168,6 +195,22 @@ impl Classroom {
         let own = matches!(q.ask, Ask::Typed | Ask::ShareEver);
         (own && q.axis == axis).then_some(q)
     }
+}
+
+/// What stands in the row of the scene's claims, in a class.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ClaimsRow<'a> {
+    /// A student's poll: the question, their answer, the reveal
+    /// ([`Asked::line`]).
+    Asked(&'a Asked),
+    /// The lecturer's open poll: how many of those asked answered.
+    Open(&'a Tally),
+    /// A lesson's step about to poll: its question, not its answer.
+    Asks(Question),
+    /// A lesson's step before a poll: the claims would answer it.
+    Waiting,
+    /// The scene's claims.
+    Claims,
 }
 
 /// The end of the lesson a step would go past.

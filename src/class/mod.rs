@@ -32,7 +32,7 @@ pub mod scenes;
 mod shown;
 mod view;
 
-pub use classroom::{Classroom, LessonEnd};
+pub use classroom::{ClaimsRow, Classroom, LessonEnd};
 pub use csv::CSV_HEADER;
 pub use glyphs::{ClassGlyphs, ASCII, UNICODE};
 pub use lesson::{Lesson, LessonAt, Step, StepLine, StepScene};

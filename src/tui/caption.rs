@@ -9,8 +9,7 @@ pub const MAX_CAPTION_ROWS: usize = 4;
 /// poll is open (outside a lesson, whose captions are written for their
 /// polls) the line that says it waits.
 pub fn text(app: &crate::tui::app::App) -> &str {
-    let open = app.class.open_question().is_some() && app.class.step.is_none();
-    if open {
+    if app.class.caption_waits() {
         "(the caption shows after the reveal)"
     } else {
         app.state.caption.as_deref().unwrap_or("")
