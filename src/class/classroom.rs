@@ -8,8 +8,9 @@ use std::sync::Arc;
 use rough_model::Axis;
 
 use super::lesson::{Lesson, LessonAt, StepLine, StepScene};
+use super::question::{Ask, Question};
 use super::scenes::SceneList;
-use super::{Ask, Asked, ClassView, Question, Tally};
+use super::view::{Asked, ClassView, Tally};
 
 /// The class as one explorer sees it: the lecturer's view, or a student's
 /// poll, and the value a lecturer typed for a poll (taken by the server).

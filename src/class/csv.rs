@@ -22,7 +22,7 @@ pub const CSV_HEADER: &str = "question,quantity,unit,truth,name,answer,offset,st
 /// A truth or an answer: the shortest digits that read back the same, or
 /// `nowhere` (a poll answered "nowhere in the sweep").
 pub fn csv_value(v: f64) -> String {
-    if v == super::NOWHERE {
+    if v == super::question::NOWHERE {
         "nowhere".into()
     } else {
         crate::physical::csv_number::format(v)

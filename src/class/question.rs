@@ -4,7 +4,7 @@
 
 use rough_model::Axis;
 
-use super::ClassGlyphs;
+use super::glyphs::ClassGlyphs;
 use crate::figure::{Claim, ClaimKind, View};
 use crate::physical::short_number;
 

@@ -4,7 +4,7 @@
 
 use rough_model::Axis;
 
-use super::StepLine;
+use super::lesson::StepLine;
 use crate::figure::View;
 use crate::scene::State;
 

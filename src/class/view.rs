@@ -4,7 +4,8 @@
 
 use std::time::Duration;
 
-use super::{fmt_value, ClassGlyphs, Question, NOWHERE};
+use super::glyphs::ClassGlyphs;
+use super::question::{fmt_value, Question, NOWHERE};
 
 /// One student as the lecturer's class list shows them.
 #[derive(Clone, Debug, PartialEq)]

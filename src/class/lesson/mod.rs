@@ -27,7 +27,7 @@ mod read;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use super::Question;
+use super::question::Question;
 use crate::figure::View;
 use crate::scene::State;
 pub use read::{parse, read};
@@ -180,7 +180,7 @@ pub fn csv_path(dir: &Path, lesson: &Lesson) -> anyhow::Result<PathBuf> {
         &stem,
         "csv",
         "lesson poll answers",
-        format!("{}\n", super::CSV_HEADER).as_bytes(),
+        format!("{}\n", super::csv::CSV_HEADER).as_bytes(),
     )
 }
 

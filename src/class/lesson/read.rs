@@ -8,7 +8,7 @@ use rough_model::Axis;
 use serde::Deserialize;
 
 use super::{Lesson, Step, MAX_BYTES, MAX_STEPS};
-use crate::class::{Ask, Question, NOWHERE};
+use crate::class::question::{Ask, Question, NOWHERE};
 use crate::figure::{claims, View};
 
 #[derive(Debug, Deserialize)]

@@ -7,7 +7,9 @@ use std::time::SystemTime;
 
 use super::{Class, Inner, SeatId};
 use crate::class::csv::{csv_field, csv_value, utc, CSV_HEADER};
-use crate::class::{Question, Shown, ASCII, NOWHERE};
+use crate::class::glyphs::ASCII;
+use crate::class::question::{Question, NOWHERE};
+use crate::class::shown::Shown;
 use crate::physical::{ascii::to_ascii, csv_number};
 
 /// The poll as students read it.
