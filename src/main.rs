@@ -123,16 +123,7 @@ fn run(cli: Cli) -> anyhow::Result<()> {
             })
         }
         None => {
-            let lesson = cli
-                .lesson
-                .as_deref()
-                .map(roughtui::lesson::read)
-                .transpose()?;
-            let state = match &lesson {
-                Some(l) => l.steps[0].state.clone(),
-                None => load_source(&cli.source, &cli.setup)?,
-            };
-            cli.simulate.check(&state)?;
+            let (state, lesson) = tui::start_state(&cli)?;
             if check_only() {
                 return Ok(());
             }
