@@ -9,6 +9,7 @@
 
 pub mod contact;
 pub mod measured;
+pub mod plan;
 mod table;
 mod targets;
 
@@ -183,11 +184,29 @@ pub fn report(passes: u32, whole_commands: bool) -> anyhow::Result<String> {
 /// ζ and H0/E steps timed per measured surface.
 const SURFACE_STEPS: usize = 41;
 
-/// `roughtui bench`: the slopes table and timings, then a synthetic
-/// 1024 × 1024 measured surface; with `--surface FILE`, that file instead.
-pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
+/// `roughtui bench`: first what it will run and about how long that takes
+/// ([`plan`]); then the slopes table and timings, the contact solver, its
+/// 13-load curve (not with `--quick`) and a synthetic 1024 × 1024 measured
+/// surface; with `--surface FILE`, that file instead. With `check_only`
+/// (`ROUGHTUI_CHECK_ONLY=1`) it says what it would run, reads the file it
+/// names, and stops.
+pub fn run(args: &BenchArgs, check_only: bool) -> anyhow::Result<()> {
+    let start = Instant::now();
+    let reference = slopes_reference(SLOPES_CSV)?;
+    print!("{}", plan::text(args, methods().len(), reference.len()));
+    if !check_only {
+        if let Some(l) = contact::load_average() {
+            println!("The load average is {l:.1} now.");
+        }
+    }
+    // The plan shows before the work starts, even through a pipe.
+    std::io::Write::flush(&mut std::io::stdout())?;
     if let Some(path) = &args.surface {
         let options = args.surface_options();
+        if check_only {
+            crate::surface::SurfaceSource::read(path, options)?;
+            return Ok(());
+        }
         let t = measured::time_file(path, options, SURFACE_STEPS)?;
         print!(
             "{}",
@@ -195,12 +214,22 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         );
         return Ok(());
     }
+    if check_only {
+        return Ok(());
+    }
+    println!();
     print!("{}", report(args.passes, true)?);
-    print!("{}", contact::run(3)?);
+    print!("{}", contact::run(3, !args.quick)?);
     let t = measured::time_synthetic(1024, SURFACE_STEPS)?;
     print!(
         "{}",
         measured::report("synthetic 1024 × 1024 map", &t, SURFACE_STEPS)
+    );
+    println!(
+        "
+roughtui bench took {:.1} s{}.",
+        start.elapsed().as_secs_f64(),
+        contact::load_average().map_or(String::new(), |l| format!(" (load average now {l:.1})"))
     );
     Ok(())
 }

@@ -209,7 +209,7 @@ mod tests {
                 KeyCode::Enter
             ]
         );
-        assert_eq!(k[6].modifiers, KeyModifiers::CONTROL);
+        assert_eq!(k[7].modifiers, KeyModifiers::CONTROL);
         assert!(parse_keys("C-ab").is_err());
     }
 }
