@@ -11,7 +11,7 @@ use values::{
     parse_cell, parse_contact_grid, parse_grid, parse_height_unit, parse_per_wavelength,
     parse_percent, parse_pixel_size, parse_points, parse_seeds, parse_sweep,
 };
-pub use values::{parse_duration, parse_fit_band, parse_set, SetKey, MAX_POINTS};
+pub use values::{parse_duration, parse_fit_band, parse_set, SetKey, SweepArg, MAX_POINTS};
 
 #[derive(Debug, Parser)]
 #[command(
@@ -252,10 +252,11 @@ pub struct ExportArgs {
     /// when off).
     #[arg(long, value_enum, value_name = "on|off")]
     pub size_effect: Option<OnOff>,
-    /// Override the snapshot's sweep, e.g. zeta:1:1e4 or h-rms:1e-9:1e-6 (SI
-    /// units).
+    /// Override the snapshot's sweep, e.g. zeta:1:1e4 or h-rms:1nm:1um
+    /// (lengths with a unit as the value prompt takes them; a bare number
+    /// in metres).
     #[arg(long, value_name = "AXIS:FROM:TO", value_parser = parse_sweep)]
-    pub sweep: Option<(Axis, f64, f64)>,
+    pub sweep: Option<SweepArg>,
     /// Seed of the simulated surface's random phases (contact views only;
     /// default 1), the first of --seeds.
     #[arg(long, value_name = "N")]
