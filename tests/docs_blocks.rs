@@ -25,6 +25,11 @@
 
 mod common;
 
+/// The class pictures' maker (docs/teaching.md), its `main` unused here.
+#[path = "../examples/class_screenshot.rs"]
+#[allow(dead_code)]
+mod class_screenshot;
+
 use std::path::Path;
 use std::process::{Command, Stdio};
 
@@ -394,4 +399,35 @@ fn markers_are_read_as_written() {
     assert_eq!((b[1].start, b[1].end), (8, 8));
     let unmarked = "```text\n ▶ ζ    ↔       128\n```\n";
     assert!(blocks(unmarked).is_err());
+}
+
+/// docs/teaching.md's pictures of the lecturer's screen during a poll and
+/// after its reveal are what `examples/class_screenshot.rs` draws now.
+#[test]
+fn the_class_pictures_are_the_programs() {
+    let mut failures = Vec::new();
+    for (revealed, file) in [
+        (false, "docs/class-poll.svg"),
+        (true, "docs/class-reveal.svg"),
+    ] {
+        let made = class_screenshot::picture(revealed).unwrap();
+        let path = Path::new(docs::ROOT).join(file);
+        if std::fs::read_to_string(&path).ok().as_deref() == Some(made.as_str()) {
+            continue;
+        }
+        if updating() {
+            std::fs::write(&path, made).unwrap();
+            eprintln!("wrote {file}");
+        } else {
+            failures.push(format!(
+                "{file} is not what examples/class_screenshot.rs draws now"
+            ));
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{}\n\nMake them again with `scripts/gen_docs.sh screens` \
+         (ROUGHTUI_UPDATE_DOCS=1 cargo test --test docs_blocks).",
+        failures.join("\n")
+    );
 }
