@@ -64,7 +64,8 @@ pub fn words(command: &str, home: &Path) -> Vec<String> {
 /// `surfaces/`, `presets/` and `lessons/`, a snapshot `my-set.ron`, the
 /// surfaces `steel.txt` and `afm.txt` (the shipped example's map), a
 /// header-less line scan `scan.txt`, an x3p `scan.x3p` and a Gwyddion
-/// file of four channels `afm.gwy` (rough-surface's test data) and a
+/// file of four channels `afm.gwy` (rough-surface's test data), files
+/// of formats refused with advice (`scan.datx`, `h.npy`, `cloud.xyz`) and a
 /// lecturer's public key.
 pub fn workspace() -> tempfile::TempDir {
     let dir = tempfile::tempdir().unwrap();
@@ -94,6 +95,18 @@ pub fn workspace() -> tempfile::TempDir {
     for (from, to) in [("sur_d.x3p", "scan.x3p"), ("three.gwy", "afm.gwy")] {
         std::fs::copy(formats.join(from), dir.path().join(to)).unwrap();
     }
+    // Files of formats roughtui refuses with advice (docs/surfaces.md).
+    std::fs::write(
+        dir.path().join("scan.datx"),
+        b"\x89HDF\r\n\x1a\n0000000000000000",
+    )
+    .unwrap();
+    std::fs::write(dir.path().join("h.npy"), b"\x93NUMPY\x01\x00v\x00{}").unwrap();
+    std::fs::write(
+        dir.path().join("cloud.xyz"),
+        "# a point cloud\n0 0 1\n0.5 0.2 3\n1 0.7 2\n0.1 0.9 4\n0.3 0.3 1\n",
+    )
+    .unwrap();
     let key = "ssh-ed25519 AAAAC3NzaC1lZDI1NTE5AAAAIOMqqnkVzrm0SdG6UOoqKLsabgH5C9okWi0dh2l9GKJl lecturer@example\n";
     std::fs::write(dir.path().join("lecturer.pub"), key).unwrap();
     std::fs::create_dir_all(dir.path().join("home/.ssh")).unwrap();
