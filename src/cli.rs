@@ -57,10 +57,13 @@ pub enum MarkerArg {
 
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Print a view (slopes, indices, regime map, load, spectrum) as CSV or
-    /// SVG on stdout; fig2 unless --preset, --load or --surface says otherwise.
+    /// Print a view (slopes, indices, regime map, load, a surface's spectrum
+    /// or moments, the contact simulation) as CSV or SVG on stdout; fig2
+    /// unless --preset, --load or --surface says otherwise.
     Export(ExportArgs),
-    /// Time each way of computing the initial slopes against the reference data.
+    /// Time each way of computing the initial slopes against the reference
+    /// data, the explorer's frames, the contact solver and a measured map
+    /// (it says what it runs and about how long first).
     Bench(BenchArgs),
     /// Serve the explorer over SSH to a class: students `ssh -p PORT HOST`.
     Serve(ServeArgs),
