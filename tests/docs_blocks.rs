@@ -40,14 +40,14 @@ use roughtui::tui::screen;
 #[derive(Debug)]
 enum Maker {
     Screen {
-        env: Vec<(String, String)>,
+        env: Env,
         args: Vec<String>,
         size: (u16, u16),
         keys: String,
         region: Option<String>,
     },
     Output {
-        env: Vec<(String, String)>,
+        env: Env,
         args: Vec<String>,
         cut: Cut,
     },
@@ -76,8 +76,11 @@ struct Block {
     end: usize,
 }
 
+/// Environment variables a marker sets, as (name, value).
+type Env = Vec<(String, String)>;
+
 /// `VAR=VALUE … roughtui ARGS`: the variables and the arguments.
-fn command(text: &str) -> Result<(Vec<(String, String)>, Vec<String>), String> {
+fn command(text: &str) -> Result<(Env, Vec<String>), String> {
     let mut w = words(text, Path::new("/nonexistent"))
         .into_iter()
         .peekable();
