@@ -29,7 +29,7 @@ pub mod value;
 
 use rough_model::Axis;
 
-pub use short::{clean, short_length, short_number};
+pub use short::{clean, short_length, short_number, typed_length};
 use value::parse_value;
 
 /// A closed range of accepted values with its words.
