@@ -1,8 +1,8 @@
-//! The class's unit tests.
+//! The class's unit tests: the roster and the poll. (A lecturer's
+//! explorer makes the scene a poll is asked on.)
 
 use super::*;
-use crate::serve::follow::Shown;
-use crate::tui::class::{Ask, Question, UNICODE};
+use crate::class::{Ask, Question, Shown, UNICODE};
 use rough_model::Axis;
 
 fn shown() -> Shown {
@@ -11,7 +11,7 @@ fn shown() -> Shown {
         crate::tui::theme::Theme::plain(),
         (80, 24),
     );
-    Shown::of(&app)
+    app.shown()
 }
 
 fn question() -> Question {

@@ -6,10 +6,11 @@ use std::sync::Arc;
 use std::time::SystemTime;
 
 use super::{Class, Inner, SeatId};
-use crate::physical::csv_number;
-use crate::serve::csv::{csv_field, csv_value, utc, CSV_HEADER};
-use crate::serve::follow::Shown;
-use crate::tui::class::Question;
+use crate::class::csv::{csv_field, csv_value, utc, CSV_HEADER};
+use crate::class::glyphs::ASCII;
+use crate::class::question::{Question, NOWHERE};
+use crate::class::shown::Shown;
+use crate::physical::{ascii::to_ascii, csv_number};
 
 /// The poll as students read it.
 #[derive(Clone, Debug, PartialEq)]
@@ -159,7 +160,7 @@ impl Class {
         let Some(open) = c.poll.as_mut() else {
             return Err(Refused::NoPoll);
         };
-        let nowhere = value == crate::tui::class::NOWHERE && open.poll.question.nowhere_ok();
+        let nowhere = value == NOWHERE && open.poll.question.nowhere_ok();
         if open.poll.id != poll || open.poll.revealed || !(value.is_finite() || nowhere) {
             return Err(Refused::Closed);
         }
@@ -185,10 +186,9 @@ impl Class {
         let c = self.lock();
         let o = c.poll.as_ref()?;
         let q = &o.poll.question;
-        let ascii = crate::tui::glyphs::Glyphs::Ascii;
         let head = [
-            csv_field(&ascii.text(&q.text(&crate::tui::class::ASCII))),
-            csv_field(&ascii.text(q.axis.symbol())),
+            csv_field(&to_ascii(&q.text(&ASCII))),
+            csv_field(&to_ascii(q.axis.symbol())),
             q.unit().to_string(),
             csv_value(q.truth),
         ]

@@ -22,7 +22,7 @@ pub const CSV_HEADER: &str = "question,quantity,unit,truth,name,answer,offset,st
 /// A truth or an answer: the shortest digits that read back the same, or
 /// `nowhere` (a poll answered "nowhere in the sweep").
 pub fn csv_value(v: f64) -> String {
-    if v == crate::tui::class::NOWHERE {
+    if v == super::question::NOWHERE {
         "nowhere".into()
     } else {
         crate::physical::csv_number::format(v)
@@ -54,7 +54,7 @@ mod tests {
     fn times_are_utc_to_the_second() {
         let t = std::time::UNIX_EPOCH + std::time::Duration::from_secs(1_764_065_702);
         assert_eq!(utc(t), "2025-11-25T10:15:02Z");
-        assert_eq!(csv_value(crate::tui::class::NOWHERE), "nowhere");
+        assert_eq!(csv_value(crate::class::NOWHERE), "nowhere");
         assert_eq!(csv_value(321.5), "321.5");
     }
 

@@ -1,6 +1,12 @@
-//! Unit tests of what an explorer shows of a class.
+//! Unit tests of the class as a screen shows it: the questions, the
+//! class line, a student's poll line.
+
+use std::time::Duration;
+
+use rough_model::Axis;
 
 use super::*;
+use crate::figure::View;
 
 fn q(axis: Axis, ask: Ask, truth: f64) -> Question {
     Question { axis, ask, truth }
@@ -137,4 +143,54 @@ fn a_students_line_fits_80_columns() {
         a.line(&ASCII, 80),
         "the model: ζ = 321.5 - you did not answer - Enter dismisses"
     );
+}
+
+#[test]
+fn the_tally_says_its_count_then_the_truth() {
+    let mut t = Tally {
+        question: q(Axis::Zeta, Ask::ShareEver, 321.5),
+        answers: vec![100.0, NOWHERE, 400.0],
+        asked: 5,
+        revealed: false,
+        sweep: crate::presets::load("fig2").unwrap().sweep,
+    };
+    assert_eq!(t.count(&UNICODE), "3/5 answered");
+    t.revealed = true;
+    assert_eq!(t.count(&UNICODE), "ζ = 321.5 · 3 answers (1 nowhere)");
+    t.answers.truncate(1);
+    assert_eq!(t.count(&ASCII), "ζ = 321.5 - 1 answer");
+}
+
+#[test]
+fn the_claims_row_gives_way_to_the_poll_then_to_a_lessons_question() {
+    let mut c = Classroom::default();
+    assert_eq!(c.claims_row(), ClaimsRow::Claims);
+    assert!(!c.caption_waits());
+    // A lesson's step about to poll: its question, and no answer.
+    let lesson = crate::class::lesson::read(std::path::Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/lessons/paper.ron"
+    )))
+    .unwrap();
+    let polled = lesson.steps.iter().position(|s| s.poll.is_some()).unwrap();
+    c.step = Some(LessonAt::new(std::sync::Arc::new(lesson.clone()), polled).line());
+    let question = lesson.steps[polled].poll.unwrap();
+    assert_eq!(c.claims_row(), ClaimsRow::Asks(question));
+    // The step before it hides its claims until that poll's reveal.
+    c.step = Some(LessonAt::new(std::sync::Arc::new(lesson), polled - 1).line());
+    assert_eq!(c.claims_row(), ClaimsRow::Waiting);
+    c.step_revealed();
+    assert_eq!(c.claims_row(), ClaimsRow::Claims);
+    // A student's poll stands in for all of them; outside a lesson the
+    // caption waits for its reveal.
+    c.step = None;
+    let asked = Asked {
+        question: q(Axis::Zeta, Ask::Share { rising: true }, 321.5),
+        answer: None,
+        revealed: false,
+        changed: false,
+    };
+    c.asked = Some(asked);
+    assert_eq!(c.claims_row(), ClaimsRow::Asked(&asked));
+    assert!(c.caption_waits());
 }

@@ -20,9 +20,8 @@ use tokio::sync::watch;
 mod names;
 mod poll;
 
-pub use super::csv::CSV_HEADER;
-pub use crate::tui::class::duration;
-use crate::tui::class::{ClassGlyphs, ClassView, Seat, SeatState, Tally};
+use super::glyphs::{ClassGlyphs, ASCII};
+use super::view::{ClassView, Seat, SeatState, Tally};
 pub use names::{clean_name, NAME_CHARS};
 use poll::Open;
 pub use poll::{Poll, Refused};
@@ -246,10 +245,7 @@ impl Class {
 
     /// The console's summary line; `None` while no student is here.
     pub fn summary(&self) -> Option<String> {
-        const CONSOLE: ClassGlyphs = ClassGlyphs {
-            sep: ", ",
-            ..crate::tui::class::ASCII
-        };
+        const CONSOLE: ClassGlyphs = ClassGlyphs { sep: ", ", ..ASCII };
         (self.students() > 0).then(|| format!("class: {}", self.view().line(&CONSOLE)))
     }
 
@@ -260,4 +256,4 @@ impl Class {
 }
 
 #[cfg(test)]
-mod tests;
+mod room_tests;
