@@ -5,8 +5,11 @@
 //! or after (`revealed`) the reveal. The picture in docs/teaching.md:
 //!
 //! ```sh
-//! cargo run --example class_screenshot -- revealed > docs/class-poll.svg
+//! cargo run --example class_screenshot -- revealed > docs/class-reveal.svg
+//! cargo run --example class_screenshot -- open > docs/class-poll.svg
 //! ```
+//!
+//! (`scripts/gen_docs.sh` makes both; `tests/docs_blocks.rs` compares them.)
 
 use std::fmt::Write;
 use std::time::Duration;
@@ -16,9 +19,9 @@ use ratatui::buffer::Buffer;
 use ratatui::style::{Color, Modifier};
 use ratatui::Terminal;
 use rough_model::Axis;
+use roughtui::class::{ClassView, Question, Seat, SeatState, Tally};
 use roughtui::presets;
 use roughtui::tui::app::{step_value, App};
-use roughtui::tui::class::{ClassView, Question, Seat, SeatState, Tally};
 use roughtui::tui::theme::Theme;
 
 const SIZE: (u16, u16) = (100, 30);
@@ -136,6 +139,13 @@ fn svg(buf: &Buffer) -> String {
 
 fn main() -> anyhow::Result<()> {
     let revealed = std::env::args().nth(1).as_deref() == Some("revealed");
+    print!("{}", picture(revealed)?);
+    Ok(())
+}
+
+/// The lecturer's screen as an SVG picture: during the poll, or after the
+/// reveal (`tests/docs_blocks.rs` compares it with docs/class-*.svg).
+pub fn picture(revealed: bool) -> anyhow::Result<String> {
     let state = presets::load("fig2")?;
     let mut app = App::new(state, Theme::colored(), SIZE);
     let question = Question::of_claims(app.view, &app.claims)
@@ -192,6 +202,5 @@ fn main() -> anyhow::Result<()> {
     app.set_status(status, false);
     let mut t = Terminal::new(TestBackend::new(SIZE.0, SIZE.1))?;
     t.draw(|f| f.render_widget(&app, f.area()))?;
-    print!("{}", svg(t.backend().buffer()));
-    Ok(())
+    Ok(svg(t.backend().buffer()))
 }

@@ -1,7 +1,17 @@
 #!/usr/bin/env bash
-# Regenerates the documentation's pictures in docs/ with the program itself.
-# Run from the repository root: scripts/gen_docs.sh
+# Makes the documentation's pictures and screens again with the program itself.
+# Run from the repository root:
+#   scripts/gen_docs.sh          the screens and outputs, then every picture
+#   scripts/gen_docs.sh screens  only the screens and outputs (seconds)
+# The screens and outputs are the blocks under a `<!-- screen: … -->` or
+# `<!-- output: … -->` marker in README.md and docs/*.md, and the class
+# pictures of docs/teaching.md; tests/docs_blocks.rs checks them and, with
+# ROUGHTUI_UPDATE_DOCS=1, writes them.
 set -euo pipefail
+ROUGHTUI_UPDATE_DOCS=1 cargo test --quiet --test docs_blocks
+if [ "${1:-}" = screens ]; then
+    exit 0
+fi
 cargo build --release --quiet
 bin=target/release/roughtui
 for view in slopes indices map load; do

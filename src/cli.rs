@@ -11,7 +11,7 @@ use values::{
     parse_cell, parse_contact_grid, parse_grid, parse_height_unit, parse_per_wavelength,
     parse_percent, parse_pixel_size, parse_points, parse_seeds, parse_sweep,
 };
-pub use values::{parse_duration, parse_fit_band, parse_set, SetKey, MAX_POINTS};
+pub use values::{parse_duration, parse_fit_band, parse_set, SetKey, SweepArg, MAX_POINTS};
 
 #[derive(Debug, Parser)]
 #[command(
@@ -57,10 +57,13 @@ pub enum MarkerArg {
 
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Print a view (slopes, indices, regime map, load, spectrum) as CSV or
-    /// SVG on stdout; fig2 unless --preset, --load or --surface says otherwise.
+    /// Print a view (slopes, indices, regime map, load, a surface's spectrum
+    /// or moments, the contact simulation) as CSV or SVG on stdout; fig2
+    /// unless --preset, --load or --surface says otherwise.
     Export(ExportArgs),
-    /// Time each way of computing the initial slopes against the reference data.
+    /// Time each way of computing the initial slopes against the reference
+    /// data, the explorer's frames, the contact solver and a measured map
+    /// (it says what it runs and about how long first).
     Bench(BenchArgs),
     /// Serve the explorer over SSH to a class: students `ssh -p PORT HOST`.
     Serve(ServeArgs),
@@ -252,10 +255,11 @@ pub struct ExportArgs {
     /// when off).
     #[arg(long, value_enum, value_name = "on|off")]
     pub size_effect: Option<OnOff>,
-    /// Override the snapshot's sweep, e.g. zeta:1:1e4 or h-rms:1e-9:1e-6 (SI
-    /// units).
+    /// Override the snapshot's sweep, e.g. zeta:1:1e4 or h-rms:1nm:1um
+    /// (lengths with a unit as the value prompt takes them; a bare number
+    /// in metres).
     #[arg(long, value_name = "AXIS:FROM:TO", value_parser = parse_sweep)]
-    pub sweep: Option<(Axis, f64, f64)>,
+    pub sweep: Option<SweepArg>,
     /// Seed of the simulated surface's random phases (contact views only;
     /// default 1), the first of --seeds.
     #[arg(long, value_name = "N")]
@@ -522,6 +526,10 @@ pub struct BenchArgs {
     /// Timed passes per method (the median is reported).
     #[arg(long, default_value_t = 15)]
     pub passes: u32,
+    /// Leave out the longest part, fig2's 13-load contact curve on 1024²
+    /// (about 26 of the run's 34 s on two idle cores).
+    #[arg(long, conflicts_with = "surface")]
+    pub quick: bool,
     /// Time a measured surface instead: the file to the first screen, ζ
     /// and H0/E steps, peak memory.
     #[arg(long, value_name = "FILE")]

@@ -5,11 +5,11 @@
 //! checks them).
 
 pub mod bench;
+pub mod class;
 pub mod cli;
 pub mod contact;
 pub mod export;
 pub mod figure;
-pub mod lesson;
 pub mod physical;
 pub mod presets;
 pub mod scene;

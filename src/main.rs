@@ -69,18 +69,12 @@ fn run(cli: Cli) -> anyhow::Result<()> {
             let mut out = BufWriter::with_capacity(1 << 16, stdout.lock());
             export::run(&a, &mut out)
         }
-        Some(Command::Bench(a)) if check_only() => {
-            if let Some(f) = &a.surface {
-                roughtui::surface::SurfaceSource::read(f, a.surface_options())?;
-            }
-            Ok(())
-        }
-        Some(Command::Bench(a)) => roughtui::bench::run(&a),
+        Some(Command::Bench(a)) => roughtui::bench::run(&a, check_only()),
         Some(Command::Serve(a)) => {
             let lesson = a
                 .lesson
                 .as_deref()
-                .map(roughtui::lesson::read)
+                .map(roughtui::class::lesson::read)
                 .transpose()?;
             let state = match &lesson {
                 Some(l) => l.steps[0].state.clone(),
@@ -123,16 +117,7 @@ fn run(cli: Cli) -> anyhow::Result<()> {
             })
         }
         None => {
-            let lesson = cli
-                .lesson
-                .as_deref()
-                .map(roughtui::lesson::read)
-                .transpose()?;
-            let state = match &lesson {
-                Some(l) => l.steps[0].state.clone(),
-                None => load_source(&cli.source, &cli.setup)?,
-            };
-            cli.simulate.check(&state)?;
+            let (state, lesson) = tui::start_state(&cli)?;
             if check_only() {
                 return Ok(());
             }

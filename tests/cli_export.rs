@@ -459,7 +459,10 @@ fn options_that_do_not_apply_are_refused() {
         &["export", "--sweep", "foo:1:2"],
         &["unknown axis 'foo'", "h-rms"],
     );
-    usage_error(&["export", "--sweep", "zeta:1:x"], &["'x' is not a number"]);
+    usage_error(
+        &["export", "--sweep", "zeta:1:x"],
+        &["\"x\" is not a number"],
+    );
     usage_error(&["export", "--sweep", "zeta:100:10"], &["--sweep", "empty"]);
     usage_error(
         &["export", "--sweep", "hurst:0.5:2"],

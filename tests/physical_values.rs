@@ -218,3 +218,54 @@ fn the_readout_shows_q0_and_l_where_there_is_room() {
     type_value(&mut a, Axis::Zeta, "l=1mm");
     assert!(screen(&a).contains("L      1.00 mm"), "{}", screen(&a));
 }
+
+/// A length typed on the command line comes back in the unit it was typed
+/// in, or the slider's, never as metres with eight zeros.
+#[test]
+fn typed_lengths_are_echoed_as_typed() {
+    for typed in ["50nm", "0.05um", "5e-8"] {
+        let err = refused(&[
+            "export",
+            "--surface",
+            "surfaces/example.txt",
+            "--pixel-size",
+            typed,
+        ]);
+        assert_eq!(
+            err,
+            "roughtui: bad surface surfaces/example.txt, line 2: --pixel-size 50 nm does not \
+             apply: the file gives its size",
+            "{typed}"
+        );
+    }
+    assert_eq!(
+        refused(&["export", "--sweep", "h-rms:1nm:2mm"]),
+        "roughtui: --sweep: h_rms = 2mm is out of range: h_rms takes 1 pm … 1 mm"
+    );
+    assert_eq!(
+        refused(&["export", "--sweep", "r-star:0.5pm:1.5 m"]),
+        "roughtui: --sweep: R* = 1.5 m is out of range: R* takes 0 … 1 m"
+    );
+    assert_eq!(
+        refused(&["export", "--sweep", "zeta:1:1e9"]),
+        "roughtui: --sweep: ζ = 1e9 is out of range: ζ takes 1 … 1e8"
+    );
+    assert!(
+        refused(&["export", "--sweep", "zeta:1nm:4"]).contains("ζ takes no unit (\"nm\")"),
+        "a unit on an axis without one is refused"
+    );
+    // The ends of a length sweep take a unit as --set does.
+    let csv = stdout(&["export", "--points", "2", "--sweep", "h-rms:1nm:1um"]);
+    assert!(
+        csv.contains("# sweep = h_rms from 1e-9 to 1e-6, 2 points"),
+        "{csv}"
+    );
+    // At the value prompt: as typed.
+    let mut a = fig("fig2");
+    type_value(&mut a, Axis::HRms, "2 mm");
+    assert!(
+        screen(&a).contains("h_rms = 2 mm is out of range: h_rms takes 1 pm … 1 mm"),
+        "{}",
+        screen(&a)
+    );
+}

@@ -14,14 +14,13 @@ use crossterm::event::{KeyCode, KeyModifiers};
 use ratatui::backend::TestBackend;
 use ratatui::buffer::Buffer;
 use ratatui::Terminal;
+use roughtui::class::{Asked, ClassView, Lesson, LessonAt, Tally};
 use roughtui::figure::{claims, View};
-use roughtui::lesson::{Lesson, LessonAt};
 use roughtui::tui::app::{update, App, Message};
-use roughtui::tui::class::{Asked, ClassView, Tally};
 use roughtui::tui::theme::Theme;
 
 fn lesson() -> Arc<Lesson> {
-    Arc::new(roughtui::lesson::read(Path::new("lessons/paper.ron")).unwrap())
+    Arc::new(roughtui::class::lesson::read(Path::new("lessons/paper.ron")).unwrap())
 }
 
 fn draw(app: &App) -> Buffer {

@@ -62,7 +62,7 @@ fn a_lesson_steps_polls_into_one_csv_and_everyone_follows() {
     // Three polls: fig1's share, fig2's share, and fig3's: does the
     // share pass ½ at all with the size effect? Nowhere (the paper: the
     // plastic area is zero over the whole range); ann answers with `0`.
-    let nowhere = roughtui::tui::class::NOWHERE;
+    let nowhere = roughtui::class::NOWHERE;
     let polls = [
         (
             2,

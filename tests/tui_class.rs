@@ -8,8 +8,8 @@ use std::time::Duration;
 use common::app::{ch, fig, press, screen, type_text};
 use crossterm::event::{KeyCode, KeyModifiers};
 use rough_model::Axis;
+use roughtui::class::{Ask, Asked, ClassView, Question, Seat, SeatState, Tally};
 use roughtui::tui::app::{update, App, Message, Mode};
-use roughtui::tui::class::{Ask, Asked, ClassView, Question, Seat, SeatState, Tally};
 use roughtui::tui::keys::message_for_key;
 
 fn lecturer(name: &str) -> App {

@@ -155,7 +155,7 @@ fn cpu_seconds() -> Option<f64> {
 }
 
 /// The 1-minute load average (Linux's /proc/loadavg).
-fn load_average() -> Option<f64> {
+pub(crate) fn load_average() -> Option<f64> {
     std::fs::read_to_string("/proc/loadavg")
         .ok()?
         .split_whitespace()
@@ -233,14 +233,14 @@ pub fn report(rows: &[SolverTime], curve: Option<&CurveTime>) -> String {
     out
 }
 
-/// Both grids and the curve.
-pub fn run(samples: usize) -> anyhow::Result<String> {
+/// Both grids and, with `curve`, the 13-load curve.
+pub fn run(samples: usize, curve: bool) -> anyhow::Result<String> {
     let rows = [(32.0, 0.5), (64.0, 2.0)]
         .into_iter()
         .map(|(z, target)| time_solver(z, samples, target))
         .collect::<anyhow::Result<Vec<_>>>()?;
-    let curve = time_curve(128.0, 1024)?;
-    Ok(report(&rows, Some(&curve)))
+    let curve = curve.then(|| time_curve(128.0, 1024)).transpose()?;
+    Ok(report(&rows, curve.as_ref()))
 }
 
 #[cfg(test)]

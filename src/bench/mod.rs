@@ -9,6 +9,7 @@
 
 pub mod contact;
 pub mod measured;
+pub mod plan;
 mod table;
 mod targets;
 
@@ -95,6 +96,22 @@ fn timings(passes: u32) -> anyhow::Result<Vec<String>> {
 /// `roughtui export` as a command of this executable against the NumPy
 /// peer).
 pub fn report(passes: u32, whole_commands: bool) -> anyhow::Result<String> {
+    let (mut out, rows) = slopes(passes)?;
+    out.push_str(&speed_targets(&rows, passes, whole_commands)?);
+    Ok(out)
+}
+
+/// The speed targets' table under its title.
+fn speed_targets(rows: &[Row], passes: u32, whole_commands: bool) -> anyhow::Result<String> {
+    Ok(format!(
+        "\nSpeed targets, measured in this run (times are wall clock on a machine that may \
+         be shared: compare the ratios):\n{}",
+        targets::table(rows, passes, whole_commands)?
+    ))
+}
+
+/// The slopes' table, its notes and the scene's timing; the table's rows.
+fn slopes(passes: u32) -> anyhow::Result<(String, Vec<Row>)> {
     let reference = slopes_reference(SLOPES_CSV)?;
     let grid: Vec<f64> = reference
         .iter()
@@ -171,23 +188,35 @@ pub fn report(passes: u32, whole_commands: bool) -> anyhow::Result<String> {
     for line in timings(passes)? {
         let _ = writeln!(out, "{line}");
     }
-    let _ = writeln!(
-        out,
-        "\nSpeed targets, measured in this run (times are wall clock on a machine that may \
-         be shared: compare the ratios):"
-    );
-    out.push_str(&targets::table(&rows, passes, whole_commands)?);
-    Ok(out)
+    Ok((out, rows))
 }
 
 /// ζ and H0/E steps timed per measured surface.
 const SURFACE_STEPS: usize = 41;
 
-/// `roughtui bench`: the slopes table and timings, then a synthetic
-/// 1024 × 1024 measured surface; with `--surface FILE`, that file instead.
-pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
+/// `roughtui bench`: first what it will run and about how long that takes
+/// ([`plan`]); then the slopes table and timings, the contact solver, its
+/// 13-load curve (not with `--quick`) and a synthetic 1024 × 1024 measured
+/// surface; with `--surface FILE`, that file instead. With `check_only`
+/// (`ROUGHTUI_CHECK_ONLY=1`) it says what it would run, reads the file it
+/// names, and stops.
+pub fn run(args: &BenchArgs, check_only: bool) -> anyhow::Result<()> {
+    let start = Instant::now();
+    let reference = slopes_reference(SLOPES_CSV)?;
+    print!("{}", plan::text(args, methods().len(), reference.len()));
+    if !check_only {
+        if let Some(l) = contact::load_average() {
+            println!("The load average is {l:.1} now.");
+        }
+    }
+    // The plan shows before the work starts, even through a pipe.
+    std::io::Write::flush(&mut std::io::stdout())?;
     if let Some(path) = &args.surface {
         let options = args.surface_options();
+        if check_only {
+            crate::surface::SurfaceSource::read(path, options)?;
+            return Ok(());
+        }
         let t = measured::time_file(path, options, SURFACE_STEPS)?;
         print!(
             "{}",
@@ -195,12 +224,45 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         );
         return Ok(());
     }
-    print!("{}", report(args.passes, true)?);
-    print!("{}", contact::run(3)?);
+    if check_only {
+        return Ok(());
+    }
+    println!();
+    // Each part's seconds, said at the end beside the plan's.
+    let mut took = Vec::new();
+    let mut part = Instant::now();
+    let mut lap = |took: &mut Vec<f64>| {
+        took.push(part.elapsed().as_secs_f64());
+        part = Instant::now();
+    };
+    let (text, rows) = slopes(args.passes)?;
+    print!("{text}");
+    lap(&mut took);
+    print!("{}", speed_targets(&rows, args.passes, true)?);
+    lap(&mut took);
+    print!("{}", contact::run(3, !args.quick)?);
+    lap(&mut took);
     let t = measured::time_synthetic(1024, SURFACE_STEPS)?;
     print!(
         "{}",
         measured::report("synthetic 1024 × 1024 map", &t, SURFACE_STEPS)
+    );
+    lap(&mut took);
+    let parts: Vec<String> = ["slopes", "targets", "contact solver", "map"]
+        .iter()
+        .zip(&took)
+        .map(|(what, s)| match s {
+            s if *s < 1.0 => format!("{what} {s:.2} s"),
+            s => format!("{what} {s:.1} s"),
+        })
+        .collect();
+    println!(
+        "\nroughtui bench took {:.1} s ({}){}.",
+        start.elapsed().as_secs_f64(),
+        parts.join(", "),
+        contact::load_average().map_or(String::new(), |l| format!(
+            "; the load average is {l:.1} now"
+        ))
     );
     Ok(())
 }

@@ -218,9 +218,21 @@ pub(crate) fn parse_grid(s: &str) -> Result<(usize, usize), String> {
     ))
 }
 
+/// `--sweep AXIS:FROM:TO`: the axis and both ends as typed, lengths with
+/// a unit as the value prompt takes them (`h-rms:1nm:1um`; a bare number
+/// in metres).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SweepArg {
+    pub axis: Axis,
+    pub from: f64,
+    pub to: f64,
+    /// The ends as typed, for the refusal that names them.
+    pub typed: [String; 2],
+}
+
 /// `--sweep AXIS:FROM:TO`; the range itself is checked against the axis's
 /// domain when the sweep is built.
-pub(crate) fn parse_sweep(s: &str) -> Result<(Axis, f64, f64), String> {
+pub(crate) fn parse_sweep(s: &str) -> Result<SweepArg, String> {
     let names = || {
         AxisArg::value_variants()
             .iter()
@@ -232,14 +244,19 @@ pub(crate) fn parse_sweep(s: &str) -> Result<(Axis, f64, f64), String> {
     let [axis, from, to] = parts[..] else {
         return Err("must be AXIS:FROM:TO, e.g. zeta:1:1e4".into());
     };
-    let axis = AxisArg::from_str(axis.trim(), true)
-        .map_err(|_| format!("unknown axis '{axis}': one of {}", names()))?;
-    let num = |v: &str| {
-        v.trim()
-            .parse::<f64>()
-            .map_err(|_| format!("'{v}' is not a number (AXIS:FROM:TO, e.g. zeta:1:1e4)"))
+    let axis: Axis = AxisArg::from_str(axis.trim(), true)
+        .map_err(|_| format!("unknown axis '{axis}': one of {}", names()))?
+        .into();
+    let end = |v: &str| {
+        crate::physical::value::parse_value(axis, v)
+            .map_err(|e| format!("{e} (AXIS:FROM:TO, e.g. zeta:1:1e4 or h-rms:1nm:1um)"))
     };
-    Ok((axis.into(), num(from)?, num(to)?))
+    Ok(SweepArg {
+        axis,
+        from: end(from)?,
+        to: end(to)?,
+        typed: [from.trim().to_string(), to.trim().to_string()],
+    })
 }
 
 /// `90s`, `30m`, `2h` (1 s to 24 h).

@@ -39,6 +39,19 @@ pub use sampling::{Grid, Hardness, LoadScale, Sampling, MAX_GRID, MIN_GRID};
 
 use crate::scene::State;
 
+/// What the contact view's chart shows (the explorer draws it; the class
+/// carries it to the students who follow).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Plot {
+    /// The areas against the load.
+    #[default]
+    Load,
+    /// `b`: the plastic share against ζ at the chosen load.
+    Share,
+    /// `i`: the initial slopes against ζ.
+    Slopes,
+}
+
 /// The seed of the random phases when none is given.
 pub const DEFAULT_SEED: u64 = 1;
 /// Loads of the contact view: p̄/H from 1e-3 to 1, four per decade.

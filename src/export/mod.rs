@@ -74,12 +74,13 @@ pub fn state_of(args: &ExportArgs) -> anyhow::Result<State> {
     if let Some(s) = args.size_effect {
         state.size_effect = s == OnOff::On;
     }
-    if let Some((axis, from, to)) = args.sweep {
-        for v in [from, to] {
-            crate::physical::check(axis, v, &crate::physical::short_number(v))
-                .map_err(|e| anyhow::anyhow!("--sweep: {e}"))?;
+    if let Some(sweep) = &args.sweep {
+        let axis = sweep.axis;
+        for (v, typed) in [sweep.from, sweep.to].into_iter().zip(&sweep.typed) {
+            crate::physical::check(axis, v, typed).map_err(|e| anyhow::anyhow!("--sweep: {e}"))?;
         }
-        state.sweep = Sweep::new(axis, from, to).map_err(|e| anyhow::anyhow!("--sweep: {e}"))?;
+        state.sweep =
+            Sweep::new(axis, sweep.from, sweep.to).map_err(|e| anyhow::anyhow!("--sweep: {e}"))?;
     }
     if scene != (state.model, state.moments, state.size_effect, state.sweep) {
         // The caption describes the scene as saved, its numbers those of

@@ -7,6 +7,7 @@
 //! - [`print`]: numbers, lengths, shares and parameters for the screen;
 //! - [`short_number`]: four significant digits for claims, labels and tables;
 //! - [`csv_number`]: numbers for CSV, every digit;
+//! - [`ascii`]: text in ASCII, every symbol by its name (Psi_P, zeta);
 //! - this module: each parameter's physical range, and the material values
 //!   (pressures, q0, L) in physical units.
 //!
@@ -20,6 +21,7 @@
 //! load. Every refusal names the parameter as the screen shows it and
 //! states the range, in at most 80 characters.
 
+pub mod ascii;
 pub mod csv_number;
 pub mod print;
 mod short;
@@ -27,7 +29,7 @@ pub mod value;
 
 use rough_model::Axis;
 
-pub use short::{clean, short_length, short_number};
+pub use short::{clean, short_length, short_number, typed_length};
 use value::parse_value;
 
 /// A closed range of accepted values with its words.

@@ -45,8 +45,23 @@ pub fn clean(v: f64) -> f64 {
 
 /// A length with an SI prefix, four significant digits: "19.82 nm".
 pub fn short_length(m: f64) -> String {
+    let (k, unit) = prefix(m);
+    format!("{} {unit}", short_number(m * k))
+}
+
+/// A length typed on the command line, echoed back with an SI prefix and
+/// the digits it was typed with (the shortest decimal of the scaled value,
+/// [`clean`]): `5e-8` (typed `50nm` or `0.05um`) is "50 nm", not
+/// "0.00000005 m".
+pub fn typed_length(m: f64) -> String {
+    let (k, unit) = prefix(m);
+    format!("{} {unit}", clean(m * k))
+}
+
+/// The SI prefix a length is shown in: its factor from metres and its unit.
+fn prefix(m: f64) -> (f64, &'static str) {
     let a = m.abs();
-    let (k, unit) = if a == 0.0 || !a.is_finite() {
+    if a == 0.0 || !a.is_finite() {
         (1.0, "m")
     } else if a < 1e-9 {
         (1e12, "pm")
@@ -58,13 +73,12 @@ pub fn short_length(m: f64) -> String {
         (1e3, "mm")
     } else {
         (1.0, "m")
-    };
-    format!("{} {unit}", short_number(m * k))
+    }
 }
 
 #[cfg(test)]
 mod tests {
-    use super::{clean, short_length, short_number};
+    use super::{clean, short_length, short_number, typed_length};
 
     #[test]
     fn clean_numbers_are_the_nearest_short_ones() {
@@ -85,6 +99,16 @@ mod tests {
         assert_eq!(short_length(6.283185307179586e-5), "62.83 µm");
         assert_eq!(short_length(7e-10), "700 pm");
         assert_eq!(short_length(0.0), "0 m");
+    }
+
+    #[test]
+    fn typed_lengths_keep_their_digits() {
+        assert_eq!(typed_length(5e-8), "50 nm");
+        assert_eq!(typed_length(0.05e-6), "50 nm");
+        assert_eq!(typed_length(1.2345678e-7), "123.45678 nm");
+        assert_eq!(typed_length(2.5e-6), "2.5 µm");
+        assert_eq!(typed_length(7e-10), "700 pm");
+        assert_eq!(typed_length(3.0), "3 m");
     }
 
     #[test]

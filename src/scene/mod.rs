@@ -3,8 +3,10 @@
 //! is shown as (view, map axis, ghost). Validated on every change
 //! ([`State::check`]); `snapshot` saves and loads it as RON, `presets`
 //! holds the paper's, the command line and the explorer edit it
-//! ([`set`], [`set_q0`]).
+//! ([`set`], [`set_q0`]). A caption is kept while the scene is the one it
+//! describes ([`KeptCaption`], [`same_scene`]).
 
+mod caption;
 mod edit;
 mod invalid;
 mod measured;
@@ -14,6 +16,7 @@ mod view;
 use rough_model::{Curves, Model, Moments, Params, Roughness, SceneSpec, Sweep};
 
 use crate::surface::SurfaceSource;
+pub use caption::{same_scene, swept_out, KeptCaption};
 pub use edit::{set, set_q0, set_value, HURST_ONE_SET};
 pub use invalid::{Invalid, TextProblem};
 pub use measured::{fitted_params, synthetic};

@@ -6,85 +6,9 @@ use std::sync::Arc;
 
 use rough_model::Axis;
 
+use crate::class::Shown;
 use crate::figure::View;
-use crate::scene::State;
 use crate::tui::app::{App, Message};
-use crate::tui::contact::ContactPane;
-
-/// What a lecturer's explorer shows: the scene (parameters, sweep, model,
-/// moments), the selected slider, the view, the map's y axis, and the
-/// header's file name and modified mark.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Shown {
-    pub state: State,
-    pub selected: usize,
-    pub view: View,
-    pub map_y: Option<Axis>,
-    pub modified: bool,
-    pub file: Option<String>,
-    /// The contact view's load, plot, seeds and table.
-    pub contact: ContactShown,
-    /// The lesson's step, when the lecturer leads one.
-    pub step: Option<crate::lesson::StepLine>,
-}
-
-impl Shown {
-    pub fn of(app: &App) -> Shown {
-        Shown {
-            state: app.state.clone(),
-            selected: app.selected,
-            view: app.view,
-            map_y: app.map_y,
-            modified: app.modified,
-            file: app.file.clone(),
-            contact: ContactShown::of(&app.contact),
-            step: app.class.step.clone(),
-        }
-    }
-
-    /// Makes `app` show this.
-    pub fn apply(&self, app: &mut App) {
-        let c = &mut app.contact;
-        let moved = ContactShown::of(c) != self.contact;
-        self.contact.set(c);
-        app.show(&self.state, self.selected, self.view, self.map_y);
-        if moved {
-            crate::tui::app::update(app, Message::Tick);
-        }
-        app.modified = self.modified;
-        app.file.clone_from(&self.file);
-        app.class.step.clone_from(&self.step);
-    }
-}
-
-/// What the contact view shows of a scene: the load (`[ ]`), the plot
-/// (`b`, `i`), how many seeds it averages over (`R`), whether the
-/// convergence table is up (`t`) and where the hardness applies (`A`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct ContactShown {
-    pub load: usize,
-    pub plot: crate::tui::contact::Plot,
-    pub seeds: u32,
-    pub table: bool,
-    pub hardness: crate::contact::Hardness,
-}
-
-impl ContactShown {
-    pub fn of(c: &ContactPane) -> ContactShown {
-        ContactShown {
-            load: c.load,
-            plot: c.plot,
-            seeds: c.seeds,
-            table: c.table,
-            hardness: c.sampling.hardness,
-        }
-    }
-
-    fn set(&self, c: &mut ContactPane) {
-        (c.load, c.plot, c.seeds, c.table) = (self.load, self.plot, self.seeds, self.table);
-        c.sampling.hardness = self.hardness;
-    }
-}
 
 /// The scene a student's explorer shows, by identity: a lecturer's state
 /// as published, or a poll's scene with the marker's slider selected.
@@ -93,7 +17,7 @@ impl ContactShown {
 #[derive(Clone, Debug)]
 pub enum Scene {
     Lecturer(Arc<Shown>),
-    Poll(Arc<super::class::Poll>),
+    Poll(Arc<crate::class::Poll>),
 }
 
 impl PartialEq for Scene {
@@ -110,9 +34,9 @@ impl Scene {
     /// Makes `app` show this scene.
     pub fn apply(&self, app: &mut App) {
         match self {
-            Scene::Lecturer(shown) => shown.apply(app),
+            Scene::Lecturer(shown) => app.follow(shown),
             Scene::Poll(p) => {
-                p.scene.apply(app);
+                app.follow(&p.scene);
                 // The marker's slider selected.
                 if let Some(i) = Axis::ALL.iter().position(|a| *a == p.question.axis) {
                     app.selected = i;
@@ -320,13 +244,13 @@ mod tests {
         let mut lecturer = fig("fig2");
         update(&mut lecturer, Message::LoadPreset(0));
         assert!(!lecturer.modified);
-        Shown::of(&lecturer).apply(&mut student);
+        student.follow(&lecturer.shown());
         assert_eq!(student.state, lecturer.state);
         assert!(!student.modified, "stale modified mark after re-follow");
         // A lecturer's change marks the student's header as well.
         update(&mut lecturer, Message::ToggleModel);
         lecturer.file = Some("class.ron".into());
-        Shown::of(&lecturer).apply(&mut student);
+        student.follow(&lecturer.shown());
         assert!(student.modified);
         assert_eq!(student.file.as_deref(), Some("class.ron"));
     }
@@ -347,7 +271,7 @@ mod tests {
         update(&mut lecturer, Message::ContactSeeds);
         assert_eq!(lecturer.contact.seeds, 16);
         update(&mut lecturer, Message::ContactLoad { up: true });
-        Shown::of(&lecturer).apply(&mut student);
+        student.follow(&lecturer.shown());
         assert_eq!(student.view, View::Contact);
         assert_eq!((student.contact.seeds, student.contact.load), (16, 5));
         assert_eq!(student.contact.seeds_asked(), 16);
@@ -355,7 +279,7 @@ mod tests {
         // The table, and back.
         update(&mut lecturer, Message::ContactTable);
         assert!(lecturer.contact.table);
-        Shown::of(&lecturer).apply(&mut student);
+        student.follow(&lecturer.shown());
         assert!(student.contact.table);
         let tasks = |a: &App| -> Vec<_> {
             a.contact
@@ -373,7 +297,7 @@ mod tests {
         assert_eq!(tasks(&student), tasks(&lecturer));
         update(&mut lecturer, Message::ContactSeeds);
         update(&mut lecturer, Message::ContactTable);
-        Shown::of(&lecturer).apply(&mut student);
+        student.follow(&lecturer.shown());
         assert!(!student.contact.table);
         assert_eq!(student.contact.seeds, 1);
         assert!(student.contact.seed_tasks.is_empty());
@@ -381,7 +305,7 @@ mod tests {
         // follower solves the lecturer's tasks, each with its law.
         update(&mut lecturer, Message::ToggleSizeEffect);
         update(&mut lecturer, Message::ContactHardness);
-        Shown::of(&lecturer).apply(&mut student);
+        student.follow(&lecturer.shown());
         assert_eq!(
             student.contact.sampling.hardness,
             crate::contact::Hardness::Asperity

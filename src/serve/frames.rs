@@ -15,7 +15,7 @@ use std::sync::{Arc, Mutex, OnceLock};
 use ratatui::buffer::Buffer;
 
 use super::follow::Scene;
-use super::session::Seat;
+use super::seat::Seat;
 use super::term;
 use crate::figure::View;
 use crate::tui::app::Look;

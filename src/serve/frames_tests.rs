@@ -10,8 +10,8 @@ use std::time::Duration;
 use tokio::sync::{mpsc, watch};
 
 use super::*;
+use crate::class::Class;
 use crate::serve::auth::{LecturerKeys, Role};
-use crate::serve::class::Class;
 use crate::serve::code::WrongCodes;
 use crate::serve::limits::Limits;
 use crate::serve::log::Log;

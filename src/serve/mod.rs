@@ -7,9 +7,7 @@
 
 pub mod auth;
 pub mod banner;
-pub mod class;
 pub mod code;
-pub mod csv;
 pub mod follow;
 pub mod frames;
 pub mod handler;
@@ -20,6 +18,7 @@ pub mod log;
 pub mod output;
 pub mod panel;
 pub mod poll;
+pub mod seat;
 pub mod session;
 pub mod stream;
 pub mod term;
@@ -38,11 +37,10 @@ use russh::{MethodKind, MethodSet};
 use tokio::net::TcpListener;
 use tokio::sync::{watch, Notify};
 
+use crate::class::{Class, Shown};
 use crate::scene::State;
 use auth::LecturerKeys;
-use class::Class;
 use code::{ClassCode, WrongCodes};
-use follow::Shown;
 use limits::{Full, Limits};
 use log::Log;
 
@@ -81,7 +79,7 @@ pub struct Options {
     /// `--marker`: every session's glyphs, instead of each client's own.
     pub marker: Option<crate::tui::glyphs::Glyphs>,
     /// `--lesson`: the lesson the lecturer leads.
-    pub lesson: Option<crate::lesson::Lesson>,
+    pub lesson: Option<crate::class::Lesson>,
     /// `--cell`, `--contact-grid`, `--per-wavelength`, `--hardness`: every
     /// session's contact simulation.
     pub simulate: crate::cli::Simulate,
@@ -120,7 +118,7 @@ pub struct Shared {
     /// The poll CSVs written.
     saved: Mutex<Vec<PathBuf>>,
     /// The lesson the lecturer leads, and its polls' CSV once written.
-    pub lesson: Option<Arc<crate::lesson::Lesson>>,
+    pub lesson: Option<Arc<crate::class::Lesson>>,
     pub lesson_csv: Mutex<Option<PathBuf>>,
     /// Moves on each lecturer's `F`: every student follows again.
     pub all_follow: watch::Sender<u64>,
@@ -140,12 +138,11 @@ impl Shared {
     fn lecturer_joined(&self, app: &mut crate::tui::app::App) {
         self.lecturers.fetch_add(1, Ordering::SeqCst);
         if let Some(lesson) = &self.lesson {
-            app.class.lesson = Some(crate::lesson::LessonAt::new(Arc::clone(lesson), 0));
-            crate::lesson::show(app);
+            crate::tui::class::start_lesson(app, Arc::clone(lesson));
         }
         let last = self.last.lock().ok().and_then(|l| l.clone());
         if let Some(shown) = last {
-            shown.apply(app);
+            app.follow(&shown);
             // Back where the lesson was.
             if let (Some(l), Some(step)) = (app.class.lesson.as_mut(), &shown.step) {
                 l.at = step.at - 1;
@@ -155,7 +152,7 @@ impl Shared {
     }
 
     fn publish(&self, app: &crate::tui::app::App) {
-        let shown = Shown::of(app);
+        let shown = app.shown();
         if let Ok(mut last) = self.last.lock() {
             *last = Some(shown.clone());
         }

@@ -12,12 +12,11 @@
 use std::sync::Arc;
 use std::time::SystemTime;
 
-use super::class::Poll;
 use super::follow::{Scene, FOLLOWING};
-use super::session::Seat;
+use super::seat::Seat;
+use crate::class::{Ask, Asked, Poll, Question, Tally, NOWHERE, UNICODE};
 use crate::snapshot;
 use crate::tui::app::Message;
-use crate::tui::class::{Ask, Asked, Question, UNICODE};
 
 /// A student's status when a poll opens.
 pub const PREDICT: &str = "predict: ←→ move the marker (⇧ fine), Enter answers";
@@ -62,13 +61,13 @@ pub(super) fn on_poll(s: &mut Seat, poll: Option<Arc<Poll>>) -> bool {
         });
         app.set_status(PREDICT, false);
         s.follow.on_poll();
-        s.note(super::class::Note::Following(false));
+        s.note(crate::class::Note::Following(false));
         return true;
     }
     // The lecturer showed the answers to everyone (`d`).
     let mut shown = false;
     if let (Some(answers), None) = (&p.answers, &app.class.tally) {
-        app.class.tally = Some(crate::tui::class::Tally {
+        app.class.tally = Some(Tally {
             question: p.question,
             answers: answers.to_vec(),
             asked: answers.len(),
@@ -114,20 +113,11 @@ pub(super) fn on_key(s: &mut Seat, msg: Message) {
                 Some(p) if !p.revealed => {
                     // The lecturer may have moved on since asking: the
                     // truth is the scene's as asked, and says so.
-                    let changed = !crate::tui::caption::same_scene(&app.state, &p.scene.state);
+                    let changed = !crate::scene::same_scene(&app.state, &p.scene.state);
                     class.reveal(changed);
                     // The lesson's step has had its poll: its answer and
-                    // its claims show (and, from now on, those of the
-                    // steps before it that hid theirs for this poll).
-                    if let Some(step) = app.class.step.as_mut() {
-                        step.pending = None;
-                        step.claims_hidden = false;
-                        if step.left.is_none() {
-                            if let Some(at) = app.class.lesson.as_mut() {
-                                at.mark_revealed();
-                            }
-                        }
-                    }
+                    // its claims show.
+                    app.class.step_revealed();
                     let q = &p.question;
                     let saved = match to_lesson_csv(s) {
                         Some(Ok(path)) => format!("answers added to {}", path.display()),
@@ -177,12 +167,7 @@ pub(super) fn on_key(s: &mut Seat, msg: Message) {
 
 /// The poll of a lesson's step on a value, if the lecturer is at one.
 fn step_value(app: &crate::tui::app::App) -> Option<Question> {
-    if app.class.step.as_ref().is_some_and(|s| s.left.is_some()) {
-        return None;
-    }
-    let q = app.class.lesson.as_ref()?.step().poll?;
-    let own = matches!(q.ask, Ask::Typed | Ask::ShareEver);
-    (own && q.axis == app.state.sweep.axis()).then_some(q)
+    app.class.step_poll(app.state.sweep.axis())
 }
 
 /// In a lesson, the revealed poll's rows appended to the lesson's one CSV
@@ -195,7 +180,7 @@ fn to_lesson_csv(s: &Seat) -> Option<anyhow::Result<std::path::PathBuf>> {
     let mut slot = s.shared.lesson_csv.lock().ok()?;
     let path = match slot.as_ref() {
         Some(p) => p.clone(),
-        None => match crate::lesson::csv_path(&s.ex.app.save_dir, lesson) {
+        None => match crate::class::lesson::csv_path(&s.ex.app.save_dir, lesson) {
             Ok(p) => {
                 s.shared.saved(p.clone());
                 *slot = Some(p.clone());
@@ -224,7 +209,7 @@ pub(super) fn after_lecturer_keys(s: &mut Seat) {
 }
 
 fn open(s: &mut Seat, q: Question) {
-    let shown = super::follow::Shown::of(&s.ex.app);
+    let shown = s.ex.app.shown();
     let class = &s.shared.class;
     class.open(q, shown);
     let n = class.students();
@@ -264,7 +249,7 @@ fn answer(s: &mut Seat, nowhere: bool) {
         return;
     }
     let v = if nowhere {
-        crate::tui::class::NOWHERE
+        NOWHERE
     } else {
         app.state.params.get(q.axis)
     };
@@ -323,7 +308,7 @@ pub(super) fn save_open(shared: &super::Shared) -> Option<String> {
                 .poll()
                 .map_or("class".into(), |p| p.scene.state.name.clone());
             let stem = snapshot::default_stem(&format!("{name}-poll"), SystemTime::now());
-            let csv = format!("{}\n{rows}", super::class::CSV_HEADER);
+            let csv = format!("{}\n{rows}", crate::class::CSV_HEADER);
             let path = snapshot::save_file_new(&dir, &stem, "csv", "poll answers", csv.as_bytes());
             if let Ok(p) = &path {
                 shared.saved(p.clone());

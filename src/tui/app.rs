@@ -7,8 +7,6 @@ use std::time::SystemTime;
 
 use rough_model::{Axis, Curves, SceneSpec};
 
-use super::caption::{self, KeptCaption};
-use super::class::Classroom;
 use super::ghost::Ghost;
 use super::layout::Regions;
 use super::line_edit::LineEdit;
@@ -24,12 +22,14 @@ pub use super::status::Hint;
 pub use super::steps::{default_range, step_value, HURST_STEPS, LOG_STEPS};
 use super::theme::Theme;
 use super::views::overlap::Cover;
+use crate::class::Classroom;
 use crate::figure::{render_svg, shown_claims, Claim, FigureOptions, MapCache, MapSpec, View};
 use crate::presets;
-use crate::scene::State;
+use crate::scene::{swept_out, KeptCaption, State};
 use crate::snapshot;
 
 mod look;
+mod shown;
 pub use look::Look;
 
 #[derive(Clone, Debug, PartialEq)]
@@ -234,7 +234,7 @@ impl App {
 
     fn curve_key(&self, points: usize) -> CurveKey {
         let mut spec = self.state.scene_spec(Curves::ALL, points);
-        spec.base = caption::swept_out(&self.state, spec.base);
+        spec.base = swept_out(&self.state, spec.base);
         CurveKey { spec }
     }
 
@@ -539,7 +539,7 @@ pub fn update(app: &mut App, msg: Message) {
         }
         Message::ClassChoose { down } => super::class::choose(app, down),
         Message::RemoveStudent => super::class::remove(app),
-        Message::LessonStep { next } => crate::lesson::step(app, next),
+        Message::LessonStep { next } => super::class::step(app, next),
         Message::OpenScenes
         | Message::SceneMove { .. }
         | Message::ScenePick

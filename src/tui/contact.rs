@@ -12,6 +12,7 @@ use rough_model::Model;
 use crate::contact::engine::{Engine, Outcome, Progress, Task, Ticket, Waker};
 use crate::contact::measured::{self, Fetch};
 use crate::contact::slopes::{Run, LIGHT};
+pub use crate::contact::Plot;
 use crate::contact::{Sampling, Stat, DEFAULT_SEED, MAX_GRID};
 use crate::scene::State;
 
@@ -20,18 +21,6 @@ mod keys;
 mod request;
 pub use keys::{on_key, picture, save};
 pub use request::{share_sets, Set};
-
-/// What the view's chart shows.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Plot {
-    /// The areas against the load.
-    #[default]
-    Load,
-    /// `b`: the plastic share against ζ at the chosen load.
-    Share,
-    /// `i`: the initial slopes against ζ.
-    Slopes,
-}
 
 /// Loads of the contact view, p̄/H_use: 1e-3 to 1, four per decade.
 pub const LOADS: usize = 13;

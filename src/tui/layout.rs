@@ -4,8 +4,9 @@
 
 use ratatui::layout::{Constraint, Layout, Rect};
 
-/// The smallest terminal the explorer draws in; below it, a short message.
-pub const MIN_SIZE: (u16, u16) = (80, 24);
+/// The smallest terminal the explorer draws in; below it, a short message
+/// (the class counts the students' terminals below it).
+pub use crate::class::MIN_SIZE;
 
 /// Rows the sliders, readout and chart keep when a lesson's caption takes
 /// more rows than usual (at 80×24, a caption of up to 7 rows).

@@ -22,6 +22,7 @@ pub mod prompt;
 pub mod qr;
 pub mod readout;
 pub mod scenes;
+pub mod screen;
 pub mod session;
 pub mod status;
 pub mod steps;
@@ -57,7 +58,7 @@ pub fn run(
     state: State,
     file: Option<&std::path::Path>,
     marker: Option<glyphs::Glyphs>,
-    lesson: Option<crate::lesson::Lesson>,
+    lesson: Option<crate::class::Lesson>,
     simulate: &crate::cli::Simulate,
 ) -> anyhow::Result<()> {
     let mut frame_log = match std::env::var_os("ROUGHTUI_FRAME_LOG") {
@@ -73,38 +74,13 @@ pub fn run(
         .ok()
         .and_then(|s| s.chars().next());
 
-    let mut caps = Caps::from_env();
     let var = |k: &str| std::env::var(k).ok();
-    let why = match marker {
-        Some(m) => {
-            caps.glyphs = m;
-            None
-        }
-        None => caps.reason(var, &var("TERM").unwrap_or_default()),
-    };
+    let (caps, why) = caps_for(marker, var);
     let out = term::setup()?;
     let _guard = term::Guard;
     let (w, h) = crossterm::terminal::size()?;
     let mut session = Session::new(out, state, caps.theme(), (w, h))?;
-    // --cell, --contact-grid, --per-wavelength, --hardness: the contact
-    // view's simulation (one longest wavelength unless --cell says).
-    session.app.contact.sampling = simulate.sampling(session.app.contact.sampling);
-    session.app.file = file
-        .and_then(|f| f.file_name())
-        .map(|f| f.to_string_lossy().into_owned());
-    if let Some(lesson) = lesson {
-        // Rehearsing a lesson alone: its first step, n / N to go on.
-        session.app.class.lesson =
-            Some(crate::lesson::LessonAt::new(std::sync::Arc::new(lesson), 0));
-        crate::lesson::show(&mut session.app);
-    }
-    if let Some(why) = why {
-        let g = caps.glyphs;
-        session.app.set_status(
-            format!("drawing in {} ({why}) · M switches", g.describe()),
-            false,
-        );
-    }
+    prepare(&mut session.app, caps, why, file, lesson, simulate);
     draw(&mut session)?;
     loop {
         let (msg, arrived) = loop {
@@ -139,6 +115,71 @@ pub fn run(
         }
     }
     Ok(())
+}
+
+/// The scene and the lesson the explorer's command line names, checked
+/// as `main` checks them (the documentation's screens start the same way).
+pub fn start_state(cli: &crate::cli::Cli) -> anyhow::Result<(State, Option<crate::class::Lesson>)> {
+    let lesson = cli
+        .lesson
+        .as_deref()
+        .map(crate::class::lesson::read)
+        .transpose()?;
+    let state = match &lesson {
+        Some(l) => l.steps[0].state.clone(),
+        None => crate::cli::setup::load_source(&cli.source, &cli.setup)?,
+    };
+    cli.simulate.check(&state)?;
+    Ok((state, lesson))
+}
+
+/// The terminal's capabilities from the variables `var` gives (the locale,
+/// TERM, COLORTERM, NO_COLOR), the glyphs `marker` if given; and why the
+/// drawing is not braille, if it is not and nobody asked for it.
+pub fn caps_for(
+    marker: Option<glyphs::Glyphs>,
+    var: impl Fn(&str) -> Option<String>,
+) -> (Caps, Option<String>) {
+    let mut caps = Caps::local(&var);
+    let why = match marker {
+        Some(m) => {
+            caps.glyphs = m;
+            None
+        }
+        None => caps.reason(&var, &var("TERM").unwrap_or_default()),
+    };
+    (caps, why)
+}
+
+/// What the explorer sets on a new session's app before its first frame:
+/// the contact view's simulation from `--cell` and the like, the file's
+/// name in the header, a lesson's first step, and why it draws in what it
+/// draws in.
+pub fn prepare(
+    app: &mut app::App,
+    caps: Caps,
+    why: Option<String>,
+    file: Option<&std::path::Path>,
+    lesson: Option<crate::class::Lesson>,
+    simulate: &crate::cli::Simulate,
+) {
+    // --cell, --contact-grid, --per-wavelength, --hardness: the contact
+    // view's simulation (one longest wavelength unless --cell says).
+    app.contact.sampling = simulate.sampling(app.contact.sampling);
+    app.file = file
+        .and_then(|f| f.file_name())
+        .map(|f| f.to_string_lossy().into_owned());
+    if let Some(lesson) = lesson {
+        // Rehearsing a lesson alone: its first step, n / N to go on.
+        class::start_lesson(app, std::sync::Arc::new(lesson));
+    }
+    if let Some(why) = why {
+        let g = caps.glyphs;
+        app.set_status(
+            format!("drawing in {} ({why}) · M switches", g.describe()),
+            false,
+        );
+    }
 }
 
 /// One frame, written whole before a signal may restore the terminal.

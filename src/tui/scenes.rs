@@ -1,10 +1,8 @@
-//! The lecturer's scene list (`o`): the presets, the snapshots (.ron) in
-//! the save folder that load, and the lessons there (a lesson is listed as
-//! one, and picking it leads the class through it from its first step);
+//! The lecturer's scene list (`o`, [`crate::class::scenes`]) on screen:
 //! one to pick with ↑↓ and Enter; in a served class every follower gets
-//! the scene picked. A `.ron` file that is neither is not listed.
+//! the scene picked; a lesson picked leads the class through it from its
+//! first step.
 
-use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use ratatui::buffer::Buffer;
@@ -13,58 +11,8 @@ use ratatui::text::Line;
 use ratatui::widgets::{Block, Borders, Clear, Paragraph, Widget};
 
 use super::app::{App, Message};
+use crate::class::scenes::{list, Source};
 use crate::presets;
-
-/// The most snapshots listed (the first by name).
-pub const MAX_FILES: usize = 200;
-
-#[derive(Clone, Debug, PartialEq)]
-pub enum Source {
-    Preset(usize),
-    File(PathBuf),
-    Lesson(Arc<crate::lesson::Lesson>),
-}
-
-#[derive(Clone, Debug, PartialEq)]
-pub struct SceneList {
-    pub entries: Vec<(String, Source)>,
-    pub selected: usize,
-}
-
-/// The presets, then the `.ron` files in `dir` by name that load: as
-/// snapshots, or as lessons.
-pub fn list(dir: &Path) -> SceneList {
-    let mut entries: Vec<(String, Source)> = presets::PRESETS
-        .iter()
-        .enumerate()
-        .map(|(i, (name, _))| (format!("preset {name}"), Source::Preset(i)))
-        .collect();
-    let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
-        .map(|rd| {
-            rd.filter_map(Result::ok)
-                .map(|e| e.path())
-                .filter(|p| p.is_file() && p.extension().is_some_and(|e| e == "ron"))
-                .collect()
-        })
-        .unwrap_or_default();
-    files.sort();
-    files.truncate(MAX_FILES);
-    entries.extend(files.into_iter().filter_map(|p| {
-        let name = p
-            .file_name()
-            .map_or(String::new(), |n| n.to_string_lossy().into_owned());
-        if crate::snapshot::read_file(&p).is_ok() {
-            return Some((name, Source::File(p)));
-        }
-        let lesson = crate::lesson::read(&p).ok()?;
-        let title = format!("lesson {name}: {}", lesson.title);
-        Some((title, Source::Lesson(Arc::new(lesson))))
-    }));
-    SceneList {
-        entries,
-        selected: 0,
-    }
-}
 
 /// The list's messages.
 pub fn update(app: &mut App, msg: Message) {
@@ -92,8 +40,7 @@ pub fn update(app: &mut App, msg: Message) {
                 Source::Preset(i) => presets::load(presets::PRESETS[*i].0),
                 Source::File(p) => crate::snapshot::load_file(p),
                 Source::Lesson(lesson) => {
-                    app.class.lesson = Some(crate::lesson::LessonAt::new(Arc::clone(lesson), 0));
-                    crate::lesson::show(app);
+                    super::class::start_lesson(app, Arc::clone(lesson));
                     return;
                 }
             };
@@ -105,7 +52,7 @@ pub fn update(app: &mut App, msg: Message) {
                     }
                     // Away from the lesson's step, which says so.
                     let scene = name.strip_prefix("preset ").unwrap_or(&name);
-                    crate::lesson::leave(app, scene);
+                    app.class.leave_lesson(scene);
                     app.set_status(format!("loaded {name}"), false);
                 }
                 Err(e) => app.set_status(format!("{e:#}"), true),

@@ -13,9 +13,9 @@ use ratatui::widgets::Widget;
 use ratatui::{Terminal, TerminalOptions, Viewport};
 
 use super::app::{update, App, Message};
-use super::glyphs::ascii_name;
 use super::keys;
 use super::theme::Theme;
+use crate::physical::ascii::ascii_name;
 use crate::scene::State;
 
 /// An explorer drawing into `W` at a fixed size that only [`Session::resize`]

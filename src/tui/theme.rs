@@ -228,12 +228,6 @@ impl Theme {
         Theme::new(self.glyphs, self.palette, color)
     }
 
-    /// The theme for this process's terminal: its locale, TERM, COLORTERM
-    /// and NO_COLOR ([`super::caps`]).
-    pub fn from_env() -> Theme {
-        super::caps::Caps::from_env().theme()
-    }
-
     /// The regime word: bold, no colour, because the chart's colours name
     /// curves (green Persson, red total, blue plastic) and must not mean a
     /// regime too.

@@ -7,6 +7,7 @@ pub mod browser;
 pub mod cli;
 pub mod client;
 pub mod contact;
+pub mod docs;
 pub mod lecture;
 pub mod measured;
 pub mod room;

@@ -3,6 +3,7 @@
 
 use plotters::prelude::*;
 
+use super::wrap::wrap;
 use super::{plot_err, Area, CAPTION_W, CLAIMS, LINE_H};
 use crate::figure::{scene_text, ClaimKind, FigureOptions, View};
 use crate::scene::State;
@@ -122,23 +123,4 @@ pub(super) fn caption(area: &Area, lines: &[(String, RGBColor)]) -> anyhow::Resu
         y += LINE_H as i32;
     }
     Ok(())
-}
-
-/// `text` in lines of at most `width` characters, broken at spaces.
-pub(super) fn wrap(text: &str, width: usize) -> Vec<String> {
-    let mut lines: Vec<String> = vec![];
-    let mut cur = String::new();
-    for w in text.split_whitespace() {
-        if !cur.is_empty() && cur.chars().count() + 1 + w.chars().count() > width {
-            lines.push(std::mem::take(&mut cur));
-        }
-        if !cur.is_empty() {
-            cur.push(' ');
-        }
-        cur.push_str(w);
-    }
-    if !cur.is_empty() {
-        lines.push(cur);
-    }
-    lines
 }

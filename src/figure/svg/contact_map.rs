@@ -11,9 +11,9 @@ use std::fmt::Write as _;
 
 use plotters::prelude::*;
 
-use super::caption::wrap;
 use super::contact::NODE_ELASTIC;
 use super::legend::Placed;
+use super::wrap::wrap;
 use super::{fine, plot_err, render, under, Area, PLASTIC};
 use crate::physical::{short_length, short_number};
 use crate::scene::State;

@@ -73,7 +73,7 @@ impl Legend {
     fn rows(&self) -> Vec<Vec<String>> {
         self.entries
             .iter()
-            .map(|e| super::caption::wrap(&e.label, MAX_CHARS))
+            .map(|e| super::wrap::wrap(&e.label, MAX_CHARS))
             .collect()
     }
 

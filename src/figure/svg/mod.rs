@@ -13,6 +13,7 @@ mod map;
 mod moments;
 mod plot;
 mod spectrum;
+mod wrap;
 
 use anyhow::anyhow;
 use plotters::coord::types::RangedCoordf64;
@@ -23,13 +24,14 @@ use super::{axis_unit, FigureOptions, View};
 use crate::figure::scene_text;
 use crate::physical::short_number;
 use crate::scene::State;
-use caption::{caption, caption_lines, wrap, SCENE};
+use caption::{caption, caption_lines, SCENE};
 pub use contact::{
     contact_span, render_contact, render_contact_slopes, render_contact_sweep, sweep_span,
     ContactLoads, ContactSlopes, ContactSweep,
 };
 pub use contact_map::{render_contact_map, ContactMap};
 use legend::{Legend, Placed, Sample};
+use wrap::wrap;
 
 /// Picture size in pixels (SVG user units).
 pub const SIZE: (u32, u32) = (900, 600);
@@ -529,7 +531,7 @@ fn x_scale(state: &State) -> Scale {
 
 #[cfg(test)]
 mod tests {
-    use super::caption::wrap;
+    use super::wrap::wrap;
 
     #[test]
     fn legend_says_where_a_curve_hides() {

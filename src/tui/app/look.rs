@@ -7,7 +7,7 @@
 //! it).
 
 use super::{App, Mode, Status};
-use crate::tui::class::{Asked, Classroom, Tally};
+use crate::class::{Asked, Classroom, Tally};
 use crate::tui::theme::Theme;
 
 /// An explorer's own part of its screen (see the module's doc).

@@ -12,9 +12,9 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Clear, Paragraph, Widget};
 
 use super::chart;
+use crate::class::{duration, Asked, ClassGlyphs, Tally, ASCII, UNICODE};
 use crate::figure::View;
 use crate::tui::app::App;
-use crate::tui::class::{duration, ClassGlyphs, Tally, ASCII, NOWHERE, UNICODE};
 use crate::tui::glyphs::Glyphs;
 use crate::tui::plots::to_plot;
 
@@ -47,8 +47,7 @@ pub fn class_line(app: &App) -> Option<Line<'static>> {
 }
 
 /// A student's poll line, which stands in for the claims while a poll is on.
-pub fn poll_line(app: &App, width: usize) -> Option<Line<'static>> {
-    let a = app.class.asked.as_ref()?;
+pub fn poll_line(app: &App, a: &Asked, width: usize) -> Line<'static> {
     let style = if a.revealed {
         app.theme.ok
     } else {
@@ -59,16 +58,12 @@ pub fn poll_line(app: &App, width: usize) -> Option<Line<'static>> {
     if Span::raw(&line).width() > width {
         line = text(app, &a.line(&UNICODE, width.saturating_sub(8)));
     }
-    Some(Line::styled(line, style))
+    Line::styled(line, style)
 }
 
 /// The lecturer's line in place of the claims while a poll is open
 /// ("poll open: 23/31 answered"): the screen is on the projector.
-pub fn open_poll_line(app: &App) -> Option<Line<'static>> {
-    let t = app.class.view.as_ref()?.poll.as_ref()?;
-    if t.revealed {
-        return None;
-    }
+pub fn open_poll_line(app: &App, t: &Tally) -> Line<'static> {
     let line = format!(
         "poll open: {}/{} answered{}v reveals{}C cancels",
         t.answers.len(),
@@ -76,7 +71,7 @@ pub fn open_poll_line(app: &App) -> Option<Line<'static>> {
         UNICODE.sep,
         UNICODE.sep
     );
-    Some(Line::styled(text(app, &line), app.theme.title))
+    Line::styled(text(app, &line), app.theme.title)
 }
 
 fn bar_style(app: &App) -> Style {
@@ -118,7 +113,7 @@ pub fn render_poll(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     let dots = app.theme.glyphs.dots();
     let axis = t.question.axis;
     let along = app.state.sweep.axis() == axis && app.view != View::Load;
-    let mut label = count_label(t, &UNICODE);
+    let mut label = format!(" {} ", t.count(&UNICODE));
     if !along {
         label.push_str(&format!("· on a chart along {} ", axis.symbol()));
     }
@@ -172,28 +167,6 @@ pub fn render_poll(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
                 }
             }
         }
-    }
-}
-
-/// "23/31 answered", or "ζ = 321.5 · 23 answers" after the reveal.
-fn count_label(t: &Tally, g: &ClassGlyphs) -> String {
-    if t.revealed {
-        let q = &t.question;
-        let n = t.answers.len();
-        let nowhere = t.answers.iter().filter(|a| **a == NOWHERE).count();
-        let nowhere = if nowhere > 0 {
-            format!(" ({nowhere} nowhere)")
-        } else {
-            String::new()
-        };
-        format!(
-            " {}{}{n} {}{nowhere} ",
-            q.value(q.truth),
-            g.sep,
-            if n == 1 { "answer" } else { "answers" }
-        )
-    } else {
-        format!(" {}/{} answered ", t.answers.len(), t.asked)
     }
 }
 

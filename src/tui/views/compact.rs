@@ -9,9 +9,9 @@ use ratatui::text::Line;
 use ratatui::widgets::{Paragraph, Widget};
 
 use super::side::slider_bar;
+use crate::class::UNICODE;
 use crate::physical::print::{fmt_param, fmt_short};
 use crate::tui::app::App;
-use crate::tui::class::UNICODE;
 use crate::tui::wrap::wrap;
 
 /// The smallest terminal the compact screen draws in.

@@ -28,6 +28,7 @@ use super::glyphs::Glyphs;
 use super::keys;
 use super::layout::{Regions, MIN_SIZE};
 use super::{help, status};
+use crate::class::{ClaimsRow, UNICODE};
 use crate::figure::{Claim, View};
 use crate::physical::print::fmt_short;
 use crate::tui::wrap::wrap;
@@ -182,39 +183,31 @@ fn render_caption(app: &App, area: Rect, buf: &mut Buffer) {
             .map(|l| Line::styled(l, t.dim)),
     );
     lines.resize(usize::from(area.height.saturating_sub(1)), Line::raw(""));
-    if let Some(poll) = class::poll_line(app, usize::from(area.width)) {
-        lines.push(poll);
-        Paragraph::new(lines).render(area, buf);
-        return;
-    }
-    if let Some(line) = class::open_poll_line(app) {
-        lines.push(line);
-        Paragraph::new(lines).render(area, buf);
-        return;
-    }
-    if let Some(q) = app.class.hidden_question() {
-        // A lesson's step about to poll: its question, not its answer.
-        let how = if app.class.view.is_some() || app.class.lesson.is_some() {
-            " · v opens the poll"
-        } else {
-            ""
-        };
-        let text = format!(
-            "this step asks: {}{how}",
-            q.text(&crate::tui::class::UNICODE)
-        );
-        lines.push(Line::styled(g.text(&text).into_owned(), t.title));
-        Paragraph::new(lines).render(area, buf);
-        return;
-    }
-    let claims = if app.class.claims_hidden() {
+    let last = match app.class.claims_row() {
+        ClaimsRow::Asked(a) => class::poll_line(app, a, usize::from(area.width)),
+        ClaimsRow::Open(tally) => class::open_poll_line(app, tally),
+        ClaimsRow::Asks(q) => {
+            // A lesson's step about to poll: its question, not its answer.
+            let how = if app.class.view.is_some() || app.class.lesson.is_some() {
+                " · v opens the poll"
+            } else {
+                ""
+            };
+            let text = format!("this step asks: {}{how}", q.text(&UNICODE));
+            Line::styled(g.text(&text).into_owned(), t.title)
+        }
         // A lesson's step before a poll: the claims would answer it.
-        g.text("(this step's claims show after the lesson's next poll)")
-            .into_owned()
-    } else {
-        claims_line(&app.claims, usize::from(area.width), g)
+        ClaimsRow::Waiting => Line::styled(
+            g.text("(this step's claims show after the lesson's next poll)")
+                .into_owned(),
+            t.claims,
+        ),
+        ClaimsRow::Claims => Line::styled(
+            claims_line(&app.claims, usize::from(area.width), g),
+            t.claims,
+        ),
     };
-    lines.push(Line::styled(claims, t.claims));
+    lines.push(last);
     Paragraph::new(lines).render(area, buf);
 }
 
