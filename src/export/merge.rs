@@ -89,6 +89,20 @@ fn options(args: &[String]) -> Vec<String> {
     out
 }
 
+/// What options `y` has that `x` (of `an`) has not, or the other way, in
+/// words: "`--cell 1` where a.csv has `--cell 2`".
+fn difference(x: &[String], y: &[String], an: &str) -> String {
+    let flag = |o: &str| o.split(' ').next().unwrap_or_default().to_string();
+    let extra = y.iter().find(|o| !x.contains(o));
+    let lacks = x.iter().find(|o| !y.contains(o));
+    match (extra, lacks) {
+        (Some(e), Some(l)) if flag(e) == flag(l) => format!("`{e}` where {an} has `{l}`"),
+        (Some(e), _) => format!("`{e}`, which {an} has not"),
+        (None, Some(l)) => format!("no `{l}`, which {an} has"),
+        (None, None) => "the same options in another order".into(),
+    }
+}
+
 /// Refuses parts that are not of one ensemble: one version, one set of
 /// seeds, one set of options, one scene, one table; each in one line
 /// naming the difference.
@@ -114,15 +128,9 @@ fn check_same(parts: &[Part]) -> anyhow::Result<()> {
         if let (Some((_, x)), Some((_, y))) = (&a.command, &b.command) {
             let (x, y) = (options(x), options(y));
             if x != y {
-                let only = |p: &[String], q: &[String]| {
-                    p.iter()
-                        .find(|o| !q.contains(o))
-                        .map_or("nothing".into(), |o| format!("`{o}`"))
-                };
                 bail!(
-                    "{bn} was made with other options than {an}: {} where {an} has {}",
-                    only(&y, &x),
-                    only(&x, &y)
+                    "{bn} was made with other options than {an}: {}",
+                    difference(&x, &y, &an)
                 );
             }
         }
@@ -368,7 +376,8 @@ fn rows(parts: &[Part]) -> anyhow::Result<Vec<Vec<String>>> {
                 .find(|s| !g.iter().any(|(x, _)| x == *s) && !explained(**s))
             {
                 bail!(
-                    "seed {s} has no row at {} and no `# not solved` line says why: its part is                      incomplete",
+                    "seed {s} has no row at {} and no `# not solved` line says why: its part is \
+                     incomplete",
                     key_words(g[0].1)
                 );
             }

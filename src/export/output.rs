@@ -75,14 +75,14 @@ mod tests {
     fn a_file_is_written_whole_and_never_overwritten() {
         let dir = tempfile::tempdir().unwrap();
         let path = dir.path().join("a.csv");
-        write_to(&path, &mut |w: &mut dyn Write| Ok(w.write_all(b"x,y\n")?)).unwrap();
+        write_to(&path, |w: &mut dyn Write| Ok(w.write_all(b"x,y\n")?)).unwrap();
         assert_eq!(std::fs::read_to_string(&path).unwrap(), "x,y\n");
-        let e = write_to(&path, &mut |w: &mut dyn Write| Ok(w.write_all(b"z\n")?)).unwrap_err();
+        let e = write_to(&path, |w: &mut dyn Write| Ok(w.write_all(b"z\n")?)).unwrap_err();
         assert!(format!("{e:#}").contains("the file exists"), "{e:#}");
         assert_eq!(std::fs::read_to_string(&path).unwrap(), "x,y\n");
         // A failed run leaves nothing behind.
         let other = dir.path().join("b.csv");
-        let e = write_to(&other, &mut |w: &mut dyn Write| {
+        let e = write_to(&other, |w: &mut dyn Write| {
             w.write_all(b"half")?;
             bail!("the solver failed")
         });
