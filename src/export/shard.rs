@@ -142,6 +142,19 @@ pub fn run(args: &ExportArgs, shard: Shard, out: &mut impl Write) -> anyhow::Res
     let all = ensemble(args, shard.of, &format!("--shard {}/{}", shard.k, shard.of))?;
     let line = ShardLine::new(shard, all);
     threads_from_slurm();
+    // A batch task's log says what it solves, on how many threads, and
+    // how long it took.
+    let task = std::env::var_os("SLURM_JOB_ID").is_some();
+    let start = std::time::Instant::now();
+    let what = format!("part {}/{} ({})", shard.k, shard.of, line.seeds().words());
+    if task {
+        let _ = writeln!(
+            std::io::stderr(),
+            "roughtui: {what} of {}: solving on {} threads",
+            all.words(),
+            rough_contact::threads()
+        );
+    }
     let mut runs = vec![];
     let mut columns: Option<Vec<String>> = None;
     let mut rows = vec![];
@@ -190,5 +203,12 @@ pub fn run(args: &ExportArgs, shard: Shard, out: &mut impl Write) -> anyhow::Res
     };
     out.write_all(table.text().as_bytes())?;
     out.flush()?;
+    if task {
+        let _ = writeln!(
+            std::io::stderr(),
+            "roughtui: {what} solved in {:.1} s",
+            start.elapsed().as_secs_f64()
+        );
+    }
     Ok(())
 }
