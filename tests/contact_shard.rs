@@ -240,6 +240,20 @@ fn bad_shards_are_refused_in_one_line() {
         &["export", "--view", "contact-map", "--shard", "1/1"],
         "not to --view contact-map",
     );
+    refused(
+        &[
+            "export",
+            "--view",
+            "contact",
+            "--surface",
+            "surfaces/example.txt",
+            "--seeds",
+            "2",
+            "--shard",
+            "1/2",
+        ],
+        "--seeds 2 does not apply to a measured map",
+    );
     refused(&["merge"], "PART");
     refused(
         &["merge", "/nonexistent/part.csv"],

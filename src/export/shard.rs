@@ -54,6 +54,13 @@ pub fn check_view(args: &ExportArgs, opt: &str) -> anyhow::Result<()> {
 pub fn ensemble(args: &ExportArgs, of: u32, opt: &str) -> anyhow::Result<Seeds> {
     let state = super::state_of(args)?;
     let all = super::contact::spec_of(args, &state)?.seeds;
+    if state.is_measured() && all.count > 1 {
+        bail!(
+            "--seeds {} does not apply to a measured map: it is solved on its own heights, one \
+             realisation",
+            all.count
+        );
+    }
     if of > all.count {
         bail!(
             "{opt}: {of} parts of {} would leave a part without a seed: --seeds N takes at least \
