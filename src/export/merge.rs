@@ -407,13 +407,31 @@ fn pooled(roles: &[Role], g: &[(u64, &Vec<String>)]) -> Vec<String> {
             Role::Sd(of) => csv_number::format(Stat::of(values(*of)).sd),
             Role::Max => csv_number::format(values(c).fold(0.0, f64::max)),
             Role::Count => g.len().to_string(),
+            Role::NotPooled => String::new(),
         })
         .collect()
+}
+
+/// Refuses columns that the seeds' own values cannot give.
+pub fn not_pooled(columns: &[String], roles: &[Role]) -> anyhow::Result<()> {
+    if let Some((c, _)) = columns
+        .iter()
+        .zip(roles)
+        .find(|(_, r)| **r == Role::NotPooled)
+    {
+        bail!(
+            "the column {c} is a statistic of the seeds' means that their own rows cannot give \
+             (|the mean slope over one window − over another|): this view is not merged from \
+             parts"
+        );
+    }
+    Ok(())
 }
 
 /// The merged table of `parts`.
 pub fn merge(parts: &[Part]) -> anyhow::Result<Table> {
     check_same(parts)?;
+    not_pooled(&parts[0].table.columns, &parts[0].roles)?;
     check_seeds(parts)?;
     let comments = comments(parts)?;
     let rows = rows(parts)?;

@@ -91,7 +91,14 @@ pub enum Role {
     Max,
     /// How many seeds the row is over.
     Count,
+    /// A statistic of the seeds' means that their own values cannot give
+    /// (contact-slopes' `*_fit_err`, |mean slope over one window − mean
+    /// over another|): a part of it is refused rather than merged wrong.
+    NotPooled,
 }
+
+/// Ends of the names of [`Role::NotPooled`] columns.
+const NOT_POOLED: &[&str] = &["_fit_err"];
 
 /// Columns the same for every seed, besides the theory's (`theory_*`): the
 /// load, ζ, the grid and the cell, and contact-slopes' load window.
@@ -117,6 +124,7 @@ pub fn roles_of(columns: &[String]) -> Vec<Role> {
             "seeds" => Role::Count,
             "residual" => Role::Max,
             c if c.starts_with("theory_") || KEYS.contains(&c) => Role::Key,
+            c if NOT_POOLED.iter().any(|e| c.ends_with(e)) => Role::NotPooled,
             c => match c
                 .strip_suffix("_sd")
                 .and_then(|base| columns.iter().position(|x| x == base))
@@ -147,7 +155,7 @@ pub fn roles_line(columns: &[String], roles: &[Role]) -> String {
     };
     format!(
         "{ROLES}seed: the realisation, one row per seed; key: {}; mean: {}; sd: {}; largest: {}; \
-         count: {} (roughtui merge groups the seeds' rows by the key columns and writes each \
+         count: {}; not merged: {} (roughtui merge groups the seeds' rows by the key columns and writes each \
          mean column's mean over the seeds, each sd column the sample standard deviation of \
          its mean column, the largest, the count)",
         of(|r| *r == Role::Key),
@@ -155,6 +163,7 @@ pub fn roles_line(columns: &[String], roles: &[Role]) -> String {
         of(|r| matches!(r, Role::Sd(_))),
         of(|r| *r == Role::Max),
         of(|r| *r == Role::Count),
+        of(|r| *r == Role::NotPooled),
     )
 }
 
@@ -184,6 +193,7 @@ pub fn roles_from(line: &str, columns: &[String]) -> anyhow::Result<Vec<Role>> {
                 "mean" => Role::Mean,
                 "largest" => Role::Max,
                 "count" => Role::Count,
+                "not merged" => Role::NotPooled,
                 "sd" => {
                     let base = name.strip_suffix("_sd").unwrap_or(name);
                     Role::Sd(position(columns, base)?)
@@ -389,12 +399,24 @@ mod tests {
 
     #[test]
     fn roles_follow_the_names_and_read_back() {
-        let c = names("seed,p_over_h,area,mean_gap,residual,theory_area,area_sd,seeds,area_corrected,area_corrected_sd");
+        let c = names("seed,p_over_h,area,mean_gap,residual,theory_area,area_sd,seeds,area_corrected,area_corrected_sd,sim_total_slope_fit_err");
         let r = roles_of(&c);
         use Role::*;
         assert_eq!(
             r,
-            [Seed, Key, Mean, Mean, Max, Key, Sd(2), Count, Mean, Sd(8)]
+            [
+                Seed,
+                Key,
+                Mean,
+                Mean,
+                Max,
+                Key,
+                Sd(2),
+                Count,
+                Mean,
+                Sd(8),
+                NotPooled
+            ]
         );
         let line = roles_line(&c, &r);
         assert!(
