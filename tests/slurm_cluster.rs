@@ -421,10 +421,20 @@ fn an_ensemble_runs_as_a_job_array_and_merges_exactly() {
     let merge: Vec<&str> = merge.iter().map(String::as_str).collect();
     let merged = text(&roughtui(&jobs, &merge, &[]), "merge");
     let one = text(&roughtui(&jobs, &ENSEMBLE, &[]), "one machine");
-    assert_eq!(merged, one);
+    // To the last digit, but for a `#` line's statistic of the seeds'
+    // means.
+    let d = common::merge::difference(&one, &merged);
+    assert!(d <= 1e-12, "{d}");
+    let rows = |t: &str| -> Vec<String> {
+        t.lines()
+            .filter(|l| !l.starts_with('#'))
+            .map(String::from)
+            .collect()
+    };
+    assert_eq!(rows(&merged), rows(&one));
     println!(
-        "4-task array of 8 seeds (256² grids), a task cancelled and resubmitted, merged: equal to \
-         one machine's --seeds 8; {:.1} s in all",
+        "4-task array of 8 seeds (256² grids), a task cancelled and resubmitted, merged: one \
+         machine's --seeds 8 (largest relative difference {d:e}); {:.1} s in all",
         started.elapsed().as_secs_f64()
     );
 }
