@@ -74,16 +74,34 @@ pub fn task_mb(n: usize) -> u64 {
 /// `None` where there is no `sinfo` (the script made away from the
 /// cluster: sbatch still refuses a --mem no node has).
 fn node_mb() -> Option<u64> {
-    let out = std::process::Command::new("sinfo")
+    use std::io::Read;
+    use std::process::{Command, Stdio};
+    let mut child = Command::new("sinfo")
         .args(["-h", "-o", "%m"])
-        .stderr(std::process::Stdio::null())
-        .output()
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
         .ok()?;
-    if !out.status.success() {
+    // A controller that does not answer: not checked, rather than waited for.
+    let start = std::time::Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().ok()? {
+            break status;
+        }
+        if start.elapsed() > std::time::Duration::from_secs(10) {
+            let _ = child.kill();
+            let _ = child.wait();
+            return None;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    };
+    let mut text = String::new();
+    child.stdout.take()?.read_to_string(&mut text).ok()?;
+    if !status.success() {
         return None;
     }
-    String::from_utf8_lossy(&out.stdout)
-        .lines()
+    text.lines()
         .filter_map(|l| l.trim().trim_end_matches('+').parse::<u64>().ok())
         .max()
 }
