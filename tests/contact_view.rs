@@ -373,6 +373,12 @@ fn a_gives_each_asperity_its_hardness() {
     assert!(a.contact.tasks.iter().all(|t| t.scene.local.is_some()));
     let r = a.contact.chosen().unwrap().as_ref().unwrap();
     assert!(r.result.area > 0.0);
+    // The readout names the caps in use and the share at them; the load's
+    // unit is the theory's H_y(R_s), which no node is capped at.
+    let share = roughtui::tui::views::contact::share_pct(r.result.plastic_area, r.result.area);
+    assert!(text.contains("caps each asperity's H_y: sim "), "{text}");
+    assert!(text.contains(&format!("{share} % at its cap")), "{text}");
+    assert!(text.contains("at its asperity's H_y"), "{text}");
     ch(&mut a, 'b');
     // At each ζ: H0 (size effect off), H_y(R_s) (on, one cap), per
     // asperity.
@@ -452,7 +458,10 @@ fn b_averages_the_plastic_share_over_the_seeds() {
         text.contains("plastic share vs ζ at p̄ = 0.1 H0 · seeds 1–4"),
         "{text}"
     );
-    assert!(text.contains("mean ± sd of 4 seeds"), "{text}");
+    // The row over the chart: each set's share at the largest ζ, in
+    // numbers (the H0 set's is the mean ± sd just computed).
+    let h0 = roughtui::tui::views::contact::share_pm(&st);
+    assert!(text.contains(&format!("ζ = 16: H0 {h0} %")), "{text}");
     // R: sixteen seeds, then one, as on the load plot.
     ch(&mut a, 'R');
     assert_eq!(a.contact.seed_tasks.len(), 15);

@@ -209,30 +209,7 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
     let row1 = Rect::new(area.x, area.y + 1, area.width, 1);
     let mut top = 2;
     if pane.plot == Plot::Share {
-        let n = pane.seeds_asked();
-        let forms = [
-            format!(
-                "simulation: mean ± sd of {n} seeds, the share of the area at the load (not an \
-                 initial slope) · b: vs load"
-            ),
-            format!("simulation: mean ± sd of {n} seeds at the load · b: vs load"),
-            format!("mean ± sd of {n} seeds · b: vs load"),
-        ];
-        let forms = if n > 1 {
-            forms.to_vec()
-        } else {
-            vec![
-                "simulation points: the share of the area at the load (not an initial slope) · \
-                 b: vs load"
-                    .to_string(),
-                "simulation points at the load · b: areas vs load".to_string(),
-            ]
-        };
-        let text = forms
-            .iter()
-            .map(|f| gl.text(f).into_owned())
-            .find(|f| Span::raw(f.as_str()).width() <= w)
-            .unwrap_or_default();
+        let text = readout::share_row(pane, w, gl);
         Line::styled(text, t.dim).render(row1, buf);
     } else {
         let (lines, error) = readout(pane, w, gl, h);
@@ -245,7 +222,7 @@ pub fn render(app: &App, (area, _g): (Rect, Rect), buf: &mut Buffer) {
         // Where there is room, a row more: κ at the lightest load beside
         // Persson's, and which split the theory's elastic/plastic reads.
         if pane.plot == Plot::Load && area.height >= 20 {
-            if let Some(text) = readout::kappa_row(pane, app.state.model, w, gl) {
+            if let Some(text) = readout::kappa_row(pane, app.state.model, (w, h), gl) {
                 let row = Rect::new(area.x, area.y + top, area.width, 1);
                 Line::styled(text, t.dim).render(row, buf);
                 top += 1;

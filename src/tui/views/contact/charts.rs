@@ -170,7 +170,7 @@ fn why_not(app: &App, g: Rect, buf: &mut Buffer) -> bool {
 }
 
 /// The name of a set of `b`'s plot.
-fn set_name(set: &crate::tui::contact::Set) -> &'static str {
+pub(super) fn set_name(set: &crate::tui::contact::Set) -> &'static str {
     match (set.size_effect, set.hardness) {
         (false, _) => "H0",
         (true, Hardness::Global) => "H_y(R_s)",

@@ -129,17 +129,35 @@ pub fn readout(pane: &ContactPane, width: usize, g: Glyphs, h: &str) -> (Vec<Str
         Some((a, s)) => format!("th. {a}% {s}%pl"),
         None => "th. —".into(),
     };
+    // Under a per-node hardness the load's unit is not the cap: the
+    // longest forms name the caps in use.
+    let caps = match pane.sampling.hardness {
+        crate::contact::Hardness::Global => None,
+        crate::contact::Hardness::Asperity => Some("each asperity's H_y"),
+        crate::contact::Hardness::Summit => Some("each summit's H_y"),
+    };
     let (forms, split): (Vec<String>, Vec<String>) = match &sim {
         Ok((a, s)) => (
-            vec![
-                format!("simulation at p̄ = {at} {h}: contact {a} %, {s} % plastic · {th_full}"),
-                format!("p̄ = {at} {h}: sim {a} %, {s} % plastic · {th_full}"),
-                format!(
-                    "{at} {h}: sim {}% {}%pl · {th_short}",
-                    a.replace(" ± ", "±"),
-                    s.replace(" ± ", "±")
-                ),
-            ],
+            caps.into_iter()
+                .flat_map(|c| {
+                    [
+                        format!(
+                            "simulation at p̄ = {at} {h}, caps {c}: contact {a} %, {s} % at \
+                             its cap · {th_full}"
+                        ),
+                        format!("p̄ = {at} {h}, caps {c}: sim {a} %, {s} % at its cap · {th_full}"),
+                    ]
+                })
+                .chain([
+                    format!("simulation at p̄ = {at} {h}: contact {a} %, {s} % plastic · {th_full}"),
+                    format!("p̄ = {at} {h}: sim {a} %, {s} % plastic · {th_full}"),
+                    format!(
+                        "{at} {h}: sim {}% {}%pl · {th_short}",
+                        a.replace(" ± ", "±"),
+                        s.replace(" ± ", "±")
+                    ),
+                ])
+                .collect(),
             vec![
                 format!("p̄ = {at} {h} · sim {a} %, {s} % plastic"),
                 format!(
@@ -174,7 +192,22 @@ pub fn readout(pane: &ContactPane, width: usize, g: Glyphs, h: &str) -> (Vec<Str
     let text = |f: &String| g.text(f).into_owned();
     let fits = |s: &String| Span::raw(s.as_str()).width() <= width;
     let first = |forms: &[String]| forms.iter().map(text).find(|s| fits(s));
-    if let Some(line) = first(&forms) {
+    // The caps named on one line, else on the first of two, before a
+    // line that leaves them to the title.
+    let named = caps.map_or(0, |_| 2).min(forms.len());
+    if let Some(line) = first(&forms[..named]) {
+        return (vec![line], error);
+    }
+    if let (Some(c), Ok((a, s))) = (caps, &sim) {
+        let pair = [
+            format!("p̄ = {at} {h}, caps {c}: sim {a} %, {s} % at its cap"),
+            format!("p̄ = {at} {h}, caps {c}: {a} %, {s} % at cap"),
+        ];
+        if let (Some(a), Some(b)) = (first(&pair), first(&[th_full.clone(), th_short.clone()])) {
+            return (vec![a, b], error);
+        }
+    }
+    if let Some(line) = first(&forms[named..]) {
         return (vec![line], error);
     }
     if let (Some(a), Some(b)) = (first(&split), first(&[th_full.clone(), th_short.clone()])) {
@@ -265,13 +298,13 @@ fn slopes_forms(pane: &ContactPane) -> Vec<Vec<String>> {
     ]
 }
 
-/// The row under the load plot's readout: κ at the lightest load, A/A0
-/// over p̄/(E* h′) with its spread over the seeds, beside Persson's
-/// √(8/π), and the theory's split; the longest form that fits.
+/// The row under the load plot's readout: κ at the lightest load (`h` its
+/// unit), A/A0 over p̄/(E* h′) with its spread over the seeds, beside
+/// Persson's √(8/π), and the theory's split; the longest form that fits.
 pub fn kappa_row(
     pane: &ContactPane,
     model: rough_model::Model,
-    width: usize,
+    (width, h): (usize, &str),
     g: Glyphs,
 ) -> Option<String> {
     let kappa = match pane.kappa() {
@@ -286,18 +319,77 @@ pub fn kappa_row(
         }
         rough_model::Model::Exact => ("the exact two-barrier solution", "exact"),
     };
+    let at = load_text(load_value(0));
     let forms = [
         format!(
-            "κ = A/A0 ÷ p̄/(E* h′) at 1e-3: {kappa} (Persson √(8/π) = {persson:.2}) · theory's \
-             split: elastic = {split}'s mass on [0, H]"
+            "κ = A/A0 ÷ p̄/(E* h′) at p̄ = {at} {h}: {kappa} (Persson √(8/π) = {persson:.2}) · \
+             theory's split: elastic = {split}'s mass on [0, H]"
         ),
-        format!("κ at 1e-3: {kappa} (Persson {persson:.2}) · theory's split: {split}"),
-        format!("κ {kappa} (Persson {persson:.2}) · split: {short}"),
-        format!("κ {kappa} (Persson {persson:.2})"),
+        format!(
+            "κ at p̄ = {at} {h}: {kappa} (Persson √(8/π) = {persson:.2}) · theory's split: {split}"
+        ),
+        format!("κ at p̄ = {at} {h}: {kappa} (Persson √(8/π) = {persson:.2}) · split: {short}"),
+        format!("κ at {at} {h}: {kappa} (Persson {persson:.2}) · split: {short}"),
+        format!("κ({at}) {kappa} (Persson {persson:.2}) · {short}"),
+        format!("κ({at}) {kappa} (Persson {persson:.2})"),
     ];
     let text = |f: &String| g.text(f).into_owned();
     forms
         .iter()
         .map(text)
         .find(|s| Span::raw(s.as_str()).width() <= width)
+}
+
+/// The `b` plot's row over its chart: each set's plastic share (mean ± sd
+/// over the seeds in) at the largest ζ every set has solved, so that
+/// differences of a tenth of a per cent read as numbers; the longest form
+/// that fits `width`.
+pub fn share_row(pane: &ContactPane, width: usize, g: Glyphs) -> String {
+    let n = pane.seeds_asked();
+    let over = if n > 1 {
+        format!("mean ± sd of {n} seeds")
+    } else {
+        "one seed".to_string()
+    };
+    let at = (0..pane.zetas.len()).rev().find_map(|k| {
+        let shares: Option<Vec<Stat>> = (0..pane.sets.len())
+            .map(|set| pane.share_at(set, k))
+            .collect();
+        shares.map(|s| (k, s))
+    });
+    let mut forms = vec![];
+    if let Some((k, shares)) = at {
+        // The seeds in at that ζ (the fewest over the sets).
+        let over = match shares.iter().map(|s| s.n).min().unwrap_or(0) {
+            1 => "one seed so far".to_string(),
+            m if m < n => format!("mean ± sd of {m} of {n} seeds"),
+            m => format!("mean ± sd of {m} seeds"),
+        };
+        let z = crate::physical::print::fmt_short(rough_model::Axis::Zeta, pane.zetas[k]);
+        let each: Vec<String> = pane
+            .sets
+            .iter()
+            .zip(&shares)
+            .map(|(set, st)| format!("{} {} %", super::charts::set_name(set), share_pm(st)))
+            .collect();
+        let each = each.join(" · ");
+        forms.push(format!(
+            "plastic share at ζ = {z} ({over}, of the area at the load, not an initial \
+             slope): {each} · b: vs load"
+        ));
+        forms.push(format!("at ζ = {z}, {over}: {each} · b: vs load"));
+        forms.push(format!("ζ = {z}: {each}"));
+    }
+    forms.push(format!(
+        "simulation: {over}, the share of the area at the load (not an initial slope) · b: vs \
+         load"
+    ));
+    forms.push(format!("simulation: {over} at the load · b: vs load"));
+    forms.push(format!("{over} · b: vs load"));
+    let text = |f: &String| g.text(f).into_owned();
+    forms
+        .iter()
+        .map(text)
+        .find(|s| Span::raw(s.as_str()).width() <= width)
+        .unwrap_or_default()
 }
