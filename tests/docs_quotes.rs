@@ -364,6 +364,7 @@ const OTHER_PROGRAMS_OPTIONS: &[&str] = &[
     "release",
     "test",
     "time",
+    "timings",
     "workspace",
 ];
 
