@@ -60,8 +60,7 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
         );
     }
     for (magic, what) in [
-        (&b"VK4_"[..], "a Keyence .vk4 file"),
-        (b"VK3_", "a Keyence .vk3 file"),
+        (&b"VK3_"[..], "a Keyence .vk3 file"),
         (b"KPK0", "a Keyence .zon file"),
         (b"KPK1", "a Keyence .zon file"),
         (b"Binary TrueMap", "a TrueMap .tmd file"),
@@ -253,7 +252,7 @@ mod tests {
         assert!(other(b"\x89HDF\r\n\x1a\n\0", "nc").contains("HDF5"));
         assert!(other(b"\x93NUMPY\x01\x00", "npy").contains("numpy.savetxt"));
         assert!(other(b"II*\x00\x08\0", "tif").contains("TIFF"));
-        assert!(other(b"VK4_\0\0", "vk4").contains("Keyence .vk4"));
+        assert!(other(b"VK3_\0\0", "vk3").contains("Keyence .vk3"));
         assert!(other(b"\0\x01\x02", "bin").contains("Gwyddion"));
         // Instruments' own files are read.
         let native = |b: &[u8], ext: &str| matches!(format(b, ext), Format::Native(_));

@@ -23,6 +23,7 @@ mod frt;
 pub(crate) mod grid;
 pub(crate) mod gwy;
 mod ibw;
+mod keyence;
 mod metropro;
 mod nid;
 mod opd;
@@ -31,6 +32,7 @@ mod plu;
 mod sdf;
 mod sur;
 pub(crate) mod x3p;
+mod zipped;
 
 use crate::error::Failure;
 use crate::formats::readers::grid::Grid;
@@ -67,7 +69,7 @@ impl std::fmt::Debug for Native {
 
 /// The formats read natively, in the order they are told apart (the
 /// first whose bytes match is taken: the extension alone last).
-static NATIVE: [Native; 11] = [
+static NATIVE: [Native; 12] = [
     Native {
         name: sur::NAME,
         channels: false,
@@ -127,6 +129,12 @@ static NATIVE: [Native; 11] = [
         channels: true,
         is: |b, _| ibw::is_ibw(b),
         read: ibw::read,
+    },
+    Native {
+        name: keyence::NAME,
+        channels: true,
+        is: |b, _| keyence::is_vk(b),
+        read: keyence::read,
     },
     Native {
         name: plu::NAME,
