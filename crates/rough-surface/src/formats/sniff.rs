@@ -43,10 +43,7 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
         return other("a Gwyddion file of another version");
     }
     if starts(b"\x89HDF\r\n\x1a\n") {
-        if ext == "datx" || find(bytes, b"Zygo") || find(bytes, b"MetaData") {
-            return other("a Zygo .datx file (HDF5)");
-        }
-        return other("a NetCDF-4 or HDF5 file");
+        return other("a NetCDF-4 or HDF5 file (not a Zygo .datx or a JPK .h5-jpk scan)");
     }
     if starts(b"CDF\x01") || starts(b"CDF\x02") || starts(b"CDF\x05") {
         return other("a NetCDF file");
@@ -69,11 +66,11 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
         (b"MATLAB", "a MATLAB .mat file"),
         (
             b"II*\x00",
-            "a TIFF image (Olympus LEXT, Park, JPK … write TIFF)",
+            "a TIFF image that is not a JPK or Park Systems scan (Olympus LEXT … write TIFF)",
         ),
         (
             b"MM\x00*",
-            "a TIFF image (Olympus LEXT, Park, JPK … write TIFF)",
+            "a TIFF image that is not a JPK or Park Systems scan (Olympus LEXT … write TIFF)",
         ),
         (b"\x89PNG", "a PNG image, not height data"),
         (b"\xff\xd8\xff", "a JPEG image, not height data"),
@@ -116,13 +113,6 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
         );
     }
     Format::Text
-}
-
-/// Whether `needle` occurs in the first 64 KiB of `hay`.
-fn find(hay: &[u8], needle: &[u8]) -> bool {
-    hay[..hay.len().min(1 << 16)]
-        .windows(needle.len())
-        .any(|w| w == needle)
 }
 
 /// Whether the first 4 KiB hold a NUL or control bytes that text does not.
@@ -248,7 +238,6 @@ mod tests {
             f => panic!("{f:?}"),
         };
         assert!(other(b"CDF\x01\0\0", "nc").contains("NetCDF"));
-        assert!(other(b"\x89HDF\r\n\x1a\n\0", "datx").contains("Zygo .datx"));
         assert!(other(b"\x89HDF\r\n\x1a\n\0", "nc").contains("HDF5"));
         assert!(other(b"\x93NUMPY\x01\x00", "npy").contains("numpy.savetxt"));
         assert!(other(b"II*\x00\x08\0", "tif").contains("TIFF"));
@@ -256,6 +245,8 @@ mod tests {
         assert!(other(b"\0\x01\x02", "bin").contains("Gwyddion"));
         // Instruments' own files are read.
         let native = |b: &[u8], ext: &str| matches!(format(b, ext), Format::Native(_));
+        assert!(native(b"\x89HDF\r\n\x1a\n\0", "datx"));
+        assert!(native(b"VK6\0\0", "vk6"));
         assert!(native(b"\\*File list\r\n", ""));
         assert!(native(b"\x88\x1b\x03\x70\0", "dat"));
         assert!(native(b"date 2020\0\0\0", "plu"));

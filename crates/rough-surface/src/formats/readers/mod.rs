@@ -18,19 +18,25 @@ mod al3d;
 pub(crate) mod assumed;
 mod bin;
 mod chan;
+mod datx;
 mod di;
 mod frt;
 pub(crate) mod grid;
 pub(crate) mod gwy;
+mod h5;
+mod h5jpk;
 mod ibw;
+mod jpk;
 mod keyence;
 mod metropro;
 mod nid;
 mod opd;
 mod opdx;
+mod park;
 mod plu;
 mod sdf;
 mod sur;
+mod tiffs;
 pub(crate) mod x3p;
 mod zipped;
 
@@ -69,7 +75,7 @@ impl std::fmt::Debug for Native {
 
 /// The formats read natively, in the order they are told apart (the
 /// first whose bytes match is taken: the extension alone last).
-static NATIVE: [Native; 12] = [
+static NATIVE: [Native; 16] = [
     Native {
         name: sur::NAME,
         channels: false,
@@ -135,6 +141,30 @@ static NATIVE: [Native; 12] = [
         channels: true,
         is: |b, _| keyence::is_vk(b),
         read: keyence::read,
+    },
+    Native {
+        name: park::NAME,
+        channels: false,
+        is: |b, _| park::is_park(b),
+        read: |b, _| park::read(b),
+    },
+    Native {
+        name: jpk::NAME,
+        channels: true,
+        is: |b, _| jpk::is_jpk(b),
+        read: jpk::read,
+    },
+    Native {
+        name: h5jpk::NAME,
+        channels: true,
+        is: |b, ext| b.starts_with(h5::MAGIC) && (ext == "h5-jpk" || h5jpk::is_h5jpk(b)),
+        read: h5jpk::read,
+    },
+    Native {
+        name: datx::NAME,
+        channels: false,
+        is: |b, ext| b.starts_with(h5::MAGIC) && (ext == "datx" || datx::is_datx(b)),
+        read: |b, _| datx::read(b),
     },
     Native {
         name: plu::NAME,
