@@ -28,6 +28,9 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
     let starts = |m: &[u8]| bytes.starts_with(m);
     let other = |what: &str| Format::Other(hint(what));
     if starts(crate::formats::readers::x3p::MAGIC) || starts(b"PK\x05\x06") {
+        if let Some(n) = crate::formats::readers::sniff_zip(bytes) {
+            return Format::Native(n);
+        }
         return Format::X3p;
     }
     if starts(crate::formats::readers::gwy::MAGIC) {
@@ -58,8 +61,6 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
     }
     for (magic, what) in [
         (&b"VK3_"[..], "a Keyence .vk3 file"),
-        (b"KPK0", "a Keyence .zon file"),
-        (b"KPK1", "a Keyence .zon file"),
         (b"Binary TrueMap", "a TrueMap .tmd file"),
         (b"OmniSurf3D", "an OmniSurf3D .os3d file"),
         (b"WSxM file", "a WSxM file"),
@@ -83,7 +84,6 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
         return other("a BMP image, not height data");
     }
     match ext {
-        "plux" => return other("a Sensofar .plux file"),
         "spm" | "001" | "002" | "003" if binary(bytes) => {
             return other("a Bruker/Digital Instruments Nanoscope file")
         }

@@ -34,11 +34,13 @@ mod opd;
 mod opdx;
 mod park;
 mod plu;
+mod plux;
 mod sdf;
 mod sur;
 mod tiffs;
 pub(crate) mod x3p;
 mod zipped;
+mod zon;
 
 use crate::error::Failure;
 use crate::formats::readers::grid::Grid;
@@ -75,7 +77,7 @@ impl std::fmt::Debug for Native {
 
 /// The formats read natively, in the order they are told apart (the
 /// first whose bytes match is taken: the extension alone last).
-static NATIVE: [Native; 16] = [
+static NATIVE: [Native; 18] = [
     Native {
         name: sur::NAME,
         channels: false,
@@ -143,6 +145,18 @@ static NATIVE: [Native; 16] = [
         read: keyence::read,
     },
     Native {
+        name: zon::NAME,
+        channels: false,
+        is: |b, _| zon::MAGICS.iter().any(|m| b.starts_with(m)),
+        read: |b, _| zon::read(b),
+    },
+    Native {
+        name: plux::NAME,
+        channels: true,
+        is: |b, _| b.starts_with(x3p::MAGIC) && plux::is_plux(b),
+        read: plux::read,
+    },
+    Native {
         name: park::NAME,
         channels: false,
         is: |b, _| park::is_park(b),
@@ -173,6 +187,14 @@ static NATIVE: [Native; 16] = [
         read: plu::read,
     },
 ];
+
+/// The native format of the zip `bytes` that is not an x3p (a Sensofar
+/// .plux), if it is one.
+pub(crate) fn sniff_zip(bytes: &[u8]) -> Option<&'static Native> {
+    NATIVE
+        .iter()
+        .find(|n| n.name == plux::NAME && (n.is)(bytes, ""))
+}
 
 /// The native format of `bytes` (a file named with extension `ext`, lower
 /// case), if any.
