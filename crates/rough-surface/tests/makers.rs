@@ -61,7 +61,12 @@ fn cases(name: &str) -> Vec<Case> {
             }),
             "grid" => {
                 let c = last.unwrap();
-                c.grid = (w[1].parse().unwrap(), w[2].parse().unwrap(), num(w[3]), num(w[4]));
+                c.grid = (
+                    w[1].parse().unwrap(),
+                    w[2].parse().unwrap(),
+                    num(w[3]),
+                    num(w[4]),
+                );
                 c.undefined = w[5].parse().unwrap();
             }
             "real" => {
@@ -102,9 +107,17 @@ fn check(c: &Case, name: &str, bytes: &[u8]) -> (f64, f64) {
     }
     if c.undefined > 0 {
         let want = format!("{} undefined point", c.undefined);
-        assert!(m.notes.iter().any(|n| n.starts_with(&want)), "{who}: {:?}", m.notes);
+        assert!(
+            m.notes.iter().any(|n| n.starts_with(&want)),
+            "{who}: {:?}",
+            m.notes
+        );
     } else {
-        assert!(!m.notes.iter().any(|n| n.contains("undefined")), "{who}: {:?}", m.notes);
+        assert!(
+            !m.notes.iter().any(|n| n.contains("undefined")),
+            "{who}: {:?}",
+            m.notes
+        );
     }
     let r = m.real.unwrap();
     let (e_sq, e_sdq) = (rel(r.rms_height, c.sq), rel(r.rms_slope, c.sdq));
@@ -120,7 +133,9 @@ fn check(c: &Case, name: &str, bytes: &[u8]) -> (f64, f64) {
 
 fn gunzip(b: &[u8]) -> Vec<u8> {
     let mut out = Vec::new();
-    flate2::read::GzDecoder::new(b).read_to_end(&mut out).unwrap();
+    flate2::read::GzDecoder::new(b)
+        .read_to_end(&mut out)
+        .unwrap();
     out
 }
 

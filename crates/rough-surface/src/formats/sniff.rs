@@ -28,7 +28,7 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
     let starts = |m: &[u8]| bytes.starts_with(m);
     let other = |what: &str| Format::Other(hint(what));
     if starts(crate::formats::readers::x3p::MAGIC) || starts(b"PK\x05\x06") {
-        if let Some(n) = crate::formats::readers::sniff_zip(bytes) {
+        if let Some(n) = crate::formats::readers::sniff_zip(bytes, ext) {
             return Format::Native(n);
         }
         return Format::X3p;
@@ -58,6 +58,11 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
              '# Height:' lines"
                 .to_string(),
         );
+    }
+    if starts(b"II*\x00") || starts(b"MM\x00*") {
+        if let Some(why) = crate::formats::readers::damaged_tiff(bytes) {
+            return Format::Other(why);
+        }
     }
     for (magic, what) in [
         (&b"VK3_"[..], "a Keyence .vk3 file"),

@@ -27,7 +27,7 @@ const MAX_SLOTS: usize = 64;
 /// size (tag 0x8042).
 pub(crate) fn is_jpk(bytes: &[u8]) -> bool {
     (bytes.starts_with(super::tiffs::LITTLE) || bytes.starts_with(super::tiffs::BIG))
-        && Tiff::read(bytes, NAME).is_ok_and(|t| t.ifds[0].contains_key(&0x8042))
+        && Tiff::first(bytes).is_some_and(|t| t.ifds[0].contains_key(&0x8042))
 }
 
 /// One channel's scaling: its unit, multiplier and offset.
@@ -70,6 +70,7 @@ fn scaling(t: &Tiff<'_>, ifd: usize) -> Result<Option<Scaling>, Failure> {
 
 pub(crate) fn read(bytes: &[u8], choice: Option<&str>) -> Result<Grid, Failure> {
     let t = Tiff::read(bytes, NAME)?;
+    t.strips_inside()?;
     let b = t.b;
     let size = |tag: u16, what: &str| -> Result<f64, Failure> {
         let v = t

@@ -101,26 +101,12 @@ fn read_vk4(bytes: &[u8], choice: Option<&str>, format: &'static str) -> Result<
         })
         .collect();
     let n = chan::pick(format, &chans, choice, false)?;
-    let at = images[n];
-    let what = format!("height image {}'s header", n + 1);
-    let nx = b.le::<u32>(at, &what)? as u64;
-    let ny = b.le::<u32>(at + 4, &what)? as u64;
-    let bits = b.le::<u32>(at + 8, &what)?;
-    let size = b.le::<u32>(at + 16, &what)? as u64;
-    if !matches!(bits, 8 | 16 | 32) {
-        return Err(b.bad(format!(
-            "height image {} has values of {bits} bits: 8, 16 or 32 are read",
-            n + 1
-        )));
+    // Every height image is in the file, read or not: one cut short says
+    // the file is.
+    for (k, &at) in images.iter().enumerate() {
+        image(&b, at, k)?;
     }
-    let item = bits as usize / 8;
-    if nx.checked_mul(ny).and_then(|p| p.checked_mul(item as u64)) != Some(size) {
-        return Err(b.bad(format!(
-            "height image {} of {nx} × {ny} values of {bits} bits does not make its {size} bytes",
-            n + 1
-        )));
-    }
-    let raw = b.raster(at + 28 + 768, (nx, ny), item, "the heights")?;
+    let (nx, ny, bits, raw) = image(&b, images[n], n)?;
     let z: Vec<f64> = match bits {
         8 => values::<u8>(raw, Order::Little)
             .map(|v| v as f64 * step)
@@ -142,4 +128,34 @@ fn read_vk4(bytes: &[u8], choice: Option<&str>, format: &'static str) -> Result<
         notes,
         "undefined points",
     ))
+}
+
+/// Height image `k` at byte `at`: its width, height, bits a value and
+/// values' bytes, checked against its header and the file.
+fn image<'a>(b: &Bytes<'a>, at: usize, k: usize) -> Result<(u64, u64, u32, &'a [u8]), Failure> {
+    let what = format!("height image {}'s header", k + 1);
+    let nx = b.le::<u32>(at, &what)? as u64;
+    let ny = b.le::<u32>(at + 4, &what)? as u64;
+    let bits = b.le::<u32>(at + 8, &what)?;
+    let size = b.le::<u32>(at + 16, &what)? as u64;
+    if !matches!(bits, 8 | 16 | 32) {
+        return Err(b.bad(format!(
+            "height image {} has values of {bits} bits: 8, 16 or 32 are read",
+            k + 1
+        )));
+    }
+    let item = bits as usize / 8;
+    if nx.checked_mul(ny).and_then(|p| p.checked_mul(item as u64)) != Some(size) {
+        return Err(b.bad(format!(
+            "height image {} of {nx} × {ny} values of {bits} bits does not make its {size} bytes",
+            k + 1
+        )));
+    }
+    let raw = b.raster(
+        at + 28 + 768,
+        (nx, ny),
+        item,
+        &format!("height image {}", k + 1),
+    )?;
+    Ok((nx, ny, bits, raw))
 }

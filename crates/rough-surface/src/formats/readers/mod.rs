@@ -37,7 +37,7 @@ mod plu;
 mod plux;
 mod sdf;
 mod sur;
-mod tiffs;
+pub(crate) mod tiffs;
 pub(crate) mod x3p;
 mod zipped;
 mod zon;
@@ -153,7 +153,7 @@ static NATIVE: [Native; 18] = [
     Native {
         name: plux::NAME,
         channels: true,
-        is: |b, _| b.starts_with(x3p::MAGIC) && plux::is_plux(b),
+        is: |b, ext| b.starts_with(x3p::MAGIC) && (ext == "plux" || plux::is_plux(b)),
         read: plux::read,
     },
     Native {
@@ -190,10 +190,18 @@ static NATIVE: [Native; 18] = [
 
 /// The native format of the zip `bytes` that is not an x3p (a Sensofar
 /// .plux), if it is one.
-pub(crate) fn sniff_zip(bytes: &[u8]) -> Option<&'static Native> {
+pub(crate) fn sniff_zip(bytes: &[u8], ext: &str) -> Option<&'static Native> {
     NATIVE
         .iter()
-        .find(|n| n.name == plux::NAME && (n.is)(bytes, ""))
+        .find(|n| n.name == plux::NAME && (n.is)(bytes, ext))
+}
+
+/// The line for a TIFF file whose directories cannot be read, if they
+/// cannot.
+pub(crate) fn damaged_tiff(bytes: &[u8]) -> Option<String> {
+    tiffs::Tiff::read(bytes, "TIFF")
+        .err()
+        .map(|(_, p)| p.to_string())
 }
 
 /// The native format of `bytes` (a file named with extension `ext`, lower

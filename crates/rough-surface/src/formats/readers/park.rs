@@ -50,6 +50,7 @@ fn utf16(h: &Bytes<'_>, at: usize, chars: usize, what: &str) -> Result<String, F
 
 pub(crate) fn read(bytes: &[u8]) -> Result<Grid, Failure> {
     let t = Tiff::read(bytes, NAME)?;
+    t.strips_inside()?;
     let b = t.b;
     let version = t.number(0, TAG_VERSION)?.unwrap_or(0.0) as u32;
     if !matches!(version, 0x0100_0001 | 0x0100_0002) {

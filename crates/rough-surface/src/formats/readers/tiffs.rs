@@ -53,6 +53,17 @@ pub(crate) struct Tiff<'a> {
 impl<'a> Tiff<'a> {
     /// The directories of the TIFF `bytes`, named `format` in messages.
     pub fn read(bytes: &'a [u8], format: &'static str) -> Result<Tiff<'a>, Failure> {
+        Tiff::read_up_to(bytes, format, MAX_IFDS)
+    }
+
+    /// The first directory's tags of the TIFF `bytes`, if it reads (to
+    /// tell makers' TIFFs apart).
+    pub fn first(bytes: &'a [u8]) -> Option<Tiff<'a>> {
+        Tiff::read_up_to(bytes, "TIFF", 1).ok()
+    }
+
+    /// The first `most` directories.
+    fn read_up_to(bytes: &'a [u8], format: &'static str, most: usize) -> Result<Tiff<'a>, Failure> {
         let b = Bytes::new(bytes, format);
         let order = if bytes.starts_with(LITTLE) {
             Order::Little
@@ -90,6 +101,9 @@ impl<'a> Tiff<'a> {
                 tags.insert(tag, Entry { ty, count, at });
             }
             ifds.push(tags);
+            if ifds.len() == most {
+                break;
+            }
             at = b.num::<u32>(at + 2 + 12 * n, order, "the next directory's offset")? as usize;
         }
         if ifds.is_empty() {
@@ -167,6 +181,23 @@ impl<'a> Tiff<'a> {
                 Err(_) => super::bin::latin1(&raw[..end]),
             }
         }))
+    }
+
+    /// Refuses a file whose images' strips run past its end (a file cut
+    /// short), read or not.
+    pub fn strips_inside(&self) -> Result<(), Failure> {
+        for ifd in 0..self.ifds.len() {
+            let offsets = self.numbers(ifd, 273)?.unwrap_or_default();
+            let counts = self.numbers(ifd, 279)?.unwrap_or_default();
+            for (k, (&at, &len)) in offsets.iter().zip(&counts).enumerate() {
+                self.b.slice(
+                    at as usize,
+                    len as usize,
+                    &format!("image {ifd}'s strip {k}"),
+                )?;
+            }
+        }
+        Ok(())
     }
 
     /// The image of IFD `ifd` — one sample a pixel, uncompressed, in
