@@ -311,7 +311,7 @@ mod tests {
         assert_eq!(t.image(0).unwrap(), (2, 2, vec![1.0, -2.0, 3.0, -4.0]));
         let cut = &b[..b.len() - 1];
         let e = Tiff::read(cut, "T").unwrap().image(0).unwrap_err().1;
-        assert!(e.to_string().contains("takes 8 bytes"), "{e}");
+        assert!(e.to_string().contains("runs past the end"), "{e}");
         // A directory pointing at itself.
         let mut looped = b.clone();
         let next = 8 + 2 + 6 * 12;
