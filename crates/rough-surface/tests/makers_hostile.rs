@@ -372,6 +372,9 @@ fn cases() -> u32 {
         .unwrap_or(48)
 }
 
+static RUNS: AtomicUsize = AtomicUsize::new(0);
+static REFUSED: AtomicUsize = AtomicUsize::new(0);
+
 proptest! {
     #![proptest_config(ProptestConfig {
         cases: cases() * FILES.len() as u32,
@@ -396,8 +399,10 @@ proptest! {
             b.truncate(cut % b.len());
         }
         let named = name.trim_end_matches(".gz");
+        RUNS.fetch_add(1, Ordering::Relaxed);
         match read_grid_named(&b, named, &Options::default()) {
             Err((_, p)) => {
+                REFUSED.fetch_add(1, Ordering::Relaxed);
                 let line = p.to_string();
                 prop_assert!(!line.is_empty() && !line.contains('\n'), "{}", line);
             }
@@ -408,4 +413,15 @@ proptest! {
         }
         prop_assert!(LARGEST.load(Ordering::Relaxed) < CEILING);
     }
+}
+
+#[test]
+fn zz_fuzz_counts() {
+    // Printed for the record (run after the fuzz when single-threaded).
+    eprintln!(
+        "fuzz: {} mutated files read, {} refused; largest allocation {} bytes",
+        RUNS.load(Ordering::Relaxed),
+        REFUSED.load(Ordering::Relaxed),
+        LARGEST.load(Ordering::Relaxed)
+    );
 }
