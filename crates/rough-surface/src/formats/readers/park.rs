@@ -68,7 +68,7 @@ pub(crate) fn read(bytes: &[u8]) -> Result<Grid, Failure> {
     let ly = h.le::<f64>(148, "the scan size along y")?;
     let gain = h.le::<f64>(220, "the data gain")?;
     let scale = match h.le::<f64>(228, "the data scale")? {
-        s if s == 0.0 => 1.0,
+        0.0 => 1.0,
         s => s,
     };
     let offset = h.le::<f64>(236, "the data offset")?;

@@ -18,9 +18,11 @@ pub(crate) const LITTLE: &[u8] = b"II*\0";
 pub(crate) const BIG: &[u8] = b"MM\0*";
 
 /// IFDs read at most.
-const MAX_IFDS: usize = 4096;
+const MAX_IFDS: usize = 1024;
 /// Entries of one IFD read at most.
-const MAX_ENTRIES: usize = 4096;
+const MAX_ENTRIES: usize = 2048;
+/// Values of one tag read as numbers at most (a strip's offsets).
+const MAX_VALUES: usize = 1 << 20;
 
 /// One tag: its type, its count and where its value's bytes are.
 #[derive(Clone, Copy, Debug)]
@@ -126,49 +128,54 @@ impl<'a> Tiff<'a> {
     }
 
     /// Tag `tag` of IFD `ifd` as numbers (of an integer or floating-point
-    /// type), if it is there.
+    /// type; at most [`MAX_VALUES`]), if it is there.
     pub fn numbers(&self, ifd: usize, tag: u16) -> Result<Option<Vec<f64>>, Failure> {
         let Some(raw) = self.bytes(ifd, tag)? else {
             return Ok(None);
         };
         let ty = self.ifds[ifd][&tag].ty;
-        let b = Bytes::new(raw, self.b.format);
-        let o = self.order;
         let n = raw.len() / size_of(ty).max(1);
-        let mut out = Vec::with_capacity(n.min(1 << 16));
-        for k in 0..n {
-            out.push(match ty {
-                1 | 7 => raw[k] as f64,
-                6 => raw[k] as i8 as f64,
-                3 => b.num::<u16>(2 * k, o, "a number")? as f64,
-                8 => b.num::<i16>(2 * k, o, "a number")? as f64,
-                4 | 13 => b.num::<u32>(4 * k, o, "a number")? as f64,
-                9 => b.num::<i32>(4 * k, o, "a number")? as f64,
-                11 => b.num::<f32>(4 * k, o, "a number")? as f64,
-                12 => b.num::<f64>(8 * k, o, "a number")?,
-                5 => {
-                    let (p, q) = (
-                        b.num::<u32>(8 * k, o, "a number")?,
-                        b.num::<u32>(8 * k + 4, o, "")?,
-                    );
-                    p as f64 / q as f64
-                }
-                10 => {
-                    let (p, q) = (
-                        b.num::<i32>(8 * k, o, "a number")?,
-                        b.num::<i32>(8 * k + 4, o, "")?,
-                    );
-                    p as f64 / q as f64
-                }
-                _ => return Err(self.b.bad(format!("tag {tag} is not a number"))),
-            });
+        if n > MAX_VALUES {
+            return Err(self
+                .b
+                .bad(format!("tag {tag} of image {ifd} holds {n} values")));
         }
-        Ok(Some(out))
+        (0..n)
+            .map(|k| self.value(raw, ty, k, tag))
+            .collect::<Result<Vec<f64>, Failure>>()
+            .map(Some)
     }
 
-    /// Tag `tag` of IFD `ifd` as one number, if it is there.
+    /// Value `k` of a tag of type `ty` whose bytes are `raw`.
+    fn value(&self, raw: &[u8], ty: u16, k: usize, tag: u16) -> Result<f64, Failure> {
+        let b = Bytes::new(raw, self.b.format);
+        let o = self.order;
+        let what = "a tag's value";
+        Ok(match ty {
+            1 | 7 => b.le::<u8>(k, what)? as f64,
+            6 => b.le::<i8>(k, what)? as f64,
+            3 => b.num::<u16>(2 * k, o, what)? as f64,
+            8 => b.num::<i16>(2 * k, o, what)? as f64,
+            4 | 13 => b.num::<u32>(4 * k, o, what)? as f64,
+            9 => b.num::<i32>(4 * k, o, what)? as f64,
+            11 => b.num::<f32>(4 * k, o, what)? as f64,
+            12 => b.num::<f64>(8 * k, o, what)?,
+            5 => b.num::<u32>(8 * k, o, what)? as f64 / b.num::<u32>(8 * k + 4, o, what)? as f64,
+            10 => b.num::<i32>(8 * k, o, what)? as f64 / b.num::<i32>(8 * k + 4, o, what)? as f64,
+            _ => return Err(self.b.bad(format!("tag {tag} is not a number"))),
+        })
+    }
+
+    /// Tag `tag` of IFD `ifd` as one number (its first), if it is there.
     pub fn number(&self, ifd: usize, tag: u16) -> Result<Option<f64>, Failure> {
-        Ok(self.numbers(ifd, tag)?.and_then(|v| v.first().copied()))
+        let Some(raw) = self.bytes(ifd, tag)? else {
+            return Ok(None);
+        };
+        if raw.is_empty() {
+            return Ok(None);
+        }
+        let ty = self.ifds[ifd][&tag].ty;
+        self.value(raw, ty, 0, tag).map(Some)
     }
 
     /// Tag `tag` of IFD `ifd` as text (its bytes up to the first NUL,
