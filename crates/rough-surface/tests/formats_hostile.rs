@@ -2,10 +2,9 @@
 //! the problem, never a panic, never an allocation beyond what the file's
 //! size allows (a counting allocator watches every test here).
 
-use std::alloc::{GlobalAlloc, Layout, System};
 use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::Ordering;
 
 use md5::{Digest, Md5};
 mod fuzz;
@@ -13,31 +12,9 @@ mod fuzz;
 use proptest::prelude::*;
 use rough_surface::{parse, read_grid, Options, Problem};
 
-/// The system allocator, recording the largest single allocation.
-struct Counting;
-
-static LARGEST: AtomicUsize = AtomicUsize::new(0);
-
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, l: Layout) -> *mut u8 {
-        LARGEST.fetch_max(l.size(), Ordering::Relaxed);
-        System.alloc(l)
-    }
-    unsafe fn dealloc(&self, p: *mut u8, l: Layout) {
-        System.dealloc(p, l)
-    }
-    unsafe fn alloc_zeroed(&self, l: Layout) -> *mut u8 {
-        LARGEST.fetch_max(l.size(), Ordering::Relaxed);
-        System.alloc_zeroed(l)
-    }
-    unsafe fn realloc(&self, p: *mut u8, l: Layout, n: usize) -> *mut u8 {
-        LARGEST.fetch_max(n, Ordering::Relaxed);
-        System.realloc(p, l, n)
-    }
-}
-
 #[global_allocator]
-static ALLOC: Counting = Counting;
+static ALLOC: fuzz::Counting = fuzz::Counting;
+use fuzz::LARGEST;
 
 /// Every allocation of the tests stays below this (the files are a few
 /// KiB; the largest legitimate buffer is a 2 MiB data.bin).

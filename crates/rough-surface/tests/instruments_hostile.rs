@@ -5,7 +5,6 @@
 //! counting allocator watches every test here). Then every reader's real
 //! file mutated at random (`FUZZ_CASES` cases a reader, 48 by default).
 
-use std::alloc::{GlobalAlloc, Layout, System};
 use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -15,31 +14,9 @@ mod fuzz;
 use proptest::prelude::*;
 use rough_surface::{parse_named, read_grid_named, Options};
 
-/// The system allocator, recording the largest single allocation.
-struct Counting;
-
-static LARGEST: AtomicUsize = AtomicUsize::new(0);
-
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, l: Layout) -> *mut u8 {
-        LARGEST.fetch_max(l.size(), Ordering::Relaxed);
-        System.alloc(l)
-    }
-    unsafe fn dealloc(&self, p: *mut u8, l: Layout) {
-        System.dealloc(p, l)
-    }
-    unsafe fn alloc_zeroed(&self, l: Layout) -> *mut u8 {
-        LARGEST.fetch_max(l.size(), Ordering::Relaxed);
-        System.alloc_zeroed(l)
-    }
-    unsafe fn realloc(&self, p: *mut u8, l: Layout, n: usize) -> *mut u8 {
-        LARGEST.fetch_max(n, Ordering::Relaxed);
-        System.realloc(p, l, n)
-    }
-}
-
 #[global_allocator]
-static ALLOC: Counting = Counting;
+static ALLOC: fuzz::Counting = fuzz::Counting;
+use fuzz::LARGEST;
 
 /// Every allocation stays below this (the largest file is 4 MB, its
 /// heights 2.5 MB; a mutated header can claim at most what the file holds).
@@ -372,36 +349,6 @@ fn gzip_nests() {
     );
 }
 
-/// A file changed: bytes set or flipped, a piece cut out or repeated;
-/// half the changes in its first 64 KiB, where the headers are.
-fn mutate(b: &[u8], ops: &[(u8, usize, u8)]) -> Vec<u8> {
-    let mut b = b.to_vec();
-    for &(op, at, v) in ops {
-        if b.is_empty() {
-            break;
-        }
-        let span = if op & 0x80 != 0 {
-            b.len().min(1 << 16)
-        } else {
-            b.len()
-        };
-        let i = at % span;
-        match op % 4 {
-            0 => b[i] = v,
-            1 => b[i] ^= 1 << (v % 8),
-            2 => {
-                let n = (v as usize).min(b.len() - i);
-                b.drain(i..i + n);
-            }
-            _ => {
-                let piece = b[i..(i + v as usize).min(b.len())].to_vec();
-                b.splice(i..i, piece);
-            }
-        }
-    }
-    b
-}
-
 /// Each reader's example files, as they are named.
 const FILES: [&str; 14] = [
     "sur-2.sur",
@@ -449,7 +396,7 @@ proptest! {
         let original = CACHE.with(|c| {
             c.borrow_mut()[which].get_or_insert_with(|| bytes(name)).clone()
         });
-        let mut b = mutate(&original, &ops);
+        let mut b = fuzz::mutate(&original, &ops);
         if cut % 5 == 0 && !b.is_empty() {
             b.truncate(cut % b.len());
         }
