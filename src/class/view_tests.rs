@@ -9,24 +9,30 @@ use super::*;
 use crate::figure::View;
 
 fn q(axis: Axis, ask: Ask, truth: f64) -> Question {
-    Question { axis, ask, truth }
+    Question {
+        axis,
+        ask,
+        truth,
+        size_effect: false,
+        read: false,
+    }
 }
 
 #[test]
 fn the_question_follows_the_view_and_the_claims() {
     let claims = crate::figure::claims(&crate::presets::load("fig2").unwrap());
-    let s = Question::of_claims(View::Slopes, &claims).unwrap();
+    let s = Question::of_claims(View::Slopes, &claims, false).unwrap();
     assert_eq!(s.ask, Ask::Share { rising: true });
     assert_eq!(s.truth, claims[0].at);
     assert_eq!(s.text(&UNICODE), "where does the plastic share pass ½?");
-    let i = Question::of_claims(View::Indices, &claims).unwrap();
+    let i = Question::of_claims(View::Indices, &claims, false).unwrap();
     assert_eq!(i.text(&UNICODE), "where does Ψ_P reach 1?");
     assert_eq!(i.truth, claims[1].at);
     // fig3 claims only the total slope's minimum: that is the question,
     // on either view, its truth the claim's own number.
     let fig3 = crate::figure::claims(&crate::presets::load("fig3").unwrap());
     for view in [View::Slopes, View::Indices] {
-        let m = Question::of_claims(view, &fig3).unwrap();
+        let m = Question::of_claims(view, &fig3, false).unwrap();
         assert_eq!(m.ask, Ask::Minimum);
         assert_eq!((m.axis, m.truth), (Axis::Zeta, fig3[0].at));
         assert_eq!(m.text(&UNICODE), "where is the total slope smallest?");
@@ -34,14 +40,14 @@ fn the_question_follows_the_view_and_the_claims() {
     }
     // Elsewhere the minimum comes last: fig4 asks the share.
     let fig4 = crate::figure::claims(&crate::presets::load("fig4").unwrap());
-    let f = Question::of_claims(View::Slopes, &fig4).unwrap();
+    let f = Question::of_claims(View::Slopes, &fig4, false).unwrap();
     assert_eq!(f.ask, Ask::Share { rising: false });
     // No claim at all: the lecturer types the value.
-    assert_eq!(Question::of_claims(View::Slopes, &[]), None);
+    assert_eq!(Question::of_claims(View::Slopes, &[], false), None);
     // Only an index claim: the slopes view asks it.
     let only = [claims[1].clone()];
     assert_eq!(
-        Question::of_claims(View::Slopes, &only).map(|q| q.truth),
+        Question::of_claims(View::Slopes, &only, false).map(|q| q.truth),
         Some(claims[1].at)
     );
 }

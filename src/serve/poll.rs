@@ -14,7 +14,7 @@ use std::time::SystemTime;
 
 use super::follow::{Scene, FOLLOWING};
 use super::seat::Seat;
-use crate::class::{Ask, Asked, Poll, Question, Tally, NOWHERE, UNICODE};
+use crate::class::{Asked, Poll, Question, Tally, NOWHERE, UNICODE};
 use crate::snapshot;
 use crate::tui::app::Message;
 
@@ -143,7 +143,7 @@ pub(super) fn on_key(s: &mut Seat, msg: Message) {
                         open(s, q);
                     }
                 }
-                _ => match Question::of_claims(app.view, &app.claims) {
+                _ => match Question::of_claims(app.view, &app.claims, app.state.size_effect) {
                     Some(q) => open(s, q),
                     // No claim here: the lecturer types the value.
                     None => {
@@ -203,8 +203,7 @@ fn to_lesson_csv(s: &Seat) -> Option<anyhow::Result<std::path::PathBuf>> {
 /// After the lecturer's keys: a value typed at `V` opens a poll.
 pub(super) fn after_lecturer_keys(s: &mut Seat) {
     if let Some((axis, truth)) = s.ex.app.class.typed.take() {
-        let ask = Ask::Typed;
-        open(s, Question { axis, ask, truth });
+        open(s, Question::typed(axis, truth));
     }
 }
 

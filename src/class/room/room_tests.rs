@@ -19,6 +19,8 @@ fn question() -> Question {
         axis: Axis::Zeta,
         ask: Ask::Share { rising: true },
         truth: 321.5,
+        size_effect: false,
+        read: false,
     }
 }
 

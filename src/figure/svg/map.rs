@@ -41,7 +41,6 @@ fn scale(log: bool, e0: f64, e1: f64, desc: String) -> Scale {
 
 pub(super) fn draw(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::Result<()> {
     let spec = MapSpec::of(state, opts.grid, opts.map_y)?;
-    let m = RegimeMap::compute(&spec);
     let (plot, side) = area.split_horizontally(area.dim_in_pixel().0 - LEGEND_W);
     let drawn = |s: &rough_model::Sweep| {
         let log = s.axis().is_log();
@@ -55,6 +54,14 @@ pub(super) fn draw(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::
     let x = scale(xlog, xe[0], xe[spec.cols], axis_desc(spec.x.axis()));
     let y = scale(ylog, ye[0], ye[spec.rows], axis_desc(spec.y.axis()));
     let mut c = chart(&plot, &title(state, "regime map"), (&x, &y), None)?;
+    if opts.withheld.marks {
+        // Along the marker's row the colours show where the share passes
+        // ½: the axes and the point only.
+        super::waits(&plot, &c, "the colours and the Ψ = 1 contour")?;
+        point(&mut c, &spec, (xa, xb), (ya, yb))?;
+        return Ok(());
+    }
+    let m = RegimeMap::compute(&spec);
 
     // Cells, as runs of equal colour along each row.
     let mut rects = Vec::new();
@@ -85,7 +92,18 @@ pub(super) fn draw(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::
         super::fine::path(&mut c, vec![a, b], contour_style)?;
     }
 
-    // The current point, where it lies on the map.
+    let on_map = point(&mut c, &spec, (xa, xb), (ya, yb))?;
+    side_legend(&side, &m, on_map)
+}
+
+/// The current point, where it lies on the map (drawn from `xa` to `xb`
+/// across, `ya` to `yb` up); whether it does.
+fn point(
+    c: &mut super::Chart,
+    spec: &MapSpec,
+    (xa, xb): (f64, f64),
+    (ya, yb): (f64, f64),
+) -> anyhow::Result<bool> {
     let (fx, fy) = spec.position();
     let on_map = (0.0..=1.0).contains(&fx) && (0.0..=1.0).contains(&fy);
     if on_map {
@@ -93,7 +111,7 @@ pub(super) fn draw(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::
         c.draw_series(std::iter::once(Circle::new(p, 7, POINT.stroke_width(3))))
             .map_err(plot_err)?;
     }
-    side_legend(&side, &m, on_map)
+    Ok(on_map)
 }
 
 /// The Ψ = 1 line by marching squares over the cell centres `xc` × `yc`

@@ -198,6 +198,36 @@ fn after_svg_tag(mut svg: String, head: &str) -> String {
 type Area<'a> = DrawingArea<SVGBackend<'a>, plotters::coord::Shift>;
 type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
+/// What a view leaves out while a poll's answer waits, said in the middle
+/// of the plot `c`: "`what` wait for the reveal: they would answer the
+/// poll".
+fn waits(area: &Area, c: &Chart, what: &str) -> anyhow::Result<()> {
+    let (xr, yr) = c.plotting_area().get_pixel_range();
+    let (ox, oy) = area.get_base_pixel();
+    let (cx, cy) = ((xr.start + xr.end) / 2 - ox, (yr.start + yr.end) / 2 - oy);
+    let chars = ((xr.end - xr.start) as f64 / 8.0) as usize;
+    let text = format!("{what} wait for the reveal: they would answer the poll");
+    let lines = wrap(&text, chars.max(12));
+    let style =
+        ("sans-serif", 16)
+            .into_font()
+            .color(&GREY)
+            .pos(plotters::style::text_anchor::Pos::new(
+                plotters::style::text_anchor::HPos::Center,
+                plotters::style::text_anchor::VPos::Center,
+            ));
+    let top = cy - (lines.len() as i32 - 1) * 11;
+    for (i, l) in lines.iter().enumerate() {
+        area.draw(&Text::new(
+            l.clone(),
+            (cx, top + 22 * i as i32),
+            style.clone(),
+        ))
+        .map_err(plot_err)?;
+    }
+    Ok(())
+}
+
 fn plot_err(e: impl std::fmt::Display) -> anyhow::Error {
     anyhow!("cannot draw the picture: {e}")
 }

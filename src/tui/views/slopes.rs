@@ -57,34 +57,51 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         }
         i
     };
-    let mut names: Vec<(&CurveStyle, String)> = (0..curves.len())
-        .filter(|&i| under[i].is_none())
-        .map(|i| {
-            let c = curves[i].0;
-            let below: Vec<&str> = (0..curves.len())
-                .filter(|&k| k != i && top(k) == i)
-                .map(|k| short_name(curves[k].0))
-                .collect();
-            let (data, yb) = (curves[i].1, p.y_bounds);
-            if cover.empty[i] {
-                // Nothing on the chart: say where the curve went.
-                let name = if data.is_empty() {
-                    format!("{} = 0", c.name)
-                } else if data.iter().all(|q| q.1 < yb[0]) {
-                    format!("{} < {}", c.name, fmt_decade(yb[0] as i32))
-                } else if data.iter().all(|q| q.1 > yb[1]) {
-                    format!("{} > {}", c.name, fmt_decade(yb[1] as i32))
+    // While a poll's answer waits: the curves that would give it are not
+    // drawn, and the legend names curves without saying where they went.
+    let withheld = app.class.withheld(app.state.size_effect);
+    let mut names: Vec<(&CurveStyle, String)> = if withheld.marks {
+        (0..curves.len())
+            .map(|i| {
+                let c = curves[i].0;
+                let name = if withheld.slopes[i] {
+                    format!("{} ?", short_name(c))
                 } else {
                     c.name.to_string()
                 };
                 (c, name)
-            } else if below.is_empty() {
-                (c, c.name.to_string())
-            } else {
-                (c, format!("{} = {} here", short_name(c), below.join(" = ")))
-            }
-        })
-        .collect();
+            })
+            .collect()
+    } else {
+        (0..curves.len())
+            .filter(|&i| under[i].is_none())
+            .map(|i| {
+                let c = curves[i].0;
+                let below: Vec<&str> = (0..curves.len())
+                    .filter(|&k| k != i && top(k) == i)
+                    .map(|k| short_name(curves[k].0))
+                    .collect();
+                let (data, yb) = (curves[i].1, p.y_bounds);
+                if cover.empty[i] {
+                    // Nothing on the chart: say where the curve went.
+                    let name = if data.is_empty() {
+                        format!("{} = 0", c.name)
+                    } else if data.iter().all(|q| q.1 < yb[0]) {
+                        format!("{} < {}", c.name, fmt_decade(yb[0] as i32))
+                    } else if data.iter().all(|q| q.1 > yb[1]) {
+                        format!("{} > {}", c.name, fmt_decade(yb[1] as i32))
+                    } else {
+                        c.name.to_string()
+                    };
+                    (c, name)
+                } else if below.is_empty() {
+                    (c, c.name.to_string())
+                } else {
+                    (c, format!("{} = {} here", short_name(c), below.join(" = ")))
+                }
+            })
+            .collect()
+    };
     // " here" goes first when the legend is too long for the panel (each
     // entry takes at least a one-character sample and two spaces).
     let ghost_len = if app.ghost.is_some() {
@@ -116,7 +133,7 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     // whose cell is taken by another sits in the nearest free one beside it.
     // Not while a poll's answer is hidden: the marks bracket it.
     let mut taken: Vec<u16> = Vec::new();
-    let marks = if app.class.marks_hidden() {
+    let marks = if withheld.marks {
         &[][..]
     } else {
         &p.regime_marks[..]
@@ -149,7 +166,13 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
             sets.push(chart::dataset(&t.ghost, data));
         }
     }
-    sets.extend(curves.iter().map(|(c, data)| chart::dataset(c, data)));
+    sets.extend(
+        curves
+            .iter()
+            .zip(withheld.slopes)
+            .filter(|(_, w)| !w)
+            .map(|((c, data), _)| chart::dataset(c, data)),
+    );
     chart::plot(sets, bounds, g, buf);
 }
 
