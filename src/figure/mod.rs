@@ -49,6 +49,7 @@ pub use svg::{
     contact_span, render_contact, render_contact_map, render_contact_sweep, render_moments_svg,
     render_svg, sweep_span, ContactLoads, ContactMap, ContactSweep,
 };
+pub use svg::{phone_note, render_phone, render_phone_with, LegendEntry, Picture, UPRIGHT, WIDE};
 pub use withheld::{Withheld, INDICES, SLOPES};
 
 /// The views, named where the scene keeps the one shown.

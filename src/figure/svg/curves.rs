@@ -70,11 +70,28 @@ pub(super) fn slopes(
 ) -> anyhow::Result<Placed> {
     let s = Scene::compute(&state.scene_spec(Curves::ALL, opts.points))?;
     let x = x_scale(state);
-    let (_, hi) = positive_span(s.elastic.iter().chain(&s.total).chain(&s.persson_elastic));
+    // Fitted to the curves drawn: while a poll's answer waits, the range
+    // says nothing of those left out.
+    let w = opts.withheld;
+    let drawn = |k: usize, ys: &'_ [f64]| -> Vec<f64> {
+        if w.slopes[k] {
+            Vec::new()
+        } else {
+            ys.to_vec()
+        }
+    };
+    let (el, pl, tot, per) = (
+        drawn(0, &s.elastic),
+        drawn(1, &s.plastic),
+        drawn(2, &s.total),
+        drawn(3, &s.persson_elastic),
+    );
+    let (_, hi) = positive_span(el.iter().chain(&tot).chain(&per));
     let (lo, _) = positive_span(
-        s.plastic
-            .iter()
-            .chain(&s.elastic)
+        pl.iter()
+            .chain(&el)
+            .chain(&tot)
+            .chain(&per)
             .filter(|v| **v >= hi * 1e-4),
     );
     // The hardness by its own name (H alone is the Hurst exponent).
@@ -86,7 +103,6 @@ pub(super) fn slopes(
     let xy = (&x, &y);
     // Every listed curve can be found: say where one lies under another
     // or below the chart (not while a poll's answer waits: that says it).
-    let w = opts.withheld;
     let el = if coincide(&s.elastic, &s.total) && !w.marks {
         "elastic (= total here)"
     } else {

@@ -11,6 +11,7 @@ mod fine;
 mod legend;
 mod map;
 mod moments;
+mod phone;
 mod plot;
 mod spectrum;
 mod wrap;
@@ -30,6 +31,7 @@ pub use contact::{
 };
 pub use contact_map::{render_contact_map, ContactMap};
 use legend::{Legend, Placed, Sample};
+pub use phone::{phone_note, render_phone, render_phone_with, LegendEntry, Picture, UPRIGHT, WIDE};
 use wrap::wrap;
 
 /// Picture size in pixels (SVG user units).
@@ -143,6 +145,12 @@ fn render(
         (buf, Placed::Inside) => buf,
         (_, Placed::NoRoom(room)) => render_once(draw, lines, Some(room))?.0,
     };
+    // (A phone's picture: its page says the scene.)
+    let desc = if phone::size().is_some() {
+        &[][..]
+    } else {
+        desc
+    };
     let head = format!(
         "\n<title>{}</title>\n<desc>{}</desc>\n<style>rect{{shape-rendering:crispEdges}}</style>",
         xml_text(title),
@@ -160,13 +168,22 @@ fn render_once(
 ) -> anyhow::Result<(String, Placed)> {
     let mut buf = String::new();
     fine::start();
+    phone::start();
     let placed = {
-        let root = SVGBackend::with_string(&mut buf, SIZE).into_drawing_area();
+        // A phone's picture: its shape, nothing under the chart.
+        let phone = phone::size();
+        let size = phone.unwrap_or(SIZE);
+        let root = SVGBackend::with_string(&mut buf, size).into_drawing_area();
         root.fill(&WHITE).map_err(plot_err)?;
-        let caption_h = CAPTION_H.max(2 * 8 + LINE_H * lines.len() as u32);
-        let (chart_area, caption_area) = root.split_vertically(SIZE.1 - caption_h);
-        let placed = draw(&chart_area, room)?;
-        caption(&caption_area, lines)?;
+        let placed = if phone.is_some() {
+            draw(&root, room)?
+        } else {
+            let caption_h = CAPTION_H.max(2 * 8 + LINE_H * lines.len() as u32);
+            let (chart_area, caption_area) = root.split_vertically(SIZE.1 - caption_h);
+            let placed = draw(&chart_area, room)?;
+            caption(&caption_area, lines)?;
+            placed
+        };
         root.present().map_err(plot_err)?;
         placed
     };

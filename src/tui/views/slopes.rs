@@ -26,7 +26,21 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         t.title,
     )];
     chart::title(app, title, area, buf);
-    let bounds = (p.x_bounds, p.y_bounds);
+    // While a poll's answer waits: the curves that would give it are not
+    // drawn, the y range fits those drawn, and the legend names curves
+    // without saying where they went.
+    let withheld = app.class.withheld(app.state.size_effect);
+    let all = [&p.elastic, &p.plastic, &p.total, &p.persson];
+    let y_bounds = if withheld.slopes.iter().any(|w| *w) {
+        let shown: Vec<&Vec<(f64, f64)>> = (0..4)
+            .filter(|i| !withheld.slopes[*i])
+            .map(|i| all[i])
+            .collect();
+        crate::tui::plots::slope_bounds(&shown, &[])
+    } else {
+        p.y_bounds
+    };
+    let bounds = (p.x_bounds, y_bounds);
     // Draw order, later over earlier: Persson's reference curve last, so
     // that it shows even where it equals the total (fig3) or the elastic
     // curve; a curve left with under a twentieth of its cells visible is
@@ -57,9 +71,6 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         }
         i
     };
-    // While a poll's answer waits: the curves that would give it are not
-    // drawn, and the legend names curves without saying where they went.
-    let withheld = app.class.withheld(app.state.size_effect);
     let mut names: Vec<(&CurveStyle, String)> = if withheld.marks {
         (0..curves.len())
             .map(|i| {
@@ -127,7 +138,7 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     }
     chart::legend_named(t, &names, area, buf);
     reading_line(app, Rect::new(area.x, area.y + 2, area.width, 1), buf);
-    let (x, y) = (Scale::of_axis(axis, p.x_bounds), Scale::decades(p.y_bounds));
+    let (x, y) = (Scale::of_axis(axis, p.x_bounds), Scale::decades(y_bounds));
     chart::axes(t, (&x, &y), axis.symbol(), (area, g), buf);
     // Where the regime changes along the sweep, on the x axis line; a mark
     // whose cell is taken by another sits in the nearest free one beside it.
@@ -157,7 +168,7 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     }
 
     // The curves, over the marker line.
-    let marker = chart::marker_line(app, p.y_bounds);
+    let marker = chart::marker_line(app, y_bounds);
     let mut sets = vec![chart::dataset(&t.marker_line, &marker)];
     // The ghost under everything current.
     if let Some(ghost) = &app.ghost {
