@@ -192,6 +192,6 @@ mod tests {
         assert!(full.starts_with("<svg width=\"900\" height=\"600\""));
         assert!(full.contains(">\nelastic\n<"));
         let small = p.svg.len();
-        assert!(small < full.len() / 2, "{small} of {}", full.len());
+        assert!(small < full.len() * 2 / 3, "{small} of {}", full.len());
     }
 }
