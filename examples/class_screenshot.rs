@@ -182,6 +182,7 @@ pub fn picture(revealed: bool) -> anyhow::Result<String> {
             size: if i % 11 == 4 { (80, 22) } else { SIZE },
             marker: if i % 7 == 3 { "half" } else { "braille" }.into(),
             idle: Duration::from_secs(5 + i as u64 * 3),
+            via: "ssh",
         })
         .collect();
     app.class.view = Some(ClassView {

@@ -30,6 +30,7 @@ fn seat(name: &str, state: SeatState, size: (u16, u16)) -> Seat {
         size,
         marker: "braille".into(),
         idle: Duration::from_secs(75),
+        via: "ssh",
     }
 }
 

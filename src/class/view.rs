@@ -21,6 +21,8 @@ pub struct Seat {
     pub marker: String,
     /// Since their last key.
     pub idle: Duration,
+    /// How they reach the class: `ssh`, `web` or `phone`.
+    pub via: &'static str,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -90,6 +90,7 @@ fn the_class_line() {
         size,
         marker: "braille".into(),
         idle: Duration::ZERO,
+        via: "ssh",
     };
     let mut v = ClassView {
         seats: vec![

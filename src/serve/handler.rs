@@ -324,6 +324,8 @@ impl russh::server::Handler for Handler {
             name: std::mem::take(&mut self.user),
             addr: self.peer.ip(),
             client: std::mem::take(&mut self.client),
+            transport: crate::class::Transport::Ssh,
+            token: None,
         });
         Ok(())
     }

@@ -132,6 +132,8 @@ pub struct Shared {
     pub join_url: Option<String>,
     /// The frames students at one screen share.
     pub frames: frames::Frames,
+    /// The pages phones that show one scene share.
+    pub pictures: web::phone::Pictures,
 }
 
 impl Shared {
@@ -292,6 +294,7 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         seats: Limits::new(opts.max_sessions, opts.max_per_address),
         join_url: join_url.as_ref().map(|u| u.url.clone()),
         frames: frames::Frames::default(),
+        pictures: web::phone::Pictures::default(),
     });
     if shared.log.on() {
         tokio::spawn(summaries(Arc::clone(&shared)));

@@ -71,11 +71,17 @@ pub type Slot = mpsc::Sender<Vec<u8>>;
 /// snapshot), where leaving the alternate screen again would put the
 /// cursor back where the session began, over the snapshot.
 #[derive(Clone, Debug, Default)]
-pub struct Bye(Arc<Mutex<(Option<String>, bool)>>);
+pub struct Bye(Arc<Mutex<(Option<String>, bool)>>, Arc<Mutex<Vec<String>>>);
 
 impl Bye {
     pub fn set(&self, why: impl Into<String>) {
         self.0.lock().unwrap_or_else(|p| p.into_inner()).0 = Some(why.into());
+    }
+
+    /// Lines the client's normal screen keeps above the goodbye (who the
+    /// student was in the class, their polls' results).
+    pub fn keep(&self, lines: Vec<String>) {
+        *self.1.lock().unwrap_or_else(|p| p.into_inner()) = lines;
     }
 
     /// The session printed on the normal screen (`true`) or went back to
@@ -92,7 +98,8 @@ impl Bye {
     /// The goodbye's bytes for the terminal as it is now.
     pub fn bytes(&self) -> Vec<u8> {
         let (why, normal) = std::mem::take(&mut *self.0.lock().unwrap_or_else(|p| p.into_inner()));
-        goodbye(why.as_deref(), !normal)
+        let kept = std::mem::take(&mut *self.1.lock().unwrap_or_else(|p| p.into_inner()));
+        goodbye_keeping(why.as_deref(), !normal, &kept)
     }
 }
 
@@ -101,13 +108,23 @@ impl Bye {
 /// attributes reset, then `why` (if the server ended it) on a line of its
 /// own.
 pub fn goodbye(why: Option<&str>, alt: bool) -> Vec<u8> {
+    goodbye_keeping(why, alt, &[])
+}
+
+/// [`goodbye`] with `kept` lines above the line that says why.
+pub fn goodbye_keeping(why: Option<&str>, alt: bool, kept: &[String]) -> Vec<u8> {
     let mut bye = Vec::new();
     if alt {
         let _ = crossterm::execute!(bye, LeaveAlternateScreen);
     }
     let _ = crossterm::execute!(bye, Show, ResetColor, SetAttribute(Attribute::Reset));
-    if let Some(why) = why {
-        bye.extend_from_slice(format!("\r\nroughtui: {why}\r\n").as_bytes());
+    for l in kept {
+        bye.extend_from_slice(format!("\r\n{l}").as_bytes());
+    }
+    match why {
+        Some(why) => bye.extend_from_slice(format!("\r\nroughtui: {why}\r\n").as_bytes()),
+        None if !kept.is_empty() => bye.extend_from_slice(b"\r\n"),
+        None => {}
     }
     bye
 }

@@ -84,6 +84,10 @@ pub(super) fn on_poll(s: &mut Seat, poll: Option<Arc<Poll>>) -> bool {
         Some(a) if !a.revealed => {
             a.revealed = true;
             a.changed = p.changed;
+            let line = a.line(&UNICODE, usize::MAX);
+            let line = line.trim_end_matches(" · Enter dismisses").to_string();
+            s.results
+                .push(format!("poll {}: {}", s.results.len() + 1, line));
         }
         _ => return shown,
     }

@@ -94,7 +94,7 @@ impl Class {
         open.poll = Arc::new(p);
         open.silent = seats
             .iter()
-            .filter(|(id, _)| !open.answers.contains_key(id))
+            .filter(|(id, s)| s.here && !open.answers.contains_key(id))
             .map(|(_, s)| s.name.clone())
             .collect();
         let poll = Arc::clone(&open.poll);
@@ -215,7 +215,7 @@ impl Class {
         } else {
             c.seats
                 .iter()
-                .filter(|(id, _)| !o.answers.contains_key(id))
+                .filter(|(id, st)| st.here && !o.answers.contains_key(id))
                 .map(|(_, st)| st.name.clone())
                 .collect()
         };

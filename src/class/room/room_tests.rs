@@ -60,7 +60,7 @@ fn two_students_of_one_name_get_distinct_names() {
     // One who answered and left keeps the name in the poll's rows.
     let id = class.open(question(), shown());
     class.answer(b, id, 100.0).unwrap();
-    class.leave(b);
+    class.leave(b, 1);
     let e = class.join("ada", HOME, (80, 24), "braille", true);
     assert_eq!(class.name(e).unwrap(), "ada-4");
     assert!(class.reveal(false));
@@ -118,8 +118,8 @@ fn the_roster_counts_and_wakes_only_the_lecturer() {
         class.summary().unwrap(),
         "class: 2 students, 1 following, 1 on their own"
     );
-    class.leave(a);
-    class.leave(b);
+    class.leave(a, 1);
+    class.leave(b, 1);
     assert_eq!(class.summary(), None);
     poll.mark_unchanged();
 }
@@ -145,7 +145,7 @@ fn a_poll_is_answered_revealed_and_refuses_late_answers() {
     assert_eq!(v.seats[2].state, SeatState::Answering);
     assert_eq!(v.seats[0].state, SeatState::Answered);
     // Bob leaves: his answer stays and still counts.
-    class.leave(b);
+    class.leave(b, 1);
     assert_eq!(class.view().line(&UNICODE), "2 students · 2/3 answered");
     assert!(class.reveal(false));
     assert!(!class.reveal(false));

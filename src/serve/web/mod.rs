@@ -11,6 +11,8 @@
 //! connection closes; no path from a request reaches the file system.
 
 pub mod assets;
+pub mod json;
+pub mod phone;
 pub mod socket;
 mod url;
 

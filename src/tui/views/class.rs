@@ -170,17 +170,19 @@ pub fn render_poll(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     }
 }
 
-/// The class list: name, following or not, terminal size, marker set and
-/// idle time of each student, in pages when the class is long.
+/// The class list: name, following or not, how they reach the class (ssh,
+/// web, phone), terminal size, marker set and idle time of each student,
+/// in pages when the class is long.
 pub fn render_list(app: &App, area: Rect, buf: &mut Buffer) {
     let Some(v) = &app.class.view else {
         return;
     };
     let g = &UNICODE;
     let t = &app.theme;
+    // 78 columns: the list fits an 80×24 terminal.
     let header = format!(
-        " {:<32}  {:<12}  {:>7}  {:<7}  {:>6}",
-        "name", "state", "size", "marker", "idle"
+        " {:<32}  {:<12}  {:<5}  {:>7} {:<7} {:>6}",
+        "name", "state", "via", "size", "marker", "idle"
     );
     let rows: Vec<String> = v
         .seats
@@ -202,9 +204,10 @@ pub fn render_list(app: &App, area: Rect, buf: &mut Buffer) {
             let pad = 32usize.saturating_sub(Span::raw(&name).width());
             let size = text(app, &format!("{}{}{}", s.size.0, g.times, s.size.1));
             format!(
-                " {name}{}  {:<12}  {size:>7}  {:<7}  {:>6}",
+                " {name}{}  {:<12}  {:<5}  {size:>7} {:<7} {:>6}",
                 " ".repeat(pad),
                 s.state.label(),
+                s.via,
                 text(app, &s.marker),
                 duration(s.idle),
             )
