@@ -84,7 +84,7 @@ window.RoughPhone = (function () {
     if (!h) {
       return;
     }
-    text("histcount", h.count);
+    text("histcount", h.count + (h.truth === null ? "" : " · green: the model"));
     text("histlo", h.axis + " " + h.lo);
     text("histhi", h.hi);
     const max = Math.max(1, ...h.counts);
@@ -92,7 +92,8 @@ window.RoughPhone = (function () {
       const d = document.createElement("div");
       d.style.height = (100 * c / max) + "%";
       if (i === h.truth) {
-        d.className = "truth";
+        // The model's bar: green, full height (faint) where nobody is.
+        d.className = c > 0 ? "truth" : "truth empty";
       }
       d.title = String(c);
       return d;
@@ -152,7 +153,8 @@ window.RoughPhone = (function () {
       text("answer", p.answer ? "you answered " + p.answer + (p.revealed ? "" :
         " · answer again to change it · waiting for the reveal") :
         (p.revealed ? "you did not answer" : ""));
-      text("reveal", p.revealed ? p.truth + (p.off ? " · you: " + p.off : "") : "");
+      text("reveal", p.revealed ? p.truth : "");
+      text("off", p.revealed && p.off ? "your answer: " + p.off : "");
     }
     const row = $("answering").children;
     row[0].hidden = !answering;

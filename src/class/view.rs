@@ -122,10 +122,11 @@ impl ClassView {
                 plural(t.answers.len(), "answer", "answers")
             ));
         }
+        // (A phone draws no cells: its size is not a terminal's.)
         let small = self
             .seats
             .iter()
-            .filter(|s| s.size.0 < MIN_SIZE.0 || s.size.1 < MIN_SIZE.1)
+            .filter(|s| s.via != "phone" && (s.size.0 < MIN_SIZE.0 || s.size.1 < MIN_SIZE.1))
             .count();
         if small > 0 {
             parts.push(format!(

@@ -148,7 +148,11 @@ pub(super) fn on_key(s: &mut Seat, msg: Message) {
                     }
                 }
                 _ => match Question::of_claims(app.view, &app.claims, app.state.size_effect) {
-                    Some(q) => open(s, q),
+                    Some(q) => {
+                        // A lesson's reading question keeps its chart.
+                        let read = step_read(app);
+                        open(s, Question { read, ..q })
+                    }
                     // No claim here: the lecturer types the value.
                     None => {
                         let _ = s.ex.update(Message::PollTyped);
@@ -167,6 +171,15 @@ pub(super) fn on_key(s: &mut Seat, msg: Message) {
         Message::SavePoll if s.is_lecturer() => save(s),
         _ => {}
     }
+}
+
+/// Whether the lesson's step the lecturer is at asks a reading question.
+fn step_read(app: &crate::tui::app::App) -> bool {
+    let at_step = app.class.step.as_ref().is_some_and(|s| s.left.is_none());
+    at_step
+        && (app.class.lesson.as_ref())
+            .and_then(|l| l.step().poll)
+            .is_some_and(|q| q.read)
 }
 
 /// The poll of a lesson's step on a value, if the lecturer is at one.

@@ -152,6 +152,7 @@ async fn run(start: Start) {
     s.ex.app.lecturer_keys = shared.lecturer_keys.any();
     s.ex.app.lecturer_here = s.lecturer.borrow().is_some();
     let mut name = clean_name(&name);
+    let mut back = false;
     let joined = Instant::now();
     let mut marker = s.marker();
     let mut roster = shared.class.watch_roster();
@@ -194,17 +195,21 @@ async fn run(start: Start) {
             Some(h) => format!("{line}\n{h}"),
             None => line,
         });
-        if taken.again {
+        back = taken.again;
+        if back {
             s.ex.app
                 .set_status(format!("back in your seat as {name}"), false);
         }
         polls.mark_changed();
     }
-    let shape = if phone {
+    let mut shape = if phone {
         "a phone".to_string()
     } else {
         format!("{}x{}, {}", size.0, size.1, marker.name())
     };
+    if back {
+        shape.push_str(", back in the seat it left");
+    }
     shared.log.line(&format!(
         "join  {name}{} from {addr}{via}, {shape}",
         if is_lecturer { " (lecturer)" } else { "" },

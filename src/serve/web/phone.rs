@@ -328,7 +328,7 @@ fn json(app: &App, follow: Follow, legend: &[crate::figure::LegendEntry]) -> Jso
     });
     let status = app.status.as_ref().map(|s| {
         Json::Obj(vec![
-            ("text", s.text.clone().into()),
+            ("text", buttons(&s.text).into()),
             ("error", s.error.into()),
         ])
     });
@@ -450,4 +450,26 @@ pub fn histogram(t: &Tally) -> Json {
         ("hi", fmt_value(axis, sw.to()).into()),
         ("axis", axis.symbol().into()),
     ])
+}
+
+/// A status line as a phone says it: its buttons for the keys.
+pub fn buttons(text: &str) -> String {
+    [
+        (
+            "←→ move the marker (⇧ fine), Enter answers",
+            "move the marker with less and more, then tap answer",
+        ),
+        (
+            "move the marker, then Enter answers",
+            "move the marker, then tap answer",
+        ),
+        ("f to follow", "tap follow to follow"),
+        ("Enter dismisses", "OK dismisses"),
+        (
+            "any change explores on your own",
+            "a change explores on your own",
+        ),
+    ]
+    .iter()
+    .fold(text.to_string(), |t, (key, button)| t.replace(key, button))
 }

@@ -202,7 +202,11 @@ pub fn render_list(app: &App, area: Rect, buf: &mut Buffer) {
                 name = cut;
             }
             let pad = 32usize.saturating_sub(Span::raw(&name).width());
-            let size = text(app, &format!("{}{}{}", s.size.0, g.times, s.size.1));
+            let size = if s.via == "phone" {
+                text(app, "—")
+            } else {
+                text(app, &format!("{}{}{}", s.size.0, g.times, s.size.1))
+            };
             format!(
                 " {name}{}  {:<12}  {:<5}  {size:>7} {:<7} {:>6}",
                 " ".repeat(pad),
