@@ -213,6 +213,13 @@
         const who = rest.slice(sp + 1);
         document.title = "roughtui — " + who;
         window.RoughPhone.name(who);
+        if (!phone) {
+          // Over the terminal's top right corner for a while.
+          const badge = document.getElementById("badge");
+          badge.textContent = "you are " + who + " in this class";
+          badge.hidden = false;
+          setTimeout(function () { badge.hidden = true; }, 8000);
+        }
         return;
       }
       if (phone) {

@@ -48,6 +48,7 @@ fn shared_with(state: crate::scene::State) -> Arc<Shared> {
         seats: Limits::new(100, 100),
         join_url: None,
         frames: Frames::default(),
+        pictures: Default::default(),
     })
 }
 
@@ -149,12 +150,16 @@ impl Client {
                 slot,
                 bye: Bye::default(),
                 via: " over the web",
+                render: crate::serve::session::Render::Terminal,
+                notes: None,
             },
             role,
             size,
             name: "s".into(),
             addr: IpAddr::V4(Ipv4Addr::LOCALHOST),
             client,
+            transport: crate::class::Transport::Web,
+            token: None,
         });
         let screen = Arc::new(Mutex::new(Screen::new(size)));
         let s = Arc::clone(&screen);

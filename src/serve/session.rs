@@ -190,11 +190,11 @@ async fn run(start: Start) {
         if let Some(n) = &notes {
             let _ = n.send(format!("seat {} {name}", taken.token));
         }
-        let line = term::name_line(&name);
-        hint = Some(match hint {
-            Some(h) => format!("{line}\n{h}"),
-            None => line,
-        });
+        // Over SSH the first screen says it (a page says it itself:
+        // followers' first screens stay one frame).
+        if let Some(h) = hint.take() {
+            hint = Some(format!("{}\n{h}", term::name_line(&name)));
+        }
         back = taken.again;
         if back {
             s.ex.app

@@ -2,7 +2,7 @@
 //! explorer makes the scene a poll is asked on.)
 
 use super::*;
-use crate::class::{Ask, Question, Shown, UNICODE};
+use crate::class::{Arrival, Ask, Question, Shown, Transport, UNICODE};
 use rough_model::Axis;
 
 fn shown() -> Shown {
@@ -57,11 +57,13 @@ fn two_students_of_one_name_get_distinct_names() {
     let d = class.join(&long, HOME, (80, 24), "braille", true);
     let n = class.name(d).unwrap();
     assert!(n.ends_with("-2") && n.chars().count() == NAME_CHARS, "{n}");
-    // One who answered and left keeps the name in the poll's rows.
+    // One who answered and left keeps the name in the poll's rows; an
+    // ada from elsewhere does not take it.
     let id = class.open(question(), shown());
     class.answer(b, id, 100.0).unwrap();
     class.leave(b, 1);
-    let e = class.join("ada", HOME, (80, 24), "braille", true);
+    let away: IpAddr = "10.0.0.9".parse().unwrap();
+    let e = class.join("ada", away, (80, 24), "braille", true);
     assert_eq!(class.name(e).unwrap(), "ada-4");
     assert!(class.reveal(false));
     let names: Vec<String> = (class.csv().unwrap().lines().skip(1))
@@ -212,4 +214,62 @@ fn a_poll_is_answered_revealed_and_refuses_late_answers() {
     assert_eq!(class.csv(), None);
     assert_eq!(class.answer(c, id2, 5.0), Err(Refused::NoPoll));
     assert_eq!((class.polls(), class.seen()), (2, 3));
+}
+
+fn arrival<'a>(name: &'a str, via: Transport, token: Option<&'a str>) -> Arrival<'a> {
+    Arrival {
+        name,
+        addr: HOME,
+        size: (80, 24),
+        marker: "braille",
+        following: true,
+        via,
+        token,
+    }
+}
+
+#[test]
+fn a_seat_is_taken_again_by_its_token_or_over_ssh_by_name_and_address() {
+    let class = Class::default();
+    let pia = class.take_seat(&arrival("pia", Transport::Phone, None));
+    let bob = class.take_seat(&arrival("bob", Transport::Web, None));
+    assert_eq!((pia.turn, pia.again, pia.token.len()), (1, false, 32));
+    assert_ne!(pia.token, bob.token);
+    let poll = class.open(question(), shown());
+    class.answer(pia.id, poll, 200.0).unwrap();
+    // A reload: the same seat, its next turn; the old session's leave
+    // (it ends after) changes nothing.
+    let again = class.take_seat(&arrival("pia", Transport::Phone, Some(&pia.token)));
+    assert_eq!((again.id, again.turn, again.again), (pia.id, 2, true));
+    assert_eq!(again.name, "pia");
+    assert_eq!(class.turn(pia.id), Some(2));
+    class.leave(pia.id, 1);
+    assert_eq!(class.students(), 2);
+    // Away: out of the list, the seat and the answer kept; one CSV row.
+    class.leave(pia.id, 2);
+    let v = class.view();
+    assert_eq!(v.seats.len(), 1);
+    assert_eq!(v.poll.as_ref().unwrap().asked, 2, "bob, and pia's answer");
+    let back = class.take_seat(&arrival("pia", Transport::Web, Some(&pia.token)));
+    assert_eq!((back.id, back.turn), (pia.id, 3));
+    let v = class.view();
+    assert_eq!(v.seats[0].name, "pia");
+    assert_eq!(v.seats[0].via, "web");
+    assert!(class.reveal(false));
+    let csv = class.csv().unwrap();
+    assert_eq!(csv.matches(",pia,").count(), 1, "{csv}");
+    // A token of no seat takes a new one; over the web no name does.
+    let stranger = class.take_seat(&arrival("pia", Transport::Web, Some("00ff")));
+    assert_eq!((stranger.again, stranger.name.as_str()), (false, "pia-2"));
+    // Over SSH, the same name from the same address takes the seat left.
+    let ssh = class.join("sam", HOME, (80, 24), "braille", true);
+    class.leave(ssh, 1);
+    assert_eq!(class.join("sam", HOME, (80, 24), "braille", true), ssh);
+    // A student the lecturer removed keeps no seat: the token is void.
+    class.remove(bob.id);
+    class.leave(bob.id, 1);
+    let bob2 = class.take_seat(&arrival("bob", Transport::Web, Some(&bob.token)));
+    assert!(!bob2.again && bob2.id != bob.id);
+    // Students who came: seats, not sessions.
+    assert_eq!(class.seen(), 5);
 }

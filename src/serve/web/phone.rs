@@ -473,3 +473,7 @@ pub fn buttons(text: &str) -> String {
     .iter()
     .fold(text.to_string(), |t, (key, button)| t.replace(key, button))
 }
+
+#[cfg(test)]
+#[path = "phone_tests.rs"]
+mod tests;
