@@ -148,7 +148,7 @@ fn main() -> anyhow::Result<()> {
 pub fn picture(revealed: bool) -> anyhow::Result<String> {
     let state = presets::load("fig2")?;
     let mut app = App::new(state, Theme::colored(), SIZE);
-    let question = Question::of_claims(app.view, &app.claims)
+    let question = Question::of_claims(app.view, &app.claims, app.state.size_effect)
         .ok_or_else(|| anyhow::anyhow!("fig2 makes no claim"))?;
     // 30 answers, as students step the marker from 128 in quarter decades:
     // most a step or two up, a few on the far side of the crossing.

@@ -55,6 +55,7 @@
   let sock = null;
   let phone = false;
   let retry = 0;
+  let busy = 0;
 
   function send(data) {
     if (sock && sock.readyState === WebSocket.OPEN) {
@@ -207,6 +208,7 @@
         // "seat TOKEN NAME": this tab's seat, and the name in the class.
         seated = true;
         retry = 0;
+        busy = 0;
         const rest = ev.data.slice(5);
         const sp = rest.indexOf(" ");
         kept.setItem("roughtui-seat", rest.slice(0, sp));
@@ -227,6 +229,14 @@
       }
     };
     sock.onclose = function (ev) {
+      // 4003: the code was not checked (wrong codes from this address
+      // came too fast, a classmate's typos or a guesser's): again soon.
+      if (ev.code === 4003 && busy < 10) {
+        busy += 1;
+        showForm(ev.reason + " (trying again …)");
+        setTimeout(function () { join(name, code); }, 700 + 300 * busy);
+        return;
+      }
       // 4000-4999: refused before the explorer started (a wrong code, a
       // full class): back to the form with the reason.
       if (ev.code >= 4000 && ev.code < 5000) {

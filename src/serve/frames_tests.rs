@@ -49,6 +49,7 @@ fn shared_with(state: crate::scene::State) -> Arc<Shared> {
         join_url: None,
         frames: Frames::default(),
         pictures: Default::default(),
+        refusals: Default::default(),
     })
 }
 

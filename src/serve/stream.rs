@@ -14,6 +14,8 @@ use tokio::io::{AsyncRead, AsyncWrite, ReadBuf};
 #[derive(Debug, Default)]
 struct State {
     killed: AtomicBool,
+    /// The client sent something.
+    read: AtomicBool,
     /// The tasks waiting on a read and on a write.
     wakers: Mutex<[Option<Waker>; 2]>,
 }
@@ -23,6 +25,11 @@ struct State {
 pub struct Kill(Arc<State>);
 
 impl Kill {
+    /// Whether the client sent anything yet.
+    pub fn spoke(&self) -> bool {
+        self.0.read.load(Ordering::Relaxed)
+    }
+
     pub fn kill(&self) {
         self.0.killed.store(true, Ordering::SeqCst);
         let wakers = std::mem::take(&mut *self.0.wakers.lock().unwrap_or_else(|p| p.into_inner()));
@@ -70,7 +77,12 @@ impl<S: AsyncRead + Unpin> AsyncRead for Killable<S> {
     ) -> Poll<io::Result<()>> {
         let this = self.get_mut();
         this.check(cx, 0)?;
-        Pin::new(&mut this.inner).poll_read(cx, buf)
+        let before = buf.filled().len();
+        let r = Pin::new(&mut this.inner).poll_read(cx, buf);
+        if buf.filled().len() > before {
+            this.state.read.store(true, Ordering::Relaxed);
+        }
+        r
     }
 }
 

@@ -430,7 +430,7 @@ pub fn histogram(t: &Tally) -> Json {
         (v.is_finite() && (0.0..=1.0).contains(&x))
             .then(|| ((x * BINS as f64) as usize).min(BINS - 1))
     };
-    let mut counts = vec![0usize; BINS];
+    let mut counts = [0usize; BINS];
     for v in &t.answers {
         if let Some(k) = bin(*v) {
             counts[k] += 1;

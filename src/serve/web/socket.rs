@@ -40,6 +40,9 @@ pub const MAX_MESSAGE: usize = 16 * 1024;
 pub const REFUSED: u16 = 4000;
 pub const WRONG_CODE: u16 = 4001;
 pub const FULL: u16 = 4002;
+/// The code was not checked (its address sent wrong ones too fast): the
+/// page tries again by itself a moment later.
+pub const BUSY: u16 = 4003;
 
 /// The 101 answer, after the upgrade's headers and the origin are checked.
 pub async fn upgrade(
@@ -67,9 +70,7 @@ pub async fn upgrade(
     let key = match checked {
         Ok(k) => k,
         Err(r) => {
-            shared
-                .log
-                .line(&format!("web: refused {} from {}: {}", r.0, peer.ip(), r.1));
+            shared.refusals.count(&super::refused(&r));
             return refuse(&mut socket, &r).await;
         }
     };
@@ -114,21 +115,22 @@ async fn join(shared: Arc<Shared>, mut ws: WebSocketStream<TcpStream>, peer: Soc
     if let Some(code) = shared.class_code.clone() {
         let typed = param(q, "code").unwrap_or_default();
         let wrongs = &shared.wrong_codes;
-        let wait = format!("too many wrong class codes from {ip}: wait a minute");
         match wrongs.turn(ip, Instant::now()) {
             Turn::Now => {}
             Turn::At(t) => tokio::time::sleep_until(t.into()).await,
-            Turn::Refused => return close(&mut ws, WRONG_CODE, &wait).await,
-        }
-        if !code.matches(typed.as_bytes()) {
-            let now = Instant::now();
-            let was = wrongs.waiting(ip, now);
-            if wrongs.wrong(ip, now) && !was {
-                shared.log.line(&format!(
-                    "{ip} sent {} wrong class codes in a minute: its codes wait their turn",
-                    crate::serve::code::WRONG_PER_MINUTE
-                ));
+            Turn::Refused(first) => {
+                if first {
+                    shared.log.line(&crate::serve::code::too_fast(ip));
+                }
+                shared.refusals.count(crate::serve::code::UNCHECKED);
+                let wait = crate::serve::code::wait_line(ip);
+                return close(&mut ws, BUSY, &wait).await;
             }
+        }
+        if code.matches(typed.as_bytes()) {
+            wrongs.right(ip, Instant::now());
+        } else {
+            shared.refusals.count(crate::serve::code::WRONG);
             let why = if typed.is_empty() {
                 "this class needs its code: ask your lecturer"
             } else {
