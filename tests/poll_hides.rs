@@ -385,3 +385,47 @@ fn the_step_before_a_poll_hides_what_answers_it() {
         }
     }
 }
+
+/// On an ASCII terminal of 100×30 every step of the lesson, its poll open
+/// or waiting, says until when in whole words: nothing cut mid-sentence.
+#[test]
+fn an_ascii_screen_says_until_when_in_whole_words() {
+    use roughtui::tui::glyphs::Glyphs;
+    let lesson = lesson();
+    for at in 0..lesson.steps.len() {
+        let step = &lesson.steps[at];
+        let theme = Theme::colored().with_glyphs(Glyphs::Ascii);
+        let mut app = App::new(step.state.clone(), theme, (100, 30));
+        app.view = step.view;
+        app.student = true;
+        app.lecturer_keys = true;
+        app.class.step = Some(LessonAt::new(Arc::clone(&lesson), at).line());
+        if let Some(q) = step.poll {
+            app.class.asked = Some(Asked {
+                question: q,
+                answer: None,
+                revealed: false,
+                changed: false,
+            });
+        }
+        update(&mut app, Message::Tick);
+        let s = text(&draw(&app));
+        for l in s
+            .lines()
+            .filter(|l| l.contains("(until") || l.contains("(this step"))
+        {
+            let open = l.find('(').unwrap();
+            let said = &l[open..l[open..].find(')').map_or(l.len(), |c| open + c + 1)];
+            assert!(
+                [
+                    "(until the reveal)",
+                    "(until the next poll)",
+                    "(this step's claims show after the lesson's next poll)"
+                ]
+                .contains(&said),
+                "step {}: {said:?}\n{s}",
+                at + 1
+            );
+        }
+    }
+}

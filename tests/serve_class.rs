@@ -538,7 +538,7 @@ fn thirty_students_predict_then_the_model_answers() {
     let mut lines = text.lines();
     assert_eq!(
         lines.next(),
-        Some("question,quantity,unit,truth,name,answer,offset,step,time")
+        Some("question,quantity,unit,truth,name,answer,offset,step,time,poll,revealed")
     );
     let mut rows: Vec<(String, f64, f64)> = lines
         .map(|l| {

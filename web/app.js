@@ -135,7 +135,8 @@
       scrollback: 1000,
       // Text dimmed on the dark ground (the caption) stays readable.
       minimumContrastRatio: 4.5,
-      theme: { background: "#101014" },
+      // The dim grey (the caption, hints) lighter than xterm.js's own.
+      theme: { background: "#101014", brightBlack: "#a0a0ac" },
     });
     fit = new FitAddon.FitAddon();
     term.loadAddon(fit);

@@ -44,7 +44,7 @@ fn shared_with(state: crate::scene::State) -> Arc<Shared> {
         ending: watch::Sender::new(false),
         all_follow: watch::Sender::new(0),
         lesson: None,
-        lesson_csv: Mutex::new(None),
+        lesson_csv: Mutex::default(),
         seats: Limits::new(100, 100),
         join_url: None,
         frames: Frames::default(),

@@ -111,9 +111,9 @@ pub struct Shared {
     lecturers: AtomicUsize,
     /// The poll CSVs written.
     saved: Mutex<Vec<PathBuf>>,
-    /// The lesson the lecturer leads, and its polls' CSV once written.
+    /// The lesson the lecturer leads, and its polls' CSV.
     pub lesson: Option<Arc<crate::class::Lesson>>,
-    pub lesson_csv: Mutex<Option<PathBuf>>,
+    pub lesson_csv: Mutex<poll::LessonCsv>,
     /// Moves on each lecturer's `F`: every student follows again.
     pub all_follow: watch::Sender<u64>,
     /// Set when the server stops: every session says goodbye.
@@ -197,15 +197,34 @@ struct Ssh {
     key_line: String,
 }
 
+/// The kernel's send buffer each connection gets (Linux doubles it for
+/// its own bookkeeping): what waits for a client that stops reading is
+/// bounded by it (with the client's own receive buffer) instead of the
+/// megabytes the kernel would otherwise grow it to, and such a client
+/// stalls a frame, and is let go ([`output::STALL`]), that much sooner.
+/// 64 KiB carries a terminal's frames at 12 MB/s over a 10 ms path.
+pub const SEND_BUFFER: u32 = 64 * 1024;
+
+/// A listener whose connections get [`SEND_BUFFER`] (they inherit it).
+fn bind(addr: SocketAddr) -> std::io::Result<TcpListener> {
+    let s = if addr.is_ipv4() {
+        tokio::net::TcpSocket::new_v4()?
+    } else {
+        tokio::net::TcpSocket::new_v6()?
+    };
+    s.set_reuseaddr(true)?;
+    s.set_send_buffer_size(SEND_BUFFER)?;
+    s.bind(addr)?;
+    s.listen(1024)
+}
+
 async fn ssh(opts: &Options, listen: SocketAddr) -> anyhow::Result<Ssh> {
     let key_path = match &opts.host_key {
         Some(p) => p.clone(),
         None => host_key::default_path()?,
     };
     let (key, generated) = host_key::load_or_create(&key_path)?;
-    let listener = TcpListener::bind(listen)
-        .await
-        .with_context(|| format!("cannot listen on {listen}"))?;
+    let listener = bind(listen).with_context(|| format!("cannot listen on {listen}"))?;
     let key_line = format!(
         "host key {} ({}): {}",
         key_path.display(),
@@ -245,11 +264,7 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         None => None,
     };
     let web = match opts.web {
-        Some(a) => Some(
-            TcpListener::bind(a)
-                .await
-                .with_context(|| format!("cannot listen on {a} for the web"))?,
-        ),
+        Some(a) => Some(bind(a).with_context(|| format!("cannot listen on {a} for the web"))?),
         None => None,
     };
     let web_addr = web.as_ref().map(TcpListener::local_addr).transpose()?;
@@ -286,7 +301,7 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         ending: watch::Sender::new(false),
         all_follow: watch::Sender::new(0),
         lesson: opts.lesson.map(Arc::new),
-        lesson_csv: Mutex::new(None),
+        lesson_csv: Mutex::default(),
         seats: Limits::new(opts.max_sessions, opts.max_per_address),
         join_url: join_url.as_ref().map(|u| u.url.clone()),
         frames: frames::Frames::default(),

@@ -232,6 +232,8 @@ async fn run(start: Start) {
         return;
     }
 
+    // The last screen's lines, when the class ends.
+    let mut screen: Vec<String> = Vec::new();
     loop {
         let listing = is_lecturer && s.ex.app.mode == Mode::Class;
         // Only a session neither lecturing nor following idles out; the
@@ -448,6 +450,11 @@ async fn run(start: Start) {
             }
             _ = ending.changed() => {
                 bye.set(ENDED);
+                // The terminal keeps the last screen above the goodbye
+                // (unless the snapshot is printed there, or it is a phone).
+                if panel.is_none() && phone_out.is_none() {
+                    screen = super::output::screen_lines(&s.ex.render(|_, _| {}));
+                }
                 break;
             }
             () = sleep_until(hint_until), if hint.is_some() => {
@@ -475,13 +482,16 @@ async fn run(start: Start) {
             () = slot.closed() => break,
         }
     }
+    let g = s.ex.app.theme.glyphs;
     if let Some(id) = s.seat {
         shared.class.leave(id, s.turn);
         // The terminal keeps who the student was and how their polls went.
         let mut kept = vec![format!("roughtui: you were {name} in the class")];
         kept.extend(s.results.iter().cloned());
-        let g = s.ex.app.theme.glyphs;
-        bye.keep(kept.iter().map(|l| g.text(l).into_owned()).collect());
+        screen.extend(kept.iter().map(|l| g.text(l).into_owned()));
+    }
+    if !screen.is_empty() {
+        bye.keep(screen);
     }
     if is_lecturer {
         shared.lecturer_left();

@@ -30,12 +30,14 @@ const HOME: IpAddr = IpAddr::V4(std::net::Ipv4Addr::LOCALHOST);
 fn untimed(csv: &str) -> String {
     let mut out = String::new();
     for line in csv.lines() {
-        let (rest, time) = line.rsplit_once(',').unwrap();
+        // The time is the third field from the end (then poll, revealed).
+        let f: Vec<&str> = line.rsplitn(4, ',').collect();
+        let (tail, time, rest) = (format!("{},{}", f[1], f[0]), f[2], f[3]);
         if time.is_empty() || time == "time" {
             out.push_str(line);
         } else {
             assert_eq!((time.len(), &time[10..11], &time[19..]), (20, "T", "Z"));
-            out.push_str(&format!("{rest},T"));
+            out.push_str(&format!("{rest},T,{tail}"));
         }
         out.push('\n');
     }
@@ -181,10 +183,10 @@ fn a_poll_is_answered_revealed_and_refuses_late_answers() {
     );
     assert_eq!(
         untimed(&class.csv().unwrap()),
-        "question,quantity,unit,truth,name,answer,offset,step,time\n\
-         where does the plastic share pass 1/2?,zeta,,321.5,alice,200,-121.5,,T\n\
-         where does the plastic share pass 1/2?,zeta,,321.5,\"b,\"\"ob\"\"\",1000,678.5,,T\n\
-         where does the plastic share pass 1/2?,zeta,,321.5,carol,no answer,,,\n"
+        "question,quantity,unit,truth,name,answer,offset,step,time,poll,revealed\n\
+         where does the plastic share pass 1/2?,zeta,,321.5,alice,200,-121.5,,T,1,yes\n\
+         where does the plastic share pass 1/2?,zeta,,321.5,\"b,\"\"ob\"\"\",1000,678.5,,T,1,yes\n\
+         where does the plastic share pass 1/2?,zeta,,321.5,carol,no answer,,,,1,yes\n"
     );
     assert_eq!(
         class.view().line(&UNICODE),
@@ -205,8 +207,8 @@ fn a_poll_is_answered_revealed_and_refuses_late_answers() {
             .skip(1)
             .collect::<Vec<_>>(),
         [
-            "where does the plastic share pass 1/2?,zeta,,321.5,carol,5,-316.5,,T",
-            "where does the plastic share pass 1/2?,zeta,,321.5,alice,no answer,,,"
+            "where does the plastic share pass 1/2?,zeta,,321.5,carol,5,-316.5,,T,2,no",
+            "where does the plastic share pass 1/2?,zeta,,321.5,alice,no answer,,,,2,no"
         ]
     );
     assert!(class.cancel());
