@@ -46,6 +46,11 @@ pub struct Classroom {
     pub join_url: Option<String>,
     /// `Q`'s full-screen QR code is up (any key closes it).
     pub join_shown: bool,
+    /// The lecturer's projector view (`P`) is up.
+    pub projector: bool,
+    /// The poll's countdown on the projector (`t`): when it ends, and how
+    /// long it was.
+    pub countdown: Option<(std::time::Instant, std::time::Duration)>,
 }
 
 impl Classroom {

@@ -41,7 +41,7 @@ pub use room::{
     clean_name, Arrival, Class, Note, Poll, Refused, SeatId, Taken, Transport, NAME_CHARS,
 };
 pub use shown::{ContactShown, Shown};
-pub use view::{duration, Asked, ClassView, Seat, SeatState, Tally, MIN_SIZE};
+pub use view::{duration, Asked, ClassView, Seat, SeatState, Tally, MIN_SIZE, WITHIN};
 
 #[cfg(test)]
 mod view_tests;

@@ -201,3 +201,39 @@ fn the_claims_row_gives_way_to_the_poll_then_to_a_lessons_question() {
     assert_eq!(c.claims_row(), ClaimsRow::Asked(&asked));
     assert!(c.caption_waits());
 }
+
+#[test]
+fn the_projector_counts_the_median_and_the_answers_within_ten_percent() {
+    let tally = |axis, ask, truth, answers: &[f64]| Tally {
+        question: q(axis, ask, truth),
+        answers: answers.to_vec(),
+        asked: 10,
+        revealed: true,
+        sweep: rough_model::Sweep::new(axis, 1.0, 1e4).unwrap(),
+    };
+    let share = Ask::Share { rising: true };
+    // ζ (a log axis): 290 and 352 are within 10 % of 321.5, 289 is not.
+    let t = tally(
+        Axis::Zeta,
+        share,
+        321.5,
+        &[289.0, 290.0, 352.0, 1000.0, 10.0],
+    );
+    assert_eq!(t.median(), Some(290.0));
+    assert_eq!(t.within(), 2);
+    // An even count: halfway between the two middle ones on the chart.
+    let t = tally(Axis::Zeta, share, 321.5, &[100.0, 400.0, 10.0, 1e4]);
+    assert_eq!(t.median(), Some(200.0));
+    assert_eq!(t.within(), 0);
+    // "Nowhere" answers are counted apart, right when the truth is nowhere.
+    let t = tally(
+        Axis::Zeta,
+        Ask::ShareEver,
+        NOWHERE,
+        &[NOWHERE, NOWHERE, 50.0],
+    );
+    assert_eq!((t.median(), t.nowhere(), t.within()), (Some(50.0), 2, 2));
+    let t = tally(Axis::Zeta, Ask::ShareEver, 30.0, &[NOWHERE]);
+    assert_eq!((t.median(), t.within()), (None, 0));
+    assert_eq!(tally(Axis::Zeta, share, 1.0, &[]).median(), None);
+}

@@ -252,6 +252,8 @@ fn open(s: &mut Seat, q: Question) {
     if let Ok(mut slot) = s.shared.lesson_csv.lock() {
         slot.asking = asking;
     }
+    // A new poll's countdown starts at the lecturer's `t`.
+    s.ex.app.class.countdown = None;
     let shown = s.ex.app.shown();
     let class = &s.shared.class;
     class.open(q, shown);

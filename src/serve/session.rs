@@ -235,7 +235,10 @@ async fn run(start: Start) {
     // The last screen's lines, when the class ends.
     let mut screen: Vec<String> = Vec::new();
     loop {
-        let listing = is_lecturer && s.ex.app.mode == Mode::Class;
+        // The class list's idle times, the projector's countdown: each second.
+        let c = &s.ex.app.class;
+        let listing =
+            is_lecturer && (s.ex.app.mode == Mode::Class || (c.projector && c.countdown.is_some()));
         // Only a session neither lecturing nor following idles out; the
         // others' idle time starts when they stop.
         let idles = !is_lecturer && !s.follow.in_class();

@@ -179,7 +179,7 @@ pub fn render_list(app: &App, area: Rect, buf: &mut Buffer) {
     };
     let g = &UNICODE;
     let t = &app.theme;
-    // 78 columns: the list fits an 80×24 terminal.
+    // 78 columns a row, 80 with the frame: the list fits an 80×24 terminal.
     let header = format!(
         " {:<32}  {:<12}  {:<5}  {:>7} {:<7} {:>6}",
         "name", "state", "via", "size", "marker", "idle"
@@ -217,7 +217,7 @@ pub fn render_list(app: &App, area: Rect, buf: &mut Buffer) {
             )
         })
         .collect();
-    let w = 78.min(area.width);
+    let w = 80.min(area.width);
     let h = (rows.len() as u16 + 3).clamp(4, area.height);
     let per_page = usize::from(h - 3).max(1);
     let pages = rows.len().div_ceil(per_page).max(1);
