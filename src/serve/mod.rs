@@ -504,7 +504,14 @@ async fn summaries(shared: Arc<Shared>) {
         tick.tick().await;
         if let Some(line) = shared.class.summary() {
             shared.log.line(&line);
-            shared.log.line(&shared.frames.summary());
+            let (drawn, taken) = shared.pictures.counts();
+            let mut frames = shared.frames.summary();
+            if drawn > 0 {
+                frames.push_str(&format!(
+                    "; phones: {drawn} pages drawn, taken {taken} times by others"
+                ));
+            }
+            shared.log.line(&frames);
         }
     }
 }
