@@ -4,7 +4,11 @@
 //! leads. The picture is the view drawn by the export's SVG code; before
 //! the reveal it leaves out the curves that would answer the poll; the
 //! reveal and the answers' histogram come; a reload takes the same seat.
-//! A name that looks like HTML stays text.
+//! A name that looks like HTML stays text. A phone on its side (844×390)
+//! gets the same layout, the picture beside the poll, the question, the
+//! answer button, the whole picture and the reveal in view without
+//! scrolling; a tablet (800×1280, touch) the terminal fitted to 80 columns
+//! with on-screen keys.
 //!
 //! `ROUGHTUI_SHOTS=DIR` keeps the screenshots (the question, the answer,
 //! the reveal) in DIR. Skipped (with a note) without chromium,
@@ -24,6 +28,15 @@ const CODE: &str = "granite";
 /// The phone page's element `id`'s text.
 fn text_of(id: &str) -> String {
     format!("return document.getElementById('{id}').textContent")
+}
+
+/// Whether the element `selector` is on screen whole, without scrolling.
+fn in_view(selector: &str) -> String {
+    format!(
+        "const r = document.querySelector(\"{selector}\").getBoundingClientRect(); \
+         return String(window.scrollY === 0 && r.height > 0 && r.top >= 0 && \
+         r.bottom <= window.innerHeight && r.right <= window.innerWidth)"
+    )
 }
 
 /// Whether the picture draws a curve in `colour` (`#0000FF`: plastic).
@@ -80,8 +93,33 @@ fn a_phone_taps_through_a_lesson_poll() {
     // Neither the code nor the name stays in the address bar.
     let href = b.js_text("pia", "return location.href");
     assert_eq!(href, format!("http://127.0.0.1:{port}/"));
-    room.wait("lect", "the phone in the class", 20, |s| {
-        s.contains("1 student · 1 following")
+    // A phone on its side, and a tablet.
+    let side = format!("http://127.0.0.1:{port}/?code={CODE}&name=lan");
+    b.open_phone("lan", &side, (844, 390));
+    b.wait_js("lan", "the phone on its side", 30, &text_of("who"), |t| t == "lan");
+    let tablet = format!("http://127.0.0.1:{port}/?code={CODE}&name=tab");
+    b.open_phone("tab", &tablet, (800, 1280));
+    b.wait_js(
+        "tab",
+        "the tablet's terminal",
+        30,
+        "return String(document.getElementById('phone').hidden && \
+         !document.getElementById('keys').hidden && \
+         !!document.querySelector('.xterm-accessibility-tree'))",
+        |t| t == "true",
+    );
+    // 80 columns of the terminal fit the tablet's width.
+    let cols = b.wait_js(
+        "tab",
+        "the tablet's first screen",
+        30,
+        "const t = document.querySelector('.xterm-accessibility-tree'); \
+         return t ? String(Math.max(...Array.from(t.children).map(r => r.textContent.length))) : '0'",
+        |t| t.parse::<u32>().is_ok_and(|n| n >= 80),
+    );
+    assert!(cols.parse::<u32>().unwrap() >= 80, "{cols}");
+    room.wait("lect", "the phones and the tablet in the class", 20, |s| {
+        s.contains("3 students · 3 following")
     });
     // Step 3 asks fig. 2's poll, a prediction.
     room.keys("lect", &["n", "n"]);
@@ -100,6 +138,18 @@ fn a_phone_taps_through_a_lesson_poll() {
     assert!(page.contains("plastic: after the reveal"), "{page}");
     assert!(!page.contains("321") && !page.contains("0.523"), "{page}");
     shot(&mut b, "question");
+    // On its side: the question, the marker's buttons, the answer and the
+    // whole picture in view.
+    b.wait_js("lan", "the question on its side", 20, &text_of("question"), |t| {
+        t.starts_with("Predict:")
+    });
+    for sel in ["#question", "#pic", "#value", "[aria-label='more']", "[aria-label='answer']"] {
+        assert_eq!(b.js_text("lan", &in_view(sel)), "true", "{sel} on its side");
+    }
+    if let Some(d) = &shots {
+        b.shot("lan", &d.join("phone-side-question.png"));
+        b.shot("tab", &d.join("tablet-question.png"));
+    }
     // Tapping: the marker two steps up and one fine, then the answer.
     let mut value = b.js_text("pia", &text_of("value"));
     assert_eq!(value, "ζ = 128");
@@ -114,7 +164,7 @@ fn a_phone_taps_through_a_lesson_poll() {
         t.starts_with("you answered")
     });
     assert!(answered.contains(&value), "{answered} / {value}");
-    room.wait("lect", "1/1 answered", 20, |s| s.contains("1/1 answered"));
+    room.wait("lect", "1/3 answered", 20, |s| s.contains("1/3 answered"));
     shot(&mut b, "answered");
     // The reveal: the model's value, the miss, and the curves back.
     room.keys("lect", &["v"]);
@@ -132,6 +182,15 @@ fn a_phone_taps_through_a_lesson_poll() {
         t.starts_with("ζ = 321.5 · 1 answer")
     });
     shot(&mut b, "reveal");
+    b.wait_js("lan", "the reveal on its side", 20, &text_of("reveal"), |t| {
+        t == "the model: ζ = 321.5"
+    });
+    for sel in ["#poll", "#pic"] {
+        assert_eq!(b.js_text("lan", &in_view(sel)), "true", "{sel} on its side");
+    }
+    if let Some(d) = &shots {
+        b.shot("lan", &d.join("phone-side-reveal.png"));
+    }
     // A reload takes the same seat: the same name, one row.
     b.js("pia", "location.reload(); return 1");
     b.wait_js("pia", "the seat again", 30, &text_of("status"), |t| {
