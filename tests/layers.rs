@@ -195,6 +195,7 @@ fn the_crates_know_nothing_of_the_application() {
         "rough-surface",
         "rough-contact",
         "rough-study",
+        "rough-fft",
     ] {
         let dir = Path::new(ROOT).join("crates").join(c);
         let manifest = std::fs::read_to_string(dir.join("Cargo.toml")).unwrap();
@@ -258,6 +259,154 @@ fn circle(graph: &BTreeMap<String, BTreeSet<String>>) -> Option<Vec<String>> {
     None
 }
 
+/// The paths a use tree names, from its start in `s`: `a::b` one,
+/// `a::{b, c::{d, e}}` three; `self` in a group is the path before it.
+fn use_tree(s: &str) -> Vec<Vec<String>> {
+    fn word(s: &[char], i: &mut usize) -> String {
+        let start = *i;
+        while *i < s.len() && (s[*i].is_alphanumeric() || s[*i] == '_') {
+            *i += 1;
+        }
+        s[start..*i].iter().collect()
+    }
+    fn blank(s: &[char], i: &mut usize) {
+        while *i < s.len() && s[*i].is_whitespace() {
+            *i += 1;
+        }
+    }
+    fn tree(s: &[char], i: &mut usize) -> Vec<Vec<String>> {
+        let mut prefix = Vec::new();
+        loop {
+            blank(s, i);
+            if s.get(*i) == Some(&'{') {
+                *i += 1;
+                let mut out = Vec::new();
+                loop {
+                    blank(s, i);
+                    if s.get(*i).is_none_or(|c| *c == '}') {
+                        *i += 1;
+                        return out;
+                    }
+                    for p in tree(s, i) {
+                        out.push([prefix.clone(), p].concat());
+                    }
+                    blank(s, i);
+                    // `as name` and the like end an item.
+                    while *i < s.len() && !matches!(s[*i], ',' | '}') {
+                        *i += 1;
+                    }
+                    if s.get(*i) == Some(&',') {
+                        *i += 1;
+                    }
+                }
+            }
+            let w = word(s, i);
+            if w.is_empty() {
+                return vec![prefix];
+            }
+            if w != "self" {
+                prefix.push(w);
+            }
+            if s[*i..].starts_with(&[':', ':']) {
+                *i += 2;
+            } else {
+                return vec![prefix];
+            }
+        }
+    }
+    let s: Vec<char> = s.chars().collect();
+    tree(&s, &mut 0)
+}
+
+/// Each file of the crate at `src` as its module path (`formats::readers::x3p`;
+/// a `mod.rs` is its folder's module) and the modules of the crate its code
+/// uses: its `crate::`, `super::` and `self::` paths, each to the longest
+/// module it names, and the modules it declares by their bare names
+/// (`sniff::format`). What a module takes from the folder's module it sits
+/// in (`super::Thing` of its `mod.rs`) is part of being inside it, not a
+/// use; the crate's root (`lib.rs`) only declares and re-exports, as in
+/// [`module_uses`].
+fn file_uses(src: &Path) -> BTreeMap<String, BTreeSet<String>> {
+    let mut files = Vec::new();
+    rust_files(src, &mut files);
+    let module = |f: &Path| -> Vec<String> {
+        let rel = f.strip_prefix(src).unwrap().with_extension("");
+        let mut m: Vec<String> = rel
+            .components()
+            .map(|c| c.as_os_str().to_string_lossy().to_string())
+            .collect();
+        if m.last()
+            .is_some_and(|l| l == "mod" || l == "lib" || l == "main")
+        {
+            m.pop();
+        }
+        m
+    };
+    let modules: BTreeSet<Vec<String>> = files.iter().map(|f| module(f)).collect();
+    let longest = |path: Vec<String>| -> Vec<String> {
+        (0..=path.len())
+            .rev()
+            .map(|k| path[..k].to_vec())
+            .find(|p| modules.contains(p))
+            .unwrap_or_default()
+    };
+    let ident = |c: Option<char>| c.is_some_and(|c| c.is_alphanumeric() || c == '_' || c == ':');
+    let mut out = BTreeMap::new();
+    for f in &files {
+        let own = module(f);
+        if own.is_empty() || f.to_string_lossy().ends_with("_tests.rs") {
+            continue;
+        }
+        let code = code(&std::fs::read_to_string(f).unwrap());
+        let children: Vec<String> = code
+            .lines()
+            .filter_map(|l| {
+                let l = l.trim().strip_suffix(';')?;
+                let name = l
+                    .strip_prefix("mod ")
+                    .or_else(|| l.split_once(" mod ").map(|x| x.1))?;
+                Some(name.trim().to_string())
+            })
+            .collect();
+        let mut used = BTreeSet::new();
+        for (at, _) in code.char_indices() {
+            let rest = &code[at..];
+            if ident(code[..at].chars().last()) {
+                continue;
+            }
+            let (base, path) = if let Some(p) = rest.strip_prefix("crate::") {
+                (Vec::new(), p)
+            } else if rest.starts_with("super::") || rest.starts_with("self::") {
+                let mut base = own.clone();
+                let mut p = rest;
+                if let Some(q) = p.strip_prefix("self::") {
+                    p = q;
+                }
+                while let Some(q) = p.strip_prefix("super::") {
+                    base.pop();
+                    p = q;
+                }
+                (base, p)
+            } else if let Some(c) = children
+                .iter()
+                .find(|c| rest.starts_with(&format!("{c}::")))
+            {
+                (own.clone(), &rest[..c.len()])
+            } else {
+                continue;
+            };
+            for p in use_tree(path) {
+                let m = longest([base.clone(), p].concat());
+                if !m.is_empty() && !own.starts_with(&m) {
+                    used.insert(m.join("::"));
+                }
+            }
+        }
+        out.insert(own.join("::"), used);
+    }
+    out
+}
+
 #[test]
 fn no_module_of_a_crate_is_in_an_import_circle() {
     for c in [
@@ -266,12 +415,45 @@ fn no_module_of_a_crate_is_in_an_import_circle() {
         "rough-contact",
         "rough-study",
     ] {
-        let graph = module_uses(&Path::new(ROOT).join("crates").join(c).join("src"));
+        let src = Path::new(ROOT).join("crates").join(c).join("src");
+        // Its top modules (a folder is one), then each file.
+        let graph = module_uses(&src);
         assert!(graph.len() > 2, "{c}: too few modules found");
         if let Some(cycle) = circle(&graph) {
             panic!("{c}: modules import each other: {}", cycle.join(" → "));
         }
+        if let Some(cycle) = circle(&file_uses(&src)) {
+            panic!("{c}: modules import each other: {}", cycle.join(" → "));
+        }
     }
+}
+
+#[test]
+fn the_file_reader_follows_paths_to_their_modules() {
+    assert_eq!(
+        use_tree("a::{self, b::{c, D as E}, f}::g; x"),
+        [
+            vec!["a".to_string()],
+            vec!["a".into(), "b".into(), "c".into()],
+            vec!["a".into(), "b".into(), "D".into()],
+            vec!["a".into(), "f".into()],
+        ]
+    );
+    let graph = file_uses(&Path::new(ROOT).join("crates/rough-surface/src"));
+    let uses = |m: &str| graph[m].iter().map(String::as_str).collect::<Vec<_>>();
+    // `use crate::formats::readers::grid::{self, Grid}` and its kin.
+    assert!(
+        uses("read").contains(&"formats::readers::grid"),
+        "{:?}",
+        uses("read")
+    );
+    // `use super::bin::{...}` beside it; `sniff::Format` in the folder's own module.
+    assert!(uses("formats::readers::sur").contains(&"formats::readers::bin"));
+    assert!(
+        uses("formats").contains(&"formats::sniff"),
+        "{:?}",
+        uses("formats")
+    );
 }
 
 #[test]
@@ -283,6 +465,7 @@ fn no_source_file_is_over_600_lines() {
         "rough-surface",
         "rough-contact",
         "rough-study",
+        "rough-fft",
     ] {
         rust_files(
             &Path::new(ROOT).join("crates").join(c).join("src"),

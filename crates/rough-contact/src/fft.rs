@@ -10,9 +10,8 @@
 use std::sync::Arc;
 
 use rayon::prelude::*;
-use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
+use rough_fft::{ComplexToReal, Fft, Planner, RealPlanner, RealToComplex};
 use rustfft::num_complex::Complex64;
-use rustfft::{Fft, FftPlanner};
 
 use crate::par::{min_len, CHUNKS};
 
@@ -40,12 +39,12 @@ pub(crate) struct Fft2 {
 
 impl Fft2 {
     pub(crate) fn new(n: usize) -> Self {
-        let mut rp = RealFftPlanner::<f64>::new();
-        let mut cp = FftPlanner::<f64>::new();
-        let r2c = rp.plan_fft_forward(n);
-        let c2r = rp.plan_fft_inverse(n);
-        let col_fwd = cp.plan_fft_forward(n);
-        let col_inv = cp.plan_fft_inverse(n);
+        let mut rp = RealPlanner::new();
+        let mut cp = Planner::new();
+        let r2c = rp.forward(n);
+        let c2r = rp.inverse(n);
+        let col_fwd = cp.forward(n);
+        let col_inv = cp.inverse(n);
         let m = n / 2 + 1;
         let scratch_len = [
             r2c.get_scratch_len(),

@@ -2,7 +2,8 @@
 
 use rough_model::Dim;
 
-use crate::measured::{Direction, Kind, Options};
+use crate::measured::{Kind, Options};
+use crate::spectrum::profiles::Direction;
 
 /// A length for people: "12 µm".
 fn length(m: f64) -> String {
@@ -50,7 +51,7 @@ pub(crate) fn detrend_note(kind: &Kind, opts: &Options) -> Option<String> {
             mode.words(line),
             mode.name(),
             match default {
-                crate::detrend::Detrend::Mean => "mean of periodic data",
+                crate::heights::detrend::Detrend::Mean => "mean of periodic data",
                 _ if line => "line",
                 _ => "plane",
             }

@@ -5,12 +5,13 @@ use std::sync::Arc;
 
 use rough_model::{Dim, MomentTable};
 
-use crate::anisotropy::Slopes;
-use crate::band;
-use crate::detrend::Detrend;
-use crate::fit::{self, PowerLawFit};
-use crate::prepare::Heights;
-use crate::realspace::RealSpace;
+use crate::heights::detrend::Detrend;
+use crate::heights::prepare::Heights;
+use crate::spectrum::anisotropy::Slopes;
+use crate::spectrum::band;
+use crate::spectrum::fit::{self, PowerLawFit};
+use crate::spectrum::profiles::Direction;
+use crate::spectrum::realspace::RealSpace;
 use crate::units::HeightUnit;
 
 /// How to read a file whose content does not say everything.
@@ -52,22 +53,6 @@ impl Options {
         } else {
             Detrend::Plane
         })
-    }
-}
-
-/// A direction on a map: x along its rows, y across them.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Direction {
-    X,
-    Y,
-}
-
-impl Direction {
-    pub fn name(self) -> &'static str {
-        match self {
-            Direction::X => "x",
-            Direction::Y => "y",
-        }
     }
 }
 

@@ -9,14 +9,14 @@ use sha2::{Digest, Sha256};
 
 use crate::describe::describe;
 use crate::error::{Problem, SurfaceError};
-use crate::grid::Grid;
+use crate::formats::readers::grid::{self, Grid};
+use crate::formats::text::{ce, channels, columns, header, matrix, scan};
+use crate::formats::{self, gz, sniff, stream};
+use crate::heights::allow;
 use crate::limits::MAX_BYTES;
 use crate::measured::{Kind, Measured, Options};
-use crate::units::Advice;
-use crate::{
-    band, ce, channels, columns, grid, gwy, header, matrix, readers, sniff, spectrum, stream, text,
-    units, x3p,
-};
+use crate::spectrum::{band, compute};
+use crate::units::{self, Advice};
 
 /// Reads and computes the surface in `path`. Every refusal names the file
 /// and, where there is one, the line.
@@ -33,9 +33,9 @@ pub fn read_heights(path: &Path, opts: &Options) -> Result<Measured, SurfaceErro
 }
 
 fn read_keeping(path: &Path, opts: &Options, keep: bool) -> Result<Measured, SurfaceError> {
-    let before = crate::prepare::KEEP_HEIGHTS.with(|k| k.replace(keep));
-    let r = crate::allow::with(opts, || read_inner(path, opts));
-    crate::prepare::KEEP_HEIGHTS.with(|k| k.set(before));
+    let before = crate::heights::prepare::KEEP_HEIGHTS.with(|k| k.replace(keep));
+    let r = allow::with(opts.max_undefined, || read_inner(path, opts));
+    crate::heights::prepare::KEEP_HEIGHTS.with(|k| k.set(before));
     r
 }
 
@@ -52,7 +52,7 @@ fn read_inner(path: &Path, opts: &Options) -> Result<Measured, SurfaceError> {
     if meta.len() > MAX_BYTES {
         return Err(fail(None, Problem::TooLarge(meta.len())));
     }
-    let ext = readers::gz::extension(path);
+    let ext = gz::extension(path);
     let whole = |bytes: Vec<u8>| {
         if bytes.len() as u64 > MAX_BYTES {
             return Err(fail(None, Problem::TooLarge(bytes.len() as u64)));
@@ -115,7 +115,7 @@ pub fn sha256_hex(bytes: &[u8]) -> String {
 /// - any other format recognised (NetCDF, HDF5, .npy, TIFF, Zygo, Keyence,
 ///   Nanoscope …) is refused with a line saying how to convert it.
 pub fn parse(bytes: &[u8], opts: &Options) -> Result<Measured, (Option<usize>, Problem)> {
-    crate::allow::with(opts, || parse_file(bytes, opts, ""))
+    allow::with(opts.max_undefined, || parse_file(bytes, opts, ""))
 }
 
 /// [`parse`] of a file named `name`: its extension names the formats that
@@ -126,8 +126,8 @@ pub fn parse_named(
     name: &str,
     opts: &Options,
 ) -> Result<Measured, (Option<usize>, Problem)> {
-    let ext = readers::gz::extension(Path::new(name));
-    crate::allow::with(opts, || parse_file(bytes, opts, &ext))
+    let ext = gz::extension(Path::new(name));
+    allow::with(opts.max_undefined, || parse_file(bytes, opts, &ext))
 }
 
 /// The heights of a binary file (x3p, .gwy, an instrument's own format;
@@ -143,40 +143,18 @@ pub fn read_grid_named(
     name: &str,
     opts: &Options,
 ) -> Result<Grid, (Option<usize>, Problem)> {
-    let ext = readers::gz::extension(Path::new(name));
-    if bytes.starts_with(readers::gz::MAGIC) {
-        let inner = readers::gz::unpack(bytes)?;
-        if inner.starts_with(readers::gz::MAGIC) {
+    let ext = gz::extension(Path::new(name));
+    if bytes.starts_with(gz::MAGIC) {
+        let inner = gz::unpack(bytes)?;
+        if inner.starts_with(gz::MAGIC) {
             return Err((
                 None,
                 Problem::Format("a gzip-compressed file inside a gzip-compressed file".into()),
             ));
         }
-        return grid_of(
-            &sniff::format(&inner, readers::gz::inner(&ext)),
-            &inner,
-            opts,
-        );
+        return formats::grid_of(&sniff::format(&inner, gz::inner(&ext)), &inner, opts);
     }
-    grid_of(&sniff::format(bytes, &ext), bytes, opts)
-}
-
-/// The grid of `bytes` in `format`.
-fn grid_of(
-    format: &sniff::Format,
-    bytes: &[u8],
-    opts: &Options,
-) -> Result<Grid, (Option<usize>, Problem)> {
-    match format {
-        sniff::Format::X3p => x3p::read(bytes),
-        sniff::Format::Gwy => gwy::read(bytes, opts.channel.as_deref()),
-        sniff::Format::Native(n) => readers::read(*n, bytes, opts),
-        sniff::Format::Other(s) => Err((None, Problem::Format(s.clone()))),
-        sniff::Format::Text => Err((
-            None,
-            Problem::Format("text: not an x3p or .gwy file".to_string()),
-        )),
-    }
+    formats::grid_of(&sniff::format(bytes, &ext), bytes, opts)
 }
 
 /// [`parse`], told the file's extension (lower case) for formats that
@@ -187,15 +165,15 @@ fn parse_file(
     ext: &str,
 ) -> Result<Measured, (Option<usize>, Problem)> {
     check_options(opts)?;
-    if bytes.starts_with(readers::gz::MAGIC) {
-        let inner = readers::gz::unpack(bytes)?;
-        if inner.starts_with(readers::gz::MAGIC) {
+    if bytes.starts_with(gz::MAGIC) {
+        let inner = gz::unpack(bytes)?;
+        if inner.starts_with(gz::MAGIC) {
             return Err((
                 None,
                 Problem::Format("a gzip-compressed file inside a gzip-compressed file".into()),
             ));
         }
-        let mut m = parse_file(&inner, opts, readers::gz::inner(ext))?;
+        let mut m = parse_file(&inner, opts, gz::inner(ext))?;
         m.sha256 = sha256_hex(bytes);
         return Ok(m);
     }
@@ -212,15 +190,16 @@ fn parse_file(
     };
     if opts.channel.is_some()
         && format == sniff::Format::X3p
-        && !crate::container::is_container(bytes)
+        && !crate::formats::container::is_container(bytes)
     {
         return no_channels();
     }
     let mut notes = Vec::new();
     let text = match format {
         sniff::Format::Other(s) => return Err((None, Problem::Format(s))),
-        sniff::Format::X3p if crate::container::is_container(bytes) => {
-            let mut m = crate::container::read(bytes, opts, &|b, o, e| parse_file(b, o, e))?;
+        sniff::Format::X3p if crate::formats::container::is_container(bytes) => {
+            let mut m =
+                crate::formats::container::read(bytes, opts, &|b, o, e| parse_file(b, o, e))?;
             m.sha256 = sha256_hex(bytes);
             return Ok(m);
         }
@@ -228,8 +207,8 @@ fn parse_file(
             not_a_download(opts)?;
             let (sha256, read) = std::thread::scope(|s| {
                 let hash = s.spawn(|| sha256_hex(bytes));
-                let read =
-                    grid_of(&format, bytes, opts).and_then(|g| grid::compute(g, opts, &mut notes));
+                let read = formats::grid_of(&format, bytes, opts)
+                    .and_then(|g| grid::compute(g, opts, &mut notes));
                 (hash.join().expect("hash thread"), read)
             });
             let (kind, computed) = read?;
@@ -244,7 +223,7 @@ fn parse_file(
             }
             let what = match format {
                 sniff::Format::X3p => "x3p",
-                sniff::Format::Native(n) => n.name(),
+                sniff::Format::Native(n) => n.name,
                 _ => "Gwyddion .gwy",
             };
             let summary = format!("{what} {}", describe(&kind, opts, ""));
@@ -309,7 +288,8 @@ fn parse_file(
 }
 
 fn check_options(opts: &Options) -> Result<(), (Option<usize>, Problem)> {
-    crate::detrend::check_periodic(opts.detrend_mode(), opts.periodic).map_err(|p| (None, p))?;
+    crate::heights::detrend::check_periodic(opts.detrend_mode(), opts.periodic)
+        .map_err(|p| (None, p))?;
     match opts.pixel_size {
         Some(p) if !(p.is_finite() && p > 0.0) => Err((
             None,
@@ -370,7 +350,7 @@ pub(crate) fn measured(
 /// What [`read_text`] found.
 pub(crate) struct Reading {
     kind: Kind,
-    computed: spectrum::Computed,
+    computed: compute::Computed,
     summary: String,
     measurement: Option<String>,
     /// What the plausibility line may advise.
@@ -378,7 +358,7 @@ pub(crate) struct Reading {
 }
 
 fn read_text(text: &str, opts: &Options) -> Result<Reading, (Option<usize>, Problem)> {
-    let head = text::head(text)?;
+    let head = scan::head(text)?;
     if ce::is_ce(&head.header) {
         if let Some(u) = opts.lateral_unit {
             return Err(no_lateral(u, "a contact.engineering download"));
@@ -394,7 +374,7 @@ fn read_text(text: &str, opts: &Options) -> Result<Reading, (Option<usize>, Prob
         });
     }
     not_a_download(opts)?;
-    let scan = text::scan(text, head)?;
+    let scan = scan::scan(text, head)?;
     from_scan(Some(text), scan, opts)
 }
 
@@ -402,7 +382,7 @@ fn read_text(text: &str, opts: &Options) -> Result<Reading, (Option<usize>, Prob
 /// for the last: `None` when it was streamed, as only matrices are).
 pub(crate) fn from_scan(
     text: Option<&str>,
-    scan: text::Scan<'_>,
+    scan: scan::Scan<'_>,
     opts: &Options,
 ) -> Result<Reading, (Option<usize>, Problem)> {
     let header = header::Header::read(&scan.header)?;
@@ -427,7 +407,7 @@ pub(crate) fn from_scan(
     }
     let mut scan = scan;
     let profile_notes = match text {
-        Some(_) => crate::validity::as_profile(&mut scan, &header)?,
+        Some(_) => crate::formats::text::validity::as_profile(&mut scan, &header)?,
         None => Vec::new(),
     };
     if scan.cols == 3 && scan.rows() >= 4 && !header.has_size() {
@@ -435,7 +415,7 @@ pub(crate) fn from_scan(
             scan.row_lines.first().copied(),
             Problem::Format(format!(
                 "three numbers a row: looks like an XYZ point cloud (x y z), {}",
-                crate::hints::XYZ_HINT
+                crate::formats::hints::XYZ_HINT
             )),
         ));
     }
