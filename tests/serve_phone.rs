@@ -96,7 +96,9 @@ fn a_phone_taps_through_a_lesson_poll() {
     // A phone on its side, and a tablet.
     let side = format!("http://127.0.0.1:{port}/?code={CODE}&name=lan");
     b.open_phone("lan", &side, (844, 390));
-    b.wait_js("lan", "the phone on its side", 30, &text_of("who"), |t| t == "lan");
+    b.wait_js("lan", "the phone on its side", 30, &text_of("who"), |t| {
+        t == "lan"
+    });
     let tablet = format!("http://127.0.0.1:{port}/?code={CODE}&name=tab");
     b.open_phone("tab", &tablet, (800, 1280));
     b.wait_js(
@@ -140,10 +142,20 @@ fn a_phone_taps_through_a_lesson_poll() {
     shot(&mut b, "question");
     // On its side: the question, the marker's buttons, the answer and the
     // whole picture in view.
-    b.wait_js("lan", "the question on its side", 20, &text_of("question"), |t| {
-        t.starts_with("Predict:")
-    });
-    for sel in ["#question", "#pic", "#value", "[aria-label='more']", "[aria-label='answer']"] {
+    b.wait_js(
+        "lan",
+        "the question on its side",
+        20,
+        &text_of("question"),
+        |t| t.starts_with("Predict:"),
+    );
+    for sel in [
+        "#question",
+        "#pic",
+        "#value",
+        "[aria-label='more']",
+        "[aria-label='answer']",
+    ] {
         assert_eq!(b.js_text("lan", &in_view(sel)), "true", "{sel} on its side");
     }
     if let Some(d) = &shots {
@@ -182,9 +194,13 @@ fn a_phone_taps_through_a_lesson_poll() {
         t.starts_with("ζ = 321.5 · 1 answer")
     });
     shot(&mut b, "reveal");
-    b.wait_js("lan", "the reveal on its side", 20, &text_of("reveal"), |t| {
-        t == "the model: ζ = 321.5"
-    });
+    b.wait_js(
+        "lan",
+        "the reveal on its side",
+        20,
+        &text_of("reveal"),
+        |t| t == "the model: ζ = 321.5",
+    );
     for sel in ["#poll", "#pic"] {
         assert_eq!(b.js_text("lan", &in_view(sel)), "true", "{sel} on its side");
     }
