@@ -193,5 +193,8 @@ async fn a_client_that_stops_reading_is_let_go_with_little_kept() {
         assert!(c.took < Duration::from_secs(30), "{c:?}");
         // The kernel's doubled SEND_BUFFER (and its bookkeeping's slack).
         assert!(c.tx <= 3 * u64::from(roughtui::serve::SEND_BUFFER), "{c:?}");
+        // The client's receive buffer, which stopped growing when it
+        // stopped reading.
+        assert!(c.rx <= 1 << 20, "{c:?}");
     }
 }
