@@ -142,6 +142,7 @@ pub fn options_of(args: &ExportArgs) -> anyhow::Result<(View, FigureOptions)> {
             points: args.points.unwrap_or(DEFAULT_POINTS),
             grid: args.grid.unwrap_or(DEFAULT_GRID),
             map_y: args.map_y.map(Into::into),
+            ..FigureOptions::default()
         },
     ))
 }

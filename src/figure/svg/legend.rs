@@ -102,7 +102,8 @@ impl Legend {
     /// else nothing is drawn and [`Placed::NoRoom`] says how much room it
     /// needs.
     pub fn draw(&self, area: &Area, c: &Chart, outside: bool) -> anyhow::Result<Placed> {
-        if self.entries.is_empty() {
+        // A phone's page lists the legend under the picture.
+        if self.entries.is_empty() || super::phone::keep(&self.entries) {
             return Ok(Placed::Inside);
         }
         let (xr, yr) = c.plotting_area().get_pixel_range();

@@ -247,9 +247,13 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
         Line::from(slopes1),
         Line::from(slopes2),
         if hide_slopes {
+            // (At most 34 columns: the readout's.)
             Line::raw(format!(
                 "plastic {HIDDEN}  (until {})",
-                app.class.marks_wait().unwrap_or("the reveal")
+                match app.class.marks_wait() {
+                    Some("the reveal") | None => "the reveal",
+                    Some(_) => "the next poll",
+                }
             ))
         } else {
             Line::from(vec![
