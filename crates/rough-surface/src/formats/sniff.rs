@@ -66,7 +66,6 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
         (b"KPK1", "a Keyence .zon file"),
         (b"Binary TrueMap", "a TrueMap .tmd file"),
         (b"OmniSurf3D", "an OmniSurf3D .os3d file"),
-        (b"WSxM file", "a WSxM file"),
         (b"MATLAB", "a MATLAB .mat file"),
         (
             b"II*\x00",

@@ -144,6 +144,11 @@ pub(crate) fn values<T: Num>(raw: &[u8], o: Order) -> impl Iterator<Item = T> + 
     })
 }
 
+/// Where `needle` first occurs in `hay`.
+pub(crate) fn find(hay: &[u8], needle: &[u8]) -> Option<usize> {
+    hay.windows(needle.len()).position(|w| w == needle)
+}
+
 /// Text from a file for a message: control characters as `?`, at most
 /// `max` characters (then `…`).
 pub(crate) fn printable(s: &str, max: usize) -> String {

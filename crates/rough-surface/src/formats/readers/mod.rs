@@ -16,6 +16,7 @@
 
 mod al3d;
 pub(crate) mod assumed;
+mod bcr;
 mod bin;
 mod chan;
 mod di;
@@ -30,6 +31,9 @@ mod opdx;
 mod plu;
 mod sdf;
 mod sur;
+mod surz;
+mod sxm;
+mod wsxm;
 pub(crate) mod x3p;
 
 use crate::error::Failure;
@@ -67,7 +71,7 @@ impl std::fmt::Debug for Native {
 
 /// The formats read natively, in the order they are told apart (the
 /// first whose bytes match is taken: the extension alone last).
-static NATIVE: [Native; 11] = [
+static NATIVE: &[Native] = &[
     Native {
         name: sur::NAME,
         channels: false,
@@ -127,6 +131,30 @@ static NATIVE: [Native; 11] = [
         channels: true,
         is: |b, _| ibw::is_ibw(b),
         read: ibw::read,
+    },
+    Native {
+        name: surz::NAME,
+        channels: false,
+        is: |b, _| b.starts_with(surz::MAGIC),
+        read: |b, _| surz::read(b),
+    },
+    Native {
+        name: wsxm::NAME,
+        channels: false,
+        is: |b, _| b.starts_with(wsxm::MAGIC),
+        read: |b, _| wsxm::read(b),
+    },
+    Native {
+        name: bcr::NAME,
+        channels: false,
+        is: |b, _| bcr::is_bcr(b),
+        read: |b, _| bcr::read(b),
+    },
+    Native {
+        name: sxm::NAME,
+        channels: true,
+        is: |b, _| b.starts_with(sxm::MAGIC),
+        read: sxm::read,
     },
     Native {
         name: plu::NAME,
