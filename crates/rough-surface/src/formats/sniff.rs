@@ -39,7 +39,7 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
     if utf16(bytes).is_some() {
         return Format::Text;
     }
-    if starts(b"GWYO") || starts(b"GWYQ") {
+    if starts(b"GWYQ") {
         return other("a Gwyddion file of another version");
     }
     if starts(b"\x89HDF\r\n\x1a\n") {

@@ -23,6 +23,8 @@ mod di;
 mod frt;
 pub(crate) mod grid;
 pub(crate) mod gwy;
+mod gwyfield;
+mod gwyo;
 mod ibw;
 mod metropro;
 mod nid;
@@ -35,6 +37,7 @@ mod surz;
 mod sxm;
 mod wsxm;
 pub(crate) mod x3p;
+mod xqd;
 
 use crate::error::Failure;
 use crate::formats::readers::grid::Grid;
@@ -155,6 +158,24 @@ static NATIVE: &[Native] = &[
         channels: true,
         is: |b, _| b.starts_with(sxm::MAGIC),
         read: sxm::read,
+    },
+    Native {
+        name: gwyo::NAME,
+        channels: true,
+        is: |b, _| b.starts_with(gwyo::MAGIC),
+        read: gwyo::read,
+    },
+    Native {
+        name: xqd::NAME,
+        channels: false,
+        is: |b, ext| xqd::is_xqd(b) && matches!(ext, "xqp" | "xqpx" | "xqi" | "xqix"),
+        read: |_, _| xqd::not_heights(),
+    },
+    Native {
+        name: xqd::NAME,
+        channels: false,
+        is: |b, _| xqd::is_xqd(b),
+        read: |b, _| xqd::read(b),
     },
     Native {
         name: plu::NAME,
