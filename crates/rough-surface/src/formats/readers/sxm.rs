@@ -144,7 +144,12 @@ pub(crate) fn read(bytes: &[u8], choice: Option<&str>) -> Result<Grid, Failure> 
                 i.name,
                 if i.backward { "Backward" } else { "Forward" }
             ),
-            unit: i.unit.clone(),
+            // SI symbols: A is an ampere here, not an ångström.
+            unit: if i.unit == "A" {
+                "ampere".into()
+            } else {
+                i.unit.clone()
+            },
         })
         .collect();
     let n = match choice {
