@@ -51,7 +51,12 @@ fn cases(name: &str) -> Vec<Case> {
             }),
             "grid" => {
                 let c = out.last_mut().unwrap();
-                c.grid = (w[1].parse().unwrap(), w[2].parse().unwrap(), num(w[3]), num(w[4]));
+                c.grid = (
+                    w[1].parse().unwrap(),
+                    w[2].parse().unwrap(),
+                    num(w[3]),
+                    num(w[4]),
+                );
                 c.undefined = w[5].parse().unwrap();
             }
             "real" => out.last_mut().unwrap().real = [num(w[1]), num(w[2])],
@@ -106,7 +111,9 @@ fn check(list: &str, at: &Path) -> usize {
         let who = format!("{} channel {:?}", c.file, c.channel);
         let r = read_case(c, at);
         if let Some(start) = &c.refused {
-            let e = r.err().unwrap_or_else(|| panic!("{who}: read, not refused"));
+            let e = r
+                .err()
+                .unwrap_or_else(|| panic!("{who}: read, not refused"));
             assert!(e.starts_with(start.as_str()), "{who}: {e}");
             assert!(!e.contains('\n'), "{who}: {e}");
             println!("{who}: refused: {e}");

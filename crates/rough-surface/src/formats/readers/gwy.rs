@@ -33,7 +33,10 @@ pub(crate) const MAX_DEPTH: usize = 64;
 pub(super) fn bad(s: impl AsRef<str>) -> Failure {
     (
         None,
-        Problem::Format(format!("Gwyddion .gwy: {}", s.as_ref())),
+        Problem::Format(format!(
+            "Gwyddion .gwy: {}",
+            super::bin::printable(s.as_ref(), 400)
+        )),
     )
 }
 

@@ -165,6 +165,10 @@ pub(crate) fn read(bytes: &[u8], choice: Option<&str>) -> Result<Grid, Failure> 
             })?,
     };
     let each = b.raster(start, (nx, ny), 4, "an image")?.len();
+    // Every image the header lists is in the file: one cut short is
+    // refused, even where the one read is whole.
+    let count = images.len() as u64;
+    b.raster(start, (nx, ny * count), 4, &format!("the {count} images"))?;
     let at = start
         .checked_add(n.checked_mul(each).unwrap_or(usize::MAX))
         .unwrap_or(usize::MAX);
