@@ -105,7 +105,7 @@ fn digital_surf_sur() {
     put(&mut b, 116, &(1u32 << 30).to_le_bytes());
     assert_eq!(
         refuse("x.sur", &b),
-        "Digital Surf .sur: the heights claims 1048576 × 1024 points: more than the \
+        "Digital Surf .sur: the heights: 1048576 × 1024 points, more than the \
          67108864 a file is read with"
     );
     put(&mut b, 116, &7u32.to_le_bytes());
@@ -185,7 +185,7 @@ fn wyko_opd() {
     // The 'Raw' array claims more columns than its block holds.
     let mut b = full.clone();
     put(&mut b, 24020, &u16::MAX.to_le_bytes());
-    assert!(refuse("x.opd", &b).contains("Raw of 65535 × 480 points takes 125827200 bytes"));
+    assert!(refuse("x.opd", &b).contains("Raw: 65535 × 480 points take 125827200 bytes"));
     let mut b = full.clone();
     put(&mut b, 20, &7i32.to_le_bytes());
     assert!(refuse("x.opd", &b).contains("not a multiple of 24 bytes"));
@@ -201,7 +201,7 @@ fn zygo_metropro_dat() {
     let mut b = full.clone();
     put(&mut b, 68, &u16::MAX.to_be_bytes());
     put(&mut b, 70, &u16::MAX.to_be_bytes());
-    assert!(refuse("x.dat", &b).contains("claims 65535 × 65535 points: more than"));
+    assert!(refuse("x.dat", &b).contains(": 65535 × 65535 points, more than"));
     let mut b = full.clone();
     put(&mut b, 6, &1000u32.to_be_bytes());
     assert!(refuse("x.dat", &b).contains("a header of 1000 bytes"));
@@ -308,7 +308,7 @@ fn iso_sdf() {
     }
     b.extend_from_slice(&[0, 5, 0]);
     b.extend_from_slice(&[0u8; 1000]);
-    assert!(refuse("x.sdf", &b).contains("300 × 200 points takes 120000 bytes from byte 81"));
+    assert!(refuse("x.sdf", &b).contains("300 × 200 points take 120000 bytes from byte 81"));
 }
 
 #[test]

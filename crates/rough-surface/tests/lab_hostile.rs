@@ -109,7 +109,7 @@ fn digital_surf_compressed() {
     put(&mut b, 116, &(1u32 << 30).to_le_bytes());
     assert_eq!(
         refuse("x.sur", &b),
-        "Digital Surf compressed .sur: the heights claim 1048576 × 1024 points: more than \
+        "Digital Surf compressed .sur: the heights: 1048576 × 1024 points, more than \
          the 67108864 a file is read with"
     );
     // A stream that unpacks to more than it says: 10 MB of zeros said to

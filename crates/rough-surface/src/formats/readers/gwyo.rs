@@ -4,12 +4,12 @@
 //! count, then its entries, each a 32-bit GLib type number (20 boolean,
 //! 16 character, 24 int32, 40 int64, 60 double, 64 string, 80 object), a
 //! NUL-terminated key and the value — an object serialised as in a
-//! Gwyddion 2 file ([`super::gwy`]). The channels are then read as a
-//! Gwyddion 2 file's ([`super::gwyfield`]): `/0/data` and its title and
+//! Gwyddion 2 file ([`super::gwyser`]). The channels are then read as a
+//! Gwyddion 2 file's ([`super::gwy`]): `/0/data` and its title and
 //! mask.
 
-use super::gwy::{bad, text, File, Value};
-use super::gwyfield::Channels;
+use super::gwy::Channels;
+use super::gwyser::{bad, text, File, Value};
 use crate::error::Failure;
 use crate::formats::readers::grid::Grid;
 

@@ -17,20 +17,20 @@
 mod al3d;
 pub(crate) mod assumed;
 mod bcr;
-mod bin;
+pub(crate) mod bin;
 mod chan;
 mod di;
 mod frt;
 pub(crate) mod grid;
 pub(crate) mod gwy;
-mod gwyfield;
 mod gwyo;
+pub(crate) mod gwyser;
 mod ibw;
 mod metropro;
 mod nid;
 mod opd;
 mod opdx;
-mod plu;
+pub(crate) mod plu;
 mod sdf;
 mod sur;
 mod surz;
@@ -180,7 +180,7 @@ static NATIVE: &[Native] = &[
     Native {
         name: plu::NAME,
         channels: true,
-        is: |_, ext| matches!(ext, "plu" | "apx"),
+        is: |b, ext| matches!(ext, "plu" | "apx") && plu::looks_like(b).is_some(),
         read: plu::read,
     },
 ];

@@ -33,7 +33,7 @@ pub(crate) fn read(bytes: &[u8]) -> Result<Grid, Failure> {
         .filter(|&p| p <= super::bin::MAX_POINTS)
         .ok_or_else(|| {
             b.bad(format!(
-                "the heights claim {} × {} points: more than the {} a file is read with",
+                "the heights: {} × {} points, more than the {} a file is read with",
                 h.nx,
                 h.ny,
                 super::bin::MAX_POINTS
