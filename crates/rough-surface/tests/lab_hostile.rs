@@ -9,21 +9,17 @@
 
 use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 mod fuzz;
 #[path = "fuzz/harness.rs"]
 mod harness;
 
 use proptest::prelude::*;
-use rough_surface::{parse_named, read_grid_named, Options};
 
 #[global_allocator]
 static ALLOC: harness::Counting = harness::Counting;
 
-/// Every allocation stays below this (the largest file here unpacks to
-/// 2.1 MB, its heights 2.1 MB).
-const CEILING: usize = 64 << 20;
+use harness::{cases, put, refuse, CEILING};
 
 fn dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/lab")
@@ -42,33 +38,10 @@ fn bytes(name: &str) -> Vec<u8> {
     out
 }
 
-/// The refusal of `b` (a file named `name`) as a line; that no
-/// allocation passed the ceiling.
-fn refuse(name: &str, b: &[u8]) -> String {
-    let e = read_grid_named(b, name, &Options::default()).expect_err("refused");
-    assert!(harness::largest() < CEILING);
-    let line = e.1.to_string();
-    assert!(!line.contains('\n'), "{line}");
-    line
-}
-
-/// The file cut short at several places: each refused, naming `format`;
-/// cut before what tells it apart, it is text or a binary file not read.
+/// The file cut short at several places, by its last byte too: each
+/// refused, naming `format`.
 fn truncated(name: &str, format: &str) {
-    let full = bytes(name);
-    for cut in [600, full.len() / 4, full.len() / 2, full.len() - 1] {
-        let e = refuse(name, &full[..cut.min(full.len() - 1)]);
-        assert!(e.starts_with(format), "{name} cut at {cut}: {e}");
-    }
-    for cut in [1, 8] {
-        let e = refuse(name, &full[..cut]);
-        let told = e.starts_with(format) || e.starts_with("a binary file");
-        assert!(told || e.starts_with("text: "), "{name} cut at {cut}: {e}");
-    }
-}
-
-fn put(b: &mut [u8], at: usize, v: &[u8]) {
-    b[at..at + v.len()].copy_from_slice(v);
+    harness::truncated(&bytes(name), name, format, true, &[1, 8]);
 }
 
 /// `from` replaced by `to` (the first time) in the text of `b`.
@@ -358,16 +331,6 @@ const FILES: [&str; 13] = [
     "xqd-2.xqd",
 ];
 
-fn cases() -> u32 {
-    std::env::var("FUZZ_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(48)
-}
-
-static RUNS: AtomicUsize = AtomicUsize::new(0);
-static REFUSED: AtomicUsize = AtomicUsize::new(0);
-
 proptest! {
     #![proptest_config(ProptestConfig {
         cases: cases() * FILES.len() as u32,
@@ -387,25 +350,8 @@ proptest! {
         let original = CACHE.with(|c| {
             c.borrow_mut()[which].get_or_insert_with(|| bytes(name)).clone()
         });
-        let mut b = harness::mutate(&original, &ops);
-        if cut % 5 == 0 && !b.is_empty() {
-            b.truncate(cut % b.len());
-        }
-        let name = name.trim_end_matches(".gz");
-        let r = read_grid_named(&b, name, &Options::default());
-        RUNS.fetch_add(1, Ordering::Relaxed);
-        match &r {
-            Err((_, p)) => {
-                REFUSED.fetch_add(1, Ordering::Relaxed);
-                let line = p.to_string();
-                prop_assert!(!line.is_empty() && !line.contains('\n'), "{}", line);
-            }
-            Ok(g) => prop_assert_eq!(g.z.len(), g.nx * g.ny),
-        }
-        // The small files through the whole pipeline too.
-        if original.len() < 100_000 {
-            let _ = parse_named(&b, name, &Options::default());
-        }
+        harness::read_mutated(&original, name.trim_end_matches(".gz"), &ops, cut)
+            .map_err(TestCaseError::fail)?;
         prop_assert!(harness::largest() < CEILING);
     }
 }
@@ -413,10 +359,5 @@ proptest! {
 #[test]
 fn zz_fuzz_counts() {
     // Printed for the record (run after the fuzz when single-threaded).
-    eprintln!(
-        "fuzz: {} mutated files read, {} refused; largest allocation {} bytes",
-        RUNS.load(Ordering::Relaxed),
-        REFUSED.load(Ordering::Relaxed),
-        harness::largest()
-    );
+    eprintln!("{}", harness::counts());
 }

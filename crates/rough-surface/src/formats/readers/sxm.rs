@@ -169,9 +169,7 @@ pub(crate) fn read(bytes: &[u8], choice: Option<&str>) -> Result<Grid, Failure> 
     // refused, even where the one read is whole.
     let count = images.len() as u64;
     b.raster(start, (nx, ny * count), 4, &format!("the {count} images"))?;
-    let at = start
-        .checked_add(n.checked_mul(each).unwrap_or(usize::MAX))
-        .unwrap_or(usize::MAX);
+    let at = start.saturating_add(n.saturating_mul(each));
     let raw = b.raster(at, (nx, ny), 4, &format!("image {n} ({})", chans[n].title))?;
     let mut z: Vec<f64> = values::<f32>(raw, order)
         .map(|v| if v.is_finite() { v as f64 } else { f64::NAN })

@@ -56,7 +56,8 @@ pub(crate) fn read(bytes: &[u8]) -> Result<Grid, Failure> {
     // One image, or several each after a header of its own.
     let fits = data.is_some_and(|d| {
         image > 0
-            && (d == image || (d > image && (d + HEADER as u64) % (image + HEADER as u64) == 0))
+            && (d == image
+                || (d > image && (d + HEADER as u64).is_multiple_of(image + HEADER as u64)))
     });
     if !fits {
         return Err(b.bad(format!(
