@@ -5,8 +5,10 @@ use std::path::PathBuf;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use rough_model::Axis;
 
+mod cluster;
 pub mod setup;
 mod values;
+pub use cluster::{parse_shard, Cluster, MergeArgs, Shard};
 use values::{
     parse_cell, parse_contact_grid, parse_grid, parse_height_unit, parse_per_wavelength,
     parse_percent, parse_pixel_size, parse_points, parse_seeds, parse_sweep,
@@ -67,6 +69,9 @@ pub enum Command {
     Bench(BenchArgs),
     /// Serve the explorer over SSH to a class: students `ssh -p PORT HOST`.
     Serve(ServeArgs),
+    /// Put the parts of a sharded contact export (`export … --seeds N
+    /// --shard K/M`) together: the CSV one machine's `--seeds N` writes.
+    Merge(MergeArgs),
 }
 
 /// Where the parameter set comes from.
@@ -217,7 +222,7 @@ impl BenchArgs {
     }
 }
 
-#[derive(Debug, Args)]
+#[derive(Debug, Args, Clone)]
 pub struct ExportArgs {
     #[command(flatten)]
     pub source: Source,
@@ -270,6 +275,8 @@ pub struct ExportArgs {
     pub seeds: Option<u32>,
     #[command(flatten)]
     pub simulate: Simulate,
+    #[command(flatten)]
+    pub cluster: Cluster,
 }
 
 /// How the contact simulation samples a power-law scene (export's contact

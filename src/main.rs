@@ -1,7 +1,7 @@
 //! roughtui: a terminal explorer of elasto-plastic rough contact with
 //! size-dependent hardness. Thin: parse, dispatch, map errors to exit codes.
 
-use std::io::{BufWriter, ErrorKind, Write};
+use std::io::{ErrorKind, Write};
 use std::process::ExitCode;
 
 use anyhow::Context;
@@ -64,11 +64,8 @@ fn is_broken_pipe(e: &anyhow::Error) -> bool {
 
 fn run(cli: Cli) -> anyhow::Result<()> {
     match cli.command {
-        Some(Command::Export(a)) => {
-            let stdout = std::io::stdout();
-            let mut out = BufWriter::with_capacity(1 << 16, stdout.lock());
-            export::run(&a, &mut out)
-        }
+        Some(Command::Export(a)) => export::main(&a),
+        Some(Command::Merge(a)) => export::merge::main(&a),
         Some(Command::Bench(a)) => roughtui::bench::run(&a, check_only()),
         Some(Command::Serve(a)) => {
             let lesson = a

@@ -2,12 +2,13 @@
 //! a reader would type it, in a folder holding the files the commands name.
 //!
 //! The commands are the lines of the ```sh blocks (```text blocks are
-//! synopses and screens, not run). `roughtui export` runs for real, its
-//! output redirected as written; the explorer, `serve` and `bench` run
-//! with `ROUGHTUI_CHECK_ONLY=1`, which reads and checks everything the
-//! command line names and stops before the terminal is taken or a port is
-//! opened. `cargo run --release -- ARGS` is run as `roughtui ARGS`; other
-//! programs (`cargo test`, `ssh`) are left to the tests that cover them.
+//! synopses and screens, not run). `roughtui export` and `roughtui merge`
+//! run for real, their output redirected as written (or to `--output`);
+//! the explorer, `serve` and `bench` run with `ROUGHTUI_CHECK_ONLY=1`,
+//! which reads and checks everything the command line names and stops
+//! before the terminal is taken or a port is opened. `cargo run --release
+//! -- ARGS` is run as `roughtui ARGS`; other programs (`cargo test`,
+//! `ssh`) are left to the tests that cover them.
 
 mod common;
 
@@ -114,7 +115,8 @@ fn every_documented_command_runs() {
             stdout_to = argv.get(i + 1).cloned();
             argv.truncate(i);
         }
-        let export = argv.get(1).map(String::as_str) == Some("export");
+        // `export` and `merge` run for real: they print (or write) files.
+        let export = matches!(argv.get(1).map(String::as_str), Some("export" | "merge"));
         let mut cmd = Command::new(common::cli::BIN);
         cmd.args(&argv[1..])
             .stdin(std::process::Stdio::null())
@@ -138,7 +140,12 @@ fn every_documented_command_runs() {
             continue;
         }
         if export {
-            let stdout = String::from_utf8_lossy(&out.stdout);
+            // `--output FILE`: what it wrote, not stdout.
+            let written = argv
+                .windows(2)
+                .find(|w| w[0] == "--output")
+                .map(|w| std::fs::read(dir.path().join(&w[1])).unwrap_or_default());
+            let stdout = String::from_utf8_lossy(written.as_deref().unwrap_or(&out.stdout));
             let svg = argv.windows(2).any(|w| w[0] == "--format" && w[1] == "svg");
             let looks_right = if svg {
                 stdout.contains("<svg") && stdout.trim_end().ends_with("</svg>")

@@ -126,10 +126,10 @@ fn options(command: Option<&str>) -> Options {
     out
 }
 
-/// Every command's options: the explorer's (`""`), export's, bench's and
-/// serve's.
+/// Every command's options: the explorer's (`""`), export's, bench's,
+/// serve's and merge's.
 fn all_options() -> BTreeMap<&'static str, Options> {
-    ["", "export", "bench", "serve"]
+    ["", "export", "bench", "serve", "merge"]
         .into_iter()
         .map(|c| (c, options((!c.is_empty()).then_some(c))))
         .collect()
@@ -343,18 +343,28 @@ fn quoted_lists_are_read_as_headers() {
 }
 
 /// Options the pages name that are other programs': cargo's, the
-/// scripts', Gwyddion's.
+/// scripts', Gwyddion's, SLURM's (`sbatch`, `squeue`).
 const OTHER_PROGRAMS_OPTIONS: &[&str] = &[
+    "account",
+    "array",
     "big",
     "convert-to-gwy",
+    "cpus-per-task",
     "example",
+    "job-name",
     "locked",
+    "me",
+    "mem",
     "n",
     "nocapture",
+    "ntasks",
+    "partition",
     "path",
     "profile",
     "release",
     "test",
+    "time",
+    "timings",
     "workspace",
 ];
 

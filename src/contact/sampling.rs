@@ -67,8 +67,17 @@ impl Default for Sampling {
 }
 
 impl Sampling {
-    /// The grid side at magnification `zeta`.
+    /// The grid side at magnification `zeta`, refused beyond the memory
+    /// this machine has available.
     pub fn side(&self, zeta: f64) -> anyhow::Result<usize> {
+        let n = self.nodes(zeta)?;
+        check_memory(n)?;
+        Ok(n)
+    }
+
+    /// [`Sampling::side`] whatever this machine's memory (another machine
+    /// solves it: a cluster's node).
+    pub fn nodes(&self, zeta: f64) -> anyhow::Result<usize> {
         let span = zeta * self.cell as f64;
         let n = match self.grid {
             Grid::PerWavelength(k) => {
@@ -101,7 +110,6 @@ impl Sampling {
                 n
             }
         };
-        check_memory(n)?;
         Ok(n)
     }
 

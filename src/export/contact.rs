@@ -98,15 +98,31 @@ fn write_svg(out: &mut impl Write, svg: &str) -> anyhow::Result<()> {
 /// The solved surface in words, for the pictures: "128×128 nodes, a cell
 /// of 2 longest wavelengths, seeds 1…4".
 fn surface_words(sim: &Simulation, spec: &Spec) -> String {
-    let n = sim.contact.n();
-    match &sim.measured {
-        Some(_) => format!("{n}×{n} nodes of the measured map"),
-        None => format!(
+    words_of(sim.contact.n(), sim.measured.is_some(), spec)
+}
+
+/// [`surface_words`] of an `n`-node grid, of a measured map or not.
+pub fn words_of(n: usize, measured: bool, spec: &Spec) -> String {
+    if measured {
+        format!("{n}×{n} nodes of the measured map")
+    } else {
+        format!(
             "{n}×{n} nodes, a cell of {}, {}",
             spec.sampling.cell_words(),
             spec.seeds.words()
-        ),
+        )
     }
+}
+
+/// The surfaces of a ζ sweep in words (each ζ its own grid): the measured
+/// map, or the cell and the seeds.
+pub fn sweep_words(surface: String, measured: bool) -> String {
+    if measured {
+        return "the measured map".to_string();
+    }
+    surface
+        .split_once(", ")
+        .map_or(surface.clone(), |(_, s)| s.to_string())
 }
 
 /// `n` loads log-spaced from `from` to `to`.
@@ -124,8 +140,7 @@ fn contact_svg(state: &State, points: usize, spec: &Spec) -> anyhow::Result<Stri
     let (sim, rows, _, _) = load_rows(state, points, spec)?;
     let surface = surface_words(&sim, spec);
     let p_over_h: Vec<f64> = rows.iter().map(|r| r.p_over_h).collect();
-    let (from, to) = (p_over_h[0], p_over_h[p_over_h.len() - 1]);
-    let mut d = ContactLoads {
+    let d = ContactLoads {
         surface,
         per_asperity: sim.local.is_some(),
         psi: sim.psi.to_f64(),
@@ -144,8 +159,20 @@ fn contact_svg(state: &State, points: usize, spec: &Spec) -> anyhow::Result<Stri
         p_over_h,
         ..ContactLoads::default()
     };
+    loads_picture(state, d)
+}
+
+/// The contact view's picture of the simulated areas `d`, with the
+/// theory's at 120 loads between the same ends.
+pub fn loads_picture(state: &State, mut d: ContactLoads) -> anyhow::Result<String> {
+    let psi = state
+        .roughness()
+        .surface(&state.params, state.moments)
+        .indices
+        .psi_in_use(state.size_effect);
+    let (from, to) = (d.p_over_h[0], d.p_over_h[d.p_over_h.len() - 1]);
     for x in log_points(from, to, 120) {
-        if let Ok(a) = areas(sim.model, sim.psi, x) {
+        if let Ok(a) = areas(state.model, psi, x) {
             d.theory_p.push(x);
             d.theory[0].push(a.total);
             d.theory[1].push(a.elastic);
@@ -159,16 +186,9 @@ fn contact_svg(state: &State, points: usize, spec: &Spec) -> anyhow::Result<Stri
 /// theory's at 100 ζ between the same ends.
 fn sweep_svg(state: &State, spec: &Spec) -> anyhow::Result<String> {
     let (sim, rows, _) = sweep_rows(state, spec)?;
-    let surface = surface_words(&sim, spec);
-    let surface = match &sim.measured {
-        Some(_) => "the measured map".to_string(),
-        None => surface
-            .split_once(", ")
-            .map_or(surface.clone(), |(_, s)| s.to_string()),
-    };
+    let surface = sweep_words(surface_words(&sim, spec), sim.measured.is_some());
     let zeta: Vec<f64> = rows.iter().map(|r| r.zeta).collect();
-    let (from, to) = (zeta[0], zeta[zeta.len() - 1]);
-    let mut d = ContactSweep {
+    let d = ContactSweep {
         surface,
         load: SWEEP_LOAD,
         share: rows.iter().map(|r| r.share().mean).collect(),
@@ -176,6 +196,13 @@ fn sweep_svg(state: &State, spec: &Spec) -> anyhow::Result<String> {
         zeta,
         ..ContactSweep::default()
     };
+    sweep_picture(state, d)
+}
+
+/// The ζ sweep's picture of the simulated shares `d`, with the theory's at
+/// 100 ζ between the same ends.
+pub fn sweep_picture(state: &State, mut d: ContactSweep) -> anyhow::Result<String> {
+    let (from, to) = (d.zeta[0], d.zeta[d.zeta.len() - 1]);
     let roughness = state.roughness();
     for z in log_points(from, to.max(from * 1.0001), 100) {
         let Ok(p) = state.params.with(Axis::Zeta, z) else {
@@ -185,7 +212,7 @@ fn sweep_svg(state: &State, spec: &Spec) -> anyhow::Result<String> {
             .surface(&p, state.moments)
             .indices
             .psi_in_use(state.size_effect);
-        if let Ok(a) = areas(state.model, psi, SWEEP_LOAD) {
+        if let Ok(a) = areas(state.model, psi, d.load) {
             if a.total > 0.0 {
                 d.theory_zeta.push(z);
                 d.theory_share.push(a.plastic / a.total);

@@ -7,8 +7,15 @@
 //! something else.
 
 mod contact;
+mod lines;
+pub mod merge;
+mod merge_svg;
 mod moments;
+mod output;
+mod part;
+mod shard;
 mod slopes;
+mod slurm;
 mod views;
 
 use std::io::Write;
@@ -139,9 +146,36 @@ pub fn options_of(args: &ExportArgs) -> anyhow::Result<(View, FigureOptions)> {
     ))
 }
 
+/// `roughtui export`, to stdout or `--output` (a part already done there
+/// skipped).
+pub fn main(args: &ExportArgs) -> anyhow::Result<()> {
+    match &args.cluster.output {
+        Some(path) => {
+            if let Some(shard) = args.cluster.shard {
+                if shard::done(args, shard, path)? {
+                    return Ok(());
+                }
+            }
+            output::refuse_existing(path)?;
+            output::write_to(path, |w| run(args, &mut &mut *w))
+        }
+        None => {
+            let stdout = std::io::stdout();
+            let mut out = std::io::BufWriter::with_capacity(1 << 16, stdout.lock());
+            run(args, &mut out)
+        }
+    }
+}
+
 /// Runs `roughtui export`: writes the view to `out`. Every refusal happens
 /// before anything is written.
 pub fn run(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
+    if let Some(shard) = args.cluster.shard {
+        return shard::run(args, shard, out);
+    }
+    if let Some(tasks) = args.cluster.slurm_array {
+        return slurm::script(args, tasks, out);
+    }
     if args.view == ViewArg::Moments {
         moments::check(args)?;
         for (given, opt) in contact::contact_options(args) {

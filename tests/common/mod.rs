@@ -10,6 +10,7 @@ pub mod contact;
 pub mod docs;
 pub mod lecture;
 pub mod measured;
+pub mod merge;
 pub mod room;
 pub mod serve;
 pub mod svg;

@@ -14,7 +14,7 @@ use proptest::prelude::*;
 use rough_surface::{parse, read_grid, Options, Problem};
 
 #[global_allocator]
-static ALLOC: harness::Counting = harness::Counting;
+static ALLOC: fuzz::Counting = fuzz::Counting;
 
 /// Every allocation of the tests stays below this (the files are a few
 /// KiB; the largest legitimate buffer is a 2 MiB data.bin).
@@ -331,7 +331,7 @@ proptest! {
             "three.gwy",
             "gwyddion_sur_valid_i.gwy",
         ][which];
-        let mut b = harness::mutate(&bytes(name), &ops);
+        let mut b = fuzz::mutate(&bytes(name), &ops);
         if cut % 3 == 0 && !b.is_empty() {
             b.truncate(cut % b.len());
         }
@@ -375,7 +375,7 @@ proptest! {
     ) {
         let mut m = members("hand_bin.x3p");
         let k = which.min(m.len() - 1);
-        m[k].1 = harness::mutate(&m[k].1, &ops);
+        m[k].1 = fuzz::mutate(&m[k].1, &ops);
         let files: Vec<(&str, &[u8])> = m.iter().map(|(n, b)| (n.as_str(), &b[..])).collect();
         let _ = parse(&zip_of(&files), &Options::default());
         prop_assert!(harness::largest() < CEILING);

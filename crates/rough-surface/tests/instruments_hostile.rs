@@ -16,7 +16,7 @@ use proptest::prelude::*;
 use rough_surface::{parse_named, Options};
 
 #[global_allocator]
-static ALLOC: harness::Counting = harness::Counting;
+static ALLOC: fuzz::Counting = fuzz::Counting;
 
 use harness::{cases, put, refuse, CEILING};
 

@@ -17,7 +17,7 @@ mod harness;
 use proptest::prelude::*;
 
 #[global_allocator]
-static ALLOC: harness::Counting = harness::Counting;
+static ALLOC: fuzz::Counting = fuzz::Counting;
 
 use harness::{cases, put, refuse, CEILING};
 

@@ -28,6 +28,9 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
     let starts = |m: &[u8]| bytes.starts_with(m);
     let other = |what: &str| Format::Other(hint(what));
     if starts(crate::formats::readers::x3p::MAGIC) || starts(b"PK\x05\x06") {
+        if let Some(n) = crate::formats::readers::sniff_zip(bytes, ext) {
+            return Format::Native(n);
+        }
         return Format::X3p;
     }
     if starts(crate::formats::readers::gwy::MAGIC) {
@@ -43,10 +46,7 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
         return other("a Gwyddion file of another version");
     }
     if starts(b"\x89HDF\r\n\x1a\n") {
-        if ext == "datx" || find(bytes, b"Zygo") || find(bytes, b"MetaData") {
-            return other("a Zygo .datx file (HDF5)");
-        }
-        return other("a NetCDF-4 or HDF5 file");
+        return other("a NetCDF-4 or HDF5 file (not a Zygo .datx or a JPK .h5-jpk scan)");
     }
     if starts(b"CDF\x01") || starts(b"CDF\x02") || starts(b"CDF\x05") {
         return other("a NetCDF file");
@@ -59,21 +59,23 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
                 .to_string(),
         );
     }
+    if starts(b"II*\x00") || starts(b"MM\x00*") {
+        if let Some(why) = crate::formats::readers::damaged_tiff(bytes) {
+            return Format::Other(why);
+        }
+    }
     for (magic, what) in [
-        (&b"VK4_"[..], "a Keyence .vk4 file"),
-        (b"VK3_", "a Keyence .vk3 file"),
-        (b"KPK0", "a Keyence .zon file"),
-        (b"KPK1", "a Keyence .zon file"),
+        (&b"VK3_"[..], "a Keyence .vk3 file"),
         (b"Binary TrueMap", "a TrueMap .tmd file"),
         (b"OmniSurf3D", "an OmniSurf3D .os3d file"),
         (b"MATLAB", "a MATLAB .mat file"),
         (
             b"II*\x00",
-            "a TIFF image (Olympus LEXT, Park, JPK … write TIFF)",
+            "a TIFF image that is not a JPK or Park Systems scan (Olympus LEXT … write TIFF)",
         ),
         (
             b"MM\x00*",
-            "a TIFF image (Olympus LEXT, Park, JPK … write TIFF)",
+            "a TIFF image that is not a JPK or Park Systems scan (Olympus LEXT … write TIFF)",
         ),
         (b"\x89PNG", "a PNG image, not height data"),
         (b"\xff\xd8\xff", "a JPEG image, not height data"),
@@ -86,7 +88,6 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
         return other("a BMP image, not height data");
     }
     match ext {
-        "plux" => return other("a Sensofar .plux file"),
         "spm" | "001" | "002" | "003" if binary(bytes) => {
             return other("a Bruker/Digital Instruments Nanoscope file")
         }
@@ -130,13 +131,6 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
         );
     }
     Format::Text
-}
-
-/// Whether `needle` occurs in the first 64 KiB of `hay`.
-fn find(hay: &[u8], needle: &[u8]) -> bool {
-    hay[..hay.len().min(1 << 16)]
-        .windows(needle.len())
-        .any(|w| w == needle)
 }
 
 /// Whether the first 4 KiB hold a NUL or control bytes that text does not.
@@ -262,14 +256,15 @@ mod tests {
             f => panic!("{f:?}"),
         };
         assert!(other(b"CDF\x01\0\0", "nc").contains("NetCDF"));
-        assert!(other(b"\x89HDF\r\n\x1a\n\0", "datx").contains("Zygo .datx"));
         assert!(other(b"\x89HDF\r\n\x1a\n\0", "nc").contains("HDF5"));
         assert!(other(b"\x93NUMPY\x01\x00", "npy").contains("numpy.savetxt"));
         assert!(other(b"II*\x00\x08\0", "tif").contains("TIFF"));
-        assert!(other(b"VK4_\0\0", "vk4").contains("Keyence .vk4"));
+        assert!(other(b"VK3_\0\0", "vk3").contains("Keyence .vk3"));
         assert!(other(b"\0\x01\x02", "bin").contains("Gwyddion"));
         // Instruments' own files are read.
         let native = |b: &[u8], ext: &str| matches!(format(b, ext), Format::Native(_));
+        assert!(native(b"\x89HDF\r\n\x1a\n\0", "datx"));
+        assert!(native(b"VK6\0\0", "vk6"));
         assert!(native(b"\\*File list\r\n", ""));
         assert!(native(b"\x88\x1b\x03\x70\0", "dat"));
         let mut plu = b"Mon Apr 19 11:40:13 2021".to_vec();
