@@ -257,7 +257,7 @@ fn jpk_tiff_and_park() {
     let at = park.windows(6).position(|w| w == b"T\0o\0p\0").unwrap() - 4;
     let mut b = park.clone();
     put(&mut b, at + 100, &65u32.to_le_bytes());
-    assert!(refuse("x.tiff", &b).contains("the data of 65 × 48 points takes 12480 bytes"));
+    assert!(refuse("x.tiff", &b).contains("the data: 65 × 48 points take 12480 bytes"));
     let mut b = park.clone();
     put(&mut b, at + 100, &u32::MAX.to_le_bytes());
     put(&mut b, at + 104, &u32::MAX.to_le_bytes());

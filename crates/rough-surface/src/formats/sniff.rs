@@ -42,7 +42,7 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
     if utf16(bytes).is_some() {
         return Format::Text;
     }
-    if starts(b"GWYO") || starts(b"GWYQ") {
+    if starts(b"GWYQ") {
         return other("a Gwyddion file of another version");
     }
     if starts(b"\x89HDF\r\n\x1a\n") {
@@ -68,7 +68,6 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
         (&b"VK3_"[..], "a Keyence .vk3 file"),
         (b"Binary TrueMap", "a TrueMap .tmd file"),
         (b"OmniSurf3D", "an OmniSurf3D .os3d file"),
-        (b"WSxM file", "a WSxM file"),
         (b"MATLAB", "a MATLAB .mat file"),
         (
             b"II*\x00",
@@ -95,6 +94,20 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
         "mnt" => return other("a Digital Surf MountainsMap .mnt file"),
         "mdt" => return other("an NT-MDT .mdt file"),
         _ => {}
+    }
+    if matches!(ext, "plu" | "apx") && binary(bytes) {
+        return Format::Other(format!(
+            "named .{ext} but not a Sensofar file ({}): its name does not say what it holds; \
+             open it in Gwyddion, which tells most formats apart, and save it as .gwy or .x3p",
+            crate::formats::readers::plu::why_not(bytes)
+        ));
+    }
+    if let Some((date, Some(ty))) = crate::formats::readers::plu::looks_like(bytes) {
+        return Format::Other(format!(
+            "looks like a Sensofar .plu file (its date '{}', measurement type {ty}), a format \
+             without magic bytes that is told by its name: name it .plu (or .apx) to read it",
+            crate::formats::readers::bin::printable(&date, 40)
+        ));
     }
     if starts(b"fileType      ") {
         return other("an Agilent (Molecular Imaging) PicoView .mi file");
@@ -254,7 +267,21 @@ mod tests {
         assert!(native(b"VK6\0\0", "vk6"));
         assert!(native(b"\\*File list\r\n", ""));
         assert!(native(b"\x88\x1b\x03\x70\0", "dat"));
-        assert!(native(b"date 2020\0\0\0", "plu"));
+        let mut plu = b"Mon Apr 19 11:40:13 2021".to_vec();
+        plu.resize(600, 0);
+        plu[428] = 3;
+        assert!(native(&plu, "plu"));
+        assert!(other(&plu, "dat").contains("looks like a Sensofar .plu file"));
+        // Cut short before its measurement type: read (and refused as cut).
+        assert!(native(&plu[..300], "plu"));
+        let mut bad = plu.clone();
+        bad[428] = 99;
+        assert_eq!(
+            other(&bad, "plu"),
+            "named .plu but not a Sensofar file (a measurement type of 99 at byte 428, where \
+             Sensofar's are 0–6): its name does not say what it holds; open it in Gwyddion, \
+             which tells most formats apart, and save it as .gwy or .x3p"
+        );
         assert!(native(b"DIGITAL SURF\0", "sur"));
         let mut mi = b"fileType      Image\nversion PicoView\n".to_vec();
         mi.extend_from_slice(&[0; 16]);

@@ -16,13 +16,16 @@
 
 mod al3d;
 pub(crate) mod assumed;
-mod bin;
+mod bcr;
+pub(crate) mod bin;
 mod chan;
 mod datx;
 mod di;
 mod frt;
 pub(crate) mod grid;
 pub(crate) mod gwy;
+mod gwyo;
+pub(crate) mod gwyser;
 mod h5;
 mod h5jpk;
 mod ibw;
@@ -33,12 +36,16 @@ mod nid;
 mod opd;
 mod opdx;
 mod park;
-mod plu;
+pub(crate) mod plu;
 mod plux;
 mod sdf;
 mod sur;
+mod surz;
+mod sxm;
 pub(crate) mod tiffs;
+mod wsxm;
 pub(crate) mod x3p;
+mod xqd;
 mod zipped;
 mod zon;
 
@@ -77,7 +84,7 @@ impl std::fmt::Debug for Native {
 
 /// The formats read natively, in the order they are told apart (the
 /// first whose bytes match is taken: the extension alone last).
-static NATIVE: [Native; 18] = [
+static NATIVE: &[Native] = &[
     Native {
         name: sur::NAME,
         channels: false,
@@ -181,9 +188,51 @@ static NATIVE: [Native; 18] = [
         read: |b, _| datx::read(b),
     },
     Native {
+        name: surz::NAME,
+        channels: false,
+        is: |b, _| b.starts_with(surz::MAGIC),
+        read: |b, _| surz::read(b),
+    },
+    Native {
+        name: wsxm::NAME,
+        channels: false,
+        is: |b, _| b.starts_with(wsxm::MAGIC),
+        read: |b, _| wsxm::read(b),
+    },
+    Native {
+        name: bcr::NAME,
+        channels: false,
+        is: |b, _| bcr::is_bcr(b),
+        read: |b, _| bcr::read(b),
+    },
+    Native {
+        name: sxm::NAME,
+        channels: true,
+        is: |b, _| b.starts_with(sxm::MAGIC),
+        read: sxm::read,
+    },
+    Native {
+        name: gwyo::NAME,
+        channels: true,
+        is: |b, _| b.starts_with(gwyo::MAGIC),
+        read: gwyo::read,
+    },
+    Native {
+        name: xqd::NAME,
+        channels: false,
+        is: |b, ext| xqd::is_xqd(b) && matches!(ext, "xqp" | "xqpx" | "xqi" | "xqix"),
+        read: |_, _| xqd::not_heights(),
+    },
+    Native {
+        name: xqd::NAME,
+        channels: false,
+        is: |b, _| xqd::is_xqd(b),
+        read: |b, _| xqd::read(b),
+    },
+    Native {
         name: plu::NAME,
         channels: true,
-        is: |_, ext| matches!(ext, "plu" | "apx"),
+        is: |b, ext| matches!(ext, "plu" | "apx") && plu::looks_like(b).is_some(),
         read: plu::read,
     },
 ];
