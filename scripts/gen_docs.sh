@@ -35,4 +35,12 @@ done
 "$bin" export --preset fig4 --set zeta=32 --view contact --format svg \
     > docs/fig4-contact.svg
 "$bin" export --preset fig2 --view contact-sweep --format svg > docs/fig2-contact-sweep.svg
+# The paper's figure with the simulation's initial slopes (fig2, four seeds
+# in a cell of one longest wavelength: about two minutes), and the
+# elastic-again scene's plastic share at a load fixed in H0 with each
+# node's summit hardness.
+"$bin" export --preset fig2 --view contact-slopes --cell 1 --seeds 4 --format svg \
+    > docs/fig2-contact-slopes.svg
+"$bin" export --preset elastic-again --view contact-sweep --cell 1 --seeds 4 --hardness summit \
+    --format svg > docs/elastic-again-contact-sweep.svg
 echo "wrote docs/*.svg" >&2

@@ -7,13 +7,15 @@ use rough_model::Axis;
 
 mod cluster;
 pub mod setup;
+mod simulate;
 mod values;
 pub use cluster::{parse_shard, Cluster, MergeArgs, Shard};
-use values::{
-    parse_cell, parse_contact_grid, parse_grid, parse_height_unit, parse_per_wavelength,
-    parse_percent, parse_pixel_size, parse_points, parse_seeds, parse_sweep,
-};
+pub use simulate::{HardnessArg, LoadScaleArg, Simulate};
 pub use values::{parse_duration, parse_fit_band, parse_set, SetKey, SweepArg, MAX_POINTS};
+use values::{
+    parse_grid, parse_height_unit, parse_percent, parse_pixel_size, parse_points, parse_seeds,
+    parse_sweep,
+};
 
 #[derive(Debug, Parser)]
 #[command(
@@ -279,77 +281,6 @@ pub struct ExportArgs {
     pub cluster: Cluster,
 }
 
-/// How the contact simulation samples a power-law scene (export's contact
-/// views, the explorer's contact view, a served class's).
-#[derive(Debug, Args, Clone, Default)]
-pub struct Simulate {
-    /// The simulated cell's side in longest wavelengths 2π/q0, the spectrum
-    /// flat below q0 (contact views; default 2 in export, 1 in the
-    /// explorer, whose first answer must come quickly).
-    #[arg(long, value_name = "K", value_parser = parse_cell)]
-    pub cell: Option<u32>,
-    /// The simulation's grid, nodes a side, a power of two (contact views;
-    /// default: 8 nodes per shortest wavelength).
-    #[arg(long, value_name = "N", value_parser = parse_contact_grid, conflicts_with = "per_wavelength")]
-    pub contact_grid: Option<usize>,
-    /// The simulation's nodes per shortest wavelength 2π/(ζ q0), the grid
-    /// the power of two giving as many (contact views; default 8).
-    #[arg(long, value_name = "K", value_parser = parse_per_wavelength)]
-    pub per_wavelength: Option<u32>,
-    /// Where the size effect's hardness applies in the simulation: one cap
-    /// everywhere (default), or each contact patch that of its asperity.
-    #[arg(long, value_enum)]
-    pub hardness: Option<HardnessArg>,
-}
-
-impl Simulate {
-    /// `base` with what the command line sets.
-    pub fn sampling(&self, base: crate::contact::Sampling) -> crate::contact::Sampling {
-        use crate::contact::{Grid, Hardness};
-        let mut s = base;
-        if let Some(k) = self.cell {
-            s.cell = k;
-        }
-        if let Some(n) = self.contact_grid {
-            s.grid = Grid::Side(n);
-        }
-        if let Some(k) = self.per_wavelength {
-            s.grid = Grid::PerWavelength(k);
-        }
-        match self.hardness {
-            Some(HardnessArg::Asperity) => s.hardness = Hardness::Asperity,
-            Some(HardnessArg::Global) => s.hardness = Hardness::Global,
-            None => {}
-        }
-        s
-    }
-
-    /// The options given, by name (a measured map refuses them).
-    pub fn given(&self) -> [(bool, &'static str); 4] {
-        [
-            (self.hardness.is_some(), "--hardness"),
-            (self.cell.is_some(), "--cell"),
-            (self.contact_grid.is_some(), "--contact-grid"),
-            (self.per_wavelength.is_some(), "--per-wavelength"),
-        ]
-    }
-
-    /// Refuses the options that do not apply to `state`: a measured map is
-    /// solved on its own heights, its square and grid set by the data and
-    /// ζ; a hardness per asperity needs the size effect.
-    pub fn check(&self, state: &crate::scene::State) -> anyhow::Result<()> {
-        if state.is_measured() {
-            if let Some((_, opt)) = self.given().into_iter().skip(1).find(|(g, _)| *g) {
-                anyhow::bail!(
-                    "{opt} does not apply to a measured map: it is solved on its own heights, \
-                     its square and grid set by the data and ζ"
-                );
-            }
-        }
-        Ok(())
-    }
-}
-
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum ViewArg {
     Slopes,
@@ -370,6 +301,12 @@ pub enum ViewArg {
     /// wavelength and cells of 1, 2 and 4 longest wavelengths, over the
     /// seeds (CSV).
     ContactConvergence,
+    /// The simulation's initial slopes H·dA/dp̄/A0 against ζ beside the
+    /// theory's (the paper's figure with the simulation's points).
+    ContactSlopes,
+    /// The synthetic surface the contact views solve, as a height matrix
+    /// (readable by `--surface FILE --periodic` and SurfaceTopography).
+    Surface,
 }
 
 impl ViewArg {
@@ -387,7 +324,9 @@ impl ViewArg {
             | ViewArg::Contact
             | ViewArg::ContactSweep
             | ViewArg::ContactMap
-            | ViewArg::ContactConvergence => return None,
+            | ViewArg::ContactConvergence
+            | ViewArg::ContactSlopes
+            | ViewArg::Surface => return None,
         })
     }
 }
@@ -402,16 +341,6 @@ pub enum FormatArg {
 pub enum OnOff {
     On,
     Off,
-}
-
-/// Where the simulation's hardness applies (contact views).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum HardnessArg {
-    /// One cap everywhere: the scene's H_use, as the theory uses it.
-    Global,
-    /// Each contact patch the size effect's H_y of the asperity under it
-    /// (its curvature radius in place of R_s; needs the size effect on).
-    Asperity,
 }
 
 /// A parameter on the command line.

@@ -1,13 +1,20 @@
-//! The paper's four figures as snapshots, built into the binary.
+//! The paper's four figures as snapshots, built into the binary, and a
+//! scene where its "elastic again at small scales" lies within the contact
+//! simulation's reach (`elastic-again`).
 
 use crate::scene::State;
 
-/// (name, RON text) of every preset, in key order 1–4.
-pub const PRESETS: [(&str, &str); 4] = [
+/// (name, RON text) of every preset: the paper's figures in key order
+/// 1–4, then `elastic-again` (no key).
+pub const PRESETS: [(&str, &str); 5] = [
     ("fig1", include_str!("../presets/fig1.ron")),
     ("fig2", include_str!("../presets/fig2.ron")),
     ("fig3", include_str!("../presets/fig3.ron")),
     ("fig4", include_str!("../presets/fig4.ron")),
+    (
+        "elastic-again",
+        include_str!("../presets/elastic-again.ron"),
+    ),
 ];
 
 /// The names, for error messages and help.

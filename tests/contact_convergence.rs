@@ -30,7 +30,7 @@ fn convergence_csv() {
     assert_eq!(
         lines.next().unwrap(),
         "per_wavelength,cell,grid,area,area_sd,elastic_area,plastic_area,plastic_area_sd,\
-         plastic_share,plastic_share_sd,iterations,seeds"
+         plastic_share,plastic_share_sd,iterations,seeds,area_corrected,area_corrected_sd"
     );
     let rows: Vec<Vec<f64>> = lines
         .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
@@ -51,6 +51,8 @@ fn convergence_csv() {
             assert!((r[5] + r[6] - r[3]).abs() < 1e-12, "{r:?}");
             assert!(r[3] > 0.0 && r[3] < 0.2 && r[4] > 0.0, "{r:?}");
             assert_eq!(r[11], 2.0);
+            // The corrected area: less the overcount along the edge.
+            assert!(r[12] < r[3] && r[12] > 0.8 * r[3], "{r:?}");
         }
         let (a4, a8, a16) = (row(4.0, cell)[3], row(8.0, cell)[3], row(16.0, cell)[3]);
         if row(4.0, cell)[2] < row(8.0, cell)[2] {

@@ -73,7 +73,25 @@ fn contact_view_csv() {
         header,
         "p_over_h,area,elastic_area,plastic_area,mean_gap,iterations,residual,\
          theory_area,theory_elastic_area,theory_plastic_area,area_sd,elastic_area_sd,\
-         plastic_area_sd,seeds"
+         plastic_area_sd,seeds,p_over_h0,area_corrected,area_corrected_sd"
+    );
+    assert!(
+        comments.iter().any(|c| c.starts_with(
+            "# load = p_over_h = pbar/H0 (the theory's hardness in use, H0/E* = 0.01)"
+        )),
+        "{comments:#?}"
+    );
+    assert!(
+        comments
+            .iter()
+            .any(|c| c.starts_with("# hardness = global: one cap H0/E* = 0.01")),
+        "{comments:#?}"
+    );
+    assert!(
+        comments.iter().any(|c| c
+            .starts_with("# kappa = A/A0 over pbar/(E* h') at the lightest load")
+            && c.contains("Persson's theory: sqrt(8/pi) = 1.5957691216057308")),
+        "{comments:#?}"
     );
     assert_eq!(rows.len(), 13);
     assert_eq!(rows[0][0], 1e-3);
@@ -86,6 +104,13 @@ fn contact_view_csv() {
         assert!(r[1] >= last && r[1] <= 1.0);
         assert!(r[6] <= 1e-10, "residual {r:?}");
         assert!(r[10].is_nan() && r[13] == 1.0, "one seed: {r:?}");
+        // Without the size effect the load over H0 is the load over H_use;
+        // the corrected area is the area less the perimeter's overcount.
+        assert_eq!(r[14], r[0]);
+        assert!(
+            r[15] <= r[1] && (r[15] > 0.9 * r[1] || r[1] < 0.02),
+            "{r:?}"
+        );
         last = r[1];
     }
     // At p̄ = H everything is at the hardness, in both.
@@ -160,22 +185,33 @@ fn contact_sweep_csv_and_svg() {
         "1",
     ]);
     let (comments, header, rows) = parse(&csv);
-    assert!(header.starts_with("zeta,p_over_h,plastic_share,theory_plastic_share,"));
+    assert_eq!(
+        header,
+        "zeta,p_over_h0,p_over_h,plastic_share,theory_plastic_share,area,theory_area,grid,\
+         iterations,residual,plastic_share_sd,area_sd,seeds,hardness_over_e,\
+         theory_hardness_over_e,patches,patch_radius,area_corrected,area_corrected_sd"
+    );
     assert!(
         comments.iter().any(|c| c.starts_with(
             "# contact-sweep = zeta = 1, 2, 4, …, 128 (a measured map: those it resolves), each \
-             on its own grid, at p_over_h = pbar/H0 = 0.01"
+             on its own grid, at p_over_h0 = pbar/H0 = 0.01 (the same load at every zeta)"
         )),
+        "{comments:#?}"
+    );
+    assert!(
+        comments
+            .iter()
+            .any(|c| c.starts_with("# load = pbar = 0.01 H0 at every zeta")),
         "{comments:#?}"
     );
     let zetas: Vec<f64> = rows.iter().map(|r| r[0]).collect();
     assert_eq!(zetas, [1.0, 2.0, 4.0, 8.0, 16.0, 32.0, 64.0, 128.0]);
-    let grids: Vec<f64> = rows.iter().map(|r| r[6]).collect();
+    let grids: Vec<f64> = rows.iter().map(|r| r[7]).collect();
     assert_eq!(grids, [32.0, 32.0, 32.0, 64.0, 128.0, 256.0, 512.0, 1024.0]);
     for r in &rows {
-        assert_eq!(r[1], 0.01);
+        assert_eq!((r[1], r[2]), (0.01, 0.01));
         assert!(
-            (0.0..=1.0).contains(&r[2]) && (0.0..=1.0).contains(&r[3]),
+            (0.0..=1.0).contains(&r[3]) && (0.0..=1.0).contains(&r[4]),
             "{r:?}"
         );
     }
@@ -308,22 +344,49 @@ fn contact_hardness_per_asperity() {
         "on",
         "--cell",
         "1",
+        // Four nodes a wavelength: ζ = 128 on 512², a quick test.
+        "--per-wavelength",
+        "4",
     ];
     let global = stdout(&base);
-    let text = stdout(&[&base[..], &["--hardness", "asperity"]].concat());
-    let (comments, header, rows) = parse(&text);
-    assert!(header.ends_with("hardness_over_e,theory_hardness_over_e,patches,patch_radius"));
-    assert!(comments
-        .iter()
-        .any(|c| c.contains("# hardness per asperity = each node capped")));
     let (_, _, g) = parse(&global);
-    for (a, g) in rows.iter().zip(&g) {
-        // The global cap is the theory's; per asperity the load-weighted
-        // cap is H0 at least and the patches' radii are finite.
-        assert_eq!(g[12], g[13], "{g:?}");
-        assert!(a[12] >= 0.001 * (1.0 - 1e-12), "{a:?}");
-        assert!(a[14] >= 1.0 && a[15] > 0.0, "{a:?}");
+    for hardness in ["asperity", "summit"] {
+        let text = stdout(&[&base[..], &["--hardness", hardness]].concat());
+        let (comments, header, rows) = parse(&text);
+        assert!(header.contains("hardness_over_e,theory_hardness_over_e,patches,patch_radius"));
+        assert!(
+            comments
+                .iter()
+                .any(|c| c.starts_with(&format!("# hardness = {hardness}: each node capped"))),
+            "{comments:#?}"
+        );
+        for (a, g) in rows.iter().zip(&g) {
+            // The global cap is the theory's; per node the load-weighted
+            // cap is H0 at least and the radii are finite.
+            assert_eq!(g[13], g[14], "{g:?}");
+            assert!(a[13] >= 0.001 * (1.0 - 1e-12), "{a:?}");
+            assert!(a[15] >= 1.0 && a[16] > 0.0, "{a:?}");
+            // The same load over H0 at every ζ, over H_y(R_s) the smaller
+            // as ζ grows.
+            assert_eq!(a[1], 0.01);
+            assert!((a[2] * a[14] / 0.001 - 0.01).abs() < 1e-12, "{a:?}");
+        }
     }
+    // --load-scale in-use: the load a fixed fraction of H_y(R_s) at each ζ
+    // (heavier over H0 as ζ grows).
+    let scaled = stdout(&[&base[..], &["--load-scale", "in-use"]].concat());
+    let (comments, _, rows) = parse(&scaled);
+    assert!(
+        comments
+            .iter()
+            .any(|c| c.starts_with("# load = pbar = 0.01 H_y at each zeta (--load-scale in-use")),
+        "{comments:#?}"
+    );
+    for r in &rows {
+        assert_eq!(r[2], 0.01);
+        assert!((r[1] - 0.01 * r[14] / 0.001).abs() < 1e-12 * r[1], "{r:?}");
+    }
+    assert!(rows[7][1] > 5.0 * rows[0][1], "{rows:?}");
     let out = common::cli::run(&[
         "export",
         "--view",

@@ -14,6 +14,7 @@ use roughtui::contact::engine::Engine;
 use roughtui::figure::View;
 use roughtui::presets;
 use roughtui::tui::app::{update, App, Message};
+use roughtui::tui::contact::Plot;
 use roughtui::tui::glyphs::Glyphs;
 use roughtui::tui::theme::Theme;
 
@@ -253,20 +254,89 @@ fn b_shows_the_plastic_share_against_zeta() {
     // p̄ = 1e-3 H; the job (up to 1024², slow in debug) is cancelled when
     // the test drops the explorer.
     ch(&mut a, 'b');
-    assert!(a.contact.sweep);
+    assert_eq!(a.contact.plot, Plot::Share);
     assert_eq!(a.contact.tasks.len(), 16);
     assert_eq!(a.contact.theory.curves.len(), 2);
-    // The theory without the size effect is never below the one with it.
+    // The theory without the size effect is never below the one with it
+    // (at the same load over H0).
     for (off, on) in a.contact.theory.curves[0]
         .iter()
         .zip(&a.contact.theory.curves[1])
     {
         assert!(off.1 >= on.1 - 1e-12, "{off:?} {on:?}");
     }
+    // The load is fixed in H0: the size effect's tasks are lighter over
+    // their H_y.
+    // At each ζ the sets in turn: H0, then H_y(R_s).
+    let off = a.contact.tasks.iter().step_by(2);
+    let on = a.contact.tasks.iter().skip(1).step_by(2);
+    assert!(off.clone().all(|t| t.p_over_h() == 1e-3));
+    assert!(off
+        .zip(on.clone())
+        .all(|(a, b)| a.scene.same_surface(&b.scene)));
+    for t in on {
+        let h_y = t.scene.hardness() / 0.01;
+        assert!(
+            (t.p_over_h() * h_y / 1e-3 - 1.0).abs() < 1e-12,
+            "{}",
+            t.p_over_h()
+        );
+    }
     let text = screen(&a);
-    assert!(text.contains("plastic share vs ζ at p̄ = 0.001 H"), "{text}");
+    assert!(
+        text.contains("plastic share vs ζ at p̄ = 0.001 H0"),
+        "{text}"
+    );
+    assert!(text.contains("H0") && text.contains("H_y(R_s)"), "{text}");
     ch(&mut a, 'b');
-    assert!(!a.contact.sweep);
+    assert_eq!(a.contact.plot, Plot::Load);
+}
+
+/// `i` plots the initial slopes against ζ: each seed's five light loads at
+/// each ζ, the theory's three slopes, the readout at the largest ζ.
+#[test]
+fn i_shows_the_initial_slopes_against_zeta() {
+    use roughtui::contact::{Grid, Sampling};
+    let engine = Engine::new(2);
+    let mut a = app_at(4.0, (120, 36), Theme::colored(), &engine);
+    a.contact.seeds = 1;
+    // 64 nodes a side hold ζ = 1 … 16: the slopes' grid is 64² here.
+    a.contact.sampling = Sampling {
+        cell: 1,
+        grid: Grid::Side(64),
+        ..Sampling::default()
+    };
+    to_contact(&mut a);
+    ch(&mut a, 'i');
+    assert_eq!(a.contact.plot, Plot::Slopes);
+    assert_eq!(a.contact.zetas, [1.0, 2.0, 4.0, 8.0, 16.0]);
+    assert_eq!(a.contact.tasks.len(), 5 * 5);
+    assert_eq!(a.contact.theory.curves.len(), 3);
+    settle(&mut a);
+    let st = a.contact.slopes_at(4).unwrap();
+    assert!(st[2].mean > 0.0 && st[2].n == 1, "{st:?}");
+    let text = screen(&a);
+    assert!(text.contains("initial slopes vs ζ · seed 1"), "{text}");
+    assert!(text.contains("ζ = 16: sim total"), "{text}");
+    // p: the slopes' picture (the paper's figure with the points) and the
+    // surface's heights.
+    let dir = tempfile::tempdir().unwrap();
+    a.save_dir = dir.path().to_path_buf();
+    ch(&mut a, 'p');
+    let st = a.status.clone().unwrap();
+    assert!(!st.error && st.text.starts_with("saved "), "{}", st.text);
+    let files = common::files_in(dir.path());
+    assert_eq!(files.len(), 2, "{files:?}");
+    let svg = files.iter().find(|f| f.ends_with(".svg")).unwrap();
+    let svg = std::fs::read_to_string(dir.path().join(svg)).unwrap();
+    assert!(
+        svg.contains("initial slopes against ζ, theory and simulation"),
+        "{svg}"
+    );
+    ch(&mut a, 'b');
+    assert_eq!(a.contact.plot, Plot::Share);
+    ch(&mut a, 'b');
+    assert_eq!(a.contact.plot, Plot::Load);
 }
 
 /// `A` gives each contact patch its asperity's hardness: without the size
@@ -303,11 +373,35 @@ fn a_gives_each_asperity_its_hardness() {
     assert!(a.contact.tasks.iter().all(|t| t.scene.local.is_some()));
     let r = a.contact.chosen().unwrap().as_ref().unwrap();
     assert!(r.result.area > 0.0);
+    // The readout names the caps in use and the share at them; the load's
+    // unit is the theory's H_y(R_s), which no node is capped at.
+    let share = roughtui::tui::views::contact::share_pct(r.result.plastic_area, r.result.area);
+    assert!(text.contains("caps each asperity's H_y: sim "), "{text}");
+    assert!(text.contains(&format!("{share} % at its cap")), "{text}");
+    assert!(text.contains("at its asperity's H_y"), "{text}");
     ch(&mut a, 'b');
-    let (off, on) = a.contact.tasks.split_at(a.contact.tasks.len() / 2);
-    assert!(off.iter().all(|t| t.scene.local.is_none()));
-    assert!(on.iter().all(|t| t.scene.local.is_some()));
-    assert!(screen(&a).contains("H_y per asperity (points)"));
+    // At each ζ: H0 (size effect off), H_y(R_s) (on, one cap), per
+    // asperity.
+    let ts = &a.contact.tasks;
+    assert!(ts.iter().step_by(3).all(|t| t.scene.local.is_none()));
+    assert!(ts
+        .iter()
+        .skip(1)
+        .step_by(3)
+        .all(|t| t.scene.local.is_none()));
+    assert!(ts
+        .iter()
+        .skip(2)
+        .step_by(3)
+        .all(|t| t.scene.local.is_some()));
+    assert!(screen(&a).contains("per asperity"));
+    // A again: per summit, then one cap.
+    ch(&mut a, 'A');
+    assert_eq!(
+        a.contact.sampling.hardness,
+        roughtui::contact::Hardness::Summit
+    );
+    assert!(screen(&a).contains("per summit"));
     ch(&mut a, 'A');
     assert!(a.contact.tasks.iter().all(|t| t.scene.local.is_none()));
     assert!(screen(&a).contains("one hardness cap for every node"));
@@ -348,7 +442,8 @@ fn b_averages_the_plastic_share_over_the_seeds() {
     let shares: Vec<f64> = std::iter::once(&a.contact.results)
         .chain(&a.contact.seed_results)
         .map(|rs| {
-            let r = rs[4].as_ref().unwrap().as_ref().unwrap().result;
+            // ζ = 16 is the fifth ζ, its first set H0: task 4 × 2 + 0.
+            let r = rs[8].as_ref().unwrap().as_ref().unwrap().result;
             r.plastic_area / r.area
         })
         .collect();
@@ -363,7 +458,10 @@ fn b_averages_the_plastic_share_over_the_seeds() {
         text.contains("plastic share vs ζ at p̄ = 0.1 H0 · seeds 1–4"),
         "{text}"
     );
-    assert!(text.contains("mean ± sd of 4 seeds"), "{text}");
+    // The row over the chart: each set's share at the largest ζ, in
+    // numbers (the H0 set's is the mean ± sd just computed).
+    let h0 = roughtui::tui::views::contact::share_pm(&st);
+    assert!(text.contains(&format!("ζ = 16: H0 {h0} %")), "{text}");
     // R: sixteen seeds, then one, as on the load plot.
     ch(&mut a, 'R');
     assert_eq!(a.contact.seed_tasks.len(), 15);
@@ -429,23 +527,42 @@ fn p_saves_the_contact_map_at_the_chosen_load() {
     ch(&mut a, 'p');
     let st = a.status.clone().unwrap();
     assert!(!st.error && st.text.starts_with("saved "), "{}", st.text);
+    // The picture and the surface's heights, as the view solves them.
     let files = common::files_in(dir.path());
-    assert_eq!(files.len(), 1);
-    assert!(files[0].starts_with("fig2-contact"), "{files:?}");
-    let svg = std::fs::read_to_string(dir.path().join(&files[0])).unwrap();
+    assert_eq!(files.len(), 2, "{files:?}");
+    assert!(
+        files.iter().all(|f| f.starts_with("fig2-contact")),
+        "{files:?}"
+    );
+    assert!(
+        st.text.contains("--surface FILE --periodic reads them"),
+        "{}",
+        st.text
+    );
+    let heights = files.iter().find(|f| f.ends_with("-surface.txt")).unwrap();
+    let heights = std::fs::read_to_string(dir.path().join(heights)).unwrap();
+    assert!(heights.starts_with(
+        "# Channel: Height (roughtui synthetic surface of scene \"fig2\", seed 1)\n\
+         # Width: 0.00006283185307179586 m\n"
+    ));
+    assert_eq!(heights.lines().filter(|l| !l.starts_with('#')).count(), 32);
+    let svg = files.iter().find(|f| f.ends_with(".svg")).unwrap();
+    let svg = std::fs::read_to_string(dir.path().join(svg)).unwrap();
     assert!(
         svg.contains("fig2 — contact map at p̄ = 0.01778 H0") && svg.contains("32×32 nodes, seed 1"),
         "{svg}"
     );
-    // b's plot has no picture here: the status says where to get one.
+    // b's plot has no picture here: the heights are saved, the status says
+    // where to get the picture.
     ch(&mut a, 'b');
     ch(&mut a, 'p');
     let st = a.status.clone().unwrap();
     assert!(
-        st.error && st.text.contains("--view contact-sweep"),
+        !st.error && st.text.contains("--view contact-sweep --format svg"),
         "{}",
         st.text
     );
+    assert_eq!(common::files_in(dir.path()).len(), 3);
 }
 
 /// A measured map's heights are read for the contact view alone: the other

@@ -234,6 +234,7 @@ const NOT_COLUMNS: &[&str] = &[
     "detrend_mode",
     "si_unit_xy",
     "si_unit_z",
+    "read_topography",
     // Crates and their features; an example of this repository.
     "serde_path_to_error",
     "rand_chacha",

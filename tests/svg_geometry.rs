@@ -336,6 +336,8 @@ fn the_sweep_picture_keeps_its_points_whole_and_its_legend_clear() {
     let d = ContactSweep {
         surface: "seed 1".into(),
         load: 0.01,
+        load_in_h0: false,
+        hardness: "H_y(R_s) at every node".into(),
         zeta,
         share,
         sd: None,

@@ -26,12 +26,12 @@ pub struct Shown {
 }
 
 /// What the contact view shows of a scene: the load (`[ ]`), the plot
-/// (`b`), how many seeds it averages over (`R`), whether the convergence
-/// table is up (`t`) and where the hardness applies (`A`).
+/// (`b`, `i`), how many seeds it averages over (`R`), whether the
+/// convergence table is up (`t`) and where the hardness applies (`A`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct ContactShown {
     pub load: usize,
-    pub sweep: bool,
+    pub plot: crate::contact::Plot,
     pub seeds: u32,
     pub table: bool,
     pub hardness: crate::contact::Hardness,

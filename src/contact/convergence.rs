@@ -18,7 +18,8 @@ pub const CELLS: [u32; 3] = [1, 2, 4];
 
 /// The CSV header.
 pub const HEADER: &str = "per_wavelength,cell,grid,area,area_sd,elastic_area,plastic_area,\
-plastic_area_sd,plastic_share,plastic_share_sd,iterations,seeds";
+plastic_area_sd,plastic_share,plastic_share_sd,iterations,seeds,area_corrected,\
+area_corrected_sd";
 
 /// One (nodes per wavelength, cell) pair over the seeds; `None` where the
 /// grid is beyond what the machine or the solver takes (the reason).
@@ -32,6 +33,8 @@ pub struct Point {
 pub struct Solved {
     pub grid: usize,
     pub area: Stat,
+    /// The area with the grid's edge corrected (Yastrebov et al. 2017).
+    pub corrected: Stat,
     pub elastic: Stat,
     pub plastic: Stat,
     pub share: Stat,
@@ -82,6 +85,7 @@ pub fn points(
                 Ok(Solved {
                     grid,
                     area: Stat::of(runs.iter().map(|r| r.area)),
+                    corrected: Stat::of(runs.iter().map(|r| r.corrected_area())),
                     elastic: Stat::of(runs.iter().map(|r| r.elastic_area)),
                     plastic: Stat::of(runs.iter().map(|r| r.plastic_area)),
                     share: Stat::of(runs.iter().map(share)),
@@ -133,6 +137,8 @@ pub fn write(
                     s.share.sd,
                     s.iterations.mean,
                     s.area.n as f64,
+                    s.corrected.mean,
+                    s.corrected.sd,
                 ],
             ),
             Err(why) => skipped.push(format!(
@@ -157,7 +163,9 @@ pub fn write(
     }
     writeln!(
         out,
-        "# zeta = {}, hardness_in_use_over_e = {}; areas as fractions of A0",
+        "# zeta = {}, hardness_in_use_over_e = {}; areas as fractions of A0; area_corrected: the \
+         area less (pi - 1 + ln 2)/24 of a node per side of the contact's perimeter (Yastrebov, \
+         Anciaux & Molinari 2017)",
         csv_number::format(state.params.zeta()),
         csv_number::format(
             state.params.h0_over_e()

@@ -398,7 +398,8 @@ impl Engine {
             let Some(i) = next else { return };
             ended[i] = true;
             let task = job.tasks[i];
-            if !self.has(&task, task.scene.seed == job.drawn) {
+            let solve = !self.has(&task, task.scene.seed == job.drawn);
+            if solve {
                 let outcome = self.solve_one(job, task, &mut built);
                 if outcome.is_err() && job.cancel.load(Ordering::Relaxed) {
                     return;
@@ -410,6 +411,9 @@ impl Engine {
             job.set(|p| {
                 p.done += 1;
                 p.work_done += work(&task);
+                if solve {
+                    p.work_solved += work(&task);
+                }
                 p.iteration = 0;
                 p.residual = 0.0;
                 p.first_residual = 0.0;
@@ -426,10 +430,15 @@ impl Engine {
     ) -> Outcome {
         self.solves.fetch_add(1, Ordering::Relaxed);
         let began = Instant::now();
-        if built.as_ref().map(|b| b.0) != Some(task.scene) {
-            *built = None;
-            let c = task.scene.build().map_err(|e| format!("{e:#}"))?;
-            *built = Some((task.scene, c));
+        // The same heights capped otherwise (b's sets at one ζ) keep the
+        // surface and start from its last answer.
+        match built.as_mut() {
+            Some(b) if b.0.same_surface(&task.scene) => b.0 = task.scene,
+            _ => {
+                *built = None;
+                let c = task.scene.build().map_err(|e| format!("{e:#}"))?;
+                *built = Some((task.scene, c));
+            }
         }
         let Some((_, contact)) = built.as_mut() else {
             return Err("no surface".into());
@@ -491,10 +500,14 @@ impl Engine {
     /// coarse answer of the same load in the cache, prolonged (bilinear,
     /// one halving at a time) to the scene's grid. None for a coarse task,
     /// a hardness per asperity (its solve starts from an elastic one) or
-    /// a measured map.
+    /// a measured map; a hardness per summit starts from the coarse grid's
+    /// own summits' answer.
     fn coarse_start(&self, task: &Task) -> Option<Vec<f64>> {
         let scene = task.scene;
-        if scene.coarse > 0 || scene.surface.is_some() || scene.local.is_some() {
+        let asperity = scene
+            .local
+            .is_some_and(|l| l.0 == super::local::Radius::Asperity);
+        if scene.coarse > 0 || scene.surface.is_some() || asperity {
             return None;
         }
         (1u8..8).take_while(|c| scene.n >> c >= 2).find_map(|c| {

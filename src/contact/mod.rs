@@ -14,6 +14,7 @@
 //! H_use/E*.
 
 pub mod convergence;
+mod csv;
 pub mod engine;
 pub mod ensemble;
 pub mod local;
@@ -22,19 +23,34 @@ mod progress;
 mod rows;
 pub mod sampling;
 pub mod scene;
+pub mod slopes;
 
-use std::io::Write;
-
-use rough_contact::{Contact, LoadResult, Options};
+use rough_contact::{Boundary, Contact, LoadResult, Options};
 use rough_model::{areas, Areas};
 use scene::SceneKey;
 
+pub(crate) use csv::push_row;
+pub use csv::{
+    theory_split, write_contact, write_contact_sweep, CONTACT_HEADER, PERSSON_KAPPA, SWEEP_HEADER,
+};
 pub use ensemble::{Seeds, Stat};
 pub use rows::{load_rows, sweep_rows, LoadRow, SweepRow};
-pub use sampling::{Grid, Hardness, Sampling, MAX_GRID, MIN_GRID};
+pub use sampling::{Grid, Hardness, LoadScale, Sampling, MAX_GRID, MIN_GRID};
 
-use crate::physical::csv_number;
 use crate::scene::State;
+
+/// What the contact view's chart shows (the explorer draws it; the class
+/// carries it to the students who follow).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Plot {
+    /// The areas against the load.
+    #[default]
+    Load,
+    /// `b`: the plastic share against ζ at the chosen load.
+    Share,
+    /// `i`: the initial slopes against ζ.
+    Slopes,
+}
 
 /// The seed of the random phases when none is given.
 pub const DEFAULT_SEED: u64 = 1;
@@ -46,15 +62,11 @@ pub const SWEEP_LOAD: f64 = 0.01;
 pub const MAX_SEEDS: u32 = 1000;
 /// Most loads the contact view solves in one export.
 pub const MAX_LOADS: usize = 64;
-
-/// The contact view's CSV header: means over the seeds, then the spread.
-pub const CONTACT_HEADER: &str = "p_over_h,area,elastic_area,plastic_area,mean_gap,iterations,\
-residual,theory_area,theory_elastic_area,theory_plastic_area,area_sd,elastic_area_sd,\
-plastic_area_sd,seeds";
-/// The ζ sweep's CSV header.
-pub const SWEEP_HEADER: &str = "zeta,p_over_h,plastic_share,theory_plastic_share,area,\
-theory_area,grid,iterations,residual,plastic_share_sd,area_sd,seeds,hardness_over_e,\
-theory_hardness_over_e,patches,patch_radius";
+/// A grid finer than this is started from its surface's answer on this
+/// grid (sampled at every second, fourth … node), prolonged: 10–16 % fewer
+/// iterations on the fine grid for a sixteenth of the work a coarse
+/// iteration costs (docs/accuracy-speed.md).
+pub const COARSE_GRID: usize = 256;
 
 /// What is simulated of a scene: how its surface is sampled and over which
 /// seeds.
@@ -93,6 +105,13 @@ pub struct Simulation {
     /// A hardness per asperity: its law, and what the last solve found.
     pub local: Option<local::Law>,
     pub last_local: Option<local::Local>,
+    /// The caps per node of the last solve with a hardness per node.
+    pub last_caps: Option<Vec<f64>>,
+    /// The same surface on a coarse grid, whose answer at each load the
+    /// fine grid starts from (a power law's grid finer than
+    /// [`COARSE_GRID`], a hardness per asperity aside: its solve starts
+    /// from the elastic one).
+    coarse: Option<Box<Simulation>>,
 }
 
 impl Simulation {
@@ -105,6 +124,29 @@ impl Simulation {
     /// [`Simulation::of`] sampled by `sampling`.
     pub fn with(state: &State, seed: u64, sampling: &Sampling) -> anyhow::Result<Simulation> {
         let key = SceneKey::with(state, seed, sampling)?;
+        let mut sim = Simulation::of_key(state, seed, &key, key.build()?)?;
+        let asperity = key.local.is_some_and(|l| l.0 == local::Radius::Asperity);
+        if let (Some(c), false) = (key.coarser(COARSE_GRID), asperity) {
+            // The fine grid's heights at every second, fourth … node.
+            let (mut h, mut side) = (sim.contact.heights().to_vec(), key.n);
+            while side > c.side() {
+                h = rough_contact::restrict(&h, side);
+                side /= 2;
+            }
+            let contact = Contact::new(h, side, key.length(), 1.0, Boundary::Periodic)?;
+            sim.coarse = Some(Box::new(Simulation::of_key(state, seed, &c, contact)?));
+        }
+        Ok(sim)
+    }
+
+    /// The simulation of `key` (a scene of `state`) on `contact`, without
+    /// a coarse start.
+    fn of_key(
+        state: &State,
+        seed: u64,
+        key: &SceneKey,
+        contact: Contact,
+    ) -> anyhow::Result<Simulation> {
         let ix = state
             .roughness()
             .surface(&state.params, state.moments)
@@ -121,7 +163,7 @@ impl Simulation {
         };
         Ok(Simulation {
             measured,
-            contact: key.build()?,
+            contact,
             hardness: key.hardness(),
             psi: ix.psi_in_use(state.size_effect),
             model: state.model,
@@ -131,6 +173,8 @@ impl Simulation {
             rms_slope: key.rms_slope(),
             local: key.local(),
             last_local: None,
+            last_caps: None,
+            coarse: None,
         })
     }
 
@@ -141,9 +185,22 @@ impl Simulation {
         progress: &mut dyn FnMut(usize, f64) -> bool,
     ) -> anyhow::Result<(LoadResult, Areas)> {
         let p_mean = p_over_h * self.hardness;
+        if let Some(c) = &mut self.coarse {
+            // The same load on the coarse grid first, its pressure the fine
+            // grid's start (a failure there leaves the usual start).
+            if c.solve(p_over_h, &mut |_, _| true).is_ok() {
+                let mut p = c.contact.pressure().to_vec();
+                let mut side = c.contact.n();
+                while side < self.contact.n() {
+                    p = rough_contact::prolong(&p, side);
+                    side *= 2;
+                }
+                self.contact.start_from(&p)?;
+            }
+        }
         let r = match &self.local {
             Some(law) => {
-                let (r, _, info) = local::solve(
+                let (r, caps, info) = local::solve(
                     &mut self.contact,
                     p_mean,
                     law,
@@ -155,6 +212,7 @@ impl Simulation {
                     None => anyhow::Error::new(e),
                 })?;
                 self.last_local = Some(info);
+                self.last_caps = Some(caps);
                 r
             }
             None => self.contact.solve_with_progress(
@@ -197,228 +255,4 @@ pub fn loads(points: usize) -> Vec<f64> {
 /// ζ values of the sweep: powers of two from 1 to 128.
 pub fn sweep_zetas() -> Vec<f64> {
     (0..=7).map(|k| 2f64.powi(k)).collect()
-}
-
-/// The `#` lines of a contact CSV: `scene` (the scene as every view's CSV
-/// has it, made by export), then what the simulation adds: how the surface
-/// is solved and what it matches, the hardness, the theory and the units.
-fn comments(
-    out: &mut impl Write,
-    scene: &[String],
-    state: &State,
-    sim: &Simulation,
-    spec: &Spec,
-    h_rms: &Stat,
-) -> anyhow::Result<()> {
-    let p = &state.params;
-    // A sweep's first point solves another ζ than the scene's.
-    let p = &p.with(rough_model::Axis::Zeta, sim.zeta).unwrap_or(*p);
-    for l in scene {
-        writeln!(out, "# {l}")?;
-    }
-    if let Some(m) = &sim.measured {
-        writeln!(
-            out,
-            "# simulation = elastic–perfectly-plastic BEM (rough-contact), {m}, wavevectors \
-             q ≤ zeta q0 = {} 1/m kept",
-            csv_number::format(p.zeta() * p.q0())
-        )?;
-    } else {
-        let n = sim.contact.n();
-        let s = &spec.sampling;
-        writeln!(
-            out,
-            "# simulation = elastic–perfectly-plastic BEM (rough-contact), periodic {n} × {n} grid \
-             of side {} × 2π/q0 (cell: {}{}), {} nodes per shortest wavelength, power-law \
-             Gaussian surface, {}{}",
-            sim.cell,
-            s.cell_words(),
-            if sim.cell > 1 {
-                ", the spectrum flat below q0"
-            } else {
-                ""
-            },
-            csv_number::format(s.per_wavelength(n, p.zeta())),
-            spec.seeds.words(),
-            if spec.seeds.count > 1 {
-                format!(
-                    " (columns: means over {} realisations; *_sd: their sample standard \
-                     deviation)",
-                    spec.seeds.count
-                )
-            } else {
-                " (one realisation: the *_sd columns are NaN)".into()
-            }
-        )?;
-        writeln!(
-            out,
-            "# surface = matched to the scene's rms slope sqrt(2 m2) = {} ({}); its own h_rms \
-             {} m{} against the scene's {} m",
-            csv_number::format(sim.rms_slope),
-            match state.moments {
-                rough_model::Moments::Asymptotic => {
-                    "the paper's asymptotic moments, eq. 10; --moments truncated matches the \
-                     truncated spectrum's"
-                }
-                rough_model::Moments::Truncated => "the truncated spectrum's moments",
-            },
-            csv_number::format(h_rms.mean),
-            if h_rms.n > 1 {
-                format!(
-                    " (mean over the seeds, sd {})",
-                    csv_number::format(h_rms.sd)
-                )
-            } else {
-                String::new()
-            },
-            csv_number::format(p.h_rms()),
-        )?;
-    }
-    if let Some(law) = &sim.local {
-        writeln!(
-            out,
-            "# hardness per asperity = each node capped at H0 sqrt(1 + R*/(1.2 R)) with R the \
-             curvature radius of its asperity, the paraboloid fitted to the surface under its \
-             patch (H0/E* = {}, \
-             R* = {} m): the asperities are the patches of the purely elastic contact at the \
-             same load, a node outside them takes its nearest patch's, a patch spanning the cell \
-             H0; hardness_in_use_over_e, the loads' unit, is the theory's H_y at R_s",
-            csv_number::format(law.h0),
-            csv_number::format(law.r_star)
-        )?;
-    }
-    writeln!(
-        out,
-        "# hardness_in_use_over_e = {} ({}/E*, the pressure cap{}); rms_slope = {} (the \
-         surface rescaled to the scene's sqrt(2 m2))",
-        csv_number::format(sim.hardness),
-        state.hardness_name(),
-        if sim.local.is_some() {
-            ", the loads' unit"
-        } else {
-            ""
-        },
-        csv_number::format(sim.rms_slope)
-    )?;
-    writeln!(
-        out,
-        "# theory = the {} model's finite-load areas at the index in use {} = {}",
-        state.model.label(),
-        if state.size_effect {
-            "psi_star"
-        } else {
-            "psi_p"
-        },
-        csv_number::format(sim.psi.to_f64())
-    )?;
-    writeln!(
-        out,
-        "# units: areas as fractions of A0, mean_gap in m; residual: rms violation of the \
-         contact conditions over h_rms (the largest over the seeds)"
-    )?;
-    Ok(())
-}
-
-pub(crate) fn push_row(buf: &mut String, fields: &[f64]) {
-    for (k, v) in fields.iter().enumerate() {
-        if k > 0 {
-            buf.push(',');
-        }
-        csv_number::push(buf, *v);
-    }
-    buf.push('\n');
-}
-
-/// The contact view as CSV, `scene` its first `#` lines.
-pub fn write_contact(
-    out: &mut impl Write,
-    state: &State,
-    points: usize,
-    spec: &Spec,
-    scene: &[String],
-) -> anyhow::Result<()> {
-    let (sim, rows, heights, beyond) = load_rows(state, points, spec)?;
-    let mut buf = String::new();
-    for r in &rows {
-        push_row(
-            &mut buf,
-            &[
-                r.p_over_h,
-                r.area.mean,
-                r.elastic.mean,
-                r.plastic.mean,
-                r.mean(|x| x.mean_gap),
-                r.mean(|x| x.iterations as f64),
-                r.residual(),
-                r.theory.total,
-                r.theory.elastic,
-                r.theory.plastic,
-                r.area.sd,
-                r.elastic.sd,
-                r.plastic.sd,
-                r.runs.len() as f64,
-            ],
-        );
-    }
-    comments(out, scene, state, &sim, spec, &heights)?;
-    for b in &beyond {
-        writeln!(out, "# not solved: {b}")?;
-    }
-    writeln!(out, "{CONTACT_HEADER}")?;
-    out.write_all(buf.as_bytes())?;
-    out.flush()?;
-    Ok(())
-}
-
-/// The ζ sweep as CSV, `scene` its first `#` lines.
-pub fn write_contact_sweep(
-    out: &mut impl Write,
-    state: &State,
-    spec: &Spec,
-    scene: &[String],
-) -> anyhow::Result<()> {
-    let (sim, rows, heights) = sweep_rows(state, spec)?;
-    let mut buf = String::new();
-    for r in &rows {
-        let (share, area) = (r.share(), r.area());
-        push_row(
-            &mut buf,
-            &[
-                r.zeta,
-                SWEEP_LOAD,
-                share.mean,
-                r.theory_share(),
-                area.mean,
-                r.theory.total,
-                r.grid as f64,
-                Stat::of(r.runs.iter().map(|x| x.iterations as f64)).mean,
-                r.runs.iter().map(|x| x.residual).fold(0.0, f64::max),
-                share.sd,
-                area.sd,
-                r.runs.len() as f64,
-                Stat::of(r.hardness.iter().copied()).mean,
-                r.theory_hardness,
-                Stat::of(r.asperities.iter().map(|a| a.0 as f64)).mean,
-                Stat::of(r.asperities.iter().map(|a| a.1)).mean,
-            ],
-        );
-    }
-    comments(out, scene, state, &sim, spec, &heights)?;
-    if sim.local.is_some() {
-        writeln!(
-            out,
-            "# hardness_over_e: the load-weighted mean cap of the solution (with a hardness per \
-             asperity; theory_hardness_over_e: the theory's H_y at R_s); patches: the elastic \
-             contact's, the asperities in contact, with their median curvature radius in m"
-        )?;
-    }
-    writeln!(
-        out,
-        "# the simulation and theory lines above are the first zeta's; each zeta solves its own \
-         grid (column grid) and hardness"
-    )?;
-    writeln!(out, "{SWEEP_HEADER}")?;
-    out.write_all(buf.as_bytes())?;
-    out.flush()?;
-    Ok(())
 }

@@ -22,6 +22,9 @@ pub struct Progress {
     /// grid's task counts for its few nodes).
     pub work_done: f64,
     pub work_total: f64,
+    /// Of `work_done`, the work this job solved itself (not found in the
+    /// cache): the rate the time left is measured by.
+    pub work_solved: f64,
     /// When the job got its core.
     pub started: Option<Instant>,
 }
@@ -48,14 +51,53 @@ impl Progress {
         ((self.done as f64 + part) / self.total as f64).clamp(0.0, 1.0)
     }
 
-    /// The time left, from the time taken so far and the work done (none
-    /// before a twentieth is done: too early to say).
+    /// The time left: the work left at the rate this job has solved so
+    /// far. Work found in the cache (a job resumed after the view was
+    /// left) took no time and does not count towards the rate; none before
+    /// a twentieth of the work left has been solved (too early to say).
     pub fn left(&self) -> Option<Duration> {
-        let f = self.fraction();
         let took = self.started?.elapsed().as_secs_f64();
-        if self.finished || self.queued || f < 0.05 {
+        if self.finished || self.queued || self.work_total <= 0.0 {
             return None;
         }
-        Some(Duration::from_secs_f64(took * (1.0 - f) / f))
+        let f = self.fraction();
+        let done = f * self.work_total;
+        let cached = self.work_done - self.work_solved;
+        let solved = done - cached;
+        let left = self.work_total - done;
+        if solved <= 0.05 * (self.work_total - cached) || solved <= 0.0 {
+            return None;
+        }
+        Some(Duration::from_secs_f64(took * left / solved))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A job resumed with most of its work in the cache: the time left
+    /// goes by the rate of the work solved since, not by the fraction done
+    /// (which would say "1 s left" of minutes).
+    #[test]
+    fn the_time_left_after_a_resume_goes_by_the_work_solved() {
+        let p = Progress {
+            done: 9,
+            total: 10,
+            work_done: 90.0,
+            work_total: 100.0,
+            work_solved: 10.0,
+            started: Some(Instant::now() - Duration::from_secs(10)),
+            ..Progress::default()
+        };
+        // 10 units solved in 10 s, 10 left: 10 s, not 10 × 10/90 = 1.1 s.
+        let left = p.left().unwrap().as_secs_f64();
+        assert!((left - 10.0).abs() < 0.1, "{left}");
+        // All of it in the cache so far: too early to say.
+        let resumed = Progress {
+            work_solved: 0.0,
+            ..p.clone()
+        };
+        assert_eq!(resumed.left(), None);
     }
 }

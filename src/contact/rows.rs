@@ -16,6 +16,8 @@ pub struct LoadRow {
     pub area: Stat,
     pub elastic: Stat,
     pub plastic: Stat,
+    /// The area with the grid's edge corrected (Yastrebov et al. 2017).
+    pub corrected: Stat,
     pub theory: Areas,
 }
 
@@ -26,6 +28,7 @@ impl LoadRow {
             area: Stat::of(runs.iter().map(|r| r.area)),
             elastic: Stat::of(runs.iter().map(|r| r.elastic_area)),
             plastic: Stat::of(runs.iter().map(|r| r.plastic_area)),
+            corrected: Stat::of(runs.iter().map(|r| r.corrected_area())),
             runs,
             theory,
         }
@@ -44,7 +47,7 @@ impl LoadRow {
 
 /// The seeds of `spec` checked against the scene: a measured map has one
 /// realisation only.
-fn check_seeds(state: &State, spec: &Spec) -> anyhow::Result<()> {
+pub(super) fn check_seeds(state: &State, spec: &Spec) -> anyhow::Result<()> {
     if spec.seeds.count == 0 {
         bail!("--seeds 0: at least one realisation is needed");
     }
@@ -118,6 +121,10 @@ pub fn load_rows(
 /// One magnification of the ζ sweep, over the seeds.
 pub struct SweepRow {
     pub zeta: f64,
+    /// The load over H0 and over the theory's hardness in use at this ζ
+    /// (H0, or H_y(R_s) with the size effect).
+    pub p_over_h0: f64,
+    pub p_over_h: f64,
     pub grid: usize,
     pub runs: Vec<LoadResult>,
     pub theory: Areas,
@@ -141,6 +148,11 @@ impl SweepRow {
     pub fn area(&self) -> Stat {
         Stat::of(self.runs.iter().map(|r| r.area))
     }
+    /// Contact area less the grid's overcount along its edge (Yastrebov et
+    /// al. 2017), over the seeds.
+    pub fn corrected_area(&self) -> Stat {
+        Stat::of(self.runs.iter().map(|r| r.corrected_area()))
+    }
     /// The theory's plastic share at the same load.
     pub fn theory_share(&self) -> f64 {
         share(self.theory.plastic, self.theory.total)
@@ -155,37 +167,25 @@ fn share(plastic: f64, total: f64) -> f64 {
     }
 }
 
-/// The scene at ζ = 1, 2, …, 128 and p̄/H = [`SWEEP_LOAD`] for each seed;
-/// the first point's simulation (for the parameter lines) and its
+/// The scene at ζ = 1, 2, …, 128 and the load [`SWEEP_LOAD`] (over H0, or
+/// over the hardness in use at each ζ: `spec.sampling.loads`) for each
+/// seed; the first point's simulation (for the parameter lines) and its
 /// realisations' rms heights.
 pub fn sweep_rows(state: &State, spec: &Spec) -> anyhow::Result<(Simulation, Vec<SweepRow>, Stat)> {
     check_seeds(state, spec)?;
     let mut rows = vec![];
     let mut first = None;
     let mut heights = vec![];
-    // A measured map's ζ runs from the first that keeps a mode of its
-    // solved square to its data's largest.
-    let zeta_max = state.roughness().zeta_max() * (1.0 + 1e-12);
-    let zeta_min = match measured::heights_of(state)? {
-        Some((_, h)) => measured::lowest_zeta(&h) * (1.0 - 1e-9),
-        None => 0.0,
-    };
-    for zeta in sweep_zetas()
-        .into_iter()
-        .filter(|z| (zeta_min..=zeta_max).contains(z))
-    {
-        let mut s = state.clone();
-        s.params = s
-            .params
-            .with(rough_model::Axis::Zeta, zeta)
-            .map_err(|e| anyhow::anyhow!("ζ = {zeta}: {e}"))?;
+    for (zeta, s) in sweep_states(state)? {
+        let ratio = hardness_ratio(&s);
+        let p_over_h = spec.sampling.loads.over_in_use(SWEEP_LOAD, ratio);
         let (mut runs, mut theory, mut grid) = (vec![], None, 0);
         let (mut hardness, mut asperities) = (vec![], vec![]);
         let first_zeta = first.is_none();
         for seed in spec.seeds.iter() {
             let mut sim = Simulation::with(&s, seed, &spec.sampling)?;
             let (r, t) = sim
-                .solve(SWEEP_LOAD, &mut |_, _| true)
+                .solve(p_over_h, &mut |_, _| true)
                 .with_context(|| format!("contact at ζ = {zeta}, seed {seed}"))?;
             runs.push(r);
             theory = Some(t);
@@ -205,18 +205,48 @@ pub fn sweep_rows(state: &State, spec: &Spec) -> anyhow::Result<(Simulation, Vec
         let theory = theory.ok_or_else(|| anyhow::anyhow!("no seed to solve"))?;
         rows.push(SweepRow {
             zeta,
+            p_over_h0: p_over_h * ratio,
+            p_over_h,
             grid,
             runs,
             theory,
             hardness,
             asperities,
-            theory_hardness: s.params.h0_over_e()
-                * s.roughness()
-                    .surface(&s.params, s.moments)
-                    .indices
-                    .hardness_in_use(s.size_effect),
+            theory_hardness: s.params.h0_over_e() * ratio,
         });
     }
     let first = first.ok_or_else(|| anyhow::anyhow!("no ζ to sweep"))?;
     Ok((first, rows, Stat::of(heights)))
+}
+
+/// H_use/H0 of the scene: 1, or H_y(R_s)/H0 with the size effect.
+pub fn hardness_ratio(state: &State) -> f64 {
+    state
+        .roughness()
+        .surface(&state.params, state.moments)
+        .indices
+        .hardness_in_use(state.size_effect)
+}
+
+/// The scene at each ζ of a sweep: 1, 2, 4, …, 128 (a measured map's from
+/// the first that keeps a mode of its solved square to its data's
+/// largest).
+pub(super) fn sweep_states(state: &State) -> anyhow::Result<Vec<(f64, State)>> {
+    let zeta_max = state.roughness().zeta_max() * (1.0 + 1e-12);
+    let zeta_min = match measured::heights_of(state)? {
+        Some((_, h)) => measured::lowest_zeta(&h) * (1.0 - 1e-9),
+        None => 0.0,
+    };
+    sweep_zetas()
+        .into_iter()
+        .filter(|z| (zeta_min..=zeta_max).contains(z))
+        .map(|zeta| {
+            let mut s = state.clone();
+            s.params = s
+                .params
+                .with(rough_model::Axis::Zeta, zeta)
+                .map_err(|e| anyhow::anyhow!("ζ = {zeta}: {e}"))?;
+            Ok((zeta, s))
+        })
+        .collect()
 }

@@ -45,15 +45,80 @@ pub enum Hardness {
     /// Each contact patch its own H_y from the curvature radius of the
     /// asperity under it (see `crate::contact::local`).
     Asperity,
+    /// Each node the H_y of the summit steepest ascent takes it to, at that
+    /// summit's curvature radius (see `crate::contact::local`).
+    Summit,
 }
 
-/// The cell, the grid and the hardness of a power-law scene's simulation.
+impl Hardness {
+    /// Global → asperity → summit → global (the explorer's `A`).
+    pub fn next(self) -> Hardness {
+        match self {
+            Hardness::Global => Hardness::Asperity,
+            Hardness::Asperity => Hardness::Summit,
+            Hardness::Summit => Hardness::Global,
+        }
+    }
+
+    /// The name the command line and the CSVs give it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Hardness::Global => "global",
+            Hardness::Asperity => "asperity",
+            Hardness::Summit => "summit",
+        }
+    }
+
+    /// The radius a per-node hardness takes, `None` for one cap.
+    pub fn radius(self) -> Option<super::local::Radius> {
+        match self {
+            Hardness::Global => None,
+            Hardness::Asperity => Some(super::local::Radius::Asperity),
+            Hardness::Summit => Some(super::local::Radius::Summit),
+        }
+    }
+}
+
+/// The unit a ζ sweep's load is fixed in.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum LoadScale {
+    /// p̄ a fixed fraction of H0 at every ζ: the same absolute load, the
+    /// question the paper's figures ask.
+    #[default]
+    H0,
+    /// p̄ a fixed fraction of the hardness in use at each ζ (H_y(R_s) with
+    /// the size effect: a heavier load as ζ grows).
+    InUse,
+}
+
+impl LoadScale {
+    /// The name the command line and the CSVs give it.
+    pub fn name(self) -> &'static str {
+        match self {
+            LoadScale::H0 => "h0",
+            LoadScale::InUse => "in-use",
+        }
+    }
+
+    /// p̄/H_use of a sweep's load `load` (p̄/H0, or p̄/H_use as it stands)
+    /// where the hardness in use is `h_use_over_h0` times H0.
+    pub fn over_in_use(self, load: f64, h_use_over_h0: f64) -> f64 {
+        match self {
+            LoadScale::H0 => load / h_use_over_h0,
+            LoadScale::InUse => load,
+        }
+    }
+}
+
+/// The cell, the grid and the hardness of a power-law scene's simulation,
+/// and the unit of its ζ sweeps' load.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Sampling {
     /// The cell side in longest wavelengths 2π/q0.
     pub cell: u32,
     pub grid: Grid,
     pub hardness: Hardness,
+    pub loads: LoadScale,
 }
 
 impl Default for Sampling {
@@ -62,6 +127,7 @@ impl Default for Sampling {
             cell: DEFAULT_CELL,
             grid: Grid::PerWavelength(DEFAULT_PER_WAVELENGTH),
             hardness: Hardness::Global,
+            loads: LoadScale::H0,
         }
     }
 }

@@ -31,9 +31,10 @@ pub struct SceneKey {
     pub coarse: u8,
     /// The cell side in longest wavelengths (1 for a measured map).
     pub cell: u32,
-    /// A hardness per asperity: H0/E* and R* (m) of the size-effect law, as
-    /// f64 bits; `None`: the cap [`SceneKey::hardness`] everywhere.
-    pub local: Option<(u64, u64)>,
+    /// A hardness per node: the radius it takes, H0/E* and R* (m) of the
+    /// size-effect law, as f64 bits; `None`: the cap
+    /// [`SceneKey::hardness`] everywhere.
+    pub local: Option<(super::local::Radius, u64, u64)>,
     pub seed: u64,
     /// A measured map: its file's SHA-256 and how it was read
     /// ([`super::measured`]); `None`: the power law.
@@ -66,13 +67,18 @@ impl SceneKey {
         let surface = state.roughness().surface(p, state.moments);
         let ix = surface.indices;
         let hardness = p.h0_over_e() * ix.hardness_in_use(state.size_effect);
-        let local = match sampling.hardness {
-            Hardness::Global => None,
-            Hardness::Asperity if !state.size_effect => bail!(
-                "a hardness per asperity is the size effect's: switch it on (--size-effect on, \
-                 e in the explorer)"
+        let local = match sampling.hardness.radius() {
+            None => None,
+            Some(_) if !state.size_effect => bail!(
+                "a hardness per {} is the size effect's: switch it on (--size-effect on, e in \
+                 the explorer)",
+                if sampling.hardness == Hardness::Summit {
+                    "summit"
+                } else {
+                    "asperity"
+                }
             ),
-            Hardness::Asperity => Some((p.h0_over_e().to_bits(), p.r_star().to_bits())),
+            Some(r) => Some((r, p.h0_over_e().to_bits(), p.r_star().to_bits())),
         };
         if let Some((id, h)) = measured::heights_of(state)? {
             let plan = measured::plan(&h, p.zeta() * p.q0())?;
@@ -107,6 +113,20 @@ impl SceneKey {
         })
     }
 
+    /// Whether `other` solves the same heights on the same grid (it may cap
+    /// them otherwise): a solve of one can start from the other's answer.
+    pub fn same_surface(&self, other: &SceneKey) -> bool {
+        SceneKey {
+            hardness: 0,
+            local: None,
+            ..*self
+        } == SceneKey {
+            hardness: 0,
+            local: None,
+            ..*other
+        }
+    }
+
     /// The side of the grid solved: n, or n halved `coarse` times.
     pub fn side(&self) -> usize {
         self.n >> self.coarse
@@ -133,9 +153,10 @@ impl SceneKey {
 
     /// The size-effect law of a hardness per asperity, if the key has one.
     pub fn local(&self) -> Option<super::local::Law> {
-        self.local.map(|(h0, r)| super::local::Law {
+        self.local.map(|(radius, h0, r)| super::local::Law {
             h0: f64::from_bits(h0),
             r_star: f64::from_bits(r),
+            radius,
         })
     }
 

@@ -9,7 +9,7 @@ use anyhow::bail;
 use rough_model::{areas, Axis};
 
 use crate::cli::{ExportArgs, FormatArg};
-use crate::contact::scene::{classify, SceneKey};
+use crate::contact::scene::{classify, classify_capped, SceneKey};
 use crate::contact::{
     self, load_rows, sweep_rows, Sampling, Seeds, Simulation, Spec, DEFAULT_LOADS, DEFAULT_SEED,
     MAX_LOADS, SWEEP_LOAD,
@@ -21,9 +21,9 @@ use crate::physical::csv_number;
 use crate::scene::State;
 
 /// The options of the contact views only.
-pub fn contact_options(args: &ExportArgs) -> [(bool, &'static str); 5] {
-    let [h, c, g, k] = args.simulate.given();
-    [(args.seeds.is_some(), "--seeds"), h, c, g, k]
+pub fn contact_options(args: &ExportArgs) -> [(bool, &'static str); 6] {
+    let [h, l, c, g, k] = args.simulate.given();
+    [(args.seeds.is_some(), "--seeds"), h, l, c, g, k]
 }
 
 /// What `args` ask to simulate of `state`: the sampling and the seeds
@@ -46,6 +46,9 @@ pub fn export(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
     }
     if args.view == crate::cli::ViewArg::ContactConvergence {
         return export_convergence(args, out);
+    }
+    if args.view == crate::cli::ViewArg::ContactSlopes {
+        return super::contact_slopes::export(args, out);
     }
     let sweep = args.view == crate::cli::ViewArg::ContactSweep;
     let name = if sweep { "contact-sweep" } else { "contact" };
@@ -80,7 +83,8 @@ pub fn export(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
             contact::write_contact(out, &state, points, &spec, &scene)
         }
         (FormatArg::Csv, true) => {
-            let span = figure::sweep_span(&state, SWEEP_LOAD);
+            let in_h0 = spec.sampling.loads == contact::LoadScale::H0;
+            let span = figure::sweep_span(&state, SWEEP_LOAD, in_h0);
             let scene = full_lines_of(&state, "contact-sweep", span);
             contact::write_contact_sweep(out, &state, &spec, &scene)
         }
@@ -191,6 +195,8 @@ fn sweep_svg(state: &State, spec: &Spec) -> anyhow::Result<String> {
     let d = ContactSweep {
         surface,
         load: SWEEP_LOAD,
+        load_in_h0: spec.sampling.loads == contact::LoadScale::H0,
+        hardness: hardness_short(state, spec.sampling.hardness),
         share: rows.iter().map(|r| r.share().mean).collect(),
         sd: (spec.seeds.count > 1).then(|| rows.iter().map(|r| r.share().sd).collect()),
         zeta,
@@ -203,16 +209,19 @@ fn sweep_svg(state: &State, spec: &Spec) -> anyhow::Result<String> {
 /// 100 ζ between the same ends.
 pub fn sweep_picture(state: &State, mut d: ContactSweep) -> anyhow::Result<String> {
     let (from, to) = (d.zeta[0], d.zeta[d.zeta.len() - 1]);
+    let scale = match d.load_in_h0 {
+        true => contact::LoadScale::H0,
+        false => contact::LoadScale::InUse,
+    };
     let roughness = state.roughness();
     for z in log_points(from, to.max(from * 1.0001), 100) {
         let Ok(p) = state.params.with(Axis::Zeta, z) else {
             continue;
         };
-        let psi = roughness
-            .surface(&p, state.moments)
-            .indices
-            .psi_in_use(state.size_effect);
-        if let Ok(a) = areas(state.model, psi, d.load) {
+        let ix = roughness.surface(&p, state.moments).indices;
+        let psi = ix.psi_in_use(state.size_effect);
+        let p_over_h = scale.over_in_use(d.load, ix.hardness_in_use(state.size_effect));
+        if let Ok(a) = areas(state.model, psi, p_over_h) {
             if a.total > 0.0 {
                 d.theory_zeta.push(z);
                 d.theory_share.push(a.plastic / a.total);
@@ -220,6 +229,20 @@ pub fn sweep_picture(state: &State, mut d: ContactSweep) -> anyhow::Result<Strin
         }
     }
     figure::render_contact_sweep(state, &d)
+}
+
+/// Where the hardness applies, in the pictures' words.
+pub fn hardness_short(state: &State, hardness: contact::Hardness) -> String {
+    match hardness {
+        contact::Hardness::Global if state.size_effect => "H_y(R_s) at every node".into(),
+        contact::Hardness::Global => "H0 at every node".into(),
+        contact::Hardness::Asperity => {
+            "each asperity's H0 √(1 + R*/(1.2 R)), R its patch's fitted radius".into()
+        }
+        contact::Hardness::Summit => {
+            "each node's H0 √(1 + R*/(1.2 R)), R its summit's curvature radius".into()
+        }
+    }
 }
 
 /// The contact map of `state` at p̄/H_use = `load` as a picture: `nodes`
@@ -282,13 +305,13 @@ fn export_map(args: &ExportArgs, out: &mut impl std::io::Write) -> anyhow::Resul
     let spec = spec_of(args, &state)?;
     let seed = spec.seeds.first;
     let key = SceneKey::with(&state, seed, &spec.sampling)?;
-    let mut c = key.build()?;
-    let h = key.hardness();
-    let r = c.solve(SWEEP_LOAD * h, h, &rough_contact::Options::default())?;
-    let map: Vec<u8> = classify(c.pressure(), h)
-        .into_iter()
-        .map(|v| v as u8)
-        .collect();
+    let mut sim = Simulation::with(&state, seed, &spec.sampling)?;
+    let (r, _) = sim.solve(SWEEP_LOAD, &mut |_, _| true)?;
+    let nodes = match &sim.last_caps {
+        Some(caps) => classify_capped(sim.contact.pressure(), caps),
+        None => classify(sim.contact.pressure(), sim.hardness),
+    };
+    let map: Vec<u8> = nodes.into_iter().map(|v| v as u8).collect();
     let n = key.n;
     let side = contact::solved_side(&state, &key)?;
     let seed = key.surface.is_none().then_some(seed);

@@ -102,6 +102,8 @@ pub fn picture(part: &Part, table: &Table) -> anyhow::Result<String> {
             let d = ContactSweep {
                 surface: super::contact::sweep_words(words, state.is_measured()),
                 load: crate::contact::SWEEP_LOAD,
+                load_in_h0: spec.sampling.loads == crate::contact::LoadScale::H0,
+                hardness: super::contact::hardness_short(&state, spec.sampling.hardness),
                 zeta: column(table, "zeta")?,
                 share: column(table, "plastic_share")?,
                 sd: if sd {

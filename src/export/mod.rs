@@ -7,6 +7,7 @@
 //! something else.
 
 mod contact;
+mod contact_slopes;
 mod lines;
 pub mod merge;
 mod merge_svg;
@@ -16,6 +17,7 @@ mod part;
 mod shard;
 mod slopes;
 mod slurm;
+mod surface;
 mod views;
 
 use std::io::Write;
@@ -23,9 +25,12 @@ use std::io::Write;
 use anyhow::bail;
 use rough_model::Sweep;
 
-pub use contact::{map_picture as contact_map_picture, CONTACT_HEADER, SWEEP_HEADER};
+pub use contact::{
+    hardness_short, map_picture as contact_map_picture, CONTACT_HEADER, SWEEP_HEADER,
+};
 pub use moments::{write_moments, MOMENTS_HEADER};
 pub use slopes::{write_csv, HEADER};
+pub use surface::write as write_surface;
 pub use views::{
     write_indices, write_load, write_map, write_spectrum, INDICES_HEADER, LOAD_HEADER, MAP_HEADER,
     SPECTRUM_HEADER,
@@ -187,6 +192,9 @@ pub fn run(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
         let state = state_of(args)?;
         let points = args.points.unwrap_or(DEFAULT_POINTS);
         return moments::run(args.format, &state, points, out);
+    }
+    if args.view == ViewArg::Surface {
+        return surface::export(args, out);
     }
     if args.view.figure().is_none() {
         return contact::export(args, out);

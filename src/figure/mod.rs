@@ -46,8 +46,9 @@ pub use rough_model::slopes::{ELASTIC_BELOW, PLASTIC_ABOVE};
 pub use series::{IndexSeries, LoadCurve};
 pub use spectrum::{NotMeasured, SpectrumSeries};
 pub use svg::{
-    contact_span, render_contact, render_contact_map, render_contact_sweep, render_moments_svg,
-    render_svg, sweep_span, ContactLoads, ContactMap, ContactSweep,
+    contact_span, render_contact, render_contact_map, render_contact_slopes, render_contact_sweep,
+    render_moments_svg, render_svg, sweep_span, ContactLoads, ContactMap, ContactSlopes,
+    ContactSweep,
 };
 pub use svg::{phone_note, render_phone, render_phone_with, LegendEntry, Picture, UPRIGHT, WIDE};
 pub use withheld::{Withheld, INDICES, SLOPES};

@@ -205,6 +205,7 @@ fn edits(msg: &Message) -> bool {
             | M::NextMapY
             | M::ContactLoad { .. }
             | M::ContactSweep
+            | M::ContactSlopes
             | M::ContactSeed
             | M::ContactSeeds
             | M::ContactTable

@@ -330,11 +330,10 @@ impl App {
         };
         let name = format!("{}-{}", self.state.name, self.view.name());
         let stem = snapshot::default_stem(&name, SystemTime::now());
-        let svg = if self.view == View::Contact {
-            super::contact::picture(self)
-        } else {
-            render_svg(self.view, &self.state, &opts)
-        };
+        if self.view == View::Contact {
+            return super::contact::save(self, &stem);
+        }
+        let svg = render_svg(self.view, &self.state, &opts);
         let saved = svg.and_then(|svg| {
             snapshot::save_file_new(&self.save_dir, &stem, "svg", "picture", svg.as_bytes())
         });
@@ -573,6 +572,7 @@ pub fn update(app: &mut App, msg: Message) {
         }
         Message::ContactLoad { .. }
         | Message::ContactSweep
+        | Message::ContactSlopes
         | Message::ContactSeed
         | Message::ContactSeeds
         | Message::ContactTable

@@ -1,4 +1,4 @@
-//! The contact view's state: which load and which plot (`b`), the ticket
+//! The contact view's state: which load and which plot (`b`, `i`), the ticket
 //! on the engine's job for the scene on screen, the results read from the
 //! engine's cache and the theory's curves beside them. Only
 //! [`ContactPane::refresh`] (from `update`) changes it; the worker thread
@@ -7,28 +7,31 @@
 
 use std::sync::Arc;
 
-use rough_model::{areas, psi_in_use, slopes, Axis, Model};
+use rough_model::Model;
 
 use crate::contact::engine::{Engine, Outcome, Progress, Task, Ticket, Waker};
 use crate::contact::measured::{self, Fetch};
-use crate::contact::scene::{unsolvable, SceneKey};
+use crate::contact::slopes::{Run, LIGHT};
+pub use crate::contact::Plot;
 use crate::contact::{Sampling, Stat, DEFAULT_SEED, MAX_GRID};
 use crate::scene::State;
 
 pub mod convergence;
 mod keys;
-pub use keys::{on_key, picture};
+mod request;
+pub use keys::{on_key, picture, save};
+pub use request::{share_sets, Set};
 
 /// Loads of the contact view, p̄/H_use: 1e-3 to 1, four per decade.
 pub const LOADS: usize = 13;
 /// The load shown first: p̄ = 0.01 H.
 pub const DEFAULT_LOAD: usize = 4;
 /// Points along a theory curve.
-const THEORY_POINTS: usize = 96;
+pub(crate) const THEORY_POINTS: usize = 96;
 /// The coarse answer's grid side at most: a finer scene is first solved on
 /// its surface sampled at every second, fourth … node (256²: a load in
 /// tenths of a second), then on its own grid.
-pub const COARSE_GRID: usize = 256;
+pub use crate::contact::COARSE_GRID;
 /// Surfaces (seeds) the load plot averages over when the view opens; `R`
 /// steps through [`SEED_CHOICES`].
 pub const DEFAULT_SEEDS: u32 = 4;
@@ -55,7 +58,8 @@ pub fn sweep_zetas(sampling: &Sampling) -> Vec<f64> {
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Theory {
     /// Load plot: (log10 p̄/H, log10 A/A0) of total, elastic, plastic.
-    /// `b` plot: (log10 ζ, S_pl/S_tot) with the size effect off, on.
+    /// `b` plot: (log10 ζ, A_pl/A at the load) with the size effect off,
+    /// on. `i` plot: (log10 ζ, log10 S) of total, elastic, plastic.
     pub curves: Vec<Vec<(f64, f64)>>,
     /// The theory's areas at the chosen load (load plot).
     pub at_load: Option<rough_model::Areas>,
@@ -81,8 +85,11 @@ pub struct ContactPane {
     pub waker: Waker,
     /// The chosen load, index into [`LOADS`].
     pub load: usize,
-    /// `b`: the plastic share against ζ instead of the areas against load.
-    pub sweep: bool,
+    /// The plot: areas against the load, `b` the plastic share against ζ,
+    /// `i` the initial slopes against ζ.
+    pub plot: Plot,
+    /// `b`'s sets of caps, in the order of their tasks.
+    pub sets: Vec<Set>,
     /// The scene's seed (the snapshot's, 1 by default).
     pub seed: u64,
     /// The cell and grid of the simulation.
@@ -106,6 +113,9 @@ pub struct ContactPane {
     pub seeds: u32,
     pub seed_tasks: Vec<Vec<Task>>,
     pub seed_results: Vec<Vec<Option<Outcome>>>,
+    /// The further seeds' loads on the coarse grid, each fine load's start
+    /// (not shown: only the drawn seed's coarse answer is).
+    pub seed_coarse: Vec<Vec<Task>>,
     pub progress: Progress,
     pub theory: Theory,
     /// `t`: the convergence table at the chosen load in place of the plot
@@ -126,7 +136,8 @@ impl Default for ContactPane {
             engine: Engine::global(),
             waker: Arc::new(|| {}),
             load: DEFAULT_LOAD,
-            sweep: false,
+            plot: Plot::Load,
+            sets: vec![],
             seed: DEFAULT_SEED,
             // One longest wavelength: the explorer's first answer must come
             // quickly (export's default is two).
@@ -143,6 +154,7 @@ impl Default for ContactPane {
             seeds: DEFAULT_SEEDS,
             seed_tasks: vec![],
             seed_results: vec![],
+            seed_coarse: vec![],
             progress: Progress::default(),
             theory: Theory::default(),
             table: false,
@@ -166,7 +178,7 @@ impl ContactPane {
 
     /// The result for the chosen load (load plot), if solved.
     pub fn chosen(&self) -> Option<&Outcome> {
-        if self.sweep {
+        if self.plot != Plot::Load {
             return None;
         }
         self.results.get(self.load).and_then(Option::as_ref)
@@ -194,6 +206,72 @@ impl ContactPane {
         ])
     }
 
+    /// The plastic share A_pl/A at load `k` over the seeds solved so far
+    /// (each seed's own share; a seed without contact left out).
+    pub fn share_at_load(&self, k: usize) -> Option<Stat> {
+        let first = match self.results.get(k)? {
+            Some(Ok(s)) => s,
+            _ => return None,
+        };
+        let mut runs = vec![first.result];
+        if !self.coarse.get(k).copied().unwrap_or(false) {
+            runs.extend(self.seed_results.iter().filter_map(|r| match r.get(k) {
+                Some(Some(Ok(s))) => Some(s.result),
+                _ => None,
+            }));
+        }
+        let st = Stat::of(runs.iter().map(|r| {
+            if r.area > 0.0 {
+                r.plastic_area / r.area
+            } else {
+                f64::NAN
+            }
+        }));
+        (st.n > 0).then_some(st)
+    }
+
+    /// κ at the lightest load, A/A0 over p̄/(E* h′), over the seeds solved
+    /// so far (the coarse answer while the scene's grid has not solved it).
+    pub fn kappa(&self) -> Option<Stat> {
+        let task = self.tasks.first()?;
+        let x = task.p_over_h() * task.scene.hardness() / task.scene.rms_slope();
+        let [a, _, _] = self.at_load(0)?;
+        (x > 0.0 && a.n > 0).then(|| Stat {
+            mean: a.mean / x,
+            sd: a.sd / x,
+            n: a.n,
+        })
+    }
+
+    /// The initial slopes (elastic, plastic, total) at ζ number `k` of the
+    /// `i` plot, each seed's fitted alone, over the seeds whose light loads
+    /// there are all in.
+    pub fn slopes_at(&self, k: usize) -> Option<[Stat; 3]> {
+        let m = LIGHT.len();
+        let runs: Vec<[f64; 3]> = std::iter::once((&self.tasks, &self.results))
+            .chain(self.seed_tasks.iter().zip(&self.seed_results))
+            .filter_map(|(ts, rs)| {
+                let ts = ts.get(k * m..(k + 1) * m)?;
+                let rs = rs.get(k * m..(k + 1) * m)?;
+                let results = rs
+                    .iter()
+                    .map(|r| match r {
+                        Some(Ok(s)) => Some(s.result),
+                        _ => None,
+                    })
+                    .collect::<Option<Vec<_>>>()?;
+                let run = Run {
+                    seed: ts[0].scene.seed,
+                    x: ts.iter().map(Task::p_over_h).collect(),
+                    results,
+                };
+                Some(run.slopes())
+            })
+            .collect();
+        let st = [0, 1, 2].map(|i| Stat::of(runs.iter().map(|r| r[i])));
+        (st[2].n > 0).then_some(st)
+    }
+
     /// Seeds of the plot: those asked for (1 for a measured map).
     pub fn seeds_asked(&self) -> usize {
         1 + self.seed_tasks.len()
@@ -209,7 +287,11 @@ impl ContactPane {
     /// off (`set` 0) or on (1), over the seeds solved so far (a seed
     /// without contact there left out).
     pub fn share_at(&self, set: usize, k: usize) -> Option<Stat> {
-        let i = set * self.zetas.len() + k;
+        if self.plot != Plot::Share {
+            return None;
+        }
+        // A seed's tasks: at each ζ, its sets in turn.
+        let i = k * self.sets.len() + set;
         let runs = std::iter::once(&self.results)
             .chain(&self.seed_results)
             .filter_map(|rs| match rs.get(i) {
@@ -224,7 +306,7 @@ impl ContactPane {
 
     /// Whether the chosen load shows the coarse grid's answer.
     pub fn chosen_is_coarse(&self) -> bool {
-        !self.sweep && self.coarse.get(self.load).copied().unwrap_or(false)
+        self.plot == Plot::Load && self.coarse.get(self.load).copied().unwrap_or(false)
     }
 
     /// The grid side of the scene, and of its coarse answer if any.
@@ -258,12 +340,17 @@ impl ContactPane {
 
     /// The job's tasks: the coarse grid's, then the scene's own.
     fn job_tasks(&self) -> Vec<Task> {
-        self.coarse_tasks
+        let mut all: Vec<Task> = self
+            .coarse_tasks
             .iter()
             .chain(&self.tasks)
-            .chain(self.seed_tasks.iter().flatten())
             .copied()
-            .collect()
+            .collect();
+        for (j, ts) in self.seed_tasks.iter().enumerate() {
+            all.extend(self.seed_coarse.get(j).into_iter().flatten());
+            all.extend(ts);
+        }
+        all
     }
 
     /// The order the job solves in: the chosen load on the coarse grid,
@@ -271,7 +358,7 @@ impl ContactPane {
     /// grid (then its other loads in turn, each from the last answer).
     fn job_order(&self) -> Vec<usize> {
         let c = self.coarse_tasks.len();
-        if self.sweep {
+        if self.plot != Plot::Load {
             return vec![0];
         }
         let mut order = vec![];
@@ -280,11 +367,16 @@ impl ContactPane {
             order.extend(0..c);
         }
         order.push(c + self.load);
-        // Each further seed's chosen load, so that the spread comes soon.
+        // Each further seed's chosen load (on the coarse grid first, its
+        // start), so that the spread comes soon.
         let mut at = c + self.tasks.len();
-        for ts in &self.seed_tasks {
-            order.push(at + self.load.min(ts.len().saturating_sub(1)));
-            at += ts.len();
+        for (j, ts) in self.seed_tasks.iter().enumerate() {
+            let sc = self.seed_coarse.get(j).map_or(0, Vec::len);
+            if sc > 0 {
+                order.push(at + self.load.min(sc - 1));
+            }
+            order.push(at + sc + self.load.min(ts.len().saturating_sub(1)));
+            at += sc + ts.len();
         }
         order
     }
@@ -353,6 +445,7 @@ impl ContactPane {
             self.coarse_tasks.clear();
             self.coarse.clear();
             self.seed_tasks.clear();
+            self.seed_coarse.clear();
             self.seed_results.clear();
             self.theory = Theory::default();
             return;
@@ -366,20 +459,16 @@ impl ContactPane {
         if request != self.request {
             self.theory = request
                 .as_ref()
-                .map(|r| self.theory_of(state, r))
+                .map(|_| self.theory_of(state))
                 .unwrap_or_default();
             self.tasks = request
                 .as_ref()
                 .map(|r| r.tasks.clone())
                 .unwrap_or_default();
             self.seed_tasks = vec![];
-            // A seed's tasks: the loads, or b's ζ without and with the
-            // size effect.
-            let per = if self.sweep {
-                2 * self.zetas.len()
-            } else {
-                LOADS
-            };
+            // A seed's tasks: the loads, b's ζ for each set of caps, or
+            // i's light loads at each ζ.
+            let per = self.per_seed();
             if per > 0 && self.tasks.len() > per {
                 self.seed_tasks = self.tasks[per..]
                     .chunks(per)
@@ -387,13 +476,18 @@ impl ContactPane {
                     .collect();
                 self.tasks.truncate(per);
             }
-            self.coarse_tasks = if self.sweep {
-                vec![]
-            } else {
-                self.tasks
-                    .iter()
+            let coarse = |ts: &[Task]| -> Vec<Task> {
+                ts.iter()
                     .map_while(|t| Some(Task::new(t.scene.coarser(COARSE_GRID)?, t.p_over_h())))
                     .collect()
+            };
+            (self.coarse_tasks, self.seed_coarse) = if self.plot != Plot::Load {
+                (vec![], vec![])
+            } else {
+                (
+                    coarse(&self.tasks),
+                    self.seed_tasks.iter().map(|ts| coarse(ts)).collect(),
+                )
             };
             self.request = request;
         }
@@ -424,122 +518,6 @@ impl ContactPane {
                 finished: true,
                 ..Progress::default()
             };
-        }
-    }
-
-    fn request_for(&mut self, state: &State) -> Option<Request> {
-        self.why_not = unsolvable(state, &self.sampling);
-        let theory = (
-            state.model,
-            state.moments,
-            state.params,
-            state.size_effect,
-            self.load,
-        );
-        let mut tasks = vec![];
-        if self.sweep {
-            self.why_not = None;
-            // A measured map: the ζ whose scene it can solve (none when it
-            // has no heights on a grid: then the reason).
-            let mut keys = vec![];
-            let zeta_max = state.roughness().zeta_max() * (1.0 + 1e-12);
-            for z in sweep_zetas(&self.sampling)
-                .into_iter()
-                .filter(|z| *z <= zeta_max)
-            {
-                let mut s = state.clone();
-                s.params = s.params.with(Axis::Zeta, z).ok()?;
-                match SceneKey::with(&s, self.seed, &self.sampling) {
-                    Ok(_) => keys.push(z),
-                    Err(e) => self.why_not = Some(format!("{e:#}")),
-                }
-            }
-            if !keys.is_empty() {
-                self.why_not = None;
-            }
-            self.zetas = keys;
-            // Each seed's sweep in turn (a measured map has one surface).
-            let seeds = if state.is_measured() { 1 } else { self.seeds };
-            for j in 0..u64::from(seeds) {
-                let seed = self.seed.wrapping_add(j);
-                for se in [false, true] {
-                    // Without the size effect the bulk's one cap: a
-                    // hardness per asperity is the size effect's.
-                    let sampling = Sampling {
-                        hardness: if se {
-                            self.sampling.hardness
-                        } else {
-                            crate::contact::Hardness::Global
-                        },
-                        ..self.sampling
-                    };
-                    for &z in &self.zetas {
-                        let mut s = state.clone();
-                        s.size_effect = se;
-                        s.params = s.params.with(Axis::Zeta, z).ok()?;
-                        let key = SceneKey::with(&s, seed, &sampling).ok()?;
-                        tasks.push(Task::new(key, load_value(self.load)));
-                    }
-                }
-            }
-        } else if self.why_not.is_none() {
-            match SceneKey::with(state, self.seed, &self.sampling) {
-                Ok(key) => tasks = (0..LOADS).map(|k| Task::new(key, load_value(k))).collect(),
-                Err(e) => self.why_not = Some(format!("{e:#}")),
-            }
-            // The further seeds (a measured map has one surface).
-            if !tasks.is_empty() && !state.is_measured() {
-                for j in 1..u64::from(self.seeds) {
-                    let seed = self.seed.wrapping_add(j);
-                    let key = SceneKey::with(state, seed, &self.sampling).ok()?;
-                    tasks.extend((0..LOADS).map(|k| Task::new(key, load_value(k))));
-                }
-            }
-        }
-        Some(Request { tasks, theory })
-    }
-
-    fn theory_of(&self, state: &State, _r: &Request) -> Theory {
-        let p = state.params;
-        if self.sweep {
-            let zs = &self.zetas;
-            let hi = zs.last().copied().unwrap_or(1.0).log10();
-            let curves = [false, true]
-                .into_iter()
-                .map(|se| {
-                    (0..THEORY_POINTS)
-                        .filter_map(|i| {
-                            let x = hi * i as f64 / (THEORY_POINTS - 1) as f64;
-                            let pz = p.with(Axis::Zeta, 10f64.powf(x)).ok()?;
-                            let (psi, _) = psi_in_use(&pz, se, state.moments);
-                            let share = slopes(state.model, psi).plastic_share();
-                            share.is_finite().then_some((x, share))
-                        })
-                        .collect()
-                })
-                .collect();
-            return Theory {
-                curves,
-                at_load: None,
-            };
-        }
-        let ix = state.roughness().surface(&p, state.moments).indices;
-        let psi = ix.psi_in_use(state.size_effect);
-        let mut curves = vec![vec![]; 3];
-        for i in 0..THEORY_POINTS {
-            let x = -3.0 + 3.0 * i as f64 / (THEORY_POINTS - 1) as f64;
-            let Ok(a) = areas(state.model, psi, 10f64.powf(x).min(1.0)) else {
-                continue;
-            };
-            for (c, v) in curves.iter_mut().zip([a.total, a.elastic, a.plastic]) {
-                if v > 0.0 && v.is_finite() {
-                    c.push((x, v.log10()));
-                }
-            }
-        }
-        Theory {
-            curves,
-            at_load: areas(state.model, psi, load_value(self.load)).ok(),
         }
     }
 }

@@ -111,13 +111,15 @@ pub enum Message {
     /// SSH after asking the terminal for its size).
     Redraw,
     /// The contact view's keys: the next or previous load, the plastic
-    /// share against ζ (`b`), another surface (`r`: the next seed), how
-    /// many surfaces (`R`: 1, 4 or 16 seeds), the convergence table (`t`),
-    /// one hardness cap or each asperity's (`A`).
+    /// share against ζ (`b`), the initial slopes against ζ (`i`), another
+    /// surface (`r`: the next seed), how many surfaces (`R`: 1, 4 or 16
+    /// seeds), the convergence table (`t`), one hardness cap, each
+    /// asperity's or each summit's (`A`).
     ContactLoad {
         up: bool,
     },
     ContactSweep,
+    ContactSlopes,
     ContactSeed,
     ContactSeeds,
     ContactTable,

@@ -9,6 +9,10 @@
 //! on it averages out), a small one the fine scale it sits on. A patch of
 //! fewer than [`MIN_FIT`] nodes takes the curvature at its highest node,
 //! −∇²h/2 computed spectrally (exact for the band-limited surface).
+//!
+//! A node's summit ([`summits`], [`summit_radii`]) is the finest-scale
+//! reading: the local maximum steepest ascent takes it to, and the
+//! curvature −∇²h/2 there.
 
 use std::collections::VecDeque;
 
@@ -111,6 +115,71 @@ pub fn mean_curvature(h: &[f64], n: usize, length: f64) -> Vec<f64> {
     let mut out = vec![0.0; n * n];
     fft.inverse(&mut spec, &mut out);
     out
+}
+
+/// The summit each node of the periodic n × n map `h` belongs to: the local
+/// maximum that steepest ascent reaches from it (at each step the
+/// 8-neighbour of steepest rise, (h_j − h_i)/distance; a node with no
+/// higher neighbour is a summit, its own). The index of that summit's node,
+/// n × n row-major.
+pub fn summits(h: &[f64], n: usize) -> Vec<u32> {
+    let d = std::f64::consts::SQRT_2;
+    let steps: [(usize, usize, f64); 8] = [
+        (1, 0, 1.0),
+        (n - 1, 0, 1.0),
+        (0, 1, 1.0),
+        (0, n - 1, 1.0),
+        (1, 1, d),
+        (n - 1, 1, d),
+        (1, n - 1, d),
+        (n - 1, n - 1, d),
+    ];
+    let mut up: Vec<u32> = (0..n * n)
+        .map(|i| {
+            let (x, y) = (i % n, i / n);
+            let mut best = (0.0, i);
+            for &(dx, dy, dist) in &steps {
+                let j = ((y + dy) % n) * n + (x + dx) % n;
+                let rise = (h[j] - h[i]) / dist;
+                if rise > best.0 {
+                    best = (rise, j);
+                }
+            }
+            best.1 as u32
+        })
+        .collect();
+    // Follow each path to its top, pointing every node on it there (each
+    // step rises, so a path ends).
+    let mut path = vec![];
+    for i in 0..n * n {
+        let mut j = i;
+        while up[j] as usize != j {
+            path.push(j);
+            j = up[j] as usize;
+        }
+        for k in path.drain(..) {
+            up[k] = j as u32;
+        }
+    }
+    up
+}
+
+/// Each node's summit radius: 1/(−∇²h/2) at the summit steepest ascent
+/// takes it to ([`summits`]; ∞ where that summit is not convex), in the
+/// units of `length`.
+pub fn summit_radii(h: &[f64], n: usize, length: f64) -> Vec<f64> {
+    let top = summits(h, n);
+    let curvature = mean_curvature(h, n, length);
+    top.iter()
+        .map(|&t| {
+            let k = curvature[t as usize];
+            if k > 0.0 {
+                1.0 / k
+            } else {
+                f64::INFINITY
+            }
+        })
+        .collect()
 }
 
 /// The curvature radius (in the units of `length`) of the surface under
@@ -270,6 +339,31 @@ mod tests {
         assert!(near.iter().all(|&l| l != u32::MAX));
         assert_eq!(near[5 * n + 4], pt.label[6 * n + 4]);
         assert_eq!(near[2 * n], pt.label[3 * n]);
+    }
+
+    #[test]
+    fn every_node_climbs_to_its_summit() {
+        // Two bumps on a 16 × 16 cell: cos(2πx/L)·cos(2πy/L) has its
+        // maxima at (0, 0) and (8, 8), its minima at (8, 0) and (0, 8).
+        let n = 16;
+        let w = std::f64::consts::TAU / n as f64;
+        let h: Vec<f64> = (0..n * n)
+            .map(|i| ((i % n) as f64 * w).cos() * ((i / n) as f64 * w).cos())
+            .collect();
+        let top = summits(&h, n);
+        assert_eq!(top[0], 0);
+        assert_eq!(top[8 * n + 8], (8 * n + 8) as u32);
+        assert_eq!(top[n + 1], 0);
+        assert_eq!(top[15 * n + 15], 0, "across the corner");
+        assert_eq!(top[7 * n + 6], (8 * n + 8) as u32);
+        let tops: std::collections::BTreeSet<u32> = top.iter().copied().collect();
+        // Saddles and minima climb too; only the two maxima are tops.
+        assert!(tops.len() <= 2 + 4, "{tops:?}");
+        // The radius at a top: −∇²h/2 = (2π/L)² at a crest of this surface
+        // (L = 1).
+        let r = summit_radii(&h, n, 1.0);
+        let want = 1.0 / std::f64::consts::TAU.powi(2);
+        assert!((r[n + 1] / want - 1.0).abs() < 1e-12, "{}", r[n + 1]);
     }
 
     #[test]

@@ -187,6 +187,10 @@ impl Shared {
 /// Columns a task transforms at once: 32 complex values are eight cache
 /// lines of a row, and 32 columns of 1024 fit a core's L2 cache.
 const STRIP: usize = 32;
+/// Rows a strip's gather and scatter take at once: 16 rows of a strip's 32
+/// columns (8 KiB) and the 32 columns' 16 values written (8 KiB) share the
+/// first-level cache, where row by row each write fell in another line.
+const TILE: usize = 16;
 
 impl Fft2 {
     /// `out` = the periodic convolution of `input` with the kernel whose
@@ -216,12 +220,17 @@ impl Fft2 {
                     let s1 = (s0 + STRIP).min(c1);
                     let width = s1 - s0;
                     let buf = &mut w.strip[..width * n];
-                    for y in 0..rows_in {
-                        // SAFETY: in bounds (y < rows_in ≤ n, s1 ≤ m); this
-                        // task alone touches columns c0..c1.
-                        let src = unsafe { std::slice::from_raw_parts(rows.at(y * m + s0), width) };
-                        for (c, v) in src.iter().enumerate() {
-                            buf[c * n + y] = *v;
+                    // Tiles of TILE rows: the rows read and the columns
+                    // written stay in the core's first-level cache.
+                    for y0 in (0..rows_in).step_by(TILE) {
+                        for y in y0..(y0 + TILE).min(rows_in) {
+                            // SAFETY: in bounds (y < rows_in ≤ n, s1 ≤ m);
+                            // this task alone touches columns c0..c1.
+                            let src =
+                                unsafe { std::slice::from_raw_parts(rows.at(y * m + s0), width) };
+                            for (c, v) in src.iter().enumerate() {
+                                buf[c * n + y] = *v;
+                            }
                         }
                     }
                     for c in 0..width {
@@ -236,12 +245,15 @@ impl Fft2 {
                         }
                         inv.process_with_scratch(col, &mut w.scratch);
                     }
-                    for y in 0..rows_out {
-                        // SAFETY: as above.
-                        let dst =
-                            unsafe { std::slice::from_raw_parts_mut(rows.at(y * m + s0), width) };
-                        for (c, v) in dst.iter_mut().enumerate() {
-                            *v = buf[c * n + y];
+                    for y0 in (0..rows_out).step_by(TILE) {
+                        for y in y0..(y0 + TILE).min(rows_out) {
+                            // SAFETY: as above.
+                            let dst = unsafe {
+                                std::slice::from_raw_parts_mut(rows.at(y * m + s0), width)
+                            };
+                            for (c, v) in dst.iter_mut().enumerate() {
+                                *v = buf[c * n + y];
+                            }
                         }
                     }
                 }
@@ -325,14 +337,19 @@ pub(crate) fn signed(k: usize, n: usize) -> f64 {
 
 /// The compliance operator u = K ∗ p on an `n` × `n` window.
 pub(crate) struct Compliance {
-    n: usize,
-    fft: Fft2,
+    pub(crate) n: usize,
+    pub(crate) fft: Fft2,
     /// Kernel in Fourier space, transposed layout (m × n_fft); real because
     /// both kernels are even.
-    kernel: Vec<f64>,
+    pub(crate) kernel: Vec<f64>,
     /// The free boundary's padded input rows (n × 2n) and output rows.
-    padded: Option<Vec<f64>>,
+    pub(crate) padded: Option<Vec<f64>>,
     out: Vec<f64>,
+    /// The periodic kernel in real space, made at its first use
+    /// (`crate::sparse`).
+    pub(crate) real: Option<Vec<f64>>,
+    /// 1/K(0), computed once ([`Compliance::diagonal_inverse`]).
+    diagonal_inverse: f64,
 }
 
 impl Compliance {
@@ -356,7 +373,15 @@ impl Compliance {
             kernel,
             padded: None,
             out: vec![],
+            real: None,
+            diagonal_inverse: 0.0,
         }
+        .with_diagonal()
+    }
+
+    fn with_diagonal(mut self) -> Self {
+        self.diagonal_inverse = self.diagonal();
+        self
     }
 
     /// Non-periodic window of side `length` on an elastic half-space that
@@ -385,12 +410,19 @@ impl Compliance {
             kernel,
             padded: Some(vec![0.0; n * nf]),
             out: vec![0.0; n * nf],
+            real: None,
+            diagonal_inverse: 0.0,
         }
+        .with_diagonal()
     }
 
     /// 1 / K(0): the inverse of a node's displacement under its own unit
     /// pressure, a natural step length when no better one is known.
     pub(crate) fn diagonal_inverse(&self) -> f64 {
+        self.diagonal_inverse
+    }
+
+    fn diagonal(&self) -> f64 {
         let nf = self.fft.n();
         let m = self.fft.m();
         let mut sum = 0.0;

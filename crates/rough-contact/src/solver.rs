@@ -25,8 +25,9 @@ use rayon::prelude::*;
 
 use crate::cap::{class, Cap, Set};
 use crate::fft::Compliance;
-use crate::load::{impose_mean, project, Count};
+use crate::load::{impose_mean, project};
 use crate::par::{chunk_len, min_len};
+use crate::step::step;
 use crate::{ContactError, LoadResult, Options};
 
 /// Why an iteration stopped early.
@@ -267,7 +268,6 @@ impl Bccg {
             }
             it += 1;
             g_old = g_sq.max(f64::MIN_POSITIVE);
-            let (c, min) = (chunk_len(n2), min_len(n2));
             let mut tau = if n_f > 0 {
                 // ⟨t, Kt⟩ (t is zero off F) from the transform's last pass.
                 let den = self.op.apply_dot(&self.t, &mut self.r);
@@ -287,55 +287,18 @@ impl Bccg {
             // Step, release, project. A node released from a bound moves by
             // the pressure that would close its own gap alone (1/K(0)), not
             // by the CG step, which belongs to the free set's conditioning.
-            // u follows the plain step (used only if the step was plain).
+            // u follows the plain step, and the few nodes off it one by one.
             let tau_r = tau.min(self.op.diagonal_inverse());
-            let parts: Vec<(usize, bool, Count)> = p
-                .par_chunks_mut(c)
-                .zip(self.u.par_chunks_mut(c))
-                .zip(gap.par_chunks(c))
-                .zip(self.t.par_chunks(c))
-                .zip(self.r.par_chunks(c))
-                .enumerate()
-                .with_min_len(min)
-                .map(|(k, ((((p, u), g), t), r))| {
-                    let (mut released, mut clipped) = (0usize, false);
-                    let mut count = Count::default();
-                    for j in 0..p.len() {
-                        let (gi, pi, ci) = (g[j], p[j], cap.at(k * c + j));
-                        let v = match class(pi, ci) {
-                            Set::Free => {
-                                let v = pi - tau * t[j];
-                                if v <= 0.0 || v >= ci {
-                                    clipped = true;
-                                }
-                                v.clamp(0.0, ci)
-                            }
-                            Set::Zero if gi < 0.0 => {
-                                released += 1;
-                                (-tau_r * gi).min(ci)
-                            }
-                            Set::Cap if gi > 0.0 => {
-                                released += 1;
-                                (ci - tau_r * gi).max(0.0)
-                            }
-                            _ => pi,
-                        };
-                        p[j] = v;
-                        count.add(v, ci);
-                        u[j] -= tau * r[j];
-                    }
-                    (released, clipped, count)
-                })
-                .collect();
-            let (mut released, mut clipped, mut count) = (0usize, false, Count::default());
-            for (r, cl, co) in parts {
-                released += r;
-                clipped |= cl;
-                count.merge(&co);
-            }
-            restart = released * RESTART_FRACTION > n_f;
-            let shifted = impose_mean(p, cap, target, Some(count));
-            u_known = released == 0 && !clipped && !shifted && n_f > 0;
+            let s = step(p, &mut self.u, gap, &self.t, &self.r, cap, (tau, tau_r));
+            restart = s.released * RESTART_FRACTION > n_f;
+            let shifted = impose_mean(p, cap, target, Some(s.count));
+            u_known = !shifted
+                && n_f > 0
+                && match &s.off {
+                    Some(off) if off.is_empty() => true,
+                    Some(off) => self.op.add_nodes(&mut self.u, off),
+                    None => false,
+                };
             if u_known {
                 stale += 1;
             }
@@ -574,6 +537,7 @@ impl Bccg {
             mean_gap,
             iterations,
             residual,
+            perimeter: 0.0,
         }
     }
 }

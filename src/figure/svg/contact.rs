@@ -41,8 +41,13 @@ pub struct ContactSweep {
     /// The solved surfaces in words: "seed 1, 8 nodes per shortest
     /// wavelength".
     pub surface: String,
-    /// The load p̄/H_use of every point.
+    /// The load of every point: p̄/H0 (`load_in_h0`), or p̄/H_use at
+    /// each ζ.
     pub load: f64,
+    pub load_in_h0: bool,
+    /// Where the hardness applies, in words ("H_y(R_s) at every node", "each
+    /// node its summit's H_y"), for the caption.
+    pub hardness: String,
     pub zeta: Vec<f64>,
     /// The simulated plastic share A_pl/A, ± `sd` where given.
     pub share: Vec<f64>,
@@ -72,13 +77,21 @@ pub fn contact_span(state: &State, loads: &[f64]) -> String {
     )
 }
 
-/// What the ζ sweep spans, in full.
-pub fn sweep_span(state: &State, load: f64) -> String {
+/// What the ζ sweep spans, in full: its load fixed over H0 (the same at
+/// every ζ, `in_h0`) or over the hardness in use at each ζ.
+pub fn sweep_span(state: &State, load: f64, in_h0: bool) -> String {
+    let at = crate::physical::csv_number::format(load);
+    let load = if in_h0 {
+        format!("at p_over_h0 = pbar/H0 = {at} (the same load at every zeta)")
+    } else {
+        format!(
+            "at p_over_h = pbar/{} = {at} (the hardness in use at each zeta)",
+            state.hardness_name()
+        )
+    };
     format!(
         "contact-sweep = zeta = 1, 2, 4, …, 128 (a measured map: those it resolves), each on \
-         its own grid, at p_over_h = pbar/{} = {}",
-        state.hardness_name(),
-        crate::physical::csv_number::format(load)
+         its own grid, {load}"
     )
 }
 
@@ -179,29 +192,148 @@ pub fn render_contact_sweep(state: &State, d: &ContactSweep) -> anyhow::Result<S
         },
     ];
     let load = short_number(d.load);
-    let what = format!("plastic share against ζ at p̄ = {load} {h}");
+    let unit = if d.load_in_h0 { "H0" } else { h };
+    let what = format!("plastic share against ζ at p̄ = {load} {unit}");
     let title = super::title(state, &what);
     let draw = |area: &super::Area, room| plot::draw(area, &title, (&x, &y), &series, room);
     let short = format!(
-        "ζ {} … {} at p̄ = {load} {h} · {}",
+        "ζ {} … {} at p̄ = {load} {unit} · {}",
         short_number(zlo),
         short_number(zhi),
         d.surface
     );
-    let hy = if state.size_effect {
-        " (H_y the size-dependent hardness at each ζ)"
-    } else {
-        ""
+    let hy = match (d.load_in_h0, state.size_effect) {
+        (true, true) => {
+            " (the same load at every ζ; H_y, the size-dependent hardness, grows with ζ)"
+        }
+        (true, false) => " (the same load at every ζ)",
+        (false, true) => " (H_y the size-dependent hardness at each ζ: a load that grows with it)",
+        (false, false) => "",
     };
     let caption = format!(
-        "Plastic share of the contact area against the magnification ζ at p̄ = {load} {h}{hy}: \
-         the boundary-element simulation (points, each ζ on its own grid of at least 8 nodes \
-         per shortest wavelength) beside the theory's finite-load areas (line, the {} model).",
+        "Plastic share of the contact area against the magnification ζ at p̄ = {load} \
+         {unit}{hy}, a finite load (secants, not initial slopes): the boundary-element \
+         simulation (points, each ζ on its own grid of at least 8 nodes per shortest \
+         wavelength; the pressure capped at {}) beside the theory's finite-load areas at the \
+         same load (line, the {} model).",
+        d.hardness,
         state.model.label()
     );
     let lines = under(state, Some(short), &caption);
-    let mut desc =
-        crate::figure::scene_text::full_lines_of(state, "contact-sweep", sweep_span(state, d.load));
+    let mut desc = crate::figure::scene_text::full_lines_of(
+        state,
+        "contact-sweep",
+        sweep_span(state, d.load, d.load_in_h0),
+    );
+    desc.push(format!("simulation = {}", d.surface));
+    render(&draw, &lines, &format!("{} — {what}", state.name), &desc)
+}
+
+/// The simulated initial slopes against ζ as their picture draws them.
+#[derive(Clone, Debug, Default)]
+pub struct ContactSlopes {
+    /// The solved surfaces in words.
+    pub surface: String,
+    /// Where the hardness applies, in words.
+    pub hardness: String,
+    pub zeta: Vec<f64>,
+    /// The simulated slopes (elastic, plastic, total), mean ± sd.
+    pub slope: [Vec<f64>; 3],
+    pub sd: Option<[Vec<f64>; 3]>,
+    /// The theory's slopes (elastic, plastic, total) and Persson's elastic
+    /// one at `theory_zeta`.
+    pub theory_zeta: Vec<f64>,
+    pub theory: [Vec<f64>; 3],
+    pub persson: Vec<f64>,
+}
+
+/// The paper's figure (initial slopes against ζ, log–log) with the
+/// simulation's points.
+pub fn render_contact_slopes(state: &State, d: &ContactSlopes) -> anyhow::Result<String> {
+    let h = state.hardness_name();
+    let (zlo, zhi) = super::positive_span(d.zeta.iter().chain(&d.theory_zeta));
+    let x = Scale::padded(true, zlo, zhi, 0.03, "ζ = q1/q0".into());
+    let sim = d.slope.iter().flatten();
+    let (_, hi) = super::positive_span(sim.clone().chain(&d.theory[0]).chain(&d.theory[2]));
+    // The floor: four decades under the top, or the least point above it.
+    let (lo, _) = super::positive_span(
+        sim.chain(d.theory.iter().flatten())
+            .filter(|v| **v >= hi * 1e-4),
+    );
+    let y = Scale::padded(true, lo, hi, 0.04, format!("initial slope {h}·dA/(A0·dp̄)"));
+    let names = ["elastic", "plastic", "total"];
+    let colours = [ELASTIC, PLASTIC, TOTAL];
+    let sd_words = if d.sd.is_some() { " (mean ± sd)" } else { "" };
+    let mut series = vec![];
+    for k in 0..3 {
+        series.push(Series {
+            label: format!("{}: theory", names[k]),
+            colour: colours[k],
+            mark: Mark::Line(Stroke::Solid),
+            x: &d.theory_zeta,
+            y: &d.theory[k],
+            sd: None,
+        });
+    }
+    let psi = state.index_name();
+    series.push(Series {
+        label: format!("Persson elastic √(2/π)/{psi}"),
+        colour: super::PERSSON,
+        mark: Mark::Line(Stroke::Dashed),
+        x: &d.theory_zeta,
+        y: &d.persson,
+        sd: None,
+    });
+    let none = |k: usize| {
+        if d.slope[k].iter().any(|v| *v > 0.0) {
+            ""
+        } else {
+            ", 0 everywhere: not on a log axis"
+        }
+    };
+    for (k, r) in [(2, 5), (0, 3), (1, 3)] {
+        series.push(Series {
+            label: format!("{}: simulation{sd_words}{}", names[k], none(k)),
+            colour: colours[k],
+            mark: Mark::Dots(r),
+            x: &d.zeta,
+            y: &d.slope[k],
+            sd: d.sd.as_ref().map(|s| &s[k][..]),
+        });
+    }
+    let what = "initial slopes against ζ, theory and simulation";
+    let title = super::title(state, what);
+    let draw = |area: &super::Area, room| plot::draw(area, &title, (&x, &y), &series, room);
+    let short = format!(
+        "ζ {} … {} · {}",
+        short_number(zlo),
+        short_number(zhi),
+        d.surface
+    );
+    let caption = format!(
+        "Initial slopes {h}·dA/(A0·dp̄) against ζ, the paper's quantity: the theory's (lines, \
+         the {} model at {psi}) and the boundary-element simulation's (points, ζ ≤ 128: each \
+         seed's areas at five light loads p̄/(E* h′) = 0.5 … 8·10⁻³ fitted by A = s·x + c·x² \
+         through the origin over the four lightest, s the slope; the pressure capped at {}). \
+         A plastic slope of 0 has no place on the log axis.",
+        state.model.label(),
+        d.hardness
+    );
+    let lines = under(state, Some(short), &caption);
+    let mut desc = crate::figure::scene_text::full_lines_of(
+        state,
+        "contact-slopes",
+        format!(
+            "contact-slopes = zeta = {} (simulated), theory from {} to {}",
+            d.zeta
+                .iter()
+                .map(|z| short_number(*z))
+                .collect::<Vec<_>>()
+                .join(", "),
+            short_number(zlo),
+            short_number(zhi)
+        ),
+    );
     desc.push(format!("simulation = {}", d.surface));
     render(&draw, &lines, &format!("{} — {what}", state.name), &desc)
 }

@@ -27,7 +27,8 @@ use crate::physical::short_number;
 use crate::scene::State;
 use caption::{caption, caption_lines, SCENE};
 pub use contact::{
-    contact_span, render_contact, render_contact_sweep, sweep_span, ContactLoads, ContactSweep,
+    contact_span, render_contact, render_contact_slopes, render_contact_sweep, sweep_span,
+    ContactLoads, ContactSlopes, ContactSweep,
 };
 pub use contact_map::{render_contact_map, ContactMap};
 use legend::{Legend, Placed, Sample};

@@ -26,7 +26,7 @@ impl App {
         let c = &mut self.contact;
         let moved = contact_shown(c) != shown.contact;
         let s = &shown.contact;
-        (c.load, c.sweep, c.seeds, c.table) = (s.load, s.sweep, s.seeds, s.table);
+        (c.load, c.plot, c.seeds, c.table) = (s.load, s.plot, s.seeds, s.table);
         c.sampling.hardness = s.hardness;
         self.show(&shown.state, shown.selected, shown.view, shown.map_y);
         if moved {
@@ -42,7 +42,7 @@ impl App {
 fn contact_shown(c: &ContactPane) -> ContactShown {
     ContactShown {
         load: c.load,
-        sweep: c.sweep,
+        plot: c.plot,
         seeds: c.seeds,
         table: c.table,
         hardness: c.sampling.hardness,

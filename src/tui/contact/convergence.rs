@@ -35,6 +35,8 @@ pub struct Row {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RowStats {
     pub area: Stat,
+    /// The area with the grid's edge corrected (Yastrebov et al. 2017).
+    pub corrected: Stat,
     /// S_pl/S_tot of each seed (one without contact left out).
     pub share: Stat,
     pub iterations: Stat,
@@ -57,6 +59,7 @@ impl Row {
         }
         Some(RowStats {
             area: Stat::of(runs.iter().map(|s| s.result.area)),
+            corrected: Stat::of(runs.iter().map(|s| s.result.corrected_area())),
             share: Stat::of(runs.iter().map(|s| share(&s.result))),
             iterations: Stat::of(runs.iter().map(|s| s.result.iterations as f64)),
             seconds: runs.iter().map(|s| s.took.as_secs_f64()).sum::<f64>() / runs.len() as f64,

@@ -142,12 +142,14 @@ fn mark(gl: Glyphs) -> &'static str {
 /// fits `w`.
 fn table(rows: &[Row], w: usize, gl: Glyphs, seeds: usize, own: (Grid, u32)) -> Vec<String> {
     let sup = if gl.ascii_only() { "^2" } else { "²" };
-    // (narrow ±, iterations and time columns, the column gap)
-    for (narrow, extra, gap) in [
-        (false, true, 2),
-        (false, false, 2),
-        (true, false, 2),
-        (true, false, 1),
+    // (narrow ±, iterations and time columns, the corrected area, the
+    // column gap)
+    for (narrow, extra, corr, gap) in [
+        (false, true, true, 2),
+        (false, false, true, 2),
+        (true, false, true, 2),
+        (true, false, false, 2),
+        (true, false, false, 1),
     ] {
         let pm = |s: &Stat| {
             let v = if s.n > 1 {
@@ -161,7 +163,11 @@ fn table(rows: &[Row], w: usize, gl: Glyphs, seeds: usize, own: (Grid, u32)) -> 
                 v
             }
         };
-        let mut head = vec!["n/λ", "K", "grid", "contact %", "plastic %"];
+        let mut head = vec!["n/λ", "K", "grid", "contact %"];
+        if corr {
+            head.push("corrected %");
+        }
+        head.push("plastic %");
         if extra {
             head.extend(["iter.", "s/solve"]);
         }
@@ -180,6 +186,9 @@ fn table(rows: &[Row], w: usize, gl: Glyphs, seeds: usize, own: (Grid, u32)) -> 
                 (Ok(n), None) => {
                     line.push(format!("{n}{sup}"));
                     line.extend(["…".into(), "…".into()]);
+                    if corr {
+                        line.push("…".into());
+                    }
                     if extra {
                         line.extend(["".into(), "".into()]);
                     }
@@ -188,6 +197,9 @@ fn table(rows: &[Row], w: usize, gl: Glyphs, seeds: usize, own: (Grid, u32)) -> 
                 (Ok(n), Some(s)) => {
                     line.push(format!("{n}{sup}"));
                     line.push(pm(&s.area));
+                    if corr {
+                        line.push(pm(&s.corrected));
+                    }
                     line.push(pm(&s.share));
                     if extra {
                         line.push(format!("{:.0}", s.iterations.mean));

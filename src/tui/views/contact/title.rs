@@ -14,7 +14,7 @@ pub(super) fn seeds_words(pane: &ContactPane) -> String {
         return format!("seed {}", pane.seed);
     }
     let last = pane.seed.wrapping_add(asked as u64 - 1);
-    let got = if pane.sweep {
+    let got = if pane.plot != crate::tui::contact::Plot::Load {
         pane.seeds_in()
     } else {
         pane.at_load(pane.load).map_or(0, |s| s[0].n)
@@ -44,19 +44,20 @@ pub(super) fn with_sampling(
             } else {
                 format!("{per:.1}")
             };
-            let asperity = s.hardness == crate::contact::Hardness::Asperity;
+            let per_node = match s.hardness {
+                crate::contact::Hardness::Global => "",
+                crate::contact::Hardness::Asperity => " · H per asperity",
+                crate::contact::Hardness::Summit => " · H per summit",
+            };
+            let asperity = !per_node.is_empty();
             // The sweep's grids differ by ζ; their nodes per wavelength not.
-            let per = if pane.sweep {
+            let per = if pane.plot != crate::tui::contact::Plot::Load {
                 String::new()
             } else {
                 format!(" · {per} nodes/λ")
             };
-            let long = format!(
-                "{head} · cell {}{per}{}",
-                s.cell,
-                if asperity { " · H per asperity" } else { "" }
-            );
-            let short = format!("{head} · H per asperity");
+            let long = format!("{head} · cell {}{per}{per_node}", s.cell);
+            let short = format!("{head}{per_node}");
             let room = |t: &str| Span::raw(gl.text(t).as_ref()).width() + 18 <= w;
             if room(&long) {
                 long
