@@ -264,9 +264,9 @@ fn picture(app: &App, out: &mut Out) -> Arc<Picture> {
 }
 
 /// What of the contact view's simulation its picture shows.
-fn contact_key(app: &App) -> (usize, bool, u32, bool, bool, usize) {
+fn contact_key(app: &App) -> (usize, crate::contact::Plot, u32, bool, bool, usize) {
     let c = &app.contact;
-    (c.load, c.sweep, c.seeds, c.table, c.busy(), c.tasks.len())
+    (c.load, c.plot, c.seeds, c.table, c.busy(), c.tasks.len())
 }
 
 /// The contact view as a phone's picture: the explorer's own picture of
