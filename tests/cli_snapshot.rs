@@ -215,7 +215,7 @@ fn unknown_preset_lists_known_ones() {
         assert!(out.stdout.is_empty());
         assert_eq!(
             String::from_utf8(out.stderr).unwrap(),
-            "roughtui: unknown preset 'fig7': known presets are fig1, fig2, fig3, fig4\n"
+            "roughtui: unknown preset 'fig7': known presets are fig1, fig2, fig3, fig4, elastic-again\n"
         );
     }
 }

@@ -196,6 +196,9 @@ pub fn run(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
     if args.view == ViewArg::Surface {
         return surface::export(args, out);
     }
+    if args.view == ViewArg::ContactSlopes {
+        return contact_slopes::export(args, out);
+    }
     if args.view.figure().is_none() {
         return contact::export(args, out);
     }

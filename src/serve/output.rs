@@ -7,7 +7,6 @@
 
 use std::io::{self, Write};
 use std::sync::{Arc, Mutex};
-use std::time::Duration;
 
 use crossterm::cursor::Show;
 use crossterm::style::{Attribute, ResetColor, SetAttribute};
@@ -19,9 +18,7 @@ use russh::{ChannelWriteHalf, Disconnect};
 use tokio::sync::mpsc;
 
 use super::stream::Kill;
-
-/// How long a client may take to accept one frame.
-pub const STALL: Duration = Duration::from_secs(5);
+pub use super::stream::STALL;
 
 /// A byte sink the explorer's terminal backend writes frames into.
 #[derive(Clone, Debug, Default)]

@@ -3,7 +3,7 @@
 //! [`Killable`] stream fails every read and write once [`Kill::kill`] is
 //! called (waking a pending one), so that task ends and frees everything.
 //! It also fails a write the client has taken nothing of for
-//! [`output::STALL`](super::output::STALL): a client that stopped reading
+//! [`STALL`]: a client that stopped reading
 //! (its buffers full) is let go though no new frame waits for it.
 
 use std::future::Future;
@@ -14,6 +14,9 @@ use std::sync::{Arc, Mutex};
 use std::task::{Context, Poll, Waker};
 
 use tokio::io::{AsyncRead, AsyncWrite, ReadBuf};
+
+/// How long a client may take to accept one frame.
+pub const STALL: std::time::Duration = std::time::Duration::from_secs(5);
 
 #[derive(Debug, Default)]
 struct State {
@@ -76,7 +79,7 @@ impl<S> Killable<S> {
     }
 
     /// A write's outcome `r`: a write that has waited for the client
-    /// [`STALL`](super::output::STALL) fails (and cuts the stream).
+    /// [`STALL`] fails (and cuts the stream).
     fn stall<T>(&mut self, cx: &mut Context<'_>, r: Poll<io::Result<T>>) -> Poll<io::Result<T>> {
         if r.is_ready() {
             self.stalled = None;
@@ -84,7 +87,7 @@ impl<S> Killable<S> {
         }
         let timer = self
             .stalled
-            .get_or_insert_with(|| Box::pin(tokio::time::sleep(super::output::STALL)));
+            .get_or_insert_with(|| Box::pin(tokio::time::sleep(STALL)));
         if timer.as_mut().poll(cx).is_ready() {
             self.stalled = None;
             self.state.killed.store(true, Ordering::SeqCst);

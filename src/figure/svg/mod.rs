@@ -7,6 +7,7 @@ mod caption;
 mod contact;
 mod contact_map;
 mod curves;
+mod entry;
 mod fine;
 mod legend;
 mod map;

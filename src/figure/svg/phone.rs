@@ -10,7 +10,7 @@ use std::cell::{Cell, RefCell};
 
 use plotters::prelude::RGBColor;
 
-use super::legend::{Entry, Sample};
+use super::entry::{Entry, Sample};
 use crate::figure::{FigureOptions, View};
 use crate::scene::State;
 
