@@ -462,6 +462,6 @@ fn lenient_forms_are_accepted() {
 fn unknown_preset_lists_the_known_ones() {
     assert_eq!(
         roughtui::presets::load("fig5").unwrap_err().to_string(),
-        "unknown preset 'fig5': known presets are fig1, fig2, fig3, fig4"
+        "unknown preset 'fig5': known presets are fig1, fig2, fig3, fig4, elastic-again"
     );
 }
