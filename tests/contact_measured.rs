@@ -155,7 +155,7 @@ fn the_cli_solves_a_non_square_map_on_the_free_boundary() {
     let r = rows(&csv);
     assert_eq!(r.len(), 4);
     for row in &r {
-        assert_eq!(row.len(), 14);
+        assert_eq!(row.len(), 17);
         // Contact grows with the load; parts add up; the solver converged.
         assert!((row[1] - row[2] - row[3]).abs() < 1e-12);
         assert!(row[6] <= 1e-10, "residual {}", row[6]);
