@@ -37,10 +37,9 @@ done
 "$bin" export --preset fig2 --view contact-sweep --format svg > docs/fig2-contact-sweep.svg
 # The paper's figure with the simulation's initial slopes (fig2, four seeds
 # in a cell of one longest wavelength: about two minutes), and the
-# elastic-again scene's plastic share at a load fixed in H0 with each
-# node's summit hardness.
+# elastic-again scene's, four seeds in a cell of two (about six minutes).
 "$bin" export --preset fig2 --view contact-slopes --cell 1 --seeds 4 --format svg \
     > docs/fig2-contact-slopes.svg
-"$bin" export --preset elastic-again --view contact-sweep --cell 1 --seeds 4 --hardness summit \
-    --format svg > docs/elastic-again-contact-sweep.svg
+"$bin" export --preset elastic-again --view contact-slopes --cell 2 --seeds 4 --format svg \
+    > docs/elastic-again-contact-slopes.svg
 echo "wrote docs/*.svg" >&2

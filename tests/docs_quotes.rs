@@ -16,10 +16,7 @@ use std::time::{Duration, Instant};
 use common::docs::{self, pages, ROOT};
 
 /// Pages not held to these checks yet, with the reason.
-const NOT_YET: &[(&str, &str)] = &[(
-    "docs/theory-vs-simulation.md",
-    "rewritten with the simulation's new views and columns (issue 42)",
-)];
+const NOT_YET: &[(&str, &str)] = &[];
 
 /// The pages' text (README and docs/), each with its name, without the
 /// pages [`NOT_YET`] names.
