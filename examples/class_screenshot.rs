@@ -148,7 +148,7 @@ fn main() -> anyhow::Result<()> {
 pub fn picture(revealed: bool) -> anyhow::Result<String> {
     let state = presets::load("fig2")?;
     let mut app = App::new(state, Theme::colored(), SIZE);
-    let question = Question::of_claims(app.view, &app.claims)
+    let question = Question::of_claims(app.view, &app.claims, app.state.size_effect)
         .ok_or_else(|| anyhow::anyhow!("fig2 makes no claim"))?;
     // 30 answers, as students step the marker from 128 in quarter decades:
     // most a step or two up, a few on the far side of the crossing.
@@ -182,6 +182,7 @@ pub fn picture(revealed: bool) -> anyhow::Result<String> {
             size: if i % 11 == 4 { (80, 22) } else { SIZE },
             marker: if i % 7 == 3 { "half" } else { "braille" }.into(),
             idle: Duration::from_secs(5 + i as u64 * 3),
+            via: "ssh",
         })
         .collect();
     app.class.view = Some(ClassView {

@@ -394,11 +394,13 @@ pub struct ServeArgs {
     pub setup: Setup,
     #[command(flatten)]
     pub simulate: Simulate,
-    /// Most connections at once.
-    #[arg(long, default_value_t = 64, value_parser = clap::value_parser!(u32).range(1..=10_000))]
+    /// Most students at once, over SSH and the web together (the
+    /// lecturer's key takes no place).
+    #[arg(long, default_value_t = 150, value_parser = clap::value_parser!(u32).range(1..=10_000))]
     pub max_sessions: u32,
-    /// Most connections at once from one address.
-    #[arg(long, default_value_t = 64, value_parser = clap::value_parser!(u32).range(1..=10_000))]
+    /// Most students at once from one address (a campus NAT puts a whole
+    /// room behind one).
+    #[arg(long, default_value_t = 150, value_parser = clap::value_parser!(u32).range(1..=10_000))]
     pub max_per_address: u32,
     /// A session without a key (or a lecturer's move, when following) for
     /// this long ends: a number with s, m or h.

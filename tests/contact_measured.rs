@@ -155,8 +155,6 @@ fn the_cli_solves_a_non_square_map_on_the_free_boundary() {
     let r = rows(&csv);
     assert_eq!(r.len(), 4);
     for row in &r {
-        // The view's columns, p_over_h0 and the corrected area with its sd
-        // last.
         assert_eq!(row.len(), 17);
         // Contact grows with the load; parts add up; the solver converged.
         assert!((row[1] - row[2] - row[3]).abs() < 1e-12);

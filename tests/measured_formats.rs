@@ -83,15 +83,21 @@ fn files_not_read_exit_2_with_a_way_forward() {
         std::fs::write(&p, b).unwrap();
         p.to_str().unwrap().to_string()
     };
+    let nc = write("scan.nc", b"CDF\x01\0\0\0\0");
+    refused(
+        &["export", "--surface", &nc],
+        &[
+            "bad surface",
+            "scan.nc",
+            "looks like a NetCDF file",
+            "open it in Gwyddion and save it as .gwy or .x3p",
+        ],
+    );
+    // A Zygo .datx is read: one cut short is named as one.
     let datx = write("scan.datx", b"\x89HDF\r\n\x1a\n\0\0\0\0");
     refused(
         &["export", "--surface", &datx],
-        &[
-            "bad surface",
-            "scan.datx",
-            "looks like a Zygo .datx file",
-            "open it in Gwyddion and save it as .gwy or .x3p",
-        ],
+        &["scan.datx", "Zygo .datx: its HDF5 structure cannot be read"],
     );
     let npy = write("h.npy", b"\x93NUMPY\x01\x00v\x00{'descr': '<f8'}");
     refused(

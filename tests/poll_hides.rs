@@ -13,6 +13,7 @@ use std::sync::Arc;
 use crossterm::event::{KeyCode, KeyModifiers};
 use ratatui::backend::TestBackend;
 use ratatui::buffer::Buffer;
+use ratatui::style::Color;
 use ratatui::Terminal;
 use roughtui::class::{Asked, ClassView, Lesson, LessonAt, Tally};
 use roughtui::figure::{claims, View};
@@ -119,9 +120,69 @@ fn map_cells(b: &Buffer) -> usize {
     b.content.iter().filter(|c| c.symbol() == "▀").count()
 }
 
+/// Braille cells of the graph drawn in `colour` (a curve's).
+fn curve_cells(b: &Buffer, colour: Color) -> usize {
+    b.content
+        .iter()
+        .filter(|c| {
+            let ch = c.symbol().chars().next().unwrap_or(' ');
+            ('\u{2801}'..='\u{28ff}').contains(&ch) && c.fg == colour
+        })
+        .count()
+}
+
+/// The curves a step's screen must not draw while its poll (or the next,
+/// for a step that hides its claims) waits, by view: the paper's lesson
+/// asks a reading question first (its chart stays), then predictions —
+/// fig. 2's share (no plastic or total slope, no Ψ_P), fig. 3's share with
+/// the size-dependent hardness (no plastic or total slope, no Ψ*), which
+/// step 4's indices keep off too.
+fn withheld_curves(at: usize, view: View, t: &Theme) -> Vec<(&'static str, Color)> {
+    let c = |s: ratatui::style::Style| s.fg.unwrap();
+    match (at, view) {
+        (2 | 4, View::Slopes) => vec![("plastic", c(t.plastic.style)), ("total", c(t.total.style))],
+        (2, View::Indices) => vec![("Ψ_P", c(t.psi_p.style))],
+        (3 | 4, View::Indices) => vec![("Ψ*", c(t.psi_star.style))],
+        _ => vec![],
+    }
+}
+
+/// The curves that stay: the reading question's, and the others'.
+fn kept_curves(at: usize, view: View, t: &Theme) -> Vec<(&'static str, Color)> {
+    let c = |s: ratatui::style::Style| s.fg.unwrap();
+    match (at, view) {
+        (0 | 1, View::Slopes) => vec![("plastic", c(t.plastic.style)), ("total", c(t.total.style))],
+        (2, View::Indices) => vec![("Ψ*", c(t.psi_star.style))],
+        (3 | 4, View::Indices) => vec![("Ψ_P", c(t.psi_p.style))],
+        _ => vec![],
+    }
+}
+
 fn check_hidden(app: &App, what: &str) {
     let b = draw(app);
     let s = text(&b);
+    // The legend names curves, never where one went ("= total here",
+    // "plastic < 1", "below the chart").
+    for remark in [" here", "plastic <", "plastic >", "below the chart"] {
+        assert!(
+            !s.contains(remark),
+            "{what}: the legend says {remark:?}\n{s}"
+        );
+    }
+    let at = app.class.step.as_ref().map_or(0, |l| l.at - 1);
+    for (name, colour) in withheld_curves(at, app.view, &app.theme) {
+        assert_eq!(curve_cells(&b, colour), 0, "{what}: {name} is drawn\n{s}");
+        assert!(
+            s.contains(&format!("{name} ?")),
+            "{what}: {name} unnamed\n{s}"
+        );
+    }
+    for (name, colour) in kept_curves(at, app.view, &app.theme) {
+        assert!(
+            curve_cells(&b, colour) > 0,
+            "{what}: {name} is not drawn\n{s}"
+        );
+    }
     for n in claim_numbers(app) {
         assert!(!s.contains(&n), "{what}: the claims' {n} shows\n{s}");
     }
@@ -142,7 +203,12 @@ fn check_hidden(app: &App, what: &str) {
         }
     }
     if app.size.1 >= 48 {
-        assert!(s.contains("plastic ?  (until the reveal)"), "{what}\n{s}");
+        let until = if app.class.hidden_question().is_some() {
+            "plastic ?  (until the reveal)"
+        } else {
+            "plastic ?  (until the next poll)"
+        };
+        assert!(s.contains(until), "{what}\n{s}");
     }
     match app.view {
         View::Slopes => {
@@ -153,7 +219,7 @@ fn check_hidden(app: &App, what: &str) {
         }
         View::Map => {
             assert_eq!(map_cells(&b), 0, "{what}: the map's colours show\n{s}");
-            assert!(s.contains("contour wait for the reveal"), "{what}\n{s}");
+            assert!(s.contains("contour wait for "), "{what}\n{s}");
             assert!(!s.contains(">90%"), "{what}: the colour scale shows\n{s}");
         }
         View::Load => {
@@ -174,6 +240,22 @@ fn check_hidden(app: &App, what: &str) {
 fn check_shown(app: &App, what: &str) {
     let b = draw(app);
     let s = text(&b);
+    let at = app.class.step.as_ref().map_or(0, |l| l.at - 1);
+    // The curves withheld are back (fig. 3's plastic slope lies below
+    // its chart, its total under Persson's line: the legend says so now).
+    for (name, colour) in withheld_curves(at, app.view, &app.theme) {
+        if at == 4 && app.view == View::Slopes {
+            assert!(
+                s.contains("plastic <") && s.contains("= total"),
+                "{what}\n{s}"
+            );
+            continue;
+        }
+        assert!(
+            curve_cells(&b, colour) > 0,
+            "{what}: {name} is not back\n{s}"
+        );
+    }
     assert!(
         !s.contains("Ψ_P    ?"),
         "{what}: the readout still waits\n{s}"
@@ -196,6 +278,12 @@ fn every_view_hides_the_open_polls_answer() {
         .filter(|i| lesson.steps[*i].poll.is_some())
         .collect();
     assert_eq!(polls, [1, 2, 4], "the paper's three polls");
+    // The first a reading question, the others predictions.
+    let read: Vec<bool> = polls
+        .iter()
+        .map(|i| lesson.steps[*i].poll.unwrap().read)
+        .collect();
+    assert_eq!(read, [true, false, false]);
     for at in polls {
         for size in [(80, 24), (160, 48)] {
             for lecturer in [false, true] {
@@ -268,5 +356,76 @@ fn walking_across_the_answer_changes_nothing_that_answers() {
             seen[0], seen[1],
             "{view:?}: what answers moved with the marker"
         );
+    }
+}
+
+/// The steps before a poll that hide their claims (the paper's steps 1
+/// and 4) keep off what would answer that poll too: step 4's Ψ*, which
+/// answers fig. 3's question, while fig. 2's Ψ_P stays.
+#[test]
+fn the_step_before_a_poll_hides_what_answers_it() {
+    let lesson = lesson();
+    for at in [0, 3] {
+        assert!(lesson.steps[at].claims_hidden, "step {}", at + 1);
+        for size in [(80, 24), (160, 48)] {
+            let step = &lesson.steps[at];
+            let mut app = App::new(step.state.clone(), Theme::colored(), size);
+            app.view = step.view;
+            app.student = true;
+            app.lecturer_keys = true;
+            app.class.step = Some(LessonAt::new(Arc::clone(&lesson), at).line());
+            update(&mut app, Message::Tick);
+            for _ in 0..View::ALL.len() {
+                if app.view.exists(app.state.is_measured()) {
+                    let what = format!("step {} {:?} {size:?}", at + 1, app.view);
+                    check_hidden(&app, &what);
+                }
+                common::app::press(&mut app, KeyCode::Tab, KeyModifiers::NONE);
+            }
+        }
+    }
+}
+
+/// On an ASCII terminal of 100×30 every step of the lesson, its poll open
+/// or waiting, says until when in whole words: nothing cut mid-sentence.
+#[test]
+fn an_ascii_screen_says_until_when_in_whole_words() {
+    use roughtui::tui::glyphs::Glyphs;
+    let lesson = lesson();
+    for at in 0..lesson.steps.len() {
+        let step = &lesson.steps[at];
+        let theme = Theme::colored().with_glyphs(Glyphs::Ascii);
+        let mut app = App::new(step.state.clone(), theme, (100, 30));
+        app.view = step.view;
+        app.student = true;
+        app.lecturer_keys = true;
+        app.class.step = Some(LessonAt::new(Arc::clone(&lesson), at).line());
+        if let Some(q) = step.poll {
+            app.class.asked = Some(Asked {
+                question: q,
+                answer: None,
+                revealed: false,
+                changed: false,
+            });
+        }
+        update(&mut app, Message::Tick);
+        let s = text(&draw(&app));
+        for l in s
+            .lines()
+            .filter(|l| l.contains("(until") || l.contains("(this step"))
+        {
+            let open = l.find('(').unwrap();
+            let said = &l[open..l[open..].find(')').map_or(l.len(), |c| open + c + 1)];
+            assert!(
+                [
+                    "(until the reveal)",
+                    "(until the next poll)",
+                    "(this step's claims show after the lesson's next poll)"
+                ]
+                .contains(&said),
+                "step {}: {said:?}\n{s}",
+                at + 1
+            );
+        }
     }
 }

@@ -147,7 +147,7 @@ fn a_lesson_steps_polls_into_one_csv_and_everyone_follows() {
         .collect();
     assert_eq!(
         text.lines().next(),
-        Some("question,quantity,unit,truth,name,answer,offset,step,time")
+        Some("question,quantity,unit,truth,name,answer,offset,step,time,poll,revealed")
     );
     assert_eq!(rows.len(), 6, "{text}");
     for (i, (step, question, truth)) in polls.iter().enumerate() {
@@ -164,6 +164,9 @@ fn a_lesson_steps_polls_into_one_csv_and_everyone_follows() {
         assert_eq!(rows[2 * i][4], "ann");
         assert!(rows[2 * i][8].ends_with('Z'), "{text}");
         assert_eq!(rows[2 * i + 1][4..6], ["bob", "no answer"]);
+        for r in &rows[2 * i..2 * i + 2] {
+            assert_eq!(r[9..], [(i + 1).to_string().as_str(), "yes"], "{text}");
+        }
     }
     assert_eq!(rows[4][5], "nowhere", "{text}");
     // N goes back; F pulls a student exploring alone back.
@@ -305,4 +308,60 @@ fn o_loads_a_preset_or_a_snapshot_for_everyone() {
     room.wait_all(&["lect", "ann"], "back", 30, |s| {
         s.contains("step 2/8 · Poll: where does fig. 1 turn plastic?")
     });
+}
+
+/// The class ends with a lesson's first poll open (no CSV made yet): its
+/// answers go to the lesson's CSV all the same, marked unrevealed.
+#[test]
+fn a_lesson_poll_still_open_at_the_end_goes_to_the_lessons_csv() {
+    if !(have_ssh() && have_tmux()) {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let key = lecturer_key(dir.path());
+    let keys = key.with_extension("pub");
+    let paper = Path::new(env!("CARGO_MANIFEST_DIR")).join("lessons/paper.ron");
+    let mut srv = Server::start(
+        dir.path(),
+        &[
+            "--lecturer-keys",
+            keys.to_str().unwrap(),
+            "--lesson",
+            paper.to_str().unwrap(),
+        ],
+    );
+    let room = Room::new("lessonopen", (100, 30));
+    room.open("lect", &lecturer_line(&srv, &key));
+    room.open("ann", &srv.ssh_line("ann", &["-t"]));
+    room.wait_all(&["lect", "ann"], "step 1", 30, |s| s.contains("step 1/8"));
+    room.keys("lect", &["n"]);
+    room.wait("ann", "step 2", 30, |s| s.contains("step 2/8"));
+    room.keys("lect", &["v"]);
+    room.wait("ann", "the question", 30, |s| s.contains("Predict:"));
+    room.keys("ann", &["Enter"]);
+    room.wait("lect", "ann's answer", 30, |s| s.contains("1/1 answered"));
+    assert!(Command::new("kill")
+        .args(["-TERM", &srv.pid().to_string()])
+        .status()
+        .unwrap()
+        .success());
+    let log = srv.wait_log("the summary", 20, |l| l.contains("poll answers saved in:"));
+    let _ = srv.child.wait();
+    let files = csvs(dir.path());
+    assert_eq!(files.len(), 1, "{files:?}\n{log}");
+    let name = files[0].file_name().unwrap().to_string_lossy().into_owned();
+    assert!(name.starts_with("paper-polls-"), "{name}");
+    assert!(
+        log.contains(&format!(
+            "its 1 answer saved unrevealed in {}",
+            files[0].display()
+        )),
+        "{log}"
+    );
+    let text = std::fs::read_to_string(&files[0]).unwrap();
+    let rows: Vec<&str> = text.lines().collect();
+    assert_eq!(rows.len(), 2, "{text}");
+    // ann's answer at step 2, poll 1, not revealed.
+    let f: Vec<&str> = rows[1].split(',').collect();
+    assert_eq!((f[4], f[7], f[9], f[10]), ("ann", "2", "1", "no"), "{text}");
 }

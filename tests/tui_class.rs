@@ -30,6 +30,7 @@ fn seat(name: &str, state: SeatState, size: (u16, u16)) -> Seat {
         size,
         marker: "braille".into(),
         idle: Duration::from_secs(75),
+        via: "ssh",
     }
 }
 
@@ -54,6 +55,8 @@ fn only_the_lecturer_has_the_poll_and_class_keys() {
         axis: Axis::Zeta,
         ask: Ask::Share { rising: true },
         truth: 321.5,
+        size_effect: false,
+        read: false,
     };
     s.class.asked = Some(Asked {
         question: q,
@@ -123,6 +126,8 @@ fn the_lecturer_sees_the_class_and_the_histogram() {
                 axis: Axis::Zeta,
                 ask: Ask::Share { rising: true },
                 truth: 321.5,
+                size_effect: false,
+                read: false,
             },
             answers: vec![100.0, 100.0, 1000.0],
             asked: 4,
@@ -193,6 +198,8 @@ fn in_the_ascii_set_every_class_panel_is_ascii() {
         axis: Axis::Zeta,
         ask: Ask::Share { rising: false },
         truth: 321.5,
+        size_effect: false,
+        read: false,
     };
     let mut l = lecturer("fig2");
     l.theme = l.theme.with_glyphs(Glyphs::Ascii);
@@ -275,6 +282,8 @@ fn an_open_poll_shows_nothing_of_its_answer() {
         axis: Axis::Zeta,
         ask: Ask::Share { rising: true },
         truth,
+        size_effect: false,
+        read: false,
     };
     // Before the poll the lecturer's screen names the answer.
     let mut l = lecturer("fig2");

@@ -22,8 +22,9 @@ pub const EVERY: Duration = Duration::from_millis(250);
 pub type Counts = Arc<Mutex<Option<String>>>;
 
 /// Rendered for followers, taken by others, drawn alone, sent as bytes
-/// another session wrote, from a `frames:` line.
-fn parse(line: &str) -> [u64; 4] {
+/// another session wrote, and phones' pages drawn and taken by others,
+/// from a `frames:` line.
+fn parse(line: &str) -> [u64; 6] {
     // (Past the log's time of day.)
     let line = line.split_once("frames: ").map_or("", |(_, rest)| rest);
     let nums: Vec<u64> = line
@@ -34,36 +35,17 @@ fn parse(line: &str) -> [u64; 4] {
 }
 
 /// The counts once the class is quiet (a summary comes every 200 ms).
-async fn settled(counts: &Counts) -> anyhow::Result<[u64; 4]> {
+async fn settled(counts: &Counts) -> anyhow::Result<[u64; 6]> {
     tokio::time::sleep(Duration::from_millis(800)).await;
     let line = counts.lock().unwrap().clone();
     let line = line.ok_or_else(|| anyhow::anyhow!("the server wrote no frames: line"))?;
     Ok(parse(&line))
 }
 
-/// Leads the class through [`KEYS`] keys; the report's lines.
-pub async fn run(
-    lect: &russh::ChannelWriteHalf<russh::client::Msg>,
-    pid: u32,
-    followers: &[Frames],
-    counts: &Counts,
-) -> anyhow::Result<Vec<String>> {
-    let c0 = settled(counts).await?;
-    let cpu0 = cpu_ticks(pid);
-    let mut sent = Vec::new();
-    let mut next = tokio::time::Instant::now();
-    for k in 0..KEYS {
-        next += EVERY;
-        // Right then left: every key changes the scene.
-        let key: &[u8] = if k % 2 == 0 { b"l" } else { b"h" };
-        sent.push(Instant::now());
-        lect.data(key).await?;
-        tokio::time::sleep_until(next).await;
-    }
-    let cpu = (cpu_ticks(pid) - cpu0) as f64 / 100.0;
-    let c1 = settled(counts).await?;
-    // Each key's frame at each follower: the first to come before the
-    // next key.
+/// Each key's frame at each of `followers`: the key-to-frame times (ms)
+/// of the first frame to come before the next key, the bytes of all that
+/// came in that time, and the keys whose frame did not come in it.
+fn measure(sent: &[Instant], followers: &[Frames]) -> (Vec<f64>, usize, usize) {
     let (mut lat, mut bytes, mut missed) = (Vec::new(), 0usize, 0usize);
     for f in followers {
         let f = f.lock().unwrap();
@@ -80,25 +62,66 @@ pub async fn run(
         }
     }
     lat.sort_by(f64::total_cmp);
-    let pct = |p: f64| super::percentile(&lat, p);
-    let n = followers.len();
-    let per_key = |i: usize| (c1[i] - c0[i]) as f64 / KEYS as f64;
-    Ok(vec![
-        format!(
-            "the lecturer leads: {KEYS} keys (one every {EVERY:?}) to {n} followers: key-to-frame p50 {:.2} ms, p99 {:.2} ms, max {:.2} ms over {} frames ({missed} missed); {:.0} bytes per follower per key",
+    (lat, bytes, missed)
+}
+
+/// Leads the class through [`KEYS`] keys; the report's lines, one for the
+/// followers in all and one for each group of them (terminals, phones).
+pub async fn run(
+    lect: &russh::ChannelWriteHalf<russh::client::Msg>,
+    pid: u32,
+    groups: &[(&str, Vec<Frames>)],
+    counts: &Counts,
+) -> anyhow::Result<Vec<String>> {
+    let c0 = settled(counts).await?;
+    let cpu0 = cpu_ticks(pid);
+    let mut sent = Vec::new();
+    let mut next = tokio::time::Instant::now();
+    for k in 0..KEYS {
+        next += EVERY;
+        // Right then left: every key changes the scene.
+        let key: &[u8] = if k % 2 == 0 { b"l" } else { b"h" };
+        sent.push(Instant::now());
+        lect.data(key).await?;
+        tokio::time::sleep_until(next).await;
+    }
+    let cpu = (cpu_ticks(pid) - cpu0) as f64 / 100.0;
+    let c1 = settled(counts).await?;
+    let all: Vec<Frames> = groups.iter().flat_map(|g| g.1.iter().cloned()).collect();
+    let mut lines = Vec::new();
+    for (name, followers) in
+        std::iter::once(("followers", &all)).chain(groups.iter().map(|g| (g.0, &g.1)))
+    {
+        let (lat, bytes, missed) = measure(&sent, followers);
+        let pct = |p: f64| super::percentile(&lat, p);
+        let n = followers.len();
+        let head = if name == "followers" {
+            format!("the lecturer leads: {KEYS} keys (one every {EVERY:?}) to {n} followers:")
+        } else {
+            format!("  {n} {name}:")
+        };
+        lines.push(format!(
+            "{head} key-to-frame p50 {:.2} ms, p99 {:.2} ms, max {:.2} ms over {} frames ({missed} missed); {:.0} bytes per follower per key",
             pct(0.5),
             pct(0.99),
             lat.last().copied().unwrap_or(f64::NAN),
             lat.len(),
-            bytes as f64 / (n * KEYS) as f64
-        ),
-        format!(
-            "  per key: {:.1} frames rendered for followers, {:.1} taken by others ({:.1} of them sent as the bytes another wrote), {:.1} drawn alone (the lecturer's one among them); server CPU {cpu:.2} s ({:.1} ms per key)",
-            per_key(0),
-            per_key(1),
-            per_key(3),
-            per_key(2),
-            cpu * 1e3 / KEYS as f64
-        ),
-    ])
+            bytes as f64 / (n * KEYS).max(1) as f64
+        ));
+    }
+    let per_key = |i: usize| (c1[i] - c0[i]) as f64 / KEYS as f64;
+    lines.push(format!(
+        "  per key: {:.1} frames rendered for followers, {:.1} taken by others ({:.1} of them sent as the bytes another wrote), {:.1} drawn alone (the lecturer's one among them); server CPU {cpu:.2} s ({:.1} ms per key)",
+        per_key(0),
+        per_key(1),
+        per_key(3),
+        per_key(2),
+        cpu * 1e3 / KEYS as f64
+    ));
+    lines.push(format!(
+        "  per key: {:.1} phone pages drawn (a picture and its texts), {:.1} taken by other phones",
+        per_key(4),
+        per_key(5)
+    ));
+    Ok(lines)
 }

@@ -1,14 +1,18 @@
 //! Load test of `roughtui serve` on loopback, a lecture hall's worth: a
-//! lecturer and 300 students, 100 of them over the web (WebSocket, as the
-//! page speaks) and 200 over SSH — 50 pressing a key every 100 ms for 20 s
-//! (25 each way), 30 who answer a poll all at once (15 each way), 220 idle
-//! (160 SSH, 60 web). 5 s in, the lecturer opens a poll (`v`); 3 s later
-//! the 30 press Enter together; 4 s later the lecturer reveals (`v`); at
-//! the end saves the answers (`S`), which must count 30; then leads the
-//! 250 who follow, a key every 250 ms (`lead.rs`). Reports
+//! lecturer and 150 students (the default `--max-sessions`), 60 of them
+//! on phones (the page's phone layout: a picture drawn by the export's SVG
+//! code and its texts, as a WebSocket text message per change), 40 on the
+//! web page's terminal (WebSocket, as xterm.js speaks) and 50 over SSH —
+//! 20 pressing a key every 100 ms for 20 s (10 SSH, 10 web), 30 who answer
+//! a poll all at once (10 each way), 100 idle (30 SSH, 20 web, 50
+//! phones). 5 s in, the lecturer opens a poll (`v`); 3 s later the 30
+//! press Enter together; 4 s later the lecturer reveals (`v`); at the end
+//! saves the answers (`S`), which must count 30; then leads the 130 who
+//! follow, a key every 250 ms (`lead.rs`), terminals and phones reported
+//! apart. Reports
 //! key-to-frame p50/p99 of the typing students (in all, over SSH, over
 //! the web, with the bytes of frames per key), the poll's delivery times,
-//! the server's RSS (per idle session, SSH and web apart), its CPU, and
+//! the server's RSS (per idle session, SSH, web and phones apart), its CPU, and
 //! the bytes sent to idle sessions (outside the poll's question and reveal
 //! and within them), and the lecturer's keys to the followers: their
 //! key-to-frame, bytes, the server's CPU and frames rendered per key.
@@ -27,12 +31,15 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use client::{cpu_ticks, proc_status};
-use student::{Frames, Student};
+use student::{Frames, Student, Via};
 
-/// Students over SSH and over the web: typing, answering a poll, idle.
-const TYPING: (usize, usize) = (25, 25);
-const POLLED: (usize, usize) = (15, 15);
-const IDLE: (usize, usize) = (160, 60);
+/// Students typing, over SSH and over the web's terminal.
+const TYPING: (usize, usize) = (10, 10);
+/// Students answering a poll and idle, over SSH, the web's terminal and
+/// on phones.
+const POLLED: [usize; 3] = [10, 10, 10];
+const IDLE: [usize; 3] = [30, 20, 50];
+const VIAS: [Via; 3] = [Via::Ssh, Via::Web, Via::Phone];
 const RUN: Duration = Duration::from_secs(20);
 const EVERY: Duration = Duration::from_millis(100);
 /// When, from the start of the typing, the lecturer asks, the class
@@ -46,9 +53,14 @@ mod client;
 mod lead;
 mod student;
 
-/// Logs `n` students in at once (`web` or SSH), each drained of its first
-/// screen.
-async fn join(port: u16, web: bool, prefix: &str, n: usize) -> anyhow::Result<Vec<Student>> {
+/// Logs `n` students in over `via`, twenty at a time, each drained of its
+/// first screen.
+async fn join(
+    ports: (u16, u16),
+    via: Via,
+    prefix: &str,
+    n: usize,
+) -> anyhow::Result<Vec<(Via, Student)>> {
     let mut out = Vec::new();
     // Twenty at a time: a room logging in, not a flood.
     for chunk in (0..n).collect::<Vec<_>>().chunks(20) {
@@ -56,13 +68,9 @@ async fn join(port: u16, web: bool, prefix: &str, n: usize) -> anyhow::Result<Ve
         for &i in chunk {
             let name = format!("{prefix}{i}");
             tasks.push(tokio::spawn(async move {
-                let mut s = if web {
-                    Student::web(port, &name).await?
-                } else {
-                    Student::ssh(port, &name).await?
-                };
+                let mut s = Student::new(via, ports, &name).await?;
                 s.drain(Duration::from_millis(300)).await;
-                anyhow::Ok(s)
+                anyhow::Ok((via, s))
             }));
         }
         for t in tasks {
@@ -131,7 +139,8 @@ async fn run() -> anyhow::Result<()> {
             .arg(dir.path().join("host_key"))
             .arg("--lecturer-keys")
             .arg(&keys)
-            .args(["--max-sessions", "400", "--max-per-address", "400"])
+            // (The default --max-sessions and --max-per-address, 150, take
+            // the whole class from one address.)
             // The console's summary (with its frames: line) five times a
             // second.
             .env("ROUGHTUI_SUMMARY_MS", "200")
@@ -188,18 +197,23 @@ async fn run() -> anyhow::Result<()> {
     // Idle students, SSH then web, the server's memory before and after
     // each (the first screen's line goes after HINT_FOR: that frame
     // belongs to the session's start, not to idling).
-    let rss0 = proc_status(pid, "VmRSS");
-    let mut idle = join(port, false, "idle", IDLE.0).await?;
-    let rss_ssh = proc_status(pid, "VmRSS");
-    idle.extend(join(web, true, "widle", IDLE.1).await?);
-    let rss_web = proc_status(pid, "VmRSS");
-    let mut polled = join(port, false, "p", POLLED.0).await?;
-    polled.extend(join(web, true, "wp", POLLED.1).await?);
+    let ports = (port, web);
+    let mut rss = vec![proc_status(pid, "VmRSS")];
+    let mut idle = Vec::new();
+    for (via, n) in VIAS.into_iter().zip(IDLE) {
+        idle.extend(join(ports, via, &format!("idle{via:?}"), n).await?);
+        rss.push(proc_status(pid, "VmRSS"));
+    }
+    let rss0 = rss[0];
+    let mut polled = Vec::new();
+    for (via, n) in VIAS.into_iter().zip(POLLED) {
+        polled.extend(join(ports, via, &format!("p{via:?}"), n).await?);
+    }
     tokio::time::sleep(roughtui::serve::term::HINT_FOR).await;
-    for s in idle.iter_mut().chain(polled.iter_mut()) {
+    for (_, s) in idle.iter_mut().chain(polled.iter_mut()) {
         s.drain(Duration::from_millis(20)).await;
     }
-    let idle: Vec<_> = idle.into_iter().map(Student::record).collect();
+    let idle: Vec<_> = idle.into_iter().map(|(via, s)| (via, s.record())).collect();
 
     let cpu0 = cpu_ticks(pid);
     let t0 = Instant::now();
@@ -242,7 +256,7 @@ async fn run() -> anyhow::Result<()> {
     let n_polled = polled.len();
     let go = Arc::new(tokio::sync::Barrier::new(n_polled));
     let mut pollers = Vec::new();
-    for (i, mut s) in polled.into_iter().enumerate() {
+    for (i, (via, mut s)) in polled.into_iter().enumerate() {
         let go = Arc::clone(&go);
         pollers.push(tokio::spawn(async move {
             tokio::time::sleep_until(asked_at).await;
@@ -262,7 +276,7 @@ async fn run() -> anyhow::Result<()> {
             tokio::time::sleep_until(revealed_at).await;
             let (revealed, _) = s.next_frame().await?;
             let _rest = s.drain(Duration::from_millis(200)).await;
-            anyhow::Ok((asked, answered, revealed, s))
+            anyhow::Ok((asked, answered, revealed, (via, s)))
         }));
     }
     tokio::time::sleep_until(asked_at).await;
@@ -323,22 +337,31 @@ async fn run() -> anyhow::Result<()> {
             break;
         }
     }
-    let others = TYPING.0 + TYPING.1 + IDLE.0 + IDLE.1;
+    let others = TYPING.0 + TYPING.1 + IDLE.iter().sum::<usize>();
     anyhow::ensure!(
         rows == n_polled && silent == others,
         "the lecturer saved {rows} answers and {silent} without, not {n_polled} and {others}"
     );
     let lecturer_bytes: usize = lect_frames.lock().unwrap().iter().map(|f| f.1).sum();
 
-    // The lecturer leads the idle and the pollers, who follow again.
-    let polled: Vec<_> = keep.into_iter().map(Student::record).collect();
-    let followers: Vec<student::Frames> = idle
-        .iter()
-        .chain(&polled)
-        .map(|(_, f)| Arc::clone(f))
-        .collect();
+    // The lecturer leads the idle and the pollers, who follow again:
+    // terminals and phones.
+    let polled: Vec<_> = keep.into_iter().map(|(via, s)| (via, s.record())).collect();
+    let group = |phones: bool| -> Vec<student::Frames> {
+        idle.iter()
+            .chain(&polled)
+            .filter(|(via, _)| (*via == Via::Phone) == phones)
+            .map(|(_, (_, f))| Arc::clone(f))
+            .collect()
+    };
+    let groups = [
+        ("terminals (SSH and web)", group(false)),
+        ("phones", group(true)),
+    ];
     let led_from = Instant::now();
-    let led = lead::run(&lect, pid, &followers, &counts).await?;
+    let rss_led0 = proc_status(pid, "VmRSS");
+    let led = lead::run(&lect, pid, &groups, &counts).await?;
+    let rss_led = proc_status(pid, "VmRSS");
 
     // Idle sessions: bytes outside the poll's two moments, and within.
     let poll_window = |t: Instant| {
@@ -346,7 +369,7 @@ async fn run() -> anyhow::Result<()> {
         near(asked_sent) || near(revealed_sent)
     };
     let (mut outside, mut within, mut frames) = (0usize, 0usize, 0usize);
-    for (_, f) in &idle {
+    for (_, (_, f)) in &idle {
         // (Before the lecturer leads.)
         for (t, n) in f.lock().unwrap().iter().filter(|(t, _)| *t < led_from) {
             if poll_window(*t) {
@@ -367,15 +390,17 @@ async fn run() -> anyhow::Result<()> {
     ] {
         v.sort_by(f64::total_cmp);
     }
-    let n_idle = IDLE.0 + IDLE.1;
+    let n_idle: usize = IDLE.iter().sum();
     let total = TYPING.0 + TYPING.1 + n_polled + n_idle + 1;
     println!(
-        "sessions: a lecturer, {} typing (a key every {EVERY:?} for {RUN:?}; {} over the web), {n_polled} answering a poll at once ({} over the web), {n_idle} idle ({} over the web): {total} in all, {} over the web",
+        "sessions: a lecturer, {} typing (a key every {EVERY:?} for {RUN:?}; {} over the web), {n_polled} answering a poll at once ({} over the web, {} on phones), {n_idle} idle ({} over the web, {} on phones): {total} in all, {} on phones",
         TYPING.0 + TYPING.1,
         TYPING.1,
-        POLLED.1,
-        IDLE.1,
-        TYPING.1 + POLLED.1 + IDLE.1
+        POLLED[1],
+        POLLED[2],
+        IDLE[1],
+        IDLE[2],
+        POLLED[2] + IDLE[2]
     );
     let p = |v: &[f64]| {
         (
@@ -407,16 +432,26 @@ async fn run() -> anyhow::Result<()> {
         rev.last().copied().unwrap_or(f64::NAN),
     );
     let mb = |kb: u64| kb as f64 / 1024.0;
+    let per: Vec<String> = VIAS
+        .iter()
+        .enumerate()
+        .map(|(i, via)| {
+            format!(
+                "{:.1} MB with {} idle more over {via:?} ({:.2} MB each)",
+                mb(rss[i + 1]),
+                IDLE[i],
+                mb(rss[i + 1].saturating_sub(rss[i])) / IDLE[i] as f64
+            )
+        })
+        .collect();
     println!(
-        "server RSS: {:.1} MB with the lecturer, {:.1} MB with {} idle over SSH ({:.2} MB per idle session), {:.1} MB with {} more over the web ({:.2} MB per idle session), {:.1} MB peak with {total} sessions",
+        "server RSS: {:.1} MB with the lecturer, {}; {:.1} MB peak with {total} sessions ({:.2} MB a session); {:.1} MB before the lecturer led, {:.1} MB after",
         mb(rss0),
-        mb(rss_ssh),
-        IDLE.0,
-        mb(rss_ssh.saturating_sub(rss0)) / IDLE.0 as f64,
-        mb(rss_web),
-        IDLE.1,
-        mb(rss_web.saturating_sub(rss_ssh)) / IDLE.1 as f64,
+        per.join(", "),
         mb(rss_peak),
+        mb(rss_peak.saturating_sub(rss0)) / (total - 1) as f64,
+        mb(rss_led0),
+        mb(rss_led),
     );
     println!(
         "server CPU: {cpu:.1} s over {wall:.1} s ({:.0}% of one core)",

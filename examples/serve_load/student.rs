@@ -1,6 +1,7 @@
-//! A student of the load test, over SSH (a russh client) or over the web
-//! (a WebSocket client, as the page's xterm.js speaks to the server):
-//! keys in, frames out, the same to the caller.
+//! A student of the load test, over SSH (a russh client), over the web
+//! (a WebSocket client, as the page's xterm.js speaks to the server) or
+//! on a phone (the page's phone layout: its messages are the picture and
+//! the texts around it): keys in, frames out, the same to the caller.
 
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
@@ -15,7 +16,17 @@ use super::client;
 
 pub enum Student {
     Ssh(client::Client),
+    /// A terminal's page or a phone's: a frame is a binary message (the
+    /// terminal's bytes) or a text one (a phone's page).
     Web(Box<WebSocketStream<TcpStream>>),
+}
+
+/// How a student reaches the class.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Via {
+    Ssh,
+    Web,
+    Phone,
 }
 
 /// Every frame a session gets, with when and its bytes.
@@ -30,11 +41,29 @@ impl Student {
     }
 
     pub async fn web(port: u16, name: &str) -> anyhow::Result<Student> {
+        Student::page(port, name, "").await
+    }
+
+    /// A phone's page (upright: the picture's default shape).
+    pub async fn phone(port: u16, name: &str) -> anyhow::Result<Student> {
+        Student::page(port, name, "&layout=phone").await
+    }
+
+    async fn page(port: u16, name: &str, extra: &str) -> anyhow::Result<Student> {
         let stream = TcpStream::connect(("127.0.0.1", port)).await?;
         stream.set_nodelay(true)?;
-        let url = format!("ws://127.0.0.1:{port}/ws?name={name}&cols=100&rows=30");
+        let url = format!("ws://127.0.0.1:{port}/ws?name={name}&cols=100&rows=30{extra}");
         let (ws, _) = tokio_tungstenite::client_async(url, stream).await?;
         Ok(Student::Web(Box::new(ws)))
+    }
+
+    /// A student over `via`, at the SSH or the web port.
+    pub async fn new(via: Via, (ssh, web): (u16, u16), name: &str) -> anyhow::Result<Student> {
+        match via {
+            Via::Ssh => Student::ssh(ssh, name).await,
+            Via::Web => Student::web(web, name).await,
+            Via::Phone => Student::phone(web, name).await,
+        }
     }
 
     pub async fn send(&mut self, keys: &[u8]) -> anyhow::Result<()> {
@@ -57,6 +86,7 @@ impl Student {
                 },
                 Student::Web(ws) => match tokio::time::timeout_at(until, ws.next()).await {
                     Ok(Some(Ok(Message::Binary(b)))) => return Some(b.len()),
+                    Ok(Some(Ok(Message::Text(t)))) => return Some(t.len()),
                     Ok(Some(Ok(_))) => {}
                     _ => return None,
                 },
@@ -105,6 +135,9 @@ impl Student {
                             msg = ws.next() => match msg {
                                 Some(Ok(Message::Binary(b))) => {
                                     f.lock().unwrap().push((Instant::now(), b.len()));
+                                }
+                                Some(Ok(Message::Text(t))) => {
+                                    f.lock().unwrap().push((Instant::now(), t.len()));
                                 }
                                 Some(Ok(_)) => {}
                                 _ => return,

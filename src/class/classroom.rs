@@ -11,6 +11,7 @@ use super::lesson::{Lesson, LessonAt, StepLine, StepScene};
 use super::question::{Ask, Question};
 use super::scenes::SceneList;
 use super::view::{Asked, ClassView, Tally};
+use crate::figure::Withheld;
 
 /// The class as one explorer sees it: the lecturer's view, or a student's
 /// poll, and the value a lecturer typed for a poll (taken by the server).
@@ -45,6 +46,11 @@ pub struct Classroom {
     pub join_url: Option<String>,
     /// `Q`'s full-screen QR code is up (any key closes it).
     pub join_shown: bool,
+    /// The lecturer's projector view (`P`) is up.
+    pub projector: bool,
+    /// The poll's countdown on the projector (`t`): when it ends, and how
+    /// long it was.
+    pub countdown: Option<(std::time::Instant, std::time::Duration)>,
 }
 
 impl Classroom {
@@ -75,6 +81,21 @@ impl Classroom {
             Some(q) => q.ask != Ask::Typed,
             None => self.claims_hidden(),
         }
+    }
+
+    /// What a view of a scene (with the size-dependent hardness when
+    /// `size_effect`) leaves out: while a poll's answer waits, the marks
+    /// ([`Classroom::marks_hidden`]) and the curves whose drawing answers
+    /// it ([`Question::withheld`]): the open or pending poll's, or on a
+    /// lesson's step that hides its claims, the lesson's next poll's.
+    pub fn withheld(&self, size_effect: bool) -> Withheld {
+        let step = self.step.as_ref().filter(|s| s.left.is_none());
+        let q = self
+            .hidden_question()
+            .or_else(|| step.filter(|s| s.claims_hidden).and_then(|s| s.next));
+        let mut w = q.map_or(Withheld::NONE, |q| q.withheld(size_effect));
+        w.marks = self.marks_hidden();
+        w
     }
 
     /// Until when the marks wait, in words ("the reveal", "the lesson's
@@ -168,6 +189,7 @@ impl Classroom {
         if let Some(step) = self.step.as_mut() {
             step.left = Some(scene.to_string());
             step.pending = None;
+            step.next = None;
         }
     }
 
@@ -178,6 +200,7 @@ impl Classroom {
         if let Some(step) = self.step.as_mut() {
             step.pending = None;
             step.claims_hidden = false;
+            step.next = None;
             if step.left.is_none() {
                 if let Some(at) = self.lesson.as_mut() {
                     at.mark_revealed();

@@ -17,7 +17,8 @@ pub fn csv_field(s: &str) -> String {
 }
 
 /// The first line of a poll's CSV.
-pub const CSV_HEADER: &str = "question,quantity,unit,truth,name,answer,offset,step,time";
+pub const CSV_HEADER: &str =
+    "question,quantity,unit,truth,name,answer,offset,step,time,poll,revealed";
 
 /// A truth or an answer: the shortest digits that read back the same, or
 /// `nowhere` (a poll answered "nowhere in the sweep").

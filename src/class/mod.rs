@@ -37,9 +37,11 @@ pub use csv::CSV_HEADER;
 pub use glyphs::{ClassGlyphs, ASCII, UNICODE};
 pub use lesson::{Lesson, LessonAt, Step, StepLine, StepScene};
 pub use question::{fmt_value, Ask, Question, NOWHERE};
-pub use room::{clean_name, Class, Note, Poll, Refused, SeatId, NAME_CHARS};
+pub use room::{
+    clean_name, Arrival, Class, Note, Poll, Refused, SeatId, Taken, Transport, NAME_CHARS,
+};
 pub use shown::{ContactShown, Shown};
-pub use view::{duration, Asked, ClassView, Seat, SeatState, Tally, MIN_SIZE};
+pub use view::{duration, Asked, ClassView, Seat, SeatState, Tally, MIN_SIZE, WITHIN};
 
 #[cfg(test)]
 mod view_tests;

@@ -5,7 +5,7 @@
 use rough_model::Axis;
 
 use super::glyphs::ClassGlyphs;
-use crate::figure::{Claim, ClaimKind, View};
+use crate::figure::{Claim, ClaimKind, View, Withheld};
 use crate::physical::short_number;
 
 /// A value of `axis` to four digits, lengths in a readable unit: `321.5`,
@@ -34,6 +34,12 @@ pub struct Question {
     pub ask: Ask,
     /// The model's answer: the claim's bisection, or the typed value.
     pub truth: f64,
+    /// The scene asked about uses the size-dependent hardness (its index
+    /// is Ψ*, else Ψ_P).
+    pub size_effect: bool,
+    /// A reading question (a lesson's `read: true`): the answer is read
+    /// off the chart, whose curves then stay while it is open.
+    pub read: bool,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -58,7 +64,7 @@ impl Question {
     /// (each falling back on the other, then on the total slope's minimum,
     /// fig3's claim); `None` when the scene makes no claim (the lecturer
     /// then types the value).
-    pub fn of_claims(view: View, claims: &[Claim]) -> Option<Question> {
+    pub fn of_claims(view: View, claims: &[Claim], size_effect: bool) -> Option<Question> {
         let first = |kind| claims.iter().find(|c| c.kind == kind);
         let (a, b) = match view {
             View::Indices => (ClaimKind::IndexOne, ClaimKind::ShareHalf),
@@ -79,6 +85,8 @@ impl Question {
             axis: c.axis,
             ask,
             truth: c.at,
+            size_effect,
+            read: false,
         })
     }
 
@@ -112,6 +120,49 @@ impl Question {
             return "nowhere in the sweep".into();
         }
         format!("{} = {}", self.axis.symbol(), fmt_value(self.axis, v))
+    }
+
+    /// A value the lecturer typed for a poll on `axis`.
+    pub fn typed(axis: Axis, truth: f64) -> Question {
+        Question {
+            axis,
+            ask: Ask::Typed,
+            truth,
+            size_effect: false,
+            read: false,
+        }
+    }
+
+    /// What a view of a scene (using the size-dependent hardness when
+    /// `size_effect`) leaves out while this question's answer waits: the
+    /// marks, readouts and remarks (not for a typed value), and, unless
+    /// it is a reading question, the curves whose drawing answers it —
+    /// the plastic and total slopes for the share and the index (each
+    /// brackets the other), every slope for the total's minimum, on a
+    /// scene of the question's hardness; and the index of the question's
+    /// hardness (Ψ* with eq. 13, or Ψ_P), wherever it is drawn.
+    pub fn withheld(&self, size_effect: bool) -> Withheld {
+        if self.ask == Ask::Typed {
+            return Withheld::NONE;
+        }
+        let mut w = Withheld {
+            marks: true,
+            ..Withheld::NONE
+        };
+        if self.read {
+            return w;
+        }
+        let same = size_effect == self.size_effect;
+        match self.ask {
+            Ask::Minimum => w.slopes = [same; 4],
+            _ => w.slopes = [false, same, same, false],
+        }
+        w.indices = if self.size_effect {
+            [false, false, true, true]
+        } else {
+            [false, true, false, false]
+        };
+        w
     }
 
     /// Whether a student may answer "nowhere" (`0`).

@@ -21,6 +21,8 @@ pub struct Seat {
     pub marker: String,
     /// Since their last key.
     pub idle: Duration,
+    /// How they reach the class: `ssh`, `web` or `phone`.
+    pub via: &'static str,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -81,6 +83,63 @@ impl Tally {
     }
 }
 
+/// How close answers must come to the truth to count as right on the
+/// projector: within 10 % of it.
+pub const WITHIN: f64 = 0.1;
+
+impl Tally {
+    /// The median of the answers that name a value (the middle one, or
+    /// the mean of the two middle ones); `None` without any. "Nowhere"
+    /// answers are counted apart ([`Tally::nowhere`]).
+    pub fn median(&self) -> Option<f64> {
+        let mut v: Vec<f64> = self
+            .answers
+            .iter()
+            .copied()
+            .filter(|a| a.is_finite())
+            .collect();
+        if v.is_empty() {
+            return None;
+        }
+        v.sort_by(f64::total_cmp);
+        let n = v.len();
+        Some(if n % 2 == 1 {
+            v[n / 2]
+        } else {
+            // On a log axis the middle of two answers is their geometric
+            // mean (the point halfway between them on the chart).
+            let (a, b) = (v[n / 2 - 1], v[n / 2]);
+            if self.question.axis.is_log() && a > 0.0 && b > 0.0 {
+                (a * b).sqrt()
+            } else {
+                (a + b) / 2.0
+            }
+        })
+    }
+
+    /// The "nowhere in the sweep" answers.
+    pub fn nowhere(&self) -> usize {
+        self.answers.iter().filter(|a| **a == NOWHERE).count()
+    }
+
+    /// How many answers are within [`WITHIN`] of the truth (|answer −
+    /// truth| ≤ 10 % of the truth; a "nowhere" answer is right when the
+    /// truth is nowhere).
+    pub fn within(&self) -> usize {
+        let t = self.question.truth;
+        self.answers
+            .iter()
+            .filter(|&&a| {
+                if t == NOWHERE || a == NOWHERE {
+                    a == t
+                } else {
+                    (a - t).abs() <= WITHIN * t.abs()
+                }
+            })
+            .count()
+    }
+}
+
 /// What the lecturer's explorer shows about the class.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct ClassView {
@@ -120,10 +179,11 @@ impl ClassView {
                 plural(t.answers.len(), "answer", "answers")
             ));
         }
+        // (A phone draws no cells: its size is not a terminal's.)
         let small = self
             .seats
             .iter()
-            .filter(|s| s.size.0 < MIN_SIZE.0 || s.size.1 < MIN_SIZE.1)
+            .filter(|s| s.via != "phone" && (s.size.0 < MIN_SIZE.0 || s.size.1 < MIN_SIZE.1))
             .count();
         if small > 0 {
             parts.push(format!(

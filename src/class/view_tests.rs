@@ -9,24 +9,30 @@ use super::*;
 use crate::figure::View;
 
 fn q(axis: Axis, ask: Ask, truth: f64) -> Question {
-    Question { axis, ask, truth }
+    Question {
+        axis,
+        ask,
+        truth,
+        size_effect: false,
+        read: false,
+    }
 }
 
 #[test]
 fn the_question_follows_the_view_and_the_claims() {
     let claims = crate::figure::claims(&crate::presets::load("fig2").unwrap());
-    let s = Question::of_claims(View::Slopes, &claims).unwrap();
+    let s = Question::of_claims(View::Slopes, &claims, false).unwrap();
     assert_eq!(s.ask, Ask::Share { rising: true });
     assert_eq!(s.truth, claims[0].at);
     assert_eq!(s.text(&UNICODE), "where does the plastic share pass ½?");
-    let i = Question::of_claims(View::Indices, &claims).unwrap();
+    let i = Question::of_claims(View::Indices, &claims, false).unwrap();
     assert_eq!(i.text(&UNICODE), "where does Ψ_P reach 1?");
     assert_eq!(i.truth, claims[1].at);
     // fig3 claims only the total slope's minimum: that is the question,
     // on either view, its truth the claim's own number.
     let fig3 = crate::figure::claims(&crate::presets::load("fig3").unwrap());
     for view in [View::Slopes, View::Indices] {
-        let m = Question::of_claims(view, &fig3).unwrap();
+        let m = Question::of_claims(view, &fig3, false).unwrap();
         assert_eq!(m.ask, Ask::Minimum);
         assert_eq!((m.axis, m.truth), (Axis::Zeta, fig3[0].at));
         assert_eq!(m.text(&UNICODE), "where is the total slope smallest?");
@@ -34,14 +40,14 @@ fn the_question_follows_the_view_and_the_claims() {
     }
     // Elsewhere the minimum comes last: fig4 asks the share.
     let fig4 = crate::figure::claims(&crate::presets::load("fig4").unwrap());
-    let f = Question::of_claims(View::Slopes, &fig4).unwrap();
+    let f = Question::of_claims(View::Slopes, &fig4, false).unwrap();
     assert_eq!(f.ask, Ask::Share { rising: false });
     // No claim at all: the lecturer types the value.
-    assert_eq!(Question::of_claims(View::Slopes, &[]), None);
+    assert_eq!(Question::of_claims(View::Slopes, &[], false), None);
     // Only an index claim: the slopes view asks it.
     let only = [claims[1].clone()];
     assert_eq!(
-        Question::of_claims(View::Slopes, &only).map(|q| q.truth),
+        Question::of_claims(View::Slopes, &only, false).map(|q| q.truth),
         Some(claims[1].at)
     );
 }
@@ -84,6 +90,7 @@ fn the_class_line() {
         size,
         marker: "braille".into(),
         idle: Duration::ZERO,
+        via: "ssh",
     };
     let mut v = ClassView {
         seats: vec![
@@ -193,4 +200,40 @@ fn the_claims_row_gives_way_to_the_poll_then_to_a_lessons_question() {
     c.asked = Some(asked);
     assert_eq!(c.claims_row(), ClaimsRow::Asked(&asked));
     assert!(c.caption_waits());
+}
+
+#[test]
+fn the_projector_counts_the_median_and_the_answers_within_ten_percent() {
+    let tally = |axis, ask, truth, answers: &[f64]| Tally {
+        question: q(axis, ask, truth),
+        answers: answers.to_vec(),
+        asked: 10,
+        revealed: true,
+        sweep: rough_model::Sweep::new(axis, 1.0, 1e4).unwrap(),
+    };
+    let share = Ask::Share { rising: true };
+    // ζ (a log axis): 290 and 352 are within 10 % of 321.5, 289 is not.
+    let t = tally(
+        Axis::Zeta,
+        share,
+        321.5,
+        &[289.0, 290.0, 352.0, 1000.0, 10.0],
+    );
+    assert_eq!(t.median(), Some(290.0));
+    assert_eq!(t.within(), 2);
+    // An even count: halfway between the two middle ones on the chart.
+    let t = tally(Axis::Zeta, share, 321.5, &[100.0, 400.0, 10.0, 1e4]);
+    assert_eq!(t.median(), Some(200.0));
+    assert_eq!(t.within(), 0);
+    // "Nowhere" answers are counted apart, right when the truth is nowhere.
+    let t = tally(
+        Axis::Zeta,
+        Ask::ShareEver,
+        NOWHERE,
+        &[NOWHERE, NOWHERE, 50.0],
+    );
+    assert_eq!((t.median(), t.nowhere(), t.within()), (Some(50.0), 2, 2));
+    let t = tally(Axis::Zeta, Ask::ShareEver, 30.0, &[NOWHERE]);
+    assert_eq!((t.median(), t.within()), (None, 0));
+    assert_eq!(tally(Axis::Zeta, share, 1.0, &[]).median(), None);
 }

@@ -47,9 +47,6 @@ pub fn export(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
     if args.view == crate::cli::ViewArg::ContactConvergence {
         return export_convergence(args, out);
     }
-    if args.view == crate::cli::ViewArg::ContactSlopes {
-        return super::contact_slopes::export(args, out);
-    }
     let sweep = args.view == crate::cli::ViewArg::ContactSweep;
     let name = if sweep { "contact-sweep" } else { "contact" };
     for (given, opt) in [

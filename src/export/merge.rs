@@ -7,31 +7,15 @@
 
 use std::collections::HashMap;
 use std::io::Write;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use anyhow::{bail, Context};
 
 use super::lines::{items, pool, pool_not_solved, Item};
-use super::part::{parse_command, roles_from, Role, ShardLine, Table};
+use super::part::{not_pooled, parse_command, roles_from, Part, Role, ShardLine, Table};
 use crate::cli::MergeArgs;
 use crate::contact::Stat;
 use crate::physical::csv_number;
-
-/// One part as read.
-pub struct Part {
-    pub path: PathBuf,
-    pub table: Table,
-    pub shard: ShardLine,
-    /// The export's arguments that made it, and the folder it ran in.
-    pub command: Option<(String, Vec<String>)>,
-    pub roles: Vec<Role>,
-}
-
-impl Part {
-    fn name(&self) -> String {
-        self.path.display().to_string()
-    }
-}
 
 /// Reads the part at `path`.
 fn read(path: &Path) -> anyhow::Result<Part> {
@@ -410,22 +394,6 @@ fn pooled(roles: &[Role], g: &[(u64, &Vec<String>)]) -> Vec<String> {
             Role::NotPooled => String::new(),
         })
         .collect()
-}
-
-/// Refuses columns that the seeds' own values cannot give.
-pub fn not_pooled(columns: &[String], roles: &[Role]) -> anyhow::Result<()> {
-    if let Some((c, _)) = columns
-        .iter()
-        .zip(roles)
-        .find(|(_, r)| **r == Role::NotPooled)
-    {
-        bail!(
-            "the column {c} is a statistic of the seeds' means that their own rows cannot give \
-             (|the mean slope over one window − over another|): this view is not merged from \
-             parts"
-        );
-    }
-    Ok(())
 }
 
 /// The merged table of `parts`.

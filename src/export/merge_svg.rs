@@ -7,8 +7,7 @@
 use anyhow::{bail, Context};
 use clap::Parser;
 
-use super::merge::Part;
-use super::part::Table;
+use super::part::{Part, Table};
 use crate::cli::{Cli, Command, ExportArgs};
 use crate::contact::scene::SceneKey;
 use crate::figure::{ContactLoads, ContactSweep};

@@ -147,6 +147,7 @@ pub fn options_of(args: &ExportArgs) -> anyhow::Result<(View, FigureOptions)> {
             points: args.points.unwrap_or(DEFAULT_POINTS),
             grid: args.grid.unwrap_or(DEFAULT_GRID),
             map_y: args.map_y.map(Into::into),
+            ..FigureOptions::default()
         },
     ))
 }
@@ -194,6 +195,9 @@ pub fn run(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
     }
     if args.view == ViewArg::Surface {
         return surface::export(args, out);
+    }
+    if args.view == ViewArg::ContactSlopes {
+        return contact_slopes::export(args, out);
     }
     if args.view.figure().is_none() {
         return contact::export(args, out);

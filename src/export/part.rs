@@ -5,6 +5,8 @@
 //! columns' treatment follows their names, not a list of today's columns,
 //! so that a view's new columns merge without a change here.
 
+use std::path::PathBuf;
+
 use anyhow::{bail, Context};
 
 use crate::cli::Shard;
@@ -388,6 +390,38 @@ pub fn is_part_only(line: &str) -> bool {
 /// A scene line a part adds where its view's own lines do not name the
 /// scene in full (contact-convergence's).
 pub const SCENE: &str = "part scene: ";
+
+/// One part as read.
+pub struct Part {
+    pub path: PathBuf,
+    pub table: Table,
+    pub shard: ShardLine,
+    /// The export's arguments that made it, and the folder it ran in.
+    pub command: Option<(String, Vec<String>)>,
+    pub roles: Vec<Role>,
+}
+
+impl Part {
+    pub fn name(&self) -> String {
+        self.path.display().to_string()
+    }
+}
+
+/// Refuses columns that the seeds' own values cannot give.
+pub fn not_pooled(columns: &[String], roles: &[Role]) -> anyhow::Result<()> {
+    if let Some((c, _)) = columns
+        .iter()
+        .zip(roles)
+        .find(|(_, r)| **r == Role::NotPooled)
+    {
+        bail!(
+            "the column {c} is a statistic of the seeds' means that their own rows cannot give \
+             (|the mean slope over one window − over another|): this view is not merged from \
+             parts"
+        );
+    }
+    Ok(())
+}
 
 #[cfg(test)]
 mod tests {

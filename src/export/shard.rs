@@ -178,7 +178,7 @@ pub fn run(args: &ExportArgs, shard: Shard, out: &mut impl Write) -> anyhow::Res
             .with_context(|| format!("seed {seed}'s export"))?;
         if columns.is_none() {
             let all = [vec!["seed".to_string()], t.columns.clone()].concat();
-            super::merge::not_pooled(&all, &roles_of(&all))?;
+            super::part::not_pooled(&all, &roles_of(&all))?;
         }
         if columns.as_ref().is_some_and(|c| *c != t.columns) {
             bail!("seed {seed}'s export has other columns than the part's first seed's");

@@ -34,6 +34,7 @@ pub mod scene_text;
 mod series;
 mod spectrum;
 mod svg;
+mod withheld;
 
 pub use claims::{claims, shown_claims, Claim, ClaimKind, TRUNCATION_ZETA};
 pub use colour::{
@@ -49,6 +50,8 @@ pub use svg::{
     render_moments_svg, render_svg, sweep_span, ContactLoads, ContactMap, ContactSlopes,
     ContactSweep,
 };
+pub use svg::{phone_note, render_phone, render_phone_with, LegendEntry, Picture, UPRIGHT, WIDE};
+pub use withheld::{Withheld, INDICES, SLOPES};
 
 /// The views, named where the scene keeps the one shown.
 pub use crate::scene::View;
@@ -64,6 +67,8 @@ pub struct FigureOptions {
     pub grid: (usize, usize),
     /// The map's y axis; `None` picks [`MapSpec::default_y`].
     pub map_y: Option<Axis>,
+    /// What the picture leaves out while a poll's answer waits.
+    pub withheld: Withheld,
 }
 
 impl Default for FigureOptions {
@@ -72,6 +77,7 @@ impl Default for FigureOptions {
             points: 200,
             grid: DEFAULT_GRID,
             map_y: None,
+            withheld: Withheld::NONE,
         }
     }
 }

@@ -167,8 +167,36 @@ pub fn full_lines_of(state: &State, what: &str, span: String) -> Vec<String> {
     if let Some(s) = &state.surface {
         lines.push(format!("surface = {}", s.file_name()));
         lines.push(format!("sha256 = {}", s.measured.sha256));
+        lines.extend(grid_line(&s.measured.kind));
     }
     lines
+}
+
+/// The measured grid and its side lengths, as read: "grid = 192 × 192
+/// points over 5e-5 m × 5e-5 m (…)"; a PSD table has none.
+fn grid_line(kind: &rough_surface::Kind) -> Option<String> {
+    use rough_surface::Kind;
+    let map = |nx: usize, ny: usize, lx: f64, ly: f64| {
+        format!(
+            "grid = {nx} × {ny} points over {} m × {} m  (points along x × along y, sides \
+             Lx × Ly; spacing {} m × {} m)",
+            full(lx),
+            full(ly),
+            full(lx / nx as f64),
+            full(ly / ny as f64)
+        )
+    };
+    match *kind {
+        Kind::Map { nx, ny, lx, ly } | Kind::Profiles { nx, ny, lx, ly, .. } => {
+            Some(map(nx, ny, lx, ly))
+        }
+        Kind::Line { n, l } => Some(format!(
+            "grid = {n} points over {} m  (a line scan; spacing {} m)",
+            full(l),
+            full(l / n as f64)
+        )),
+        _ => None,
+    }
 }
 
 /// The scene in short: one line of parameters, one of what is computed

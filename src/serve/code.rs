@@ -1,17 +1,16 @@
 //! The class code (`--class-code WORD`, `--class-code-file F`) and the
 //! limit on wrong codes.
 //!
-//! Wrong codes are counted per address: [`WRONG_PER_MINUTE`] in a minute
-//! are answered as usual; past that the address waits a minute from its
-//! latest wrong code. A campus NAT puts a whole room behind one address,
-//! so waiting must not lock the room out: while an address waits, its
-//! codes are still checked, one every [`PACE`] in turn (a room of 60 is in
-//! within seconds), and a wrong one ends its connection at once with a line
-//! saying to wait. A guesser behind the room's address gets ten tries a
-//! second at most instead of as many as its connections allow; one with an
-//! address of its own gets five a minute, then ten a second while it waits.
+//! Codes are checked per address at a bounded rate ([`WrongCodes`]): a
+//! burst of [`BURST`], then [`PER_SECOND`] a second; a right code gives
+//! its check back, so only wrong codes use them up. A campus NAT puts a
+//! whole room behind one address, so the limit must not lock the room
+//! out: no queue of a guesser's codes stands before a student's (a code
+//! waits [`MAX_WAIT`] at most for its turn, past that it is refused
+//! unchecked at once with a line), and once the guesser stops, the room's
+//! codes are checked at once.
 
-use std::collections::{HashMap, VecDeque};
+use std::collections::HashMap;
 use std::net::IpAddr;
 use std::path::Path;
 use std::sync::Mutex;
@@ -73,35 +72,61 @@ impl ClassCode {
     }
 }
 
-/// Wrong codes an address may send in a minute before it waits.
-pub const WRONG_PER_MINUTE: usize = 5;
-/// The window wrong codes are counted in, and how long an address waits.
-pub const MINUTE: Duration = Duration::from_secs(60);
-/// While an address waits, one of its codes is checked per this much time.
-pub const PACE: Duration = Duration::from_millis(100);
-/// While an address waits, a code whose turn is further off than this is
-/// not taken at all.
-pub const MAX_AHEAD: Duration = Duration::from_secs(20);
+/// Wrong codes an address may send at once (a room's typos), and how
+/// many more it may send each second after that: the rate codes are
+/// checked at while an address sends wrong ones.
+pub const BURST: f64 = 10.0;
+pub const PER_SECOND: f64 = 10.0;
+/// While an address has no check left, a code waits this long at most for
+/// one (in turn); past that it is refused unchecked.
+pub const MAX_WAIT: Duration = Duration::from_millis(500);
+/// What the console counts: a wrong class code, and a code refused
+/// unchecked (its address sent wrong ones faster than they are checked).
+pub const WRONG: &str = "wrong class codes";
+pub const UNCHECKED: &str = "class codes refused unchecked (wrong ones came too fast)";
+
+/// The console's line when an address first sends wrong codes faster
+/// than they are checked.
+pub fn too_fast(ip: IpAddr) -> String {
+    format!(
+        "{ip} sends wrong class codes faster than {PER_SECOND} a second: \
+         codes past that are refused unchecked while it does"
+    )
+}
+
+/// What a student whose code was refused unchecked reads.
+pub fn wait_line(ip: IpAddr) -> String {
+    format!("too many wrong class codes from {ip}: try again in a moment")
+}
+
 /// Addresses remembered before the stale ones are dropped.
 const PRUNE_AT: usize = 4096;
 
 #[derive(Debug)]
 struct Address {
-    /// The wrong codes of the last minute.
-    wrong: VecDeque<Instant>,
-    /// Waiting until then.
-    until: Option<Instant>,
-    /// The next free turn while waiting.
+    /// Checks left (refilled at [`PER_SECOND`], at most [`BURST`]).
+    checks: f64,
+    /// When `checks` was last refilled.
+    at: Instant,
+    /// The next free turn while the address has no check left.
     next: Instant,
+    /// Whether the console was told this address ran out.
+    told: bool,
 }
 
 impl Address {
-    fn waiting(&self, now: Instant) -> bool {
-        self.until.is_some_and(|u| u > now)
+    fn refill(&mut self, now: Instant) {
+        let dt = now.saturating_duration_since(self.at).as_secs_f64();
+        self.checks = (self.checks + dt * PER_SECOND).min(BURST);
+        self.at = now;
+        if self.checks >= BURST {
+            self.told = false;
+        }
     }
 
     fn stale(&self, now: Instant) -> bool {
-        !self.waiting(now) && self.wrong.back().is_none_or(|t| now - *t >= MINUTE)
+        self.checks + now.saturating_duration_since(self.at).as_secs_f64() * PER_SECOND >= BURST
+            && self.next <= now
     }
 }
 
@@ -109,13 +134,18 @@ impl Address {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Turn {
     Now,
-    /// The address waits: at this instant.
+    /// The address has no check left: at this instant (within [`MAX_WAIT`]).
     At(Instant),
-    /// The address waits and its queue is too long: not at all.
-    Refused,
+    /// The address has no check left for [`MAX_WAIT`]: not at all (the
+    /// code is refused unchecked; `true` the first time, for the console).
+    Refused(bool),
 }
 
-/// The wrong codes per address, shared by all connections.
+/// The wrong codes per address, shared by all connections: each check of
+/// a code takes one of the address's checks, a right code gives it back.
+/// So a room behind one address gets in however many codes a guesser there
+/// sends (a right code waits [`MAX_WAIT`] at most, and none once the
+/// guesser stops), and a guesser gets [`PER_SECOND`] tries a second.
 #[derive(Debug, Default)]
 pub struct WrongCodes(Mutex<HashMap<IpAddr, Address>>);
 
@@ -126,10 +156,12 @@ impl WrongCodes {
             m.retain(|_, a| !a.stale(now));
         }
         let a = m.entry(ip).or_insert_with(|| Address {
-            wrong: VecDeque::new(),
-            until: None,
+            checks: BURST,
+            at: now,
             next: now,
+            told: false,
         });
+        a.refill(now);
         let out = f(a);
         if a.stale(now) {
             m.remove(&ip);
@@ -137,41 +169,30 @@ impl WrongCodes {
         out
     }
 
-    /// The turn of a code from `ip` that arrived at `now`.
+    /// The turn of a code from `ip` that arrived at `now`: its check is
+    /// taken (give it back with [`WrongCodes::right`]).
     pub fn turn(&self, ip: IpAddr, now: Instant) -> Turn {
         self.with(ip, now, |a| {
-            if !a.waiting(now) {
+            if a.checks >= 1.0 && a.next <= now {
+                a.checks -= 1.0;
                 return Turn::Now;
             }
-            let at = a.next.max(now);
-            if at - now > MAX_AHEAD {
-                return Turn::Refused;
+            // In turn, one per 1/PER_SECOND, while the wait is short.
+            let pace = Duration::from_secs_f64(1.0 / PER_SECOND);
+            let at = a.next.max(now + pace.mul_f64((1.0 - a.checks).max(0.0)));
+            if at - now > MAX_WAIT {
+                let first = !std::mem::replace(&mut a.told, true);
+                return Turn::Refused(first);
             }
-            a.next = at + PACE;
+            a.next = at + pace;
+            a.checks -= 1.0;
             Turn::At(at)
         })
     }
 
-    /// A wrong code from `ip` at `now`; whether the address now waits.
-    pub fn wrong(&self, ip: IpAddr, now: Instant) -> bool {
-        self.with(ip, now, |a| {
-            while a.wrong.front().is_some_and(|t| now - *t >= MINUTE) {
-                a.wrong.pop_front();
-            }
-            a.wrong.push_back(now);
-            if a.wrong.len() > WRONG_PER_MINUTE {
-                a.wrong.pop_front();
-            }
-            if a.wrong.len() >= WRONG_PER_MINUTE {
-                a.until = Some(now + MINUTE);
-            }
-            a.waiting(now)
-        })
-    }
-
-    /// Whether `ip` waits at `now`.
-    pub fn waiting(&self, ip: IpAddr, now: Instant) -> bool {
-        self.with(ip, now, |a| a.waiting(now))
+    /// The code checked was right: its check is given back.
+    pub fn right(&self, ip: IpAddr, now: Instant) {
+        self.with(ip, now, |a| a.checks = (a.checks + 1.0).min(BURST));
     }
 }
 
@@ -210,53 +231,55 @@ mod tests {
     }
 
     #[test]
-    fn five_wrong_codes_a_minute_then_the_address_waits_but_is_not_shut() {
+    fn a_guesser_gets_ten_checks_a_second_and_the_room_gets_in_once_it_stops() {
         let w = WrongCodes::default();
         let ip: IpAddr = "10.0.0.1".parse().unwrap();
         let other: IpAddr = "10.0.0.2".parse().unwrap();
         let t0 = Instant::now();
-        for i in 0..4 {
-            assert!(!w.wrong(ip, t0 + Duration::from_secs(i)));
-            assert_eq!(w.turn(ip, t0 + Duration::from_secs(i)), Turn::Now);
-        }
-        let t5 = t0 + Duration::from_secs(4);
-        assert!(w.wrong(ip, t5));
-        // Waiting: codes are checked in turn, PACE apart.
-        assert_eq!(w.turn(ip, t5), Turn::At(t5));
-        assert_eq!(w.turn(ip, t5), Turn::At(t5 + PACE));
-        assert_eq!(w.turn(ip, t5), Turn::At(t5 + 2 * PACE));
+        // A burst of 200 wrong codes at once: ten checked now, five more
+        // within the next half second in turn, the rest refused unchecked.
+        let turns: Vec<Turn> = (0..200).map(|_| w.turn(ip, t0)).collect();
+        let now = turns.iter().filter(|t| **t == Turn::Now).count();
+        let later: Vec<Instant> = turns
+            .iter()
+            .filter_map(|t| match t {
+                Turn::At(i) => Some(*i),
+                _ => None,
+            })
+            .collect();
+        assert_eq!(now, 10);
+        assert_eq!(later.len(), 5);
+        assert!(later
+            .windows(2)
+            .all(|p| p[1] - p[0] == Duration::from_millis(100)));
+        assert!(*later.last().unwrap() - t0 <= MAX_WAIT);
+        assert_eq!(turns[15], Turn::Refused(true));
+        assert_eq!(turns[16], Turn::Refused(false));
         // Another address is not slowed.
-        assert_eq!(w.turn(other, t5), Turn::Now);
-        // A queue longer than MAX_AHEAD is not taken.
-        let mut refused = false;
-        for _ in 0..400 {
-            if w.turn(ip, t5) == Turn::Refused {
-                refused = true;
-                break;
-            }
+        assert_eq!(w.turn(other, t0), Turn::Now);
+        // Once the guesser stops, a student's right code is checked within
+        // half a second (the turns taken), then at once; it costs no check.
+        let t1 = t0 + Duration::from_millis(600);
+        match w.turn(ip, t1) {
+            Turn::Now => {}
+            Turn::At(at) => assert!(at - t1 <= Duration::from_millis(200), "{:?}", at - t1),
+            t => panic!("{t:?}"),
         }
-        assert!(refused);
-        // The wait ends a minute after the latest wrong code…
-        assert!(w.waiting(ip, t5 + MINUTE - Duration::from_millis(1)));
-        assert!(!w.waiting(ip, t5 + MINUTE));
-        assert_eq!(w.turn(ip, t5 + MINUTE), Turn::Now);
-        // …and a wrong code while waiting extends it.
-        let w = WrongCodes::default();
-        for i in 0..5 {
-            w.wrong(ip, t0 + Duration::from_secs(i));
+        w.right(ip, t1);
+        let t2 = t0 + Duration::from_secs(3);
+        for _ in 0..30 {
+            assert_eq!(w.turn(ip, t2), Turn::Now);
+            w.right(ip, t2);
         }
-        w.wrong(ip, t0 + Duration::from_secs(50));
-        assert!(w.waiting(ip, t0 + Duration::from_secs(100)));
-        assert!(!w.waiting(ip, t0 + Duration::from_secs(110)));
     }
 
     #[test]
-    fn wrong_codes_spread_over_minutes_never_wait() {
+    fn a_few_wrong_codes_a_second_never_wait() {
         let w = WrongCodes::default();
         let ip: IpAddr = "10.0.0.1".parse().unwrap();
         let t0 = Instant::now();
-        for i in 0..50 {
-            assert!(!w.wrong(ip, t0 + Duration::from_secs(15 * i)));
+        for i in 0..500 {
+            assert_eq!(w.turn(ip, t0 + Duration::from_millis(150 * i)), Turn::Now);
         }
     }
 }

@@ -44,10 +44,12 @@ fn shared_with(state: crate::scene::State) -> Arc<Shared> {
         ending: watch::Sender::new(false),
         all_follow: watch::Sender::new(0),
         lesson: None,
-        lesson_csv: Mutex::new(None),
+        lesson_csv: Mutex::default(),
         seats: Limits::new(100, 100),
         join_url: None,
         frames: Frames::default(),
+        pictures: Default::default(),
+        refusals: Default::default(),
     })
 }
 
@@ -149,12 +151,16 @@ impl Client {
                 slot,
                 bye: Bye::default(),
                 via: " over the web",
+                render: crate::serve::session::Render::Terminal,
+                notes: None,
             },
             role,
             size,
             name: "s".into(),
             addr: IpAddr::V4(Ipv4Addr::LOCALHOST),
             client,
+            transport: crate::class::Transport::Web,
+            token: None,
         });
         let screen = Arc::new(Mutex::new(Screen::new(size)));
         let s = Arc::clone(&screen);

@@ -35,8 +35,6 @@ pub struct Handler {
     peer: SocketAddr,
     /// The connection, to disconnect it with a reason the client prints.
     conn: Arc<OnceLock<russh::server::Handle>>,
-    /// Over a limit: nobody is let in, the connection is only told why.
-    turned_away: bool,
     /// The user name the connection logged in with.
     user: String,
     /// Wrong class codes on this connection.
@@ -78,7 +76,6 @@ impl Handler {
             kill,
             peer,
             conn,
-            turned_away: false,
             user: String::new(),
             wrong: 0,
             role: None,
@@ -91,12 +88,6 @@ impl Handler {
             seat: None,
             full: None,
         }
-    }
-
-    /// A handler that lets nobody in.
-    pub fn turned_away(mut self) -> Handler {
-        self.turned_away = true;
-        self
     }
 
     /// Ends the connection with `why`, which OpenSSH prints ("Received
@@ -158,9 +149,6 @@ impl russh::server::Handler for Handler {
     type Error = Error;
 
     async fn auth_none(&mut self, user: &str) -> Result<Auth, Error> {
-        if self.turned_away {
-            return Ok(Auth::reject());
-        }
         let code = self.shared.class_code.is_some();
         if !code && self.shared.lecturer_keys.admits_student(user) {
             return Ok(self.student(user));
@@ -184,7 +172,7 @@ impl russh::server::Handler for Handler {
         let Some(code) = self.shared.class_code.clone() else {
             return Ok(Auth::reject());
         };
-        if self.turned_away || !self.shared.lecturer_keys.admits_student(user) {
+        if !self.shared.lecturer_keys.admits_student(user) {
             return Ok(Auth::Reject {
                 proceed_with_methods: Some(self.methods_for(user)),
                 partial_success: false,
@@ -205,31 +193,24 @@ impl russh::server::Handler for Handler {
         let typed = response.next().unwrap_or_default();
         let ip = self.peer.ip();
         let wrongs = &self.shared.wrong_codes;
-        let wait = format!("too many wrong class codes from {ip}: wait a minute");
         match wrongs.turn(ip, std::time::Instant::now()) {
             Turn::Now => {}
             Turn::At(t) => tokio::time::sleep_until(t.into()).await,
-            Turn::Refused => {
-                self.disconnect(wait);
+            Turn::Refused(first) => {
+                if first {
+                    self.shared.log.line(&super::code::too_fast(ip));
+                }
+                self.shared.refusals.count(super::code::UNCHECKED);
+                self.disconnect(super::code::wait_line(ip));
                 return Ok(Auth::reject());
             }
         }
         if code.matches(&typed) {
+            wrongs.right(ip, std::time::Instant::now());
             return Ok(self.student(user));
         }
         self.wrong += 1;
-        let now = std::time::Instant::now();
-        let was = wrongs.waiting(ip, now);
-        if wrongs.wrong(ip, now) {
-            if !was {
-                self.shared.log.line(&format!(
-                    "{ip} sent {} wrong class codes in a minute: its codes wait their turn",
-                    super::code::WRONG_PER_MINUTE
-                ));
-            }
-            // The address waits: this connection tries no more.
-            self.disconnect(wait);
-        }
+        self.shared.refusals.count(super::code::WRONG);
         Ok(Auth::Reject {
             proceed_with_methods: Some(self.methods_for(user)),
             partial_success: false,
@@ -237,9 +218,6 @@ impl russh::server::Handler for Handler {
     }
 
     async fn auth_publickey_offered(&mut self, user: &str, key: &PublicKey) -> Result<Auth, Error> {
-        if self.turned_away {
-            return Ok(Auth::reject());
-        }
         Ok(if self.shared.lecturer_keys.admits(user, key) {
             Auth::Accept
         } else {
@@ -248,7 +226,7 @@ impl russh::server::Handler for Handler {
     }
 
     async fn auth_publickey(&mut self, user: &str, key: &PublicKey) -> Result<Auth, Error> {
-        if !self.turned_away && self.shared.lecturer_keys.admits(user, key) {
+        if self.shared.lecturer_keys.admits(user, key) {
             self.role = Some(Role::Lecturer);
             self.user = user.to_string();
             return Ok(Auth::Accept);
@@ -324,6 +302,8 @@ impl russh::server::Handler for Handler {
             name: std::mem::take(&mut self.user),
             addr: self.peer.ip(),
             client: std::mem::take(&mut self.client),
+            transport: crate::class::Transport::Ssh,
+            token: None,
         });
         Ok(())
     }

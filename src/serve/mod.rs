@@ -10,6 +10,7 @@ pub mod banner;
 pub mod code;
 pub mod follow;
 pub mod frames;
+pub mod gate;
 pub mod handler;
 pub mod host_key;
 pub mod input;
@@ -85,13 +86,6 @@ pub struct Options {
     pub simulate: crate::cli::Simulate,
 }
 
-/// Connections over a limit that are still told so (the class is full),
-/// in all and per address; past these they are closed unanswered.
-pub const TURNED_AWAY: (usize, usize) = (16, 4);
-
-/// How long a turned-away connection is kept to be told why.
-pub const TURN_AWAY_TIME: Duration = Duration::from_secs(10);
-
 /// What every connection shares.
 pub struct Shared {
     /// The contact solver every explorer of the class shares.
@@ -117,9 +111,9 @@ pub struct Shared {
     lecturers: AtomicUsize,
     /// The poll CSVs written.
     saved: Mutex<Vec<PathBuf>>,
-    /// The lesson the lecturer leads, and its polls' CSV once written.
+    /// The lesson the lecturer leads, and its polls' CSV.
     pub lesson: Option<Arc<crate::class::Lesson>>,
-    pub lesson_csv: Mutex<Option<PathBuf>>,
+    pub lesson_csv: Mutex<poll::LessonCsv>,
     /// Moves on each lecturer's `F`: every student follows again.
     pub all_follow: watch::Sender<u64>,
     /// Set when the server stops: every session says goodbye.
@@ -132,6 +126,10 @@ pub struct Shared {
     pub join_url: Option<String>,
     /// The frames students at one screen share.
     pub frames: frames::Frames,
+    /// The pages phones that show one scene share.
+    pub pictures: web::phone::Pictures,
+    /// What was refused, for the console's line each second.
+    pub refusals: Arc<gate::Refusals>,
 }
 
 impl Shared {
@@ -199,15 +197,34 @@ struct Ssh {
     key_line: String,
 }
 
+/// The kernel's send buffer each connection gets (Linux doubles it for
+/// its own bookkeeping): what waits for a client that stops reading is
+/// bounded by it (with the client's own receive buffer) instead of the
+/// megabytes the kernel would otherwise grow it to, and such a client
+/// stalls a frame, and is let go ([`output::STALL`]), that much sooner.
+/// 64 KiB carries a terminal's frames at 12 MB/s over a 10 ms path.
+pub const SEND_BUFFER: u32 = 64 * 1024;
+
+/// A listener whose connections get [`SEND_BUFFER`] (they inherit it).
+fn bind(addr: SocketAddr) -> std::io::Result<TcpListener> {
+    let s = if addr.is_ipv4() {
+        tokio::net::TcpSocket::new_v4()?
+    } else {
+        tokio::net::TcpSocket::new_v6()?
+    };
+    s.set_reuseaddr(true)?;
+    s.set_send_buffer_size(SEND_BUFFER)?;
+    s.bind(addr)?;
+    s.listen(1024)
+}
+
 async fn ssh(opts: &Options, listen: SocketAddr) -> anyhow::Result<Ssh> {
     let key_path = match &opts.host_key {
         Some(p) => p.clone(),
         None => host_key::default_path()?,
     };
     let (key, generated) = host_key::load_or_create(&key_path)?;
-    let listener = TcpListener::bind(listen)
-        .await
-        .with_context(|| format!("cannot listen on {listen}"))?;
+    let listener = bind(listen).with_context(|| format!("cannot listen on {listen}"))?;
     let key_line = format!(
         "host key {} ({}): {}",
         key_path.display(),
@@ -247,11 +264,7 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         None => None,
     };
     let web = match opts.web {
-        Some(a) => Some(
-            TcpListener::bind(a)
-                .await
-                .with_context(|| format!("cannot listen on {a} for the web"))?,
-        ),
+        Some(a) => Some(bind(a).with_context(|| format!("cannot listen on {a} for the web"))?),
         None => None,
     };
     let web_addr = web.as_ref().map(TcpListener::local_addr).transpose()?;
@@ -288,31 +301,40 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         ending: watch::Sender::new(false),
         all_follow: watch::Sender::new(0),
         lesson: opts.lesson.map(Arc::new),
-        lesson_csv: Mutex::new(None),
+        lesson_csv: Mutex::default(),
         seats: Limits::new(opts.max_sessions, opts.max_per_address),
         join_url: join_url.as_ref().map(|u| u.url.clone()),
         frames: frames::Frames::default(),
+        pictures: web::phone::Pictures::default(),
+        refusals: Arc::default(),
     });
     if shared.log.on() {
         tokio::spawn(summaries(Arc::clone(&shared)));
     }
-    // Connections: the students' places and the lecturer's on top (a
-    // student past the students' limit is told at login, see `seats`).
-    let limits = Limits::new(
-        opts.max_sessions + LECTURER_PLACES,
-        opts.max_per_address + LECTURER_PLACES,
-    );
-    // The web's connections: a page's files and each student's WebSocket
-    // (a class behind one address loads its pages at once).
-    let web_conns = Limits::new(2 * opts.max_sessions + 32, 2 * opts.max_per_address + 16);
-    let turned_away = Limits::new(TURNED_AWAY.0, TURNED_AWAY.1);
+    // Connections that have not logged in (SSH) or sent a request (the
+    // web) wait at a gate, each transport's own; a student's place is
+    // taken at login (SSH) or join (the web), see `seats`. Open
+    // connections are counted for the goodbye.
+    let ssh_gate = gate::Gate::new(gate::WAITING, Arc::clone(&shared.refusals));
+    let web_gate = gate::Gate::new(gate::WAITING, Arc::clone(&shared.refusals));
+    let live = Limits::new(usize::MAX, usize::MAX);
+    if shared.log.on() {
+        tokio::spawn(refusals(
+            Arc::clone(&shared),
+            [ssh_gate.clone(), web_gate.clone()],
+        ));
+    }
     let login = login_deadline();
     let mut stop = Stop::new()?;
     // The banner, once everything is set up (signals caught, the contact
     // engine's threads started, no file open for set-up): a server that has
     // printed it holds only what it keeps. A console that is gone (a closed
     // pipe) does not stop the server.
-    let mut extra = Vec::new();
+    let mut extra = vec![format!(
+        "at most {} students at once, {} from one address (--max-sessions, --max-per-address)",
+        shared.seats.max_sessions(),
+        shared.seats.max_per_address()
+    )];
     if shared.class_code.is_some() {
         extra.push("class code: on (students type it at \"class code:\")".to_string());
     }
@@ -350,7 +372,12 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
     let _ = out.flush();
     drop(out);
     if let Some(listener) = web {
-        tokio::spawn(web::serve(listener, Arc::clone(&shared), web_conns.clone()));
+        tokio::spawn(web::serve(
+            listener,
+            Arc::clone(&shared),
+            web_gate.clone(),
+            live.clone(),
+        ));
     }
     let ssh_listener = ssh.as_ref().map(|s| &s.listener);
     loop {
@@ -375,36 +402,19 @@ async fn serve(opts: Options) -> anyhow::Result<()> {
         let _ = socket.set_nodelay(true);
         let config = Arc::clone(&ssh.config);
         let shared = Arc::clone(&shared);
-        match limits.enter(peer.ip()) {
-            Ok(permit) => {
-                tokio::spawn(async move {
-                    let _permit = permit;
-                    connection(config, shared, socket, peer, login).await;
-                });
-            }
-            // Over a limit: told so over SSH while few are, else closed at
-            // once, before any SSH is spoken.
-            Err(full) => {
-                let Ok(permit) = turned_away.enter(peer.ip()) else {
-                    drop(socket);
-                    continue;
-                };
-                let why = full_text(full, &shared.seats, peer.ip());
-                tokio::spawn(async move {
-                    let _permit = permit;
-                    turn_away(config, shared, socket, peer, why).await;
-                });
-            }
-        }
+        let place = ssh_gate.enter(peer.ip());
+        let Ok(permit) = live.enter(peer.ip()) else {
+            continue;
+        };
+        tokio::spawn(async move {
+            let _permit = permit;
+            connection(config, shared, socket, peer, login, place).await;
+        });
     }
     drop(ssh);
-    goodbye(&shared, &[&limits, &web_conns]).await;
+    goodbye(&shared, &live, &[&ssh_gate, &web_gate]).await;
     Ok(())
 }
-
-/// Connections beyond `--max-sessions` (and `--max-per-address`) kept for
-/// the lecturer's key: the lecturer always gets in.
-pub const LECTURER_PLACES: usize = 2;
 
 /// How long the server waits for its sessions to say goodbye when it stops.
 pub const GOODBYE_TIME: Duration = Duration::from_secs(6);
@@ -450,12 +460,15 @@ impl Stop {
 /// the alternate screen, cursor shown, colours reset, "the class has
 /// ended") and closes; after at most [`GOODBYE_TIME`] the console's
 /// summary.
-async fn goodbye(shared: &Shared, limits: &[&Limits]) {
+async fn goodbye(shared: &Shared, live: &Limits, gates: &[&gate::Gate]) {
     // An open poll's answers are not lost with the class.
     let open = poll::save_open(shared);
     shared.ending.send_replace(true);
+    for g in gates {
+        g.close_all();
+    }
     let until = tokio::time::Instant::now() + GOODBYE_TIME;
-    while limits.iter().any(|l| l.open() > 0) && tokio::time::Instant::now() < until {
+    while live.open() > 0 && tokio::time::Instant::now() < until {
         tokio::time::sleep(Duration::from_millis(50)).await;
     }
     let saved = shared.saved.lock().map(|s| s.clone()).unwrap_or_default();
@@ -469,6 +482,19 @@ async fn goodbye(shared: &Shared, limits: &[&Limits]) {
     let _ = out.flush();
 }
 
+/// The console's line on what was refused, each second something was.
+async fn refusals(shared: Arc<Shared>, gates: [gate::Gate; 2]) {
+    let mut tick = tokio::time::interval(Duration::from_secs(1));
+    tick.set_missed_tick_behavior(tokio::time::MissedTickBehavior::Delay);
+    loop {
+        tick.tick().await;
+        let waiting = gates.iter().map(gate::Gate::waiting).sum();
+        if let Some(line) = shared.refusals.line(waiting) {
+            shared.log.line(&line);
+        }
+    }
+}
+
 /// The console's summary, each minute while students are connected.
 async fn summaries(shared: Arc<Shared>) {
     let every = log::summary_every();
@@ -478,49 +504,16 @@ async fn summaries(shared: Arc<Shared>) {
         tick.tick().await;
         if let Some(line) = shared.class.summary() {
             shared.log.line(&line);
-            shared.log.line(&shared.frames.summary());
+            let (drawn, taken) = shared.pictures.counts();
+            let mut frames = shared.frames.summary();
+            if drawn > 0 {
+                frames.push_str(&format!(
+                    "; phones: {drawn} pages drawn, taken {taken} times by others"
+                ));
+            }
+            shared.log.line(&frames);
         }
     }
-}
-
-/// A connection over a limit: SSH up to the key exchange, then a
-/// disconnect whose text the client prints ("Received disconnect from …:
-/// the class is full …").
-async fn turn_away(
-    config: Arc<russh::server::Config>,
-    shared: Arc<Shared>,
-    socket: tokio::net::TcpStream,
-    peer: SocketAddr,
-    why: String,
-) {
-    let (socket, kill) = stream::Killable::new(socket);
-    let handler = handler::Handler::new(
-        Arc::clone(&shared),
-        Arc::new(Notify::new()),
-        kill.clone(),
-        peer,
-        Arc::new(OnceLock::new()),
-    )
-    .turned_away();
-    let run = async {
-        let Ok(running) = russh::server::run_stream(config, socket, handler).await else {
-            return;
-        };
-        let handle = running.handle();
-        let _ = handle
-            .disconnect(
-                russh::Disconnect::TooManyConnections,
-                why.clone(),
-                String::new(),
-            )
-            .await;
-        let _ = running.await;
-    };
-    let _ = tokio::time::timeout(TURN_AWAY_TIME, run).await;
-    kill.kill();
-    shared
-        .log
-        .line(&format!("turned away {}: {why}", peer.ip()));
 }
 
 async fn connection(
@@ -529,9 +522,12 @@ async fn connection(
     socket: tokio::net::TcpStream,
     peer: SocketAddr,
     login: Duration,
+    place: gate::Place,
 ) {
     let started = Arc::new(Notify::new());
     let (socket, kill) = stream::Killable::new(socket);
+    // The gate cuts a connection it closes to make room.
+    place.knock.cuts(kill.clone());
     let conn = Arc::new(OnceLock::new());
     let handler = handler::Handler::new(
         shared,
@@ -551,7 +547,7 @@ async fn connection(
     tokio::pin!(running);
     tokio::select! {
         _ = &mut running => return,
-        () = started.notified() => {}
+        () = started.notified() => drop(place),
         () = tokio::time::sleep_until(deadline) => {
             let _ = tokio::time::timeout(
                 Duration::from_secs(2),

@@ -7,19 +7,18 @@
 
 use std::io::{self, Write};
 use std::sync::{Arc, Mutex};
-use std::time::Duration;
 
 use crossterm::cursor::Show;
 use crossterm::style::{Attribute, ResetColor, SetAttribute};
 use crossterm::terminal::LeaveAlternateScreen;
+use ratatui::buffer::Buffer;
+use ratatui::style::Modifier;
 use russh::server::{Handle, Msg};
 use russh::{ChannelWriteHalf, Disconnect};
 use tokio::sync::mpsc;
 
 use super::stream::Kill;
-
-/// How long a client may take to accept one frame.
-pub const STALL: Duration = Duration::from_secs(5);
+pub use super::stream::STALL;
 
 /// A byte sink the explorer's terminal backend writes frames into.
 #[derive(Clone, Debug, Default)]
@@ -71,11 +70,17 @@ pub type Slot = mpsc::Sender<Vec<u8>>;
 /// snapshot), where leaving the alternate screen again would put the
 /// cursor back where the session began, over the snapshot.
 #[derive(Clone, Debug, Default)]
-pub struct Bye(Arc<Mutex<(Option<String>, bool)>>);
+pub struct Bye(Arc<Mutex<(Option<String>, bool)>>, Arc<Mutex<Vec<String>>>);
 
 impl Bye {
     pub fn set(&self, why: impl Into<String>) {
         self.0.lock().unwrap_or_else(|p| p.into_inner()).0 = Some(why.into());
+    }
+
+    /// Lines the client's normal screen keeps above the goodbye (who the
+    /// student was in the class, their polls' results).
+    pub fn keep(&self, lines: Vec<String>) {
+        *self.1.lock().unwrap_or_else(|p| p.into_inner()) = lines;
     }
 
     /// The session printed on the normal screen (`true`) or went back to
@@ -92,7 +97,8 @@ impl Bye {
     /// The goodbye's bytes for the terminal as it is now.
     pub fn bytes(&self) -> Vec<u8> {
         let (why, normal) = std::mem::take(&mut *self.0.lock().unwrap_or_else(|p| p.into_inner()));
-        goodbye(why.as_deref(), !normal)
+        let kept = std::mem::take(&mut *self.1.lock().unwrap_or_else(|p| p.into_inner()));
+        goodbye_keeping(why.as_deref(), !normal, &kept)
     }
 }
 
@@ -101,15 +107,84 @@ impl Bye {
 /// attributes reset, then `why` (if the server ended it) on a line of its
 /// own.
 pub fn goodbye(why: Option<&str>, alt: bool) -> Vec<u8> {
+    goodbye_keeping(why, alt, &[])
+}
+
+/// [`goodbye`] with `kept` lines above the line that says why.
+pub fn goodbye_keeping(why: Option<&str>, alt: bool, kept: &[String]) -> Vec<u8> {
     let mut bye = Vec::new();
     if alt {
         let _ = crossterm::execute!(bye, LeaveAlternateScreen);
     }
     let _ = crossterm::execute!(bye, Show, ResetColor, SetAttribute(Attribute::Reset));
-    if let Some(why) = why {
-        bye.extend_from_slice(format!("\r\nroughtui: {why}\r\n").as_bytes());
+    for l in kept {
+        bye.extend_from_slice(format!("\r\n{l}").as_bytes());
+    }
+    match why {
+        Some(why) => bye.extend_from_slice(format!("\r\nroughtui: {why}\r\n").as_bytes()),
+        None if !kept.is_empty() => bye.extend_from_slice(b"\r\n"),
+        None => {}
     }
     bye
+}
+
+/// The screen `buf` shows as lines for the normal screen: each row's
+/// text in its colours and attributes (reset at the row's end), blanks at
+/// the end of a row left out. The class's goodbye keeps the last screen
+/// above its line, so a student can still read the chart and the result.
+pub fn screen_lines(buf: &Buffer) -> Vec<String> {
+    use crossterm::style::{SetBackgroundColor, SetForegroundColor};
+    use ratatui::backend::IntoCrossterm;
+    let (w, h) = (buf.area.width, buf.area.height);
+    let mut lines = Vec::with_capacity(usize::from(h));
+    for y in 0..h {
+        let row: Vec<&ratatui::buffer::Cell> = (0..w).filter_map(|x| buf.cell((x, y))).collect();
+        // The last cell that shows something (text, or a background).
+        let end = row
+            .iter()
+            .rposition(|c| c.symbol() != " " || c.bg != ratatui::style::Color::Reset)
+            .map_or(0, |i| i + 1);
+        let mut line = Vec::new();
+        let mut style = None;
+        let mut skip = 0;
+        for c in &row[..end] {
+            if skip > 0 {
+                skip -= 1;
+                continue;
+            }
+            let now = (c.fg, c.bg, c.modifier);
+            if style != Some(now) {
+                let _ = crossterm::queue!(line, SetAttribute(Attribute::Reset));
+                if c.fg != ratatui::style::Color::Reset {
+                    let _ = crossterm::queue!(line, SetForegroundColor(c.fg.into_crossterm()));
+                }
+                if c.bg != ratatui::style::Color::Reset {
+                    let _ = crossterm::queue!(line, SetBackgroundColor(c.bg.into_crossterm()));
+                }
+                for (m, a) in [
+                    (Modifier::BOLD, Attribute::Bold),
+                    (Modifier::DIM, Attribute::Dim),
+                    (Modifier::ITALIC, Attribute::Italic),
+                    (Modifier::UNDERLINED, Attribute::Underlined),
+                    (Modifier::REVERSED, Attribute::Reverse),
+                ] {
+                    if c.modifier.contains(m) {
+                        let _ = crossterm::queue!(line, SetAttribute(a));
+                    }
+                }
+                style = Some(now);
+            }
+            line.extend_from_slice(c.symbol().as_bytes());
+            skip = ratatui::text::Span::raw(c.symbol())
+                .width()
+                .saturating_sub(1);
+        }
+        if style.is_some() {
+            let _ = crossterm::queue!(line, SetAttribute(Attribute::Reset), ResetColor);
+        }
+        lines.push(String::from_utf8_lossy(&line).into_owned());
+    }
+    lines
 }
 
 /// Starts the writer of `out`; it ends when the slot's sender is dropped

@@ -9,12 +9,13 @@
 //! on their screen until the next poll or their Enter. `S` saves the last
 //! poll's answers as CSV until a new poll opens.
 
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::time::SystemTime;
 
 use super::follow::{Scene, FOLLOWING};
 use super::seat::Seat;
-use crate::class::{Ask, Asked, Poll, Question, Tally, NOWHERE, UNICODE};
+use crate::class::{Asked, Lesson, Poll, Question, Tally, NOWHERE, UNICODE};
 use crate::snapshot;
 use crate::tui::app::Message;
 
@@ -84,6 +85,10 @@ pub(super) fn on_poll(s: &mut Seat, poll: Option<Arc<Poll>>) -> bool {
         Some(a) if !a.revealed => {
             a.revealed = true;
             a.changed = p.changed;
+            let line = a.line(&UNICODE, usize::MAX);
+            let line = line.trim_end_matches(" · Enter dismisses").to_string();
+            s.results
+                .push(format!("poll {}: {}", s.results.len() + 1, line));
         }
         _ => return shown,
     }
@@ -143,8 +148,12 @@ pub(super) fn on_key(s: &mut Seat, msg: Message) {
                         open(s, q);
                     }
                 }
-                _ => match Question::of_claims(app.view, &app.claims) {
-                    Some(q) => open(s, q),
+                _ => match Question::of_claims(app.view, &app.claims, app.state.size_effect) {
+                    Some(q) => {
+                        // A lesson's reading question keeps its chart.
+                        let read = step_read(app);
+                        open(s, Question { read, ..q })
+                    }
                     // No claim here: the lecturer types the value.
                     None => {
                         let _ = s.ex.update(Message::PollTyped);
@@ -165,50 +174,86 @@ pub(super) fn on_key(s: &mut Seat, msg: Message) {
     }
 }
 
+/// Whether the lesson's step the lecturer is at asks a reading question.
+fn step_read(app: &crate::tui::app::App) -> bool {
+    let at_step = app.class.step.as_ref().is_some_and(|s| s.left.is_none());
+    at_step
+        && (app.class.lesson.as_ref())
+            .and_then(|l| l.step().poll)
+            .is_some_and(|q| q.read)
+}
+
 /// The poll of a lesson's step on a value, if the lecturer is at one.
 fn step_value(app: &crate::tui::app::App) -> Option<Question> {
     app.class.step_poll(app.state.sweep.axis())
 }
 
+/// A lesson's CSV: all its polls' rows in one file, made when the first
+/// is revealed (or saved open, the server stopping).
+#[derive(Debug, Default)]
+pub struct LessonCsv {
+    pub path: Option<PathBuf>,
+    /// The open poll's lesson, if it was asked at a lesson's step, and the
+    /// lecturer's save folder.
+    asking: Option<(Arc<Lesson>, PathBuf)>,
+}
+
+impl LessonCsv {
+    /// Appends `rows` to the CSV of `lesson` (made in `dir` the first
+    /// time); the file.
+    fn append(&mut self, dir: &Path, lesson: &Lesson, rows: &str) -> anyhow::Result<PathBuf> {
+        use std::io::Write;
+        let path = match &self.path {
+            Some(p) => p.clone(),
+            None => {
+                let p = crate::class::lesson::csv_path(dir, lesson)?;
+                self.path = Some(p.clone());
+                p
+            }
+        };
+        std::fs::OpenOptions::new()
+            .append(true)
+            .open(&path)
+            .and_then(|mut f| f.write_all(rows.as_bytes()))
+            .map_err(|e| anyhow::anyhow!("cannot add the answers to {}: {e}", path.display()))?;
+        Ok(path)
+    }
+}
+
 /// In a lesson, the revealed poll's rows appended to the lesson's one CSV
 /// (made at the first reveal, in the lecturer's save folder); `None`
 /// outside a lesson.
-fn to_lesson_csv(s: &Seat) -> Option<anyhow::Result<std::path::PathBuf>> {
-    use std::io::Write;
+fn to_lesson_csv(s: &Seat) -> Option<anyhow::Result<PathBuf>> {
     let lesson = &s.ex.app.class.lesson.as_ref()?.lesson;
     let rows = s.shared.class.csv_rows()?;
     let mut slot = s.shared.lesson_csv.lock().ok()?;
-    let path = match slot.as_ref() {
-        Some(p) => p.clone(),
-        None => match crate::class::lesson::csv_path(&s.ex.app.save_dir, lesson) {
-            Ok(p) => {
-                s.shared.saved(p.clone());
-                *slot = Some(p.clone());
-                p
-            }
-            Err(e) => return Some(Err(e)),
-        },
-    };
-    let written = std::fs::OpenOptions::new()
-        .append(true)
-        .open(&path)
-        .and_then(|mut f| f.write_all(rows.as_bytes()));
-    Some(
-        written
-            .map(|()| path.clone())
-            .map_err(|e| anyhow::anyhow!("cannot add the answers to {}: {e}", path.display())),
-    )
+    let new = slot.path.is_none();
+    let r = slot.append(&s.ex.app.save_dir, lesson, &rows);
+    if let (true, Ok(p)) = (new, &r) {
+        s.shared.saved(p.clone());
+    }
+    Some(r)
 }
 
 /// After the lecturer's keys: a value typed at `V` opens a poll.
 pub(super) fn after_lecturer_keys(s: &mut Seat) {
     if let Some((axis, truth)) = s.ex.app.class.typed.take() {
-        let ask = Ask::Typed;
-        open(s, Question { axis, ask, truth });
+        open(s, Question::typed(axis, truth));
     }
 }
 
 fn open(s: &mut Seat, q: Question) {
+    // Asked at a lesson's step: saved open, its rows go to the lesson's CSV.
+    let app = &s.ex.app;
+    let at_step = app.class.step.as_ref().is_some_and(|st| st.left.is_none());
+    let asking = (app.class.lesson.as_ref())
+        .filter(|_| at_step)
+        .map(|l| (Arc::clone(&l.lesson), app.save_dir.clone()));
+    if let Ok(mut slot) = s.shared.lesson_csv.lock() {
+        slot.asking = asking;
+    }
+    // A new poll's countdown starts at the lecturer's `t`.
+    s.ex.app.class.countdown = None;
     let shown = s.ex.app.shown();
     let class = &s.shared.class;
     class.open(q, shown);
@@ -287,21 +332,22 @@ fn save(s: &mut Seat) {
 /// CSV of their own in the folder the server runs in; the console's line
 /// that says so.
 pub(super) fn save_open(shared: &super::Shared) -> Option<String> {
-    use std::io::Write;
     if !shared.class.poll_open() {
         return None;
     }
     let rows = shared.class.csv_rows()?;
     let answers = shared.class.view().poll.map_or(0, |t| t.answers.len());
     let dir = std::env::current_dir().unwrap_or_else(|_| ".".into());
-    let lesson = shared.lesson_csv.lock().ok().and_then(|p| p.clone());
-    let written = match lesson {
-        Some(path) => std::fs::OpenOptions::new()
-            .append(true)
-            .open(&path)
-            .and_then(|mut f| f.write_all(rows.as_bytes()))
-            .map_err(|e| anyhow::anyhow!("cannot add the answers to {}: {e}", path.display()))
-            .map(|()| path),
+    let mut slot = shared.lesson_csv.lock().unwrap_or_else(|p| p.into_inner());
+    let written = match slot.asking.clone() {
+        Some((lesson, folder)) => {
+            let new = slot.path.is_none();
+            let r = slot.append(&folder, &lesson, &rows);
+            if let (true, Ok(p)) = (new, &r) {
+                shared.saved(p.clone());
+            }
+            r
+        }
         None => {
             let name = shared
                 .class

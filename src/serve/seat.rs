@@ -22,8 +22,13 @@ pub(super) struct Seat {
     pub shared: Arc<Shared>,
     pub role: Role,
     pub follow: Follow,
-    /// A student's place in the roster.
+    /// A student's place in the roster, and this session's turn on it.
     pub seat: Option<SeatId>,
+    pub turn: u64,
+    /// The results of the polls revealed to this student, as their line
+    /// read ("the model: ζ = 321.5 · you: 316.2 · 1.6 % low"): their
+    /// terminal keeps them when the session ends.
+    pub results: Vec<String>,
     /// The poll a student is in (its id).
     pub poll: Option<u64>,
     pub lecturer: watch::Receiver<Option<Arc<Shown>>>,

@@ -28,9 +28,9 @@ use super::panel::{Key as PanelKey, Panel};
 use super::poll;
 use super::seat::Seat;
 use super::term::{self, ClientTerm};
-pub use super::wire::{Input, Wire, WireIn};
+pub use super::wire::{Input, Render, Wire, WireIn};
 use super::Shared;
-use crate::class::{self, clean_name, Note};
+use crate::class::{self, clean_name, Arrival, Note, Transport};
 use crate::tui::app::{Message, Mode};
 use crate::tui::session::Session;
 
@@ -45,6 +45,10 @@ pub struct Start {
     pub addr: IpAddr,
     /// The client's TERM and locale: the session's glyphs and colours.
     pub client: ClientTerm,
+    /// How the student reaches the class, and the seat token the page
+    /// kept from an earlier session (a reload).
+    pub transport: Transport,
+    pub token: Option<String>,
 }
 
 pub fn spawn(start: Start) {
@@ -72,6 +76,9 @@ pub const NO_PICTURE: &str = "no pictures over SSH: s shows the snapshot to copy
 /// What a student's terminal says when the lecturer removes them.
 pub const REMOVED: &str = "the lecturer removed you from the class";
 
+/// What a session says when a later one takes its seat (a reload).
+pub const TAKEN_OVER: &str = "you joined again from another window: this one has left the class";
+
 /// What every client's terminal says when the server stops.
 pub const ENDED: &str = "the class has ended";
 
@@ -87,13 +94,18 @@ async fn run(start: Start) {
         name,
         addr,
         client,
+        transport,
+        token,
     } = start;
     let Wire {
         input: mut read,
         slot,
         bye,
         via,
+        render,
+        notes,
     } = wire;
+    let phone = render == Render::Phone;
     let buf = FrameBuf::default();
     let mut prelude = Vec::new();
     let _ = crossterm::execute!(prelude, EnterAlternateScreen, Hide);
@@ -118,6 +130,7 @@ async fn run(start: Start) {
         .is_empty()
         .then(|| term::hint(caps.glyphs, why.as_deref()));
     let hint_until = Instant::now() + term::HINT_FOR;
+    let mut phone_out = phone.then(super::web::phone::Out::default);
     let mut lecturer = shared.follow.subscribe();
     let follow = Follow::start(lecturer.borrow_and_update().is_some());
     let mut s = Seat {
@@ -127,6 +140,8 @@ async fn run(start: Start) {
         role,
         follow,
         seat: None,
+        turn: 0,
+        results: Vec::new(),
         poll: None,
         lecturer,
         scene: None,
@@ -137,6 +152,7 @@ async fn run(start: Start) {
     s.ex.app.lecturer_keys = shared.lecturer_keys.any();
     s.ex.app.lecturer_here = s.lecturer.borrow().is_some();
     let mut name = clean_name(&name);
+    let mut back = false;
     let joined = Instant::now();
     let mut marker = s.marker();
     let mut roster = shared.class.watch_roster();
@@ -157,23 +173,46 @@ async fn run(start: Start) {
             s.ex.app.class.step = Some(at.line());
         }
         let following = s.follow.following();
-        let id = shared
-            .class
-            .join(&name, addr, size, marker.name(), following);
-        s.seat = Some(id);
-        // Two of one name are told apart (ada, ada-2).
-        if let Some(n) = shared.class.name(id) {
-            name = n;
+        let taken = shared.class.take_seat(&Arrival {
+            name: &name,
+            addr,
+            size,
+            marker: marker.name(),
+            following,
+            via: transport,
+            token: token.as_deref(),
+        });
+        s.seat = Some(taken.id);
+        s.turn = taken.turn;
+        // Two of one name are told apart (ada, ada-2): the student sees
+        // the name the class gave them, a web page keeps the seat.
+        name = taken.name;
+        if let Some(n) = &notes {
+            let _ = n.send(format!("seat {} {name}", taken.token));
+        }
+        // Over SSH the first screen says it (a page says it itself:
+        // followers' first screens stay one frame).
+        if let Some(h) = hint.take() {
+            hint = Some(format!("{}\n{h}", term::name_line(&name)));
+        }
+        back = taken.again;
+        if back {
+            s.ex.app
+                .set_status(format!("back in your seat as {name}"), false);
         }
         polls.mark_changed();
     }
+    let mut shape = if phone {
+        "a phone".to_string()
+    } else {
+        format!("{}x{}, {}", size.0, size.1, marker.name())
+    };
+    if back {
+        shape.push_str(", back in the seat it left");
+    }
     shared.log.line(&format!(
-        "join  {name}{} from {addr}{}, {}x{}, {}",
+        "join  {name}{} from {addr}{via}, {shape}",
         if is_lecturer { " (lecturer)" } else { "" },
-        via,
-        size.0,
-        size.1,
-        marker.name()
     ));
     let mut decoder = Decoder::new();
     let mut panel: Option<Panel> = None;
@@ -186,13 +225,20 @@ async fn run(start: Start) {
     let mut ending = shared.ending.subscribe();
     let mut all_follow = shared.all_follow.subscribe();
     let mut removed = shared.class.watch_removed();
+    let mut turns = shared.class.watch_turns();
+    turns.mark_unchanged();
     if *ending.borrow_and_update() {
         bye.set(ENDED);
         return;
     }
 
+    // The last screen's lines, when the class ends.
+    let mut screen: Vec<String> = Vec::new();
     loop {
-        let listing = is_lecturer && s.ex.app.mode == Mode::Class;
+        // The class list's idle times, the projector's countdown: each second.
+        let c = &s.ex.app.class;
+        let listing =
+            is_lecturer && (s.ex.app.mode == Mode::Class || (c.projector && c.countdown.is_some()));
         // Only a session neither lecturing nor following idles out; the
         // others' idle time starts when they stop.
         let idles = !is_lecturer && !s.follow.in_class();
@@ -244,6 +290,15 @@ async fn run(start: Start) {
                                 }
                                 continue;
                             }
+                            // A phone's page sends its buttons' keys only.
+                            if phone
+                                && !s
+                                    .ex
+                                    .message_for(&Event::Key(key))
+                                    .is_some_and(super::web::phone::takes)
+                            {
+                                continue;
+                            }
                             // A key is the student's: the explorer catches up.
                             s.sync();
                             if s.ex.message_for(&Event::Key(key)) == Some(Message::Redraw) {
@@ -280,11 +335,27 @@ async fn run(start: Start) {
                             poll::after_lecturer_keys(&mut s);
                         }
                     }
+                    // A phone has no terminal size: its picture's shape.
+                    WireIn::Resize(..) if phone => {}
                     WireIn::Resize(w, h) => {
                         if s.update(Message::Resize(w, h)).is_err() {
                             break;
                         }
                         s.note(Note::Size(w, h));
+                        dirty = true;
+                    }
+                    WireIn::Command(c) => {
+                        deadline = Instant::now() + idle;
+                        s.note(Note::Key);
+                        let Some(out) = phone_out.as_mut() else { continue };
+                        hint = None;
+                        s.sync();
+                        for msg in super::web::phone::command(&s.ex.app, out, &c) {
+                            on_message(&mut s, msg);
+                        }
+                        if s.ex.app.quit {
+                            break;
+                        }
                         dirty = true;
                     }
                 }
@@ -360,6 +431,16 @@ async fn run(start: Start) {
                     dirty = true;
                 }
             }
+            changed = turns.changed(), if !is_lecturer => {
+                if changed.is_err() {
+                    break;
+                }
+                let mine = s.seat.and_then(|id| shared.class.turn(id)) == Some(s.turn);
+                if !mine {
+                    bye.set(TAKEN_OVER);
+                    break;
+                }
+            }
             changed = removed.changed(), if !is_lecturer => {
                 if changed.is_err() {
                     break;
@@ -372,6 +453,11 @@ async fn run(start: Start) {
             }
             _ = ending.changed() => {
                 bye.set(ENDED);
+                // The terminal keeps the last screen above the goodbye
+                // (unless the snapshot is printed there, or it is a phone).
+                if panel.is_none() && phone_out.is_none() {
+                    screen = super::output::screen_lines(&s.ex.render(|_, _| {}));
+                }
                 break;
             }
             () = sleep_until(hint_until), if hint.is_some() => {
@@ -384,10 +470,14 @@ async fn run(start: Start) {
                 // While the snapshot is shown, changes wait for its close
                 // (which draws the explorer whole).
                 if dirty && panel.is_none() {
-                    if frames::draw(&mut s, hint.as_ref()).is_err() {
-                        break;
+                    if let Some(out) = phone_out.as_mut() {
+                        bytes = super::web::phone::draw(&mut s, out);
+                    } else {
+                        if frames::draw(&mut s, hint.as_ref()).is_err() {
+                            break;
+                        }
+                        bytes.extend(buf.take());
                     }
-                    bytes.extend(buf.take());
                 }
                 permit.send(bytes);
                 dirty = false;
@@ -395,8 +485,16 @@ async fn run(start: Start) {
             () = slot.closed() => break,
         }
     }
+    let g = s.ex.app.theme.glyphs;
     if let Some(id) = s.seat {
-        shared.class.leave(id);
+        shared.class.leave(id, s.turn);
+        // The terminal keeps who the student was and how their polls went.
+        let mut kept = vec![format!("roughtui: you were {name} in the class")];
+        kept.extend(s.results.iter().cloned());
+        screen.extend(kept.iter().map(|l| g.text(l).into_owned()));
+    }
+    if !screen.is_empty() {
+        bye.keep(screen);
     }
     if is_lecturer {
         shared.lecturer_left();
@@ -421,6 +519,19 @@ fn on_key(s: &mut Seat, panel: &mut Option<Panel>, raw: &mut Vec<u8>, key: KeyEv
         // answer, if any, resizes.
         let _ = s.ex.writer().write_all(input::ASK_SIZE);
     }
+    if s.role == Role::Student && msg == Message::StartSave {
+        let ascii = s.ex.app.theme.glyphs.ascii_text();
+        let (p, bytes) = Panel::open(s.ex.app.state.to_ron(), ascii);
+        *panel = Some(p);
+        raw.extend(bytes);
+        return true;
+    }
+    on_message(s, msg)
+}
+
+/// Applies one message of a key (or of a phone's button); whether the
+/// screen may have changed.
+fn on_message(s: &mut Seat, msg: Message) -> bool {
     match msg {
         Message::Follow => {
             let e = s.follow.on_follow_key();
@@ -447,13 +558,6 @@ fn on_key(s: &mut Seat, panel: &mut Option<Panel>, raw: &mut Vec<u8>, key: KeyEv
         _ => {}
     }
     if s.role == Role::Student {
-        if msg == Message::StartSave {
-            let ascii = s.ex.app.theme.glyphs.ascii_text();
-            let (p, bytes) = Panel::open(s.ex.app.state.to_ron(), ascii);
-            *panel = Some(p);
-            raw.extend(bytes);
-            return true;
-        }
         if msg == Message::SavePicture {
             // Nothing is written on the server for a student.
             s.ex.app.set_status(NO_PICTURE, false);

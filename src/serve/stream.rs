@@ -2,7 +2,11 @@
 //! its own that a stalled client can keep waiting on a write forever; a
 //! [`Killable`] stream fails every read and write once [`Kill::kill`] is
 //! called (waking a pending one), so that task ends and frees everything.
+//! It also fails a write the client has taken nothing of for
+//! [`STALL`]: a client that stopped reading
+//! (its buffers full) is let go though no new frame waits for it.
 
+use std::future::Future;
 use std::io;
 use std::pin::Pin;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -11,9 +15,14 @@ use std::task::{Context, Poll, Waker};
 
 use tokio::io::{AsyncRead, AsyncWrite, ReadBuf};
 
+/// How long a client may take to accept one frame.
+pub const STALL: std::time::Duration = std::time::Duration::from_secs(5);
+
 #[derive(Debug, Default)]
 struct State {
     killed: AtomicBool,
+    /// The client sent something.
+    read: AtomicBool,
     /// The tasks waiting on a read and on a write.
     wakers: Mutex<[Option<Waker>; 2]>,
 }
@@ -23,6 +32,11 @@ struct State {
 pub struct Kill(Arc<State>);
 
 impl Kill {
+    /// Whether the client sent anything yet.
+    pub fn spoke(&self) -> bool {
+        self.0.read.load(Ordering::Relaxed)
+    }
+
     pub fn kill(&self) {
         self.0.killed.store(true, Ordering::SeqCst);
         let wakers = std::mem::take(&mut *self.0.wakers.lock().unwrap_or_else(|p| p.into_inner()));
@@ -35,6 +49,8 @@ impl Kill {
 pub struct Killable<S> {
     inner: S,
     state: Arc<State>,
+    /// Since a write could not go on: it fails when this ends.
+    stalled: Option<Pin<Box<tokio::time::Sleep>>>,
 }
 
 impl<S> Killable<S> {
@@ -44,6 +60,7 @@ impl<S> Killable<S> {
             Killable {
                 inner,
                 state: Arc::clone(&kill.0),
+                stalled: None,
             },
             kill,
         )
@@ -60,6 +77,24 @@ impl<S> Killable<S> {
         }
         Ok(())
     }
+
+    /// A write's outcome `r`: a write that has waited for the client
+    /// [`STALL`] fails (and cuts the stream).
+    fn stall<T>(&mut self, cx: &mut Context<'_>, r: Poll<io::Result<T>>) -> Poll<io::Result<T>> {
+        if r.is_ready() {
+            self.stalled = None;
+            return r;
+        }
+        let timer = self
+            .stalled
+            .get_or_insert_with(|| Box::pin(tokio::time::sleep(STALL)));
+        if timer.as_mut().poll(cx).is_ready() {
+            self.stalled = None;
+            self.state.killed.store(true, Ordering::SeqCst);
+            return Poll::Ready(Err(io::ErrorKind::TimedOut.into()));
+        }
+        Poll::Pending
+    }
 }
 
 impl<S: AsyncRead + Unpin> AsyncRead for Killable<S> {
@@ -70,7 +105,12 @@ impl<S: AsyncRead + Unpin> AsyncRead for Killable<S> {
     ) -> Poll<io::Result<()>> {
         let this = self.get_mut();
         this.check(cx, 0)?;
-        Pin::new(&mut this.inner).poll_read(cx, buf)
+        let before = buf.filled().len();
+        let r = Pin::new(&mut this.inner).poll_read(cx, buf);
+        if buf.filled().len() > before {
+            this.state.read.store(true, Ordering::Relaxed);
+        }
+        r
     }
 }
 
@@ -82,13 +122,15 @@ impl<S: AsyncWrite + Unpin> AsyncWrite for Killable<S> {
     ) -> Poll<io::Result<usize>> {
         let this = self.get_mut();
         this.check(cx, 1)?;
-        Pin::new(&mut this.inner).poll_write(cx, buf)
+        let r = Pin::new(&mut this.inner).poll_write(cx, buf);
+        this.stall(cx, r)
     }
 
     fn poll_flush(self: Pin<&mut Self>, cx: &mut Context<'_>) -> Poll<io::Result<()>> {
         let this = self.get_mut();
         this.check(cx, 1)?;
-        Pin::new(&mut this.inner).poll_flush(cx)
+        let r = Pin::new(&mut this.inner).poll_flush(cx);
+        this.stall(cx, r)
     }
 
     fn poll_shutdown(self: Pin<&mut Self>, cx: &mut Context<'_>) -> Poll<io::Result<()>> {
@@ -118,5 +160,32 @@ mod tests {
         assert_eq!(r, Err(io::ErrorKind::ConnectionAborted));
         let w = s.write_all(b"x").await.map_err(|e| e.kind());
         assert_eq!(w, Err(io::ErrorKind::ConnectionAborted));
+    }
+
+    #[tokio::test(start_paused = true)]
+    async fn a_write_the_client_takes_nothing_of_fails_after_the_stall_time() {
+        // A pipe of 64 bytes nobody reads.
+        let (a, _b) = tokio::io::duplex(64);
+        let (mut s, _kill) = Killable::new(a);
+        let t = tokio::time::Instant::now();
+        let w = s.write_all(&[0u8; 1000]).await.map_err(|e| e.kind());
+        assert_eq!(w, Err(io::ErrorKind::TimedOut));
+        assert_eq!(t.elapsed(), crate::serve::output::STALL);
+        // Cut for good.
+        let w = s.write_all(b"x").await.map_err(|e| e.kind());
+        assert_eq!(w, Err(io::ErrorKind::ConnectionAborted));
+        // A slow reader that takes something within the time is kept.
+        let (a, mut b) = tokio::io::duplex(64);
+        let (mut s, _kill) = Killable::new(a);
+        let reader = tokio::spawn(async move {
+            let mut buf = [0u8; 64];
+            let mut n = 0;
+            while n < 1000 {
+                tokio::time::sleep(std::time::Duration::from_secs(1)).await;
+                n += b.read(&mut buf).await.unwrap();
+            }
+        });
+        s.write_all(&[0u8; 1000]).await.unwrap();
+        reader.await.unwrap();
     }
 }

@@ -106,17 +106,26 @@ pub fn hint(glyphs: Glyphs, why: Option<&str>) -> String {
 }
 
 /// Draws `text` over the status row (the screen's second row from the
-/// bottom), as the glyphs write it.
+/// bottom), as the glyphs write it; a text of several lines ends there,
+/// its first lines above it.
 pub fn draw_hint(buf: &mut Buffer, text: &str, glyphs: Glyphs) {
     let area = buf.area;
-    if area.height < 2 {
+    let lines: Vec<&str> = text.lines().collect();
+    if usize::from(area.height) < lines.len() + 1 {
         return;
     }
-    let row = Rect::new(area.x, area.bottom() - 2, area.width, 1);
-    let text = glyphs.text(text).into_owned();
     let style = Style::new().add_modifier(Modifier::REVERSED | Modifier::BOLD);
-    Clear.render(row, buf);
-    Line::styled(text, style).render(row, buf);
+    for (i, l) in lines.iter().rev().enumerate() {
+        let row = Rect::new(area.x, area.bottom() - 2 - i as u16, area.width, 1);
+        Clear.render(row, buf);
+        Line::styled(glyphs.text(l).into_owned(), style).render(row, buf);
+    }
+}
+
+/// The first screen's line with the student's name in the class
+/// (`ada-2` when another `ada` came first).
+pub fn name_line(name: &str) -> String {
+    format!("you are {name} in this class")
 }
 
 #[cfg(test)]

@@ -16,6 +16,20 @@ pub enum WireIn {
     Data(Vec<u8>),
     /// A new terminal size, clamped.
     Resize(u16, u16),
+    /// A web page's command (its text message): a phone's view or
+    /// slider chosen (`view map`, `slider zeta`), its picture's shape
+    /// (`shape wide`).
+    Command(String),
+}
+
+/// How a session's screen goes to its client.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Render {
+    /// A terminal's cells (SSH, the web page's xterm.js).
+    Terminal,
+    /// A phone's page: the picture and the texts around it
+    /// (`web::phone`).
+    Phone,
 }
 
 /// Where a session's input comes from: an SSH channel, or a WebSocket's
@@ -57,6 +71,11 @@ pub struct Wire {
     pub slot: output::Slot,
     pub bye: output::Bye,
     pub via: &'static str,
+    /// How the screen is drawn.
+    pub render: Render,
+    /// The web page's side channel: the seat's token and the student's
+    /// name in the class (`seat TOKEN NAME`), which the page keeps.
+    pub notes: Option<tokio::sync::mpsc::UnboundedSender<String>>,
 }
 
 impl Wire {
@@ -70,6 +89,8 @@ impl Wire {
             slot,
             bye,
             via: "",
+            render: Render::Terminal,
+            notes: None,
         }
     }
 }

@@ -537,6 +537,7 @@ pub fn update(app: &mut App, msg: Message) {
         Message::ShowJoin => {
             app.class.join_shown = !app.class.join_shown && app.class.join_url.is_some();
         }
+        Message::Projector | Message::Countdown => super::class::projector(app, msg),
         Message::ClassChoose { down } => super::class::choose(app, down),
         Message::RemoveStudent => super::class::remove(app),
         Message::LessonStep { next } => super::class::step(app, next),

@@ -9,6 +9,32 @@ use std::sync::Arc;
 use crate::class::{Lesson, LessonEnd, StepScene};
 use crate::tui::app::App;
 
+/// The lecturer's `P` (the projector view, open or closed) and, in it,
+/// `t` (the countdown: 30 s, 1 min, 2 min, off, each from the start).
+pub fn projector(app: &mut App, msg: crate::tui::app::Message) {
+    use crate::tui::app::Message;
+    use std::time::{Duration, Instant};
+    if app.class.view.is_none() {
+        return;
+    }
+    match msg {
+        Message::Projector => app.class.projector = !app.class.projector,
+        Message::Countdown => {
+            let next = match app.class.countdown.map(|c| c.1.as_secs()) {
+                None => Some(30),
+                Some(30) => Some(60),
+                Some(60) => Some(120),
+                _ => None,
+            };
+            app.class.countdown = next.map(|s| {
+                let d = Duration::from_secs(s);
+                (Instant::now() + d, d)
+            });
+        }
+        _ => {}
+    }
+}
+
 /// The class list's `↑` / `↓`: the previous / next student.
 pub fn choose(app: &mut App, down: bool) {
     let n = app.class.view.as_ref().map_or(0, |v| v.seats.len());

@@ -48,6 +48,8 @@ pub enum Context {
     Nowhere,
     /// The lecturer's explorer when the class is also served on the web.
     Joinable,
+    /// The lecturer's projector view is up.
+    Projector,
     /// Everywhere: the explorer, the help, a prompt, a terminal too small.
     Any,
 }
@@ -68,6 +70,7 @@ impl Context {
                 | (Context::ClassList, Mode::Class)
                 | (Context::Any, _)
         ) || (app.mode == Mode::Main && self.listed(app) && self.is_role())
+            || (self == Context::Projector && app.mode == Mode::Main && app.class.projector)
             || (self == Context::ContactView
                 && app.mode == Mode::Main
                 && app.view == crate::figure::View::Contact)
@@ -113,6 +116,7 @@ impl Context {
             // The contact view's keys, in its help only.
             Context::ContactView => app.view == crate::figure::View::Contact,
             Context::Lesson => app.class.lesson.is_some(),
+            Context::Projector => app.class.projector,
             // The class list's and the scene list's titles name their keys.
             Context::ClassList | Context::Scenes => false,
             _ => true,
@@ -184,7 +188,7 @@ pub struct Binding {
 
 use Context::{
     Answering, Any, ClassList, ContactView, Follower, Help, Joinable, Lecturer, Lesson, Main,
-    MainAndHelp, NotStudent, Nowhere, Prompt, Revealed, Scenes, Student, Surface,
+    MainAndHelp, NotStudent, Nowhere, Projector, Prompt, Revealed, Scenes, Student, Surface,
 };
 use KeyCode::{
     BackTab, Backspace, Delete, Down, End, Enter, Esc, Home, Left, PageDown, PageUp, Right, Tab, Up,
@@ -247,6 +251,9 @@ pub const BINDINGS: &[Binding] = &[
     bind(Lecturer, &[(ch('S'), M::SavePoll)], "S", "save the last poll's answers here (.csv)", Some("S csv")),
     bind(Lecturer, &[(ch('d'), M::ShareAnswers)], "d", "after a reveal: show everyone the answers' histogram", None),
     bind(Joinable, &[(ch('Q'), M::ShowJoin)], "Q", "the web page's address and QR code, full screen", None),
+    bind(Projector, &[(ch('P'), M::Projector), (key(Esc), M::Projector)], "P  Esc", "close the projector view", None),
+    bind(Projector, &[(ch('t'), M::Countdown)], "t", "projector: a countdown for the poll (30 s, 1 min, 2 min, off)", None),
+    bind(Lecturer, &[(ch('P'), M::Projector)], "P", "the poll for the projector: answers, truth, median, share within 10 %", None),
     bind(ClassList, &[(ch('w'), M::ToggleClass), (key(Esc), M::ToggleClass)], "w  Esc", "close the class list", None),
     bind(ClassList, &[(key(Down), M::ClassChoose { down: true }), (ch('j'), M::ClassChoose { down: true }), (key(Up), M::ClassChoose { down: false }), (ch('k'), M::ClassChoose { down: false })], "↓ ↑  j k", "choose a student", None),
     bind(ClassList, &[(ch('x'), M::RemoveStudent)], "x", "remove the student chosen (told why)", None),
@@ -360,8 +367,31 @@ pub fn message_for_key(app: &App, ev: &KeyEvent) -> Option<Message> {
             })
             .map(|(_, m)| *m);
     }
+    // The projector view takes the poll's and the lesson's keys, not the
+    // explorer's (which would change a scene nobody sees).
+    let projected = app.class.projector && app.mode == Mode::Main;
+    let acts = |m: &Message| {
+        !projected
+            || matches!(
+                m,
+                M::Projector
+                    | M::Countdown
+                    | M::Poll
+                    | M::PollTyped
+                    | M::CancelPoll
+                    | M::ShareAnswers
+                    | M::SavePoll
+                    | M::LessonStep { .. }
+                    | M::AllFollow
+                    | M::ToggleClass
+                    | M::ShowJoin
+                    | M::ToggleHelp
+                    | M::Redraw
+                    | M::Quit
+            )
+    };
     for b in BINDINGS.iter().filter(|b| b.context.covers(app)) {
-        if let Some((_, m)) = b.keys.iter().find(|(k, _)| k.matches(ev)) {
+        if let Some((_, m)) = b.keys.iter().find(|(k, m)| k.matches(ev) && acts(m)) {
             return Some(*m);
         }
     }

@@ -111,7 +111,15 @@ pub fn show_notes(app: &mut App) {
         return;
     }
     let warning = notes.iter().any(|n| n.starts_with("warning:"));
-    app.set_status(notes.join(" · "), warning);
+    // Warnings first, then the shorter notes, so that a status row too
+    // short for all of them drops the longest notes rather than a warning
+    // (the side panel shows them all).
+    let (mut first, mut rest): (Vec<&String>, Vec<&String>) =
+        notes.iter().partition(|n| n.starts_with("warning:"));
+    rest.sort_by_key(|n| n.chars().count());
+    first.extend(rest);
+    let text: Vec<&str> = first.iter().map(|n| n.as_str()).collect();
+    app.set_status(text.join(" · "), warning);
 }
 
 /// `[ ]` `{ }`: moves an end of the fit band to the neighbouring point of

@@ -75,6 +75,12 @@ pub enum Message {
     /// The lecturer's `Q`: the join page's QR code, full screen (any key
     /// closes it).
     ShowJoin,
+    /// The lecturer's `P`: the poll for the projector, full screen (`P` or
+    /// Esc closes it).
+    Projector,
+    /// In the projector view, `t`: a countdown for the poll (30 s, 1 min,
+    /// 2 min, off).
+    Countdown,
     /// The lecturer's `F`: every student follows again.
     AllFollow,
     /// The lecturer's scene list (`o`): open it, move in it, load the one

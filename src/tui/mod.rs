@@ -5,6 +5,7 @@
 //! for an event, then reads the solver's progress ([`app::Message::Tick`]).
 
 pub mod app;
+pub mod big;
 pub mod caps;
 pub mod caption;
 pub mod class;

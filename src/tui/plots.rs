@@ -149,24 +149,35 @@ pub fn compute_plot(spec: &SceneSpec) -> Plot {
     plot.total = curve(&scene.total);
     plot.persson = curve(&scene.persson_elastic);
     plot.regime_marks = regime_marks(log_x, &scene);
-    // Fitted to the data as the picture is: from the largest of the
-    // elastic, total and Persson curves down to the smallest value within
-    // four decades of it (a plastic slope of 1e-33 is no reason for 1e-3).
-    let top = [&plot.elastic, &plot.total, &plot.persson]
+    plot.y_bounds = slope_bounds(
+        &[&plot.elastic, &plot.total, &plot.persson],
+        &[&plot.plastic],
+    );
+    plot
+}
+
+/// The slopes chart's y range, fitted to the data as the picture is: from
+/// the largest value of the curves `top` down to the smallest value of
+/// those and of `under` within four decades of it (a plastic slope of
+/// 1e-33 is no reason for 1e-3). A chart that leaves curves out while a
+/// poll's answer waits fits the ones it draws: its range says nothing of
+/// the others.
+pub fn slope_bounds(top: &[&Vec<(f64, f64)>], under: &[&Vec<(f64, f64)>]) -> [f64; 2] {
+    let hi = top
         .iter()
         .copied()
         .flatten()
         .map(|p| p.1)
         .fold(f64::NEG_INFINITY, f64::max);
-    let near: Vec<(f64, f64)> = [&plot.elastic, &plot.plastic, &plot.total, &plot.persson]
+    let near: Vec<(f64, f64)> = top
         .iter()
+        .chain(under)
         .copied()
         .flatten()
         .copied()
-        .filter(|p| p.1 >= top - 4.0)
+        .filter(|p| p.1 >= hi - 4.0)
         .collect();
-    plot.y_bounds = decade_bounds(&[&near], Y_DECADES);
-    plot
+    decade_bounds(&[&near], Y_DECADES)
 }
 
 /// The decades the index view may show (1e-4 … 1e6): wide enough for Ψ_GW

@@ -115,6 +115,35 @@ pub fn elide_middle(text: &str, width: usize, cut: char) -> String {
     out
 }
 
+/// `text`, notes joined by " · ", in at most `width` characters: the notes
+/// that do not fit whole are left out, in their place at the end `cut`
+/// ("· …"), so that no note loses its middle; a first note longer than
+/// `width` alone has its middle elided ([`elide_middle`]).
+pub fn fit_notes(text: &str, width: usize, cut: char) -> String {
+    if text.chars().count() <= width {
+        return text.to_string();
+    }
+    let parts: Vec<&str> = text.split(" · ").collect();
+    if parts[0].chars().count() + 4 > width {
+        return elide_middle(text, width, cut);
+    }
+    let mut out = String::new();
+    for p in &parts {
+        let more = if out.is_empty() { 0 } else { 3 } + p.chars().count();
+        // Room kept for the " · …" that says notes were left out.
+        if out.chars().count() + more + 4 > width {
+            continue;
+        }
+        if !out.is_empty() {
+            out.push_str(" · ");
+        }
+        out.push_str(p);
+    }
+    out.push_str(" · ");
+    out.push(cut);
+    out
+}
+
 /// `status` is the status row, `below` the footer row under it.
 pub fn render_status(app: &App, status: Rect, below: Rect, buf: &mut Buffer) {
     let t = &app.theme;
@@ -187,9 +216,10 @@ pub fn render_status(app: &App, status: Rect, below: Rect, buf: &mut Buffer) {
                 },
             };
             let text = gl.text(&text);
-            // Too long for one row: continued on the footer's row, its
-            // middle elided if even two rows are too few.
-            let text = elide_middle(&text, 2 * w, gl.cut());
+            // Too long for one row: continued on the footer's row; if even
+            // two rows are too few, the notes that do not fit whole are
+            // left out (the side panel lists them all).
+            let text = fit_notes(&text, 2 * w, gl.cut());
             let (first, rest): (String, String) = (
                 text.chars().take(w).collect(),
                 text.chars().skip(w).collect(),
@@ -252,7 +282,7 @@ pub(super) fn clear_stale(app: &mut App, msg: Message) {
 
 #[cfg(test)]
 mod tests {
-    use super::{elide_middle, field, Glyphs, LineEdit};
+    use super::{elide_middle, field, fit_notes, Glyphs, LineEdit};
 
     fn shown(text: &str, left: usize, width: usize) -> String {
         let mut l = LineEdit::new(text, 200);
@@ -285,6 +315,16 @@ mod tests {
         );
         assert_eq!(elide_middle("abc", 1, '…'), "…");
         assert_eq!(elide_middle("abc", 0, '…'), "");
+        // Notes that do not fit are left out whole, never cut in the middle.
+        let warn = "warning: rms slope 4.1e3 at the largest ζ is above 10";
+        let text = format!("{warn} · heights read in µm (the width's unit) · 3 points filled");
+        assert_eq!(fit_notes(&text, 70, '…'), format!("{warn} · …"));
+        assert_eq!(
+            fit_notes(&text, 80, '…'),
+            format!("{warn} · 3 points filled · …")
+        );
+        assert_eq!(fit_notes(&text, 200, '…'), text);
+        assert_eq!(fit_notes("0123456789abcdef", 10, '…'), "012…abcdef");
         assert_eq!(elide_middle("0123456789abcdef", 10, '~'), "012~abcdef");
     }
 }

@@ -87,6 +87,67 @@ impl Browsers {
         ));
     }
 
+    /// A phone of `w`×`h` CSS pixels on `url`: Chromium's mobile
+    /// emulation (touch, no keyboard, an Android browser's agent).
+    pub fn open_phone(&mut self, name: &str, url: &str, (w, h): (u32, u32)) {
+        self.cmd(&format!(
+            "\"op\": \"open\", \"name\": {}, \"url\": {}, \"w\": {w}, \"h\": {h}, \"mobile\": true",
+            json(name),
+            json(url)
+        ));
+    }
+
+    /// A finger's tap on the element whose `aria-label` is `label`.
+    pub fn tap(&mut self, name: &str, label: &str) {
+        self.cmd(&format!(
+            "\"op\": \"tap\", \"name\": {}, \"label\": {}",
+            json(name),
+            json(label)
+        ));
+    }
+
+    /// A screenshot of the page (PNG) at `path`.
+    pub fn shot(&mut self, name: &str, path: &std::path::Path) {
+        self.cmd(&format!(
+            "\"op\": \"shot\", \"name\": {}, \"path\": {}",
+            json(name),
+            json(&path.display().to_string())
+        ));
+    }
+
+    /// A script's value as text (a JSON string's text, else the JSON).
+    pub fn js_text(&mut self, name: &str, script: &str) -> String {
+        let v = self.js(name, script);
+        if v.starts_with('"') {
+            unjson(&v)
+        } else {
+            v
+        }
+    }
+
+    /// Waits until `script`'s text satisfies `pred`; that text.
+    pub fn wait_js(
+        &mut self,
+        name: &str,
+        what: &str,
+        secs: u64,
+        script: &str,
+        pred: impl Fn(&str) -> bool,
+    ) -> String {
+        let start = Instant::now();
+        loop {
+            let t = self.js_text(name, script);
+            if pred(&t) {
+                return t;
+            }
+            assert!(
+                start.elapsed() < Duration::from_secs(secs),
+                "timed out waiting for {what} in {name}'s page; it shows:\n{t}"
+            );
+            std::thread::sleep(Duration::from_millis(100));
+        }
+    }
+
     /// The value a script returns, as JSON text.
     pub fn js(&mut self, name: &str, script: &str) -> String {
         let line = self.cmd(&format!(

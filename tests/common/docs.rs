@@ -65,7 +65,7 @@ pub fn words(command: &str, home: &Path) -> Vec<String> {
 /// surfaces `steel.txt` and `afm.txt` (the shipped example's map), a
 /// header-less line scan `scan.txt`, an x3p `scan.x3p` and a Gwyddion
 /// file of four channels `afm.gwy` (rough-surface's test data), files
-/// of formats refused with advice (`scan.datx`, `h.npy`, `cloud.xyz`) and a
+/// of formats refused with advice (`scan.nc`, `h.npy`, `cloud.xyz`) and a
 /// lecturer's public key.
 pub fn workspace() -> tempfile::TempDir {
     let dir = tempfile::tempdir().unwrap();
@@ -96,11 +96,7 @@ pub fn workspace() -> tempfile::TempDir {
         std::fs::copy(formats.join(from), dir.path().join(to)).unwrap();
     }
     // Files of formats roughtui refuses with advice (docs/surfaces.md).
-    std::fs::write(
-        dir.path().join("scan.datx"),
-        b"\x89HDF\r\n\x1a\n0000000000000000",
-    )
-    .unwrap();
+    std::fs::write(dir.path().join("scan.nc"), b"CDF\x01\0\0\0\0").unwrap();
     std::fs::write(dir.path().join("h.npy"), b"\x93NUMPY\x01\x00v\x00{}").unwrap();
     std::fs::write(
         dir.path().join("cloud.xyz"),

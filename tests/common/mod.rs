@@ -6,6 +6,7 @@ pub mod app;
 pub mod browser;
 pub mod cli;
 pub mod client;
+pub mod codes;
 pub mod contact;
 pub mod docs;
 pub mod lecture;

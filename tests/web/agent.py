@@ -4,6 +4,11 @@ selenium, one browser per student, driven by JSON commands on stdin (one a
 line), each answered by one JSON line on stdout:
 
   {"op": "open", "name": "ada", "url": "http://…/?name=ada", "w": 1200, "h": 800}
+  {"op": "open", …, "mobile": true}   a phone: Chromium's mobile emulation at
+                                       w×h CSS pixels, touch, an Android agent
+  {"op": "tap", "name": "ada", "label": "more"}   a finger's tap on the
+                                       element of that aria-label
+  {"op": "shot", "name": "ada", "path": "/tmp/a.png"}   a screenshot
   {"op": "text", "name": "ada"}        the terminal's text (screen-reader rows)
   {"op": "keys", "name": "ada", "keys": ["Right", "S-Right", "Enter", "q"]}
   {"op": "resize", "name": "ada", "w": 400, "h": 800}
@@ -21,6 +26,9 @@ from selenium import webdriver
 from selenium.webdriver.chrome.options import Options
 from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.action_chains import ActionChains
+from selenium.webdriver.common.actions import interaction
+from selenium.webdriver.common.actions.action_builder import ActionBuilder
+from selenium.webdriver.common.actions.pointer_input import PointerInput
 from selenium.webdriver.common.keys import Keys
 
 FLAGS = [
@@ -34,6 +42,9 @@ KEYS = {
     "Up": Keys.ARROW_UP, "Down": Keys.ARROW_DOWN, "Escape": Keys.ESCAPE,
     "Tab": Keys.TAB,
 }
+
+ANDROID = ("Mozilla/5.0 (Linux; Android 14; Pixel 8) AppleWebKit/537.36 "
+           "(KHTML, like Gecko) Chrome/126.0 Mobile Safari/537.36")
 
 browsers = {}
 homes = []
@@ -52,6 +63,12 @@ def open_browser(c):
     for f in FLAGS + [f"--user-data-dir={home.name}", f"--window-size={c['w']},{c['h']}"]:
         o.add_argument(f)
     o.binary_location = "/usr/bin/chromium"
+    if c.get("mobile"):
+        o.add_experimental_option("mobileEmulation", {
+            "deviceMetrics": {"width": c["w"], "height": c["h"], "pixelRatio": 2.0,
+                              "touch": True},
+            "userAgent": ANDROID,
+        })
     d = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=o)
     d.set_page_load_timeout(30)
     d.get(c["url"])
@@ -72,6 +89,16 @@ def keys(c):
     return True
 
 
+def tap(c):
+    d = browsers[c["name"]]
+    el = d.find_element("css selector", f'[aria-label="{c["label"]}"]')
+    finger = PointerInput(interaction.POINTER_TOUCH, "finger")
+    a = ActionBuilder(d, mouse=finger)
+    a.pointer_action.move_to(el).pointer_down().pause(0.05).pointer_up()
+    a.perform()
+    return True
+
+
 def run(c):
     op = c["op"]
     if op == "open":
@@ -85,6 +112,10 @@ def run(c):
         return d.execute_script(TEXT)
     if op == "keys":
         return keys(c)
+    if op == "tap":
+        return tap(c)
+    if op == "shot":
+        return d.save_screenshot(c["path"])
     if op == "resize":
         d.set_window_size(c["w"], c["h"])
         return True

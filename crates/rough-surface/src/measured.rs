@@ -91,6 +91,15 @@ impl Kind {
             Kind::Psd { dim, .. } => *dim,
         }
     }
+
+    /// How many heights it holds (a PSD table none).
+    pub fn points(&self) -> Option<usize> {
+        match *self {
+            Kind::Map { nx, ny, .. } | Kind::Profiles { nx, ny, .. } => Some(nx * ny),
+            Kind::Line { n, .. } => Some(n),
+            Kind::Psd { .. } => None,
+        }
+    }
 }
 
 /// A measured surface, ready for the model.

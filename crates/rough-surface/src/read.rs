@@ -152,7 +152,8 @@ pub fn read_grid_named(
                 Problem::Format("a gzip-compressed file inside a gzip-compressed file".into()),
             ));
         }
-        return formats::grid_of(&sniff::format(&inner, gz::inner(&ext)), &inner, opts);
+        let ext = gz::inner_of(bytes, &ext);
+        return formats::grid_of(&sniff::format(&inner, &ext), &inner, opts);
     }
     formats::grid_of(&sniff::format(bytes, &ext), bytes, opts)
 }
@@ -173,7 +174,7 @@ fn parse_file(
                 Problem::Format("a gzip-compressed file inside a gzip-compressed file".into()),
             ));
         }
-        let mut m = parse_file(&inner, opts, gz::inner(ext))?;
+        let mut m = parse_file(&inner, opts, &gz::inner_of(bytes, ext))?;
         m.sha256 = sha256_hex(bytes);
         return Ok(m);
     }
@@ -330,6 +331,13 @@ pub(crate) fn measured(
         _ => r.advice,
     };
     notes.extend(units::plausibility(&c.table, advice));
+    if let (Some(r), Some(n)) = (&c.real, r.kind.points()) {
+        notes.extend(crate::spectrum::amplitude::scars(
+            &r.amplitude,
+            r.rms_height,
+            n,
+        ));
+    }
     let band = band::self_affine(r.kind.dim(), &c.spectrum, &c.modes);
     Measured {
         kind: r.kind,

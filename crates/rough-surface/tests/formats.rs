@@ -373,19 +373,22 @@ fn other_formats_get_a_way_forward() {
         std::fs::write(&p, content).unwrap();
         read(&p, &Options::default()).unwrap_err().to_string()
     };
+    // Read natively: a file cut short says so, naming the format.
     let e = refuse("scan.datx", b"\x89HDF\r\n\x1a\n\0\0\0\0");
     assert!(
-        e.ends_with(
-            "looks like a Zygo .datx file (HDF5): open it in Gwyddion and save it as .gwy \
-             or .x3p (or File → Save As → ASCII data matrix, .txt)"
-        ),
+        e.contains("Zygo .datx: its HDF5 structure cannot be read"),
         "{e}"
     );
+    let e = refuse("h.h5", b"\x89HDF\r\n\x1a\n\0\0\0\0");
+    assert!(e.contains("looks like a NetCDF-4 or HDF5 file"), "{e}");
     assert!(refuse("h.nc", b"CDF\x01\0\0\0").contains("looks like a NetCDF file"));
     assert!(refuse("h.npy", b"\x93NUMPY\x01\0v\0").contains("numpy.savetxt"));
-    assert!(refuse("h.tif", b"II*\0\x08\0\0\0").contains("looks like a TIFF image"));
+    assert!(refuse("h.tif", b"II*\0\x08\0\0\0").contains("TIFF: a directory's size"));
+    let mut tiff = b"II*\0\x08\0\0\0\x01\0".to_vec();
+    tiff.extend_from_slice(&[0, 1, 3, 0, 1, 0, 0, 0, 4, 0, 0, 0, 0, 0, 0, 0]);
+    assert!(refuse("h.tif", &tiff).contains("looks like a TIFF image that is not a JPK or Park"));
     assert!(refuse("h.spm", b"\\*File list\r\n\\Version: 0x09200201\r\n").contains("Nanoscope"));
-    assert!(refuse("h.vk4", b"VK4_\0\0\0\0").contains("Keyence .vk4"));
+    assert!(refuse("h.vk4", b"VK4_\0\0\0\0").contains("Keyence .vk4: "));
     assert!(refuse("h.plu", b"09/11/2020 12:00\0\0\0\0").contains("Sensofar .plu"));
     assert!(refuse("h.dat", b"\x88\x1b\x03\x71\0\0").contains("Zygo MetroPro"));
     // By content, not by name: an x3p named .txt is read.

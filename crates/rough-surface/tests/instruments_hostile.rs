@@ -5,45 +5,20 @@
 //! counting allocator watches every test here). Then every reader's real
 //! file mutated at random (`FUZZ_CASES` cases a reader, 48 by default).
 
-use std::alloc::{GlobalAlloc, Layout, System};
 use std::io::Read;
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 mod fuzz;
+#[path = "fuzz/harness.rs"]
+mod harness;
 
 use proptest::prelude::*;
-use rough_surface::{parse_named, read_grid_named, Options};
-
-/// The system allocator, recording the largest single allocation.
-struct Counting;
-
-static LARGEST: AtomicUsize = AtomicUsize::new(0);
-
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, l: Layout) -> *mut u8 {
-        LARGEST.fetch_max(l.size(), Ordering::Relaxed);
-        System.alloc(l)
-    }
-    unsafe fn dealloc(&self, p: *mut u8, l: Layout) {
-        System.dealloc(p, l)
-    }
-    unsafe fn alloc_zeroed(&self, l: Layout) -> *mut u8 {
-        LARGEST.fetch_max(l.size(), Ordering::Relaxed);
-        System.alloc_zeroed(l)
-    }
-    unsafe fn realloc(&self, p: *mut u8, l: Layout, n: usize) -> *mut u8 {
-        LARGEST.fetch_max(n, Ordering::Relaxed);
-        System.realloc(p, l, n)
-    }
-}
+use rough_surface::{parse_named, Options};
 
 #[global_allocator]
-static ALLOC: Counting = Counting;
+static ALLOC: fuzz::Counting = fuzz::Counting;
 
-/// Every allocation stays below this (the largest file is 4 MB, its
-/// heights 2.5 MB; a mutated header can claim at most what the file holds).
-const CEILING: usize = 64 << 20;
+use harness::{cases, put, refuse, CEILING};
 
 fn dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/instruments")
@@ -59,34 +34,9 @@ fn bytes(name: &str) -> Vec<u8> {
     out
 }
 
-/// The refusal of `b` (a file named `name`) as a line; that no
-/// allocation passed the ceiling.
-fn refuse(name: &str, b: &[u8]) -> String {
-    let e = read_grid_named(b, name, &Options::default()).expect_err("refused");
-    assert!(LARGEST.load(Ordering::Relaxed) < CEILING);
-    let line = e.1.to_string();
-    assert!(!line.contains('\n'), "{line}");
-    line
-}
-
 /// The file cut short at several places: each refused, naming `format`.
 fn truncated(name: &str, format: &str) {
-    let full = bytes(name);
-    for cut in [600, full.len() / 4, full.len() / 2] {
-        let e = refuse(name, &full[..cut.min(full.len() - 1)]);
-        assert!(e.starts_with(format), "{name} cut at {cut}: {e}");
-    }
-    // Cut before what tells it apart (its magic, an Igor wave's 384 bytes
-    // of headers and their checksum), it is a binary file not read.
-    for cut in [1, 100] {
-        let e = refuse(name, &full[..cut]);
-        let told = e.starts_with(format) || e.starts_with("a binary file");
-        assert!(told || e.starts_with("text: "), "{name} cut at {cut}: {e}");
-    }
-}
-
-fn put(b: &mut [u8], at: usize, v: &[u8]) {
-    b[at..at + v.len()].copy_from_slice(v);
+    harness::truncated(&bytes(name), name, format, false, &[1, 100]);
 }
 
 /// The first place `what` occurs in `b`.
@@ -105,7 +55,7 @@ fn digital_surf_sur() {
     put(&mut b, 116, &(1u32 << 30).to_le_bytes());
     assert_eq!(
         refuse("x.sur", &b),
-        "Digital Surf .sur: the heights claims 1048576 × 1024 points: more than the \
+        "Digital Surf .sur: the heights: 1048576 × 1024 points, more than the \
          67108864 a file is read with"
     );
     put(&mut b, 116, &7u32.to_le_bytes());
@@ -185,7 +135,7 @@ fn wyko_opd() {
     // The 'Raw' array claims more columns than its block holds.
     let mut b = full.clone();
     put(&mut b, 24020, &u16::MAX.to_le_bytes());
-    assert!(refuse("x.opd", &b).contains("Raw of 65535 × 480 points takes 125827200 bytes"));
+    assert!(refuse("x.opd", &b).contains("Raw: 65535 × 480 points take 125827200 bytes"));
     let mut b = full.clone();
     put(&mut b, 20, &7i32.to_le_bytes());
     assert!(refuse("x.opd", &b).contains("not a multiple of 24 bytes"));
@@ -201,7 +151,7 @@ fn zygo_metropro_dat() {
     let mut b = full.clone();
     put(&mut b, 68, &u16::MAX.to_be_bytes());
     put(&mut b, 70, &u16::MAX.to_be_bytes());
-    assert!(refuse("x.dat", &b).contains("claims 65535 × 65535 points: more than"));
+    assert!(refuse("x.dat", &b).contains(": 65535 × 65535 points, more than"));
     let mut b = full.clone();
     put(&mut b, 6, &1000u32.to_be_bytes());
     assert!(refuse("x.dat", &b).contains("a header of 1000 bytes"));
@@ -308,7 +258,7 @@ fn iso_sdf() {
     }
     b.extend_from_slice(&[0, 5, 0]);
     b.extend_from_slice(&[0u8; 1000]);
-    assert!(refuse("x.sdf", &b).contains("300 × 200 points takes 120000 bytes from byte 81"));
+    assert!(refuse("x.sdf", &b).contains("300 × 200 points take 120000 bytes from byte 81"));
 }
 
 #[test]
@@ -372,36 +322,6 @@ fn gzip_nests() {
     );
 }
 
-/// A file changed: bytes set or flipped, a piece cut out or repeated;
-/// half the changes in its first 64 KiB, where the headers are.
-fn mutate(b: &[u8], ops: &[(u8, usize, u8)]) -> Vec<u8> {
-    let mut b = b.to_vec();
-    for &(op, at, v) in ops {
-        if b.is_empty() {
-            break;
-        }
-        let span = if op & 0x80 != 0 {
-            b.len().min(1 << 16)
-        } else {
-            b.len()
-        };
-        let i = at % span;
-        match op % 4 {
-            0 => b[i] = v,
-            1 => b[i] ^= 1 << (v % 8),
-            2 => {
-                let n = (v as usize).min(b.len() - i);
-                b.drain(i..i + n);
-            }
-            _ => {
-                let piece = b[i..(i + v as usize).min(b.len())].to_vec();
-                b.splice(i..i, piece);
-            }
-        }
-    }
-    b
-}
-
 /// Each reader's example files, as they are named.
 const FILES: [&str; 14] = [
     "sur-2.sur",
@@ -419,16 +339,6 @@ const FILES: [&str; 14] = [
     "frt-1.frt",
     "frt-2.frt",
 ];
-
-fn cases() -> u32 {
-    std::env::var("FUZZ_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(48)
-}
-
-static RUNS: AtomicUsize = AtomicUsize::new(0);
-static REFUSED: AtomicUsize = AtomicUsize::new(0);
 
 proptest! {
     #![proptest_config(ProptestConfig {
@@ -449,35 +359,13 @@ proptest! {
         let original = CACHE.with(|c| {
             c.borrow_mut()[which].get_or_insert_with(|| bytes(name)).clone()
         });
-        let mut b = mutate(&original, &ops);
-        if cut % 5 == 0 && !b.is_empty() {
-            b.truncate(cut % b.len());
-        }
-        let r = read_grid_named(&b, name, &Options::default());
-        RUNS.fetch_add(1, Ordering::Relaxed);
-        match &r {
-            Err((_, p)) => {
-                REFUSED.fetch_add(1, Ordering::Relaxed);
-                let line = p.to_string();
-                prop_assert!(!line.is_empty() && !line.contains('\n'), "{}", line);
-            }
-            Ok(g) => prop_assert_eq!(g.z.len(), g.nx * g.ny),
-        }
-        // The small files through the whole pipeline too.
-        if original.len() < 100_000 {
-            let _ = parse_named(&b, name, &Options::default());
-        }
-        prop_assert!(LARGEST.load(Ordering::Relaxed) < CEILING);
+        harness::read_mutated(&original, name, &ops, cut).map_err(TestCaseError::fail)?;
+        prop_assert!(harness::largest() < CEILING);
     }
 }
 
 #[test]
 fn zz_fuzz_counts() {
     // Printed for the record (run after the fuzz when single-threaded).
-    eprintln!(
-        "fuzz: {} mutated files read, {} refused; largest allocation {} bytes",
-        RUNS.load(Ordering::Relaxed),
-        REFUSED.load(Ordering::Relaxed),
-        LARGEST.load(Ordering::Relaxed)
-    );
+    eprintln!("{}", harness::counts());
 }

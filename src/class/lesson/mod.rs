@@ -87,13 +87,17 @@ impl LessonAt {
         }
     }
 
+    /// The lesson's next poll (its own, or a later step's), if any.
+    fn next_poll(&self) -> Option<usize> {
+        let steps = &self.lesson.steps;
+        (self.at..steps.len()).find(|i| steps[*i].poll.is_some())
+    }
+
     /// Whether the step's claims wait: it hides them (`claims: Hidden`)
     /// and the lesson's next poll (its own, or a later step's) has not
     /// been revealed.
     fn claims_wait(&self) -> bool {
-        let steps = &self.lesson.steps;
-        let next = (self.at..steps.len()).find(|i| steps[*i].poll.is_some());
-        self.step().claims_hidden && next.is_none_or(|i| !self.revealed[i])
+        self.step().claims_hidden && self.next_poll().is_none_or(|i| !self.revealed[i])
     }
 
     pub fn step(&self) -> &Step {
@@ -108,6 +112,10 @@ impl LessonAt {
             title: self.step().title.clone(),
             pending: self.step().poll,
             claims_hidden: self.claims_wait(),
+            next: self
+                .next_poll()
+                .filter(|_| self.claims_wait())
+                .and_then(|i| self.lesson.steps[i].poll),
             left: None,
         }
     }
@@ -126,6 +134,9 @@ pub struct StepLine {
     /// The step hides its claims (`claims: Hidden`), until the lesson's
     /// next poll is revealed.
     pub claims_hidden: bool,
+    /// That next poll's question while the step hides its claims: what
+    /// would answer it stays off every screen too.
+    pub next: Option<Question>,
     /// The scene the lecturer loaded with `o`, away from the lesson's
     /// step (`n` returns to it).
     pub left: Option<String>,

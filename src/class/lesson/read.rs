@@ -33,6 +33,11 @@ struct StepFile {
     /// step before a poll whose answer they would give).
     #[serde(default)]
     claims: Option<ClaimsFile>,
+    /// `true`: the poll is a reading question (its answer is read off the
+    /// chart, whose curves stay while it is open); else a prediction,
+    /// whose curves wait for the reveal.
+    #[serde(default)]
+    read: Option<bool>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -145,7 +150,7 @@ fn read_step(s: StepFile, base: &Path) -> anyhow::Result<Step> {
     let poll = match s.poll {
         None => None,
         Some(PollFile::Claim) => Some(
-            Question::of_claims(view, &claims(&state))
+            Question::of_claims(view, &claims(&state), state.size_effect)
                 .ok_or_else(|| anyhow!("poll: Claim, but this scene makes no claim"))?,
         ),
         Some(PollFile::Share) => {
@@ -156,6 +161,8 @@ fn read_step(s: StepFile, base: &Path) -> anyhow::Result<Step> {
                 axis: state.sweep.axis(),
                 ask: Ask::ShareEver,
                 truth: share.map_or(NOWHERE, |c| c.at),
+                size_effect: state.size_effect,
+                read: false,
             })
         }
         Some(PollFile::Value(truth)) => {
@@ -169,12 +176,16 @@ fn read_step(s: StepFile, base: &Path) -> anyhow::Result<Step> {
                     sw.to()
                 );
             }
-            Some(Question {
-                axis,
-                ask: Ask::Typed,
-                truth,
-            })
+            Some(Question::typed(axis, truth))
         }
+    };
+    let poll = match (poll, s.read) {
+        (Some(q), read) => Some(Question {
+            read: read.unwrap_or(false),
+            ..q
+        }),
+        (None, Some(_)) => bail!("read: applies to a step's poll, and this step has none"),
+        (None, None) => None,
     };
     Ok(Step {
         title: s.title,

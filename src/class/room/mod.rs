@@ -37,14 +37,71 @@ pub enum Note {
     Key,
 }
 
+/// How a student reaches the class: the class list says it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Transport {
+    /// An SSH client's terminal.
+    Ssh,
+    /// The web page's terminal (xterm.js).
+    Web,
+    /// The web page's phone layout: a picture and buttons.
+    Phone,
+}
+
+impl Transport {
+    pub fn label(self) -> &'static str {
+        match self {
+            Transport::Ssh => "ssh",
+            Transport::Web => "web",
+            Transport::Phone => "phone",
+        }
+    }
+}
+
+/// A student arriving: who, from where, on what, and the seat they held
+/// before (a web page's seat token, kept over a reload).
+#[derive(Clone, Debug)]
+pub struct Arrival<'a> {
+    pub name: &'a str,
+    pub addr: IpAddr,
+    pub size: (u16, u16),
+    pub marker: &'a str,
+    pub following: bool,
+    pub via: Transport,
+    pub token: Option<&'a str>,
+}
+
+/// A seat taken: its place, the session's turn on it (a later session on
+/// the same seat takes it over), the name the class gives the student and
+/// the token that takes the seat again.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Taken {
+    pub id: SeatId,
+    pub turn: u64,
+    pub name: String,
+    pub token: String,
+    /// The seat was held before (a reload, a connection dropped).
+    pub again: bool,
+}
+
 #[derive(Debug)]
 struct Student {
     name: String,
+    /// The name as the student gave it (before `-2`): an SSH student
+    /// who comes back from the same address under it takes the seat again.
+    asked: String,
     addr: IpAddr,
     following: bool,
     size: (u16, u16),
     marker: String,
     last_key: Instant,
+    via: Transport,
+    token: String,
+    /// Whether a session holds the seat now (else the student is away:
+    /// the seat waits, its row and its answers kept).
+    here: bool,
+    /// The session's turn on the seat.
+    turn: u64,
 }
 
 #[derive(Debug, Default)]
@@ -90,6 +147,8 @@ pub struct Class {
     removed: watch::Sender<std::collections::BTreeSet<SeatId>>,
     roster: watch::Sender<u64>,
     poll: watch::Sender<Option<Arc<Poll>>>,
+    /// Moves when a seat is taken over (see [`Class::turn`]).
+    turns: watch::Sender<u64>,
 }
 
 impl Default for Class {
@@ -99,6 +158,7 @@ impl Default for Class {
             removed: watch::Sender::new(Default::default()),
             roster: watch::Sender::new(0),
             poll: watch::Sender::new(None),
+            turns: watch::Sender::new(0),
         }
     }
 }
@@ -122,7 +182,7 @@ impl Class {
         self.poll.subscribe()
     }
 
-    /// A student comes in.
+    /// A student comes in over SSH (see [`Class::take_seat`]).
     pub fn join(
         &self,
         name: &str,
@@ -131,35 +191,122 @@ impl Class {
         marker: &str,
         following: bool,
     ) -> SeatId {
-        let mut c = self.lock();
-        c.next_seat += 1;
-        let id = c.next_seat;
-        let name = c.distinct(name);
-        c.seats.insert(
-            id,
-            Student {
-                name,
-                addr,
-                following,
-                size,
-                marker: marker.to_string(),
-                last_key: Instant::now(),
-            },
-        );
-        drop(c);
-        self.changed();
-        id
+        self.take_seat(&Arrival {
+            name,
+            addr,
+            size,
+            marker,
+            following,
+            via: Transport::Ssh,
+            token: None,
+        })
+        .id
     }
 
-    /// The name a seat has in the class (made distinct at [`Class::join`]).
+    /// A student takes a seat: the one their token names (a page
+    /// reloaded, a tab that lost its connection: the same row in the
+    /// class list, the same name, the same answers), or, over SSH, the
+    /// seat an SSH student of the same name from the same address left;
+    /// else a new seat, under a name no other student has. A session
+    /// still on the seat is taken over ([`Class::turn`] says so).
+    pub fn take_seat(&self, a: &Arrival) -> Taken {
+        let mut c = self.lock();
+        let again = match a.token {
+            Some(t) => c
+                .seats
+                .iter()
+                .find(|(_, s)| s.token == t)
+                .map(|(id, _)| *id),
+            None if a.via == Transport::Ssh => c
+                .seats
+                .iter()
+                .find(|(_, s)| {
+                    !s.here && s.via == Transport::Ssh && s.asked == a.name && s.addr == a.addr
+                })
+                .map(|(id, _)| *id),
+            None => None,
+        };
+        let taken = if let Some(id) = again {
+            let s = c.seats.get_mut(&id).expect("found");
+            s.here = true;
+            s.turn += 1;
+            s.addr = a.addr;
+            s.following = a.following;
+            s.size = a.size;
+            s.marker = a.marker.to_string();
+            s.last_key = Instant::now();
+            s.via = a.via;
+            Taken {
+                id,
+                turn: s.turn,
+                name: s.name.clone(),
+                token: s.token.clone(),
+                again: true,
+            }
+        } else {
+            c.next_seat += 1;
+            let id = c.next_seat;
+            let name = c.distinct(a.name);
+            let token = names::token();
+            c.seats.insert(
+                id,
+                Student {
+                    name: name.clone(),
+                    asked: a.name.to_string(),
+                    addr: a.addr,
+                    following: a.following,
+                    size: a.size,
+                    marker: a.marker.to_string(),
+                    last_key: Instant::now(),
+                    via: a.via,
+                    token: token.clone(),
+                    here: true,
+                    turn: 1,
+                },
+            );
+            Taken {
+                id,
+                turn: 1,
+                name,
+                token,
+                again: false,
+            }
+        };
+        drop(c);
+        if taken.again {
+            self.turns.send_modify(|n| *n += 1);
+        }
+        self.changed();
+        taken
+    }
+
+    /// The session's turn on a seat now: a session whose turn it is not
+    /// was taken over by a later one (the page reloaded).
+    pub fn turn(&self, id: SeatId) -> Option<u64> {
+        self.lock().seats.get(&id).map(|s| s.turn)
+    }
+
+    /// What sessions watch to learn their seat was taken over.
+    pub fn watch_turns(&self) -> watch::Receiver<u64> {
+        self.turns.subscribe()
+    }
+
+    /// The name a seat has in the class (made distinct when it was taken).
     pub fn name(&self, id: SeatId) -> Option<String> {
         self.lock().seats.get(&id).map(|s| s.name.clone())
     }
 
-    /// The lecturer removes a student: their session ends, told why;
-    /// whether they were here.
+    /// The lecturer removes a student: their session ends, told why, and
+    /// their seat goes (a token no longer takes it); their name, if they
+    /// were here.
     pub fn remove(&self, id: SeatId) -> Option<String> {
-        let name = self.lock().seats.get(&id).map(|s| s.name.clone())?;
+        let name = {
+            let mut c = self.lock();
+            let s = c.seats.get_mut(&id)?;
+            // A fresh token: the old one takes no seat.
+            s.token = names::token();
+            s.name.clone()
+        };
         self.removed.send_modify(|r| {
             r.insert(id);
         });
@@ -171,11 +318,22 @@ impl Class {
         self.removed.subscribe()
     }
 
-    /// A student goes; an answer they gave stays in the poll.
-    pub fn leave(&self, id: SeatId) {
-        if self.lock().seats.remove(&id).is_some() {
-            self.changed();
+    /// A student's session on its `turn` goes: the seat waits for them
+    /// (out of the class list, its answers staying in the poll); a
+    /// removed student's seat goes. A session taken over leaves nothing.
+    pub fn leave(&self, id: SeatId, turn: u64) {
+        let gone = self.removed.borrow().contains(&id);
+        let mut c = self.lock();
+        let Some(s) = c.seats.get_mut(&id).filter(|s| s.turn == turn) else {
+            return;
+        };
+        if gone {
+            c.seats.remove(&id);
+        } else {
+            s.here = false;
         }
+        drop(c);
+        self.changed();
     }
 
     pub fn note(&self, id: SeatId, note: Note) {
@@ -198,7 +356,8 @@ impl Class {
         }
     }
 
-    /// How many students came, in all.
+    /// How many students came, in all: seats taken (a student who
+    /// reloaded, or came back, counts once).
     pub fn seen(&self) -> u64 {
         self.lock().next_seat
     }
@@ -211,6 +370,7 @@ impl Class {
         let seats = c
             .seats
             .iter()
+            .filter(|(_, s)| s.here)
             .map(|(id, s)| Seat {
                 id: *id,
                 name: s.name.clone(),
@@ -223,14 +383,16 @@ impl Class {
                 size: s.size,
                 marker: s.marker.clone(),
                 idle: now.saturating_duration_since(s.last_key),
+                via: s.via.label(),
             })
             .collect();
         let poll = c.poll.as_ref().map(|o| {
-            let gone = o.answers.keys().filter(|k| !c.seats.contains_key(k));
+            let here = |k: &u64| c.seats.get(k).is_some_and(|s| s.here);
+            let gone = o.answers.keys().filter(|k| !here(k));
             Tally {
                 question: o.poll.question,
                 answers: o.answers.values().map(|a| a.1).collect(),
-                asked: c.seats.len() + gone.count(),
+                asked: c.seats.values().filter(|s| s.here).count() + gone.count(),
                 revealed: o.poll.revealed,
                 sweep: o.poll.scene.state.sweep,
             }
@@ -240,7 +402,7 @@ impl Class {
 
     /// How many students are here.
     pub fn students(&self) -> usize {
-        self.lock().seats.len()
+        self.lock().seats.values().filter(|s| s.here).count()
     }
 
     /// The console's summary line; `None` while no student is here.

@@ -38,3 +38,25 @@ pub fn clean_name(raw: &str) -> String {
 fn invisible(c: char) -> bool {
     matches!(c as u32, 0x200b..=0x200f | 0x202a..=0x202e | 0x2060..=0x206f | 0xfeff)
 }
+
+/// A seat's token: 128 random bits from the system's generator, as 32
+/// hexadecimal digits (only the page that took the seat knows it).
+pub fn token() -> String {
+    use std::io::Read;
+    let mut b = [0u8; 16];
+    let read = std::fs::File::open("/dev/urandom").and_then(|mut f| f.read_exact(&mut b));
+    if read.is_err() {
+        // No system generator: the time and the process, hashed twice
+        // (a seat's token then guards against slips, not guessers).
+        use std::hash::{BuildHasher, Hasher};
+        let t = std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map_or(0, |d| d.as_nanos());
+        for (i, half) in b.chunks_mut(8).enumerate() {
+            let mut h = std::collections::hash_map::RandomState::new().build_hasher();
+            h.write_u128(t ^ i as u128);
+            half.copy_from_slice(&h.finish().to_le_bytes());
+        }
+    }
+    b.iter().map(|x| format!("{x:02x}")).collect()
+}

@@ -94,7 +94,7 @@ impl Class {
         open.poll = Arc::new(p);
         open.silent = seats
             .iter()
-            .filter(|(id, _)| !open.answers.contains_key(id))
+            .filter(|(id, s)| s.here && !open.answers.contains_key(id))
             .map(|(_, s)| s.name.clone())
             .collect();
         let poll = Arc::clone(&open.poll);
@@ -176,7 +176,9 @@ impl Class {
     /// did not answer. Values in the model's units (metres for lengths);
     /// `offset` is the answer minus the truth; `step` the lesson's step
     /// the poll was asked on (empty outside a lesson), `time` when the
-    /// answer came (UTC).
+    /// answer came (UTC), `poll` the class's count of polls asked (1 for
+    /// the first), `revealed` `yes`, or `no` for a poll saved open (the
+    /// server stopped before its reveal).
     pub fn csv(&self) -> Option<String> {
         self.csv_rows().map(|rows| format!("{CSV_HEADER}\n{rows}"))
     }
@@ -196,6 +198,11 @@ impl Class {
         let step = (o.poll.scene.step.as_ref())
             .filter(|s| s.left.is_none())
             .map_or(String::new(), |s| s.at.to_string());
+        let tail = format!(
+            "{},{}",
+            o.poll.id,
+            if o.poll.revealed { "yes" } else { "no" }
+        );
         let mut s = String::new();
         for (name, v, at) in o.answers.values() {
             let offset = if v.is_finite() && q.truth.is_finite() {
@@ -204,7 +211,7 @@ impl Class {
                 String::new()
             };
             s.push_str(&format!(
-                "{head},{},{},{offset},{step},{}\n",
+                "{head},{},{},{offset},{step},{},{tail}\n",
                 csv_field(name),
                 csv_value(*v),
                 utc(*at)
@@ -215,12 +222,15 @@ impl Class {
         } else {
             c.seats
                 .iter()
-                .filter(|(id, _)| !o.answers.contains_key(id))
+                .filter(|(id, st)| st.here && !o.answers.contains_key(id))
                 .map(|(_, st)| st.name.clone())
                 .collect()
         };
         for name in silent {
-            s.push_str(&format!("{head},{},no answer,,{step},\n", csv_field(&name)));
+            s.push_str(&format!(
+                "{head},{},no answer,,{step},,{tail}\n",
+                csv_field(&name)
+            ));
         }
         Some(s)
     }

@@ -2,7 +2,7 @@
 //! explorer makes the scene a poll is asked on.)
 
 use super::*;
-use crate::class::{Ask, Question, Shown, UNICODE};
+use crate::class::{Arrival, Ask, Question, Shown, Transport, UNICODE};
 use rough_model::Axis;
 
 fn shown() -> Shown {
@@ -19,6 +19,8 @@ fn question() -> Question {
         axis: Axis::Zeta,
         ask: Ask::Share { rising: true },
         truth: 321.5,
+        size_effect: false,
+        read: false,
     }
 }
 
@@ -28,12 +30,14 @@ const HOME: IpAddr = IpAddr::V4(std::net::Ipv4Addr::LOCALHOST);
 fn untimed(csv: &str) -> String {
     let mut out = String::new();
     for line in csv.lines() {
-        let (rest, time) = line.rsplit_once(',').unwrap();
+        // The time is the third field from the end (then poll, revealed).
+        let f: Vec<&str> = line.rsplitn(4, ',').collect();
+        let (tail, time, rest) = (format!("{},{}", f[1], f[0]), f[2], f[3]);
         if time.is_empty() || time == "time" {
             out.push_str(line);
         } else {
             assert_eq!((time.len(), &time[10..11], &time[19..]), (20, "T", "Z"));
-            out.push_str(&format!("{rest},T"));
+            out.push_str(&format!("{rest},T,{tail}"));
         }
         out.push('\n');
     }
@@ -55,11 +59,13 @@ fn two_students_of_one_name_get_distinct_names() {
     let d = class.join(&long, HOME, (80, 24), "braille", true);
     let n = class.name(d).unwrap();
     assert!(n.ends_with("-2") && n.chars().count() == NAME_CHARS, "{n}");
-    // One who answered and left keeps the name in the poll's rows.
+    // One who answered and left keeps the name in the poll's rows; an
+    // ada from elsewhere does not take it.
     let id = class.open(question(), shown());
     class.answer(b, id, 100.0).unwrap();
-    class.leave(b);
-    let e = class.join("ada", HOME, (80, 24), "braille", true);
+    class.leave(b, 1);
+    let away: IpAddr = "10.0.0.9".parse().unwrap();
+    let e = class.join("ada", away, (80, 24), "braille", true);
     assert_eq!(class.name(e).unwrap(), "ada-4");
     assert!(class.reveal(false));
     let names: Vec<String> = (class.csv().unwrap().lines().skip(1))
@@ -116,8 +122,8 @@ fn the_roster_counts_and_wakes_only_the_lecturer() {
         class.summary().unwrap(),
         "class: 2 students, 1 following, 1 on their own"
     );
-    class.leave(a);
-    class.leave(b);
+    class.leave(a, 1);
+    class.leave(b, 1);
     assert_eq!(class.summary(), None);
     poll.mark_unchanged();
 }
@@ -143,7 +149,7 @@ fn a_poll_is_answered_revealed_and_refuses_late_answers() {
     assert_eq!(v.seats[2].state, SeatState::Answering);
     assert_eq!(v.seats[0].state, SeatState::Answered);
     // Bob leaves: his answer stays and still counts.
-    class.leave(b);
+    class.leave(b, 1);
     assert_eq!(class.view().line(&UNICODE), "2 students · 2/3 answered");
     assert!(class.reveal(false));
     assert!(!class.reveal(false));
@@ -177,10 +183,10 @@ fn a_poll_is_answered_revealed_and_refuses_late_answers() {
     );
     assert_eq!(
         untimed(&class.csv().unwrap()),
-        "question,quantity,unit,truth,name,answer,offset,step,time\n\
-         where does the plastic share pass 1/2?,zeta,,321.5,alice,200,-121.5,,T\n\
-         where does the plastic share pass 1/2?,zeta,,321.5,\"b,\"\"ob\"\"\",1000,678.5,,T\n\
-         where does the plastic share pass 1/2?,zeta,,321.5,carol,no answer,,,\n"
+        "question,quantity,unit,truth,name,answer,offset,step,time,poll,revealed\n\
+         where does the plastic share pass 1/2?,zeta,,321.5,alice,200,-121.5,,T,1,yes\n\
+         where does the plastic share pass 1/2?,zeta,,321.5,\"b,\"\"ob\"\"\",1000,678.5,,T,1,yes\n\
+         where does the plastic share pass 1/2?,zeta,,321.5,carol,no answer,,,,1,yes\n"
     );
     assert_eq!(
         class.view().line(&UNICODE),
@@ -201,8 +207,8 @@ fn a_poll_is_answered_revealed_and_refuses_late_answers() {
             .skip(1)
             .collect::<Vec<_>>(),
         [
-            "where does the plastic share pass 1/2?,zeta,,321.5,carol,5,-316.5,,T",
-            "where does the plastic share pass 1/2?,zeta,,321.5,alice,no answer,,,"
+            "where does the plastic share pass 1/2?,zeta,,321.5,carol,5,-316.5,,T,2,no",
+            "where does the plastic share pass 1/2?,zeta,,321.5,alice,no answer,,,,2,no"
         ]
     );
     assert!(class.cancel());
@@ -210,4 +216,62 @@ fn a_poll_is_answered_revealed_and_refuses_late_answers() {
     assert_eq!(class.csv(), None);
     assert_eq!(class.answer(c, id2, 5.0), Err(Refused::NoPoll));
     assert_eq!((class.polls(), class.seen()), (2, 3));
+}
+
+fn arrival<'a>(name: &'a str, via: Transport, token: Option<&'a str>) -> Arrival<'a> {
+    Arrival {
+        name,
+        addr: HOME,
+        size: (80, 24),
+        marker: "braille",
+        following: true,
+        via,
+        token,
+    }
+}
+
+#[test]
+fn a_seat_is_taken_again_by_its_token_or_over_ssh_by_name_and_address() {
+    let class = Class::default();
+    let pia = class.take_seat(&arrival("pia", Transport::Phone, None));
+    let bob = class.take_seat(&arrival("bob", Transport::Web, None));
+    assert_eq!((pia.turn, pia.again, pia.token.len()), (1, false, 32));
+    assert_ne!(pia.token, bob.token);
+    let poll = class.open(question(), shown());
+    class.answer(pia.id, poll, 200.0).unwrap();
+    // A reload: the same seat, its next turn; the old session's leave
+    // (it ends after) changes nothing.
+    let again = class.take_seat(&arrival("pia", Transport::Phone, Some(&pia.token)));
+    assert_eq!((again.id, again.turn, again.again), (pia.id, 2, true));
+    assert_eq!(again.name, "pia");
+    assert_eq!(class.turn(pia.id), Some(2));
+    class.leave(pia.id, 1);
+    assert_eq!(class.students(), 2);
+    // Away: out of the list, the seat and the answer kept; one CSV row.
+    class.leave(pia.id, 2);
+    let v = class.view();
+    assert_eq!(v.seats.len(), 1);
+    assert_eq!(v.poll.as_ref().unwrap().asked, 2, "bob, and pia's answer");
+    let back = class.take_seat(&arrival("pia", Transport::Web, Some(&pia.token)));
+    assert_eq!((back.id, back.turn), (pia.id, 3));
+    let v = class.view();
+    assert_eq!(v.seats[0].name, "pia");
+    assert_eq!(v.seats[0].via, "web");
+    assert!(class.reveal(false));
+    let csv = class.csv().unwrap();
+    assert_eq!(csv.matches(",pia,").count(), 1, "{csv}");
+    // A token of no seat takes a new one; over the web no name does.
+    let stranger = class.take_seat(&arrival("pia", Transport::Web, Some("00ff")));
+    assert_eq!((stranger.again, stranger.name.as_str()), (false, "pia-2"));
+    // Over SSH, the same name from the same address takes the seat left.
+    let ssh = class.join("sam", HOME, (80, 24), "braille", true);
+    class.leave(ssh, 1);
+    assert_eq!(class.join("sam", HOME, (80, 24), "braille", true), ssh);
+    // A student the lecturer removed keeps no seat: the token is void.
+    class.remove(bob.id);
+    class.leave(bob.id, 1);
+    let bob2 = class.take_seat(&arrival("bob", Transport::Web, Some(&bob.token)));
+    assert!(!bob2.again && bob2.id != bob.id);
+    // Students who came: seats, not sessions.
+    assert_eq!(class.seen(), 5);
 }

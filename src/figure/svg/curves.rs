@@ -42,6 +42,26 @@ fn marker(
     Ok(())
 }
 
+/// `c` two thirds of the way to white: a sample that reads as absent.
+fn pale(RGBColor(r, g, b): RGBColor) -> RGBColor {
+    let p = |v: u8| v + ((255 - u16::from(v)) * 2 / 3) as u8;
+    RGBColor(p(r), p(g), p(b))
+}
+
+/// A curve left out while a poll's answer waits: listed, saying so.
+fn withheld_entry(lg: &mut Legend, name: &str, colour: RGBColor, stroke: Stroke) {
+    let short = name.split_whitespace().next().unwrap_or(name);
+    let sample = match stroke {
+        Stroke::Dashed => Sample::Dashed,
+        Stroke::Solid => Sample::Solid(2),
+    };
+    lg.add(
+        format!("{short}: {}", crate::figure::Withheld::CURVE_WAITS),
+        pale(colour),
+        sample,
+    );
+}
+
 pub(super) fn slopes(
     area: &Area,
     state: &State,
@@ -50,11 +70,28 @@ pub(super) fn slopes(
 ) -> anyhow::Result<Placed> {
     let s = Scene::compute(&state.scene_spec(Curves::ALL, opts.points))?;
     let x = x_scale(state);
-    let (_, hi) = positive_span(s.elastic.iter().chain(&s.total).chain(&s.persson_elastic));
+    // Fitted to the curves drawn: while a poll's answer waits, the range
+    // says nothing of those left out.
+    let w = opts.withheld;
+    let drawn = |k: usize, ys: &'_ [f64]| -> Vec<f64> {
+        if w.slopes[k] {
+            Vec::new()
+        } else {
+            ys.to_vec()
+        }
+    };
+    let (el, pl, tot, per) = (
+        drawn(0, &s.elastic),
+        drawn(1, &s.plastic),
+        drawn(2, &s.total),
+        drawn(3, &s.persson_elastic),
+    );
+    let (_, hi) = positive_span(el.iter().chain(&tot).chain(&per));
     let (lo, _) = positive_span(
-        s.plastic
-            .iter()
-            .chain(&s.elastic)
+        pl.iter()
+            .chain(&el)
+            .chain(&tot)
+            .chain(&per)
             .filter(|v| **v >= hi * 1e-4),
     );
     // The hardness by its own name (H alone is the Hurst exponent).
@@ -64,35 +101,39 @@ pub(super) fn slopes(
     let mut lg = Legend::default();
     marker(&mut c, &mut lg, state, (&x, &y))?;
     let xy = (&x, &y);
-    let solid = Stroke::Solid;
     // Every listed curve can be found: say where one lies under another
-    // or below the chart.
-    let el = if coincide(&s.elastic, &s.total) {
+    // or below the chart (not while a poll's answer waits: that says it).
+    let el = if coincide(&s.elastic, &s.total) && !w.marks {
         "elastic (= total here)"
     } else {
         "elastic"
     };
-    let pl = if s.plastic.iter().any(|&v| y.contains(v)) {
+    let pl = if s.plastic.iter().any(|&v| y.contains(v)) || w.marks {
         "plastic"
     } else {
         "plastic (below the chart here)"
     };
-    line(&mut c, &mut lg, xy, (&s.x, &s.elastic), ELASTIC, solid, el)?;
-    line(&mut c, &mut lg, xy, (&s.x, &s.plastic), PLASTIC, solid, pl)?;
-    line(&mut c, &mut lg, xy, (&s.x, &s.total), TOTAL, solid, "total")?;
-    let persson = (&s.x[..], &s.persson_elastic[..]);
-    let dashed = Stroke::Dashed;
     // ψ by its name: the index in use.
     let psi = state.index_name();
-    line(
-        &mut c,
-        &mut lg,
-        xy,
-        persson,
-        PERSSON,
-        dashed,
-        &format!("Persson elastic √(2/π)/{psi}"),
-    )?;
+    let persson_name = format!("Persson elastic √(2/π)/{psi}");
+    let curves = [
+        (&s.elastic, ELASTIC, Stroke::Solid, el),
+        (&s.plastic, PLASTIC, Stroke::Solid, pl),
+        (&s.total, TOTAL, Stroke::Solid, "total"),
+        (
+            &s.persson_elastic,
+            PERSSON,
+            Stroke::Dashed,
+            persson_name.as_str(),
+        ),
+    ];
+    for ((ys, colour, stroke, name), hidden) in curves.into_iter().zip(w.slopes) {
+        if hidden {
+            withheld_entry(&mut lg, name, colour, stroke);
+        } else {
+            line(&mut c, &mut lg, xy, (&s.x, ys), colour, stroke, name)?;
+        }
+    }
     lg.draw(area, &c, room.is_some())
 }
 
@@ -126,45 +167,21 @@ pub(super) fn indices(
     )?;
     let xy = (&x, &y);
     let solid = Stroke::Solid;
-    line(
-        &mut c,
-        &mut lg,
-        xy,
-        (&s.x, &s.psi_gw),
-        PSI_GW,
-        solid,
-        "Ψ_GW (Greenwood–Williamson)",
-    )?;
-    line(
-        &mut c,
-        &mut lg,
-        xy,
-        (&s.x, &s.psi_p),
-        PLASTIC,
-        solid,
-        "Ψ_P (Persson, H0)",
-    )?;
-    line(
-        &mut c,
-        &mut lg,
-        xy,
-        (&s.x, &s.psi_star),
-        TOTAL,
-        solid,
-        "Ψ* (size-dependent H_y)",
-    )?;
+    let curves = [
+        (&s.psi_gw, PSI_GW, solid, "Ψ_GW (Greenwood–Williamson)"),
+        (&s.psi_p, PLASTIC, solid, "Ψ_P (Persson, H0)"),
+        (&s.psi_star, TOTAL, solid, "Ψ* (size-dependent H_y)"),
+        (&asy, PSI_ASY, Stroke::Dashed, "Ψ*asy (eq. 13)"),
+    ];
     // Eq. 13 is a power law's: no line on a measured surface.
-    if !state.is_measured() {
-        let dashed = Stroke::Dashed;
-        line(
-            &mut c,
-            &mut lg,
-            xy,
-            (&s.x, &asy),
-            PSI_ASY,
-            dashed,
-            "Ψ*asy (eq. 13)",
-        )?;
+    let n = if state.is_measured() { 3 } else { 4 };
+    let hidden = opts.withheld.indices;
+    for ((ys, colour, stroke, name), hidden) in curves.into_iter().zip(hidden).take(n) {
+        if hidden {
+            withheld_entry(&mut lg, name, colour, stroke);
+        } else {
+            line(&mut c, &mut lg, xy, (&s.x, ys), colour, stroke, name)?;
+        }
     }
     lg.draw(area, &c, room.is_some())
 }
@@ -191,6 +208,12 @@ pub(super) fn load(
         desc: "contact area A/A0".into(),
     };
     let psi = state.index_name();
+    if opts.withheld.marks {
+        // At the marker: the areas (and the index) would answer the poll.
+        let c = chart(area, &title(state, "areas against load"), (&x, &y), room)?;
+        super::waits(area, &c, "the areas at the marker")?;
+        return Ok(Placed::Inside);
+    }
     let what = format!("areas against load at {psi} = {}", short_number(l.psi));
     let mut c = chart(area, &title(state, &what), (&x, &y), room)?;
     let mut lg = Legend::default();

@@ -9,6 +9,7 @@
 
 use plotters::prelude::*;
 
+pub(crate) use super::entry::{Entry, Sample};
 use super::{plot_err, Area, Chart};
 
 /// Pixels per character of a legend label (plotters writes its 14-point
@@ -23,22 +24,6 @@ const INSET: i32 = 8;
 /// spaces (a box of at most 18 + 22 + 37 × 7 = 299 px, a third of the
 /// page).
 pub(crate) const MAX_CHARS: usize = 37;
-
-/// How a legend entry's sample is drawn.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) enum Sample {
-    Solid(u32),
-    Dashed,
-    /// A filled dot of this radius (a simulation's points).
-    Dot(u32),
-}
-
-#[derive(Clone, Debug)]
-pub(crate) struct Entry {
-    pub label: String,
-    pub colour: RGBColor,
-    pub sample: Sample,
-}
 
 /// What a view drew: its legend entries and every line, to keep the
 /// legend off them.
@@ -102,7 +87,8 @@ impl Legend {
     /// else nothing is drawn and [`Placed::NoRoom`] says how much room it
     /// needs.
     pub fn draw(&self, area: &Area, c: &Chart, outside: bool) -> anyhow::Result<Placed> {
-        if self.entries.is_empty() {
+        // A phone's page lists the legend under the picture.
+        if self.entries.is_empty() || super::phone::keep(&self.entries) {
             return Ok(Placed::Inside);
         }
         let (xr, yr) = c.plotting_area().get_pixel_range();

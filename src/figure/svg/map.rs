@@ -10,8 +10,9 @@ use crate::figure::{
 };
 use crate::scene::State;
 
-/// Width of the legend panel right of the map.
+/// Width of the legend panel right of the map (on a phone's picture).
 const LEGEND_W: u32 = 230;
+const NARROW_W: u32 = 110;
 
 const CONTOUR: RGBColor = RGBColor(255, 255, 255);
 const POINT: RGBColor = RGBColor(255, 0, 0);
@@ -41,8 +42,10 @@ fn scale(log: bool, e0: f64, e1: f64, desc: String) -> Scale {
 
 pub(super) fn draw(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::Result<()> {
     let spec = MapSpec::of(state, opts.grid, opts.map_y)?;
-    let m = RegimeMap::compute(&spec);
-    let (plot, side) = area.split_horizontally(area.dim_in_pixel().0 - LEGEND_W);
+    // A phone's picture: a narrow panel, the bar's ends and thresholds only.
+    let narrow = super::phone::size().is_some();
+    let legend_w = if narrow { NARROW_W } else { LEGEND_W };
+    let (plot, side) = area.split_horizontally(area.dim_in_pixel().0 - legend_w);
     let drawn = |s: &rough_model::Sweep| {
         let log = s.axis().is_log();
         let t = |v: f64| if log { v.log10() } else { v };
@@ -55,6 +58,14 @@ pub(super) fn draw(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::
     let x = scale(xlog, xe[0], xe[spec.cols], axis_desc(spec.x.axis()));
     let y = scale(ylog, ye[0], ye[spec.rows], axis_desc(spec.y.axis()));
     let mut c = chart(&plot, &title(state, "regime map"), (&x, &y), None)?;
+    if opts.withheld.marks {
+        // Along the marker's row the colours show where the share passes
+        // ½: the axes and the point only.
+        super::waits(&plot, &c, "the colours and the Ψ = 1 contour")?;
+        point(&mut c, &spec, (xa, xb), (ya, yb))?;
+        return Ok(());
+    }
+    let m = RegimeMap::compute(&spec);
 
     // Cells, as runs of equal colour along each row.
     let mut rects = Vec::new();
@@ -85,7 +96,18 @@ pub(super) fn draw(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::
         super::fine::path(&mut c, vec![a, b], contour_style)?;
     }
 
-    // The current point, where it lies on the map.
+    let on_map = point(&mut c, &spec, (xa, xb), (ya, yb))?;
+    side_legend(&side, &m, on_map, narrow)
+}
+
+/// The current point, where it lies on the map (drawn from `xa` to `xb`
+/// across, `ya` to `yb` up); whether it does.
+fn point(
+    c: &mut super::Chart,
+    spec: &MapSpec,
+    (xa, xb): (f64, f64),
+    (ya, yb): (f64, f64),
+) -> anyhow::Result<bool> {
     let (fx, fy) = spec.position();
     let on_map = (0.0..=1.0).contains(&fx) && (0.0..=1.0).contains(&fy);
     if on_map {
@@ -93,7 +115,7 @@ pub(super) fn draw(area: &Area, state: &State, opts: &FigureOptions) -> anyhow::
         c.draw_series(std::iter::once(Circle::new(p, 7, POINT.stroke_width(3))))
             .map_err(plot_err)?;
     }
-    side_legend(&side, &m, on_map)
+    Ok(on_map)
 }
 
 /// The Ψ = 1 line by marching squares over the cell centres `xc` × `yc`
@@ -159,12 +181,23 @@ pub(crate) fn contour(m: &RegimeMap, xc: &[f64], yc: &[f64]) -> Vec<[(f64, f64);
 
 /// The colour bar with the thresholds, the contour and, where it is on the
 /// map, the current point.
-fn side_legend(area: &Area, m: &RegimeMap, point: bool) -> anyhow::Result<()> {
+fn side_legend(area: &Area, m: &RegimeMap, point: bool, narrow: bool) -> anyhow::Result<()> {
     let font = ("sans-serif", 14).into_font();
     let text = |s: String, x: i32, y: i32| Text::new(s, (x, y), font.clone());
-    let (x0, top, bar_h) = (15, 60, 260);
-    area.draw(&text("plastic share S_pl/S_tot".into(), x0, top - 30))
-        .map_err(plot_err)?;
+    let (x0, top, bar_h) = if narrow {
+        (5, 70, area.dim_in_pixel().1 as i32 - 200)
+    } else {
+        (15, 60, 260)
+    };
+    let head: &[&str] = if narrow {
+        &["plastic", "share"]
+    } else {
+        &["plastic share S_pl/S_tot"]
+    };
+    for (i, h) in head.iter().enumerate() {
+        let y = top - 30 - 18 * (head.len() - 1 - i) as i32;
+        area.draw(&text((*h).into(), x0, y)).map_err(plot_err)?;
+    }
     let steps = 52;
     for k in 0..steps {
         let share = 1.0 - (k as f64 + 0.5) / steps as f64;
@@ -176,25 +209,41 @@ fn side_legend(area: &Area, m: &RegimeMap, point: bool) -> anyhow::Result<()> {
         .map_err(plot_err)?;
     }
     let at = |share: f64| top + ((1.0 - share) * f64::from(bar_h)) as i32;
-    for (share, label) in [
-        (1.0, "1 plastic".to_string()),
-        (PLASTIC_ABOVE, format!("{PLASTIC_ABOVE} plastic above")),
-        (0.5, "0.5".to_string()),
-        (ELASTIC_BELOW, format!("{ELASTIC_BELOW} elastic below")),
-        (0.0, "0 elastic".to_string()),
-    ] {
+    let marks = if narrow {
+        [
+            (1.0, "1".to_string()),
+            (PLASTIC_ABOVE, format!("{PLASTIC_ABOVE}")),
+            (0.5, "0.5".to_string()),
+            (ELASTIC_BELOW, format!("{ELASTIC_BELOW}")),
+            (0.0, "0".to_string()),
+        ]
+    } else {
+        [
+            (1.0, "1 plastic".to_string()),
+            (PLASTIC_ABOVE, format!("{PLASTIC_ABOVE} plastic above")),
+            (0.5, "0.5".to_string()),
+            (ELASTIC_BELOW, format!("{ELASTIC_BELOW} elastic below")),
+            (0.0, "0 elastic".to_string()),
+        ]
+    };
+    for (share, label) in marks {
         let y = at(share);
         area.draw(&PathElement::new(vec![(x0 + 28, y), (x0 + 36, y)], BLACK))
             .map_err(plot_err)?;
         area.draw(&text(label, x0 + 40, y - 7)).map_err(plot_err)?;
     }
     let mut y = top + bar_h + 25;
-    for line in [
-        "thresholds 10 % and 90 %:",
-        "this program's own",
-        "(the paper sets none)",
-    ] {
-        area.draw(&text(line.into(), x0, y)).map_err(plot_err)?;
+    let notes: &[&str] = if narrow {
+        &[]
+    } else {
+        &[
+            "thresholds 10 % and 90 %:",
+            "this program's own",
+            "(the paper sets none)",
+        ]
+    };
+    for line in notes {
+        area.draw(&text((*line).into(), x0, y)).map_err(plot_err)?;
         y += 18;
     }
     y += 12;
@@ -209,13 +258,15 @@ fn side_legend(area: &Area, m: &RegimeMap, point: bool) -> anyhow::Result<()> {
         CONTOUR.stroke_width(2),
     ))
     .map_err(plot_err)?;
-    area.draw(&text(format!("{psi} = 1 contour"), x0 + 40, y - 7))
+    let contour = if narrow { " = 1" } else { " = 1 contour" };
+    area.draw(&text(format!("{psi}{contour}"), x0 + 40, y - 7))
         .map_err(plot_err)?;
     if point {
         y += 26;
         area.draw(&Circle::new((x0 + 14, y), 7, POINT.stroke_width(3)))
             .map_err(plot_err)?;
-        area.draw(&text("current point".into(), x0 + 40, y - 7))
+        let what = if narrow { "marker" } else { "current point" };
+        area.draw(&text(what.into(), x0 + 40, y - 7))
             .map_err(plot_err)?;
     }
     Ok(())

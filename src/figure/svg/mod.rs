@@ -7,10 +7,12 @@ mod caption;
 mod contact;
 mod contact_map;
 mod curves;
+mod entry;
 mod fine;
 mod legend;
 mod map;
 mod moments;
+mod phone;
 mod plot;
 mod spectrum;
 mod wrap;
@@ -31,6 +33,7 @@ pub use contact::{
 };
 pub use contact_map::{render_contact_map, ContactMap};
 use legend::{Legend, Placed, Sample};
+pub use phone::{phone_note, render_phone, render_phone_with, LegendEntry, Picture, UPRIGHT, WIDE};
 use wrap::wrap;
 
 /// Picture size in pixels (SVG user units).
@@ -144,6 +147,12 @@ fn render(
         (buf, Placed::Inside) => buf,
         (_, Placed::NoRoom(room)) => render_once(draw, lines, Some(room))?.0,
     };
+    // (A phone's picture: its page says the scene.)
+    let desc = if phone::size().is_some() {
+        &[][..]
+    } else {
+        desc
+    };
     let head = format!(
         "\n<title>{}</title>\n<desc>{}</desc>\n<style>rect{{shape-rendering:crispEdges}}</style>",
         xml_text(title),
@@ -161,13 +170,22 @@ fn render_once(
 ) -> anyhow::Result<(String, Placed)> {
     let mut buf = String::new();
     fine::start();
+    phone::start();
     let placed = {
-        let root = SVGBackend::with_string(&mut buf, SIZE).into_drawing_area();
+        // A phone's picture: its shape, nothing under the chart.
+        let phone = phone::size();
+        let size = phone.unwrap_or(SIZE);
+        let root = SVGBackend::with_string(&mut buf, size).into_drawing_area();
         root.fill(&WHITE).map_err(plot_err)?;
-        let caption_h = CAPTION_H.max(2 * 8 + LINE_H * lines.len() as u32);
-        let (chart_area, caption_area) = root.split_vertically(SIZE.1 - caption_h);
-        let placed = draw(&chart_area, room)?;
-        caption(&caption_area, lines)?;
+        let placed = if phone.is_some() {
+            draw(&root, room)?
+        } else {
+            let caption_h = CAPTION_H.max(2 * 8 + LINE_H * lines.len() as u32);
+            let (chart_area, caption_area) = root.split_vertically(SIZE.1 - caption_h);
+            let placed = draw(&chart_area, room)?;
+            caption(&caption_area, lines)?;
+            placed
+        };
         root.present().map_err(plot_err)?;
         placed
     };
@@ -198,6 +216,36 @@ fn after_svg_tag(mut svg: String, head: &str) -> String {
 
 type Area<'a> = DrawingArea<SVGBackend<'a>, plotters::coord::Shift>;
 type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+/// What a view leaves out while a poll's answer waits, said in the middle
+/// of the plot `c`: "`what` wait for the reveal: they would answer the
+/// poll".
+fn waits(area: &Area, c: &Chart, what: &str) -> anyhow::Result<()> {
+    let (xr, yr) = c.plotting_area().get_pixel_range();
+    let (ox, oy) = area.get_base_pixel();
+    let (cx, cy) = ((xr.start + xr.end) / 2 - ox, (yr.start + yr.end) / 2 - oy);
+    let chars = ((xr.end - xr.start) as f64 / 8.0) as usize;
+    let text = format!("{what} wait for the reveal: they would answer the poll");
+    let lines = wrap(&text, chars.max(12));
+    let style =
+        ("sans-serif", 16)
+            .into_font()
+            .color(&GREY)
+            .pos(plotters::style::text_anchor::Pos::new(
+                plotters::style::text_anchor::HPos::Center,
+                plotters::style::text_anchor::VPos::Center,
+            ));
+    let top = cy - (lines.len() as i32 - 1) * 11;
+    for (i, l) in lines.iter().enumerate() {
+        area.draw(&Text::new(
+            l.clone(),
+            (cx, top + 22 * i as i32),
+            style.clone(),
+        ))
+        .map_err(plot_err)?;
+    }
+    Ok(())
+}
 
 fn plot_err(e: impl std::fmt::Display) -> anyhow::Error {
     anyhow!("cannot draw the picture: {e}")
@@ -530,49 +578,5 @@ fn x_scale(state: &State) -> Scale {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::wrap::wrap;
-
-    #[test]
-    fn legend_says_where_a_curve_hides() {
-        use super::*;
-        let svg = |name: &str| {
-            let s = crate::presets::load(name).unwrap();
-            render_svg(View::Slopes, &s, &FigureOptions::default()).unwrap()
-        };
-        let fig3 = svg("fig3");
-        assert!(fig3.contains("elastic (= total here)"));
-        // Below the chart, so not drawn: not listed either.
-        assert!(!fig3.contains(">\nplastic"));
-        let fig2 = svg("fig2");
-        assert!(!fig2.contains("= total here") && !fig2.contains("below the chart"));
-    }
-
-    #[test]
-    fn one_tick_style_per_axis() {
-        use super::{power_of_ten, Scale};
-        assert_eq!(power_of_ten(-4), "10⁻⁴");
-        assert_eq!(power_of_ten(0), "10⁰");
-        assert_eq!(power_of_ten(12), "10¹²");
-        let s = |lo: f64, hi: f64| Scale {
-            log: true,
-            lo,
-            hi,
-            desc: String::new(),
-        };
-        let plain = s(0.01, 1000.0);
-        let labels: Vec<String> = (-2..=3).map(|k| plain.label(f64::from(k))).collect();
-        assert_eq!(labels, ["0.01", "0.1", "1", "10", "100", "1000"]);
-        let wide = s(1e-4, 10.0);
-        let labels: Vec<String> = (-4..=1).map(|k| wide.label(f64::from(k))).collect();
-        assert_eq!(labels, ["10⁻⁴", "10⁻³", "10⁻²", "10⁻¹", "10⁰", "10¹"]);
-        assert_eq!(wide.label(0.5), "");
-    }
-
-    #[test]
-    fn wrap_breaks_at_spaces() {
-        assert_eq!(wrap("aa bb cc", 5), ["aa bb", "cc"]);
-        assert_eq!(wrap("", 5), Vec::<String>::new());
-        assert_eq!(wrap("longword x", 3), ["longword", "x"]);
-    }
-}
+#[path = "mod_tests.rs"]
+mod tests;

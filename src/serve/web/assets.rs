@@ -28,6 +28,12 @@ pub const ASSETS: &[Asset] = &[
         cache: PAGE,
     },
     Asset {
+        path: "/phone.js",
+        mime: "text/javascript; charset=utf-8",
+        body: include_bytes!("../../../web/phone.js"),
+        cache: PAGE,
+    },
+    Asset {
         path: "/xterm.js",
         mime: "text/javascript; charset=utf-8",
         body: include_bytes!("../../../web/vendor/xterm/xterm.js"),
@@ -88,7 +94,13 @@ mod tests {
         }
         // The page loads every script and style it names, and nothing else.
         let page = std::str::from_utf8(find("/").unwrap().body).unwrap();
-        for a in ["/xterm.js", "/addon-fit.js", "/app.js", "/xterm.css"] {
+        for a in [
+            "/xterm.js",
+            "/addon-fit.js",
+            "/phone.js",
+            "/app.js",
+            "/xterm.css",
+        ] {
             assert!(page.contains(&format!("\"{a}\"")), "{a}");
         }
         assert!(!page.contains("http"), "no address outside the server");

@@ -4,13 +4,15 @@
 //! student gets ([`socket`]). Plain HTTP for a classroom network; behind a
 //! reverse proxy for TLS (docs/teaching.md).
 //!
-//! What a request may be: `GET` of one of the page's files, or of `/ws`
+//! What a request may be: `GET` (or `HEAD`) of one of the page's files, or `GET` of `/ws`
 //! with the WebSocket upgrade, its `Origin` (when sent) the page's own
 //! (the `Host` it asked), its head at most [`MAX_HEAD`] bytes within
 //! [`HEAD_TIME`]. Anything else gets a status and one line, and the
 //! connection closes; no path from a request reaches the file system.
 
 pub mod assets;
+pub mod json;
+pub mod phone;
 pub mod socket;
 mod url;
 
@@ -21,6 +23,7 @@ use std::time::Duration;
 use tokio::io::{AsyncReadExt, AsyncWriteExt};
 use tokio::net::{TcpListener, TcpStream};
 
+use super::gate::{Gate, Knock, Place};
 use super::limits::Limits;
 use super::Shared;
 
@@ -33,10 +36,11 @@ const MAX_HEADERS: usize = 32;
 /// How long a client may take to send a request's head.
 pub const HEAD_TIME: Duration = Duration::from_secs(10);
 
-/// Accepts web connections until the server stops: each gets a place in
-/// `conns` (connections at once, in all and per address: a page's files
-/// and its WebSocket), or is closed at once.
-pub async fn serve(listener: TcpListener, shared: Arc<Shared>, conns: Limits) {
+/// Accepts web connections until the server stops: each waits at `gate`
+/// until its request is answered (a page's file) or it becomes a
+/// student's WebSocket (then it holds a student's place); `live` counts
+/// the open ones.
+pub async fn serve(listener: TcpListener, shared: Arc<Shared>, gate: Gate, live: Limits) {
     let mut ending = shared.ending.subscribe();
     loop {
         let (socket, peer) = tokio::select! {
@@ -49,15 +53,15 @@ pub async fn serve(listener: TcpListener, shared: Arc<Shared>, conns: Limits) {
             },
             _ = ending.changed() => return,
         };
-        let Ok(permit) = conns.enter(peer.ip()) else {
-            drop(socket);
+        let place = gate.enter(peer.ip());
+        let Ok(permit) = live.enter(peer.ip()) else {
             continue;
         };
         let _ = socket.set_nodelay(true);
         let shared = Arc::clone(&shared);
         tokio::spawn(async move {
             let _permit = permit;
-            connection(shared, socket, peer).await;
+            connection(shared, socket, peer, place).await;
         });
     }
 }
@@ -135,7 +139,7 @@ pub fn same_origin(origin: &str, host: &str) -> bool {
 
 /// Reads a request's head within [`HEAD_TIME`]: the head and the bytes
 /// read past it (a client may send its first WebSocket frame at once).
-async fn read_head(socket: &mut TcpStream) -> Result<(Head, Vec<u8>), Refusal> {
+async fn read_head(socket: &mut TcpStream, knock: &Knock) -> Result<(Head, Vec<u8>), Refusal> {
     let mut buf = Vec::with_capacity(1024);
     let read = async {
         let mut chunk = [0u8; 2048];
@@ -147,6 +151,7 @@ async fn read_head(socket: &mut TcpStream) -> Result<(Head, Vec<u8>), Refusal> {
             if n == 0 {
                 return Err(Refusal(400, "the request ended before its head did"));
             }
+            knock.spoke();
             buf.extend_from_slice(&chunk[..n]);
             if let Some((head, len)) = parse(&buf[..buf.len().min(MAX_HEAD)])? {
                 return Ok((head, buf[len..].to_vec()));
@@ -158,21 +163,29 @@ async fn read_head(socket: &mut TcpStream) -> Result<(Head, Vec<u8>), Refusal> {
         .unwrap_or(Err(Refusal(408, "the request's head took over 10 s")))
 }
 
-async fn connection(shared: Arc<Shared>, mut socket: TcpStream, peer: SocketAddr) {
-    let (head, rest) = match read_head(&mut socket).await {
+async fn connection(shared: Arc<Shared>, mut socket: TcpStream, peer: SocketAddr, place: Place) {
+    let read = tokio::select! {
+        r = read_head(&mut socket, &place.knock) => r,
+        // Closed to make room at the gate (counted there).
+        () = place.knock.closed() => return,
+    };
+    let (head, rest) = match read {
         Ok(x) => x,
         Err(r) => {
             refuse(&mut socket, &r).await;
-            shared
-                .log
-                .line(&format!("web: refused {} from {}: {}", r.0, peer.ip(), r.1));
+            shared.refusals.count(&refused(&r));
             return;
         }
     };
-    if head.method != "GET" {
-        return refuse(&mut socket, &Refusal(405, "only GET is served here")).await;
+    let method = head.method.as_str();
+    if method != "GET" && !(method == "HEAD" && head.path != "/ws") {
+        let r = Refusal(405, "only GET (and HEAD of a page's file) is served here");
+        shared.refusals.count(&refused(&r));
+        return refuse(&mut socket, &r).await;
     }
     if head.path == "/ws" {
+        // A student's WebSocket: a student's place from now on.
+        drop(place);
         return socket::upgrade(shared, socket, peer, head, rest).await;
     }
     match assets::find(&head.path) {
@@ -186,12 +199,24 @@ async fn connection(shared: Arc<Shared>, mut socket: TcpStream, peer: SocketAddr
                 SECURITY_HEADERS
             )
             .into_bytes();
-            out.extend_from_slice(a.body);
+            if method == "GET" {
+                out.extend_from_slice(a.body);
+            }
             let _ = tokio::time::timeout(super::output::STALL * 6, socket.write_all(&out)).await;
             let _ = socket.shutdown().await;
         }
-        None => refuse(&mut socket, &Refusal(404, "no such page here")).await,
+        None => {
+            let r = Refusal(404, "no such page here");
+            shared.refusals.count(&refused(&r));
+            refuse(&mut socket, &r).await;
+        }
     }
+}
+
+/// How the console counts a refusal: "requests refused 408 (the
+/// request's head took over 10 s)".
+pub fn refused(r: &Refusal) -> String {
+    format!("web requests refused {} ({})", r.0, r.1)
 }
 
 /// The page's own files and its WebSocket only; no framing by others.

@@ -22,11 +22,12 @@ use tokio_tungstenite::WebSocketStream;
 
 use super::url::param;
 use super::{refuse, same_origin, Head, Refusal};
+use crate::class::Transport;
 use crate::serve::auth::Role;
 use crate::serve::code::Turn;
 use crate::serve::limits::clamp_size;
 use crate::serve::output::{Bye, STALL};
-use crate::serve::session::{self, Input, Start, Wire, WireIn};
+use crate::serve::session::{self, Input, Render, Start, Wire, WireIn};
 use crate::serve::term::ClientTerm;
 use crate::serve::Shared;
 
@@ -39,6 +40,9 @@ pub const MAX_MESSAGE: usize = 16 * 1024;
 pub const REFUSED: u16 = 4000;
 pub const WRONG_CODE: u16 = 4001;
 pub const FULL: u16 = 4002;
+/// The code was not checked (its address sent wrong ones too fast): the
+/// page tries again by itself a moment later.
+pub const BUSY: u16 = 4003;
 
 /// The 101 answer, after the upgrade's headers and the origin are checked.
 pub async fn upgrade(
@@ -66,9 +70,7 @@ pub async fn upgrade(
     let key = match checked {
         Ok(k) => k,
         Err(r) => {
-            shared
-                .log
-                .line(&format!("web: refused {} from {}: {}", r.0, peer.ip(), r.1));
+            shared.refusals.count(&super::refused(&r));
             return refuse(&mut socket, &r).await;
         }
     };
@@ -113,21 +115,22 @@ async fn join(shared: Arc<Shared>, mut ws: WebSocketStream<TcpStream>, peer: Soc
     if let Some(code) = shared.class_code.clone() {
         let typed = param(q, "code").unwrap_or_default();
         let wrongs = &shared.wrong_codes;
-        let wait = format!("too many wrong class codes from {ip}: wait a minute");
         match wrongs.turn(ip, Instant::now()) {
             Turn::Now => {}
             Turn::At(t) => tokio::time::sleep_until(t.into()).await,
-            Turn::Refused => return close(&mut ws, WRONG_CODE, &wait).await,
-        }
-        if !code.matches(typed.as_bytes()) {
-            let now = Instant::now();
-            let was = wrongs.waiting(ip, now);
-            if wrongs.wrong(ip, now) && !was {
-                shared.log.line(&format!(
-                    "{ip} sent {} wrong class codes in a minute: its codes wait their turn",
-                    crate::serve::code::WRONG_PER_MINUTE
-                ));
+            Turn::Refused(first) => {
+                if first {
+                    shared.log.line(&crate::serve::code::too_fast(ip));
+                }
+                shared.refusals.count(crate::serve::code::UNCHECKED);
+                let wait = crate::serve::code::wait_line(ip);
+                return close(&mut ws, BUSY, &wait).await;
             }
+        }
+        if code.matches(typed.as_bytes()) {
+            wrongs.right(ip, Instant::now());
+        } else {
+            shared.refusals.count(crate::serve::code::WRONG);
             let why = if typed.is_empty() {
                 "this class needs its code: ask your lecturer"
             } else {
@@ -152,23 +155,62 @@ async fn join(shared: Arc<Shared>, mut ws: WebSocketStream<TcpStream>, peer: Soc
     client.env("LANG", "C.UTF-8");
     let (keys, input) = mpsc::channel(16);
     let (slot, frames) = mpsc::channel(1);
+    let (notes_tx, notes) = mpsc::unbounded_channel();
     let bye = Bye::default();
+    // The page's phone layout: a picture and buttons (else xterm.js).
+    let phone = param(q, "layout").as_deref() == Some("phone");
+    // The seat a reloaded page held: 32 hexadecimal digits, or none.
+    let token =
+        param(q, "seat").filter(|t| t.len() == 32 && t.bytes().all(|b| b.is_ascii_hexdigit()));
     session::spawn(Start {
         shared: Arc::clone(&shared),
         wire: Wire {
             input: Input::Web(input),
             slot,
             bye: bye.clone(),
-            via: " over the web",
+            via: if phone {
+                " over the web (phone)"
+            } else {
+                " over the web"
+            },
+            render: if phone {
+                Render::Phone
+            } else {
+                Render::Terminal
+            },
+            notes: Some(notes_tx),
         },
         role: Role::Student,
         size,
         name,
         addr: ip,
         client,
+        transport: if phone {
+            Transport::Phone
+        } else {
+            Transport::Web
+        },
+        token,
     });
-    pump(&shared, ws, keys, frames, bye, ip).await;
+    let link = Link {
+        keys,
+        frames,
+        notes,
+        bye,
+        phone,
+    };
+    pump(&shared, ws, link, ip).await;
     drop(seat);
+}
+
+/// A session's side of a WebSocket: its input, its frames (a phone's as
+/// text), the page's notes (the seat) and its goodbye.
+struct Link {
+    keys: mpsc::Sender<WireIn>,
+    frames: mpsc::Receiver<Vec<u8>>,
+    notes: mpsc::UnboundedReceiver<String>,
+    bye: Bye,
+    phone: bool,
 }
 
 /// Moves messages both ways until either side ends: the browser's input
@@ -178,11 +220,16 @@ async fn join(shared: Arc<Shared>, mut ws: WebSocketStream<TcpStream>, peer: Soc
 async fn pump(
     shared: &Shared,
     mut ws: WebSocketStream<TcpStream>,
-    keys: mpsc::Sender<WireIn>,
-    mut frames: mpsc::Receiver<Vec<u8>>,
-    bye: Bye,
+    link: Link,
     ip: std::net::IpAddr,
 ) {
+    let Link {
+        keys,
+        mut frames,
+        mut notes,
+        bye,
+        phone,
+    } = link;
     loop {
         tokio::select! {
             msg = ws.next() => {
@@ -190,7 +237,7 @@ async fn pump(
                     Some(Ok(Message::Binary(b))) => WireIn::Data(b.to_vec()),
                     Some(Ok(Message::Text(t))) => match resize(t.as_str()) {
                         Some((w, h)) => WireIn::Resize(w, h),
-                        None => continue,
+                        None => WireIn::Command(t.as_str().to_string()),
                     },
                     Some(Ok(Message::Close(_))) | None => return,
                     Some(Ok(_)) => continue,
@@ -203,7 +250,7 @@ async fn pump(
                         // The session's goodbye, then the close frame.
                         bye.set(format!("a message over {} KiB: the session ended", MAX_MESSAGE / 1024));
                         while frames.recv().await.is_some() {}
-                        return finish(&mut ws, &bye, 1009).await;
+                        return finish(&mut ws, &bye, 1009, phone).await;
                     }
                     Some(Err(_)) => return,
                 };
@@ -211,14 +258,25 @@ async fn pump(
                     return;
                 }
             }
+            Some(note) = notes.recv() => {
+                let sent = tokio::time::timeout(STALL, ws.send(Message::text(note))).await;
+                if !matches!(sent, Ok(Ok(()))) {
+                    return;
+                }
+            }
             frame = frames.recv() => match frame {
                 Some(bytes) => {
-                    let sent = tokio::time::timeout(STALL, ws.send(Message::Binary(bytes.into()))).await;
+                    let msg = if phone {
+                        Message::text(String::from_utf8_lossy(&bytes).into_owned())
+                    } else {
+                        Message::Binary(bytes.into())
+                    };
+                    let sent = tokio::time::timeout(STALL, ws.send(msg)).await;
                     if !matches!(sent, Ok(Ok(()))) {
                         return;
                     }
                 }
-                None => return finish(&mut ws, &bye, 1000).await,
+                None => return finish(&mut ws, &bye, 1000, phone).await,
             },
         }
     }
@@ -226,10 +284,13 @@ async fn pump(
 
 /// The session ended: the terminal restored (and why, on its own line),
 /// then a close frame whose reason the page shows.
-async fn finish(ws: &mut WebSocketStream<TcpStream>, bye: &Bye, code: u16) {
+async fn finish(ws: &mut WebSocketStream<TcpStream>, bye: &Bye, code: u16, phone: bool) {
     let why = bye.why();
     let bytes = bye.bytes();
-    let _ = tokio::time::timeout(STALL, ws.send(Message::Binary(bytes.into()))).await;
+    // (A phone's page has no terminal: the close frame's reason says it.)
+    if !phone {
+        let _ = tokio::time::timeout(STALL, ws.send(Message::Binary(bytes.into()))).await;
+    }
     close(ws, code, why.as_deref().unwrap_or("you left the class")).await;
 }
 

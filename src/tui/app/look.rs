@@ -86,6 +86,8 @@ impl App {
             tally,
             join_url,
             join_shown,
+            projector,
+            countdown,
         } = class;
         let plain = ghost.is_none()
             && *view != crate::figure::View::Contact
@@ -97,7 +99,9 @@ impl App {
             && remove.is_none()
             && scenes.is_none()
             && join_url.is_none()
-            && !join_shown;
+            && !join_shown
+            && !projector
+            && countdown.is_none();
         plain.then(|| Look {
             size: *size,
             theme: *theme,

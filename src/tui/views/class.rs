@@ -170,17 +170,19 @@ pub fn render_poll(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     }
 }
 
-/// The class list: name, following or not, terminal size, marker set and
-/// idle time of each student, in pages when the class is long.
+/// The class list: name, following or not, how they reach the class (ssh,
+/// web, phone), terminal size, marker set and idle time of each student,
+/// in pages when the class is long.
 pub fn render_list(app: &App, area: Rect, buf: &mut Buffer) {
     let Some(v) = &app.class.view else {
         return;
     };
     let g = &UNICODE;
     let t = &app.theme;
+    // 78 columns a row, 80 with the frame: the list fits an 80×24 terminal.
     let header = format!(
-        " {:<32}  {:<12}  {:>7}  {:<7}  {:>6}",
-        "name", "state", "size", "marker", "idle"
+        " {:<32}  {:<12}  {:<5}  {:>7} {:<7} {:>6}",
+        "name", "state", "via", "size", "marker", "idle"
     );
     let rows: Vec<String> = v
         .seats
@@ -200,17 +202,22 @@ pub fn render_list(app: &App, area: Rect, buf: &mut Buffer) {
                 name = cut;
             }
             let pad = 32usize.saturating_sub(Span::raw(&name).width());
-            let size = text(app, &format!("{}{}{}", s.size.0, g.times, s.size.1));
+            let size = if s.via == "phone" {
+                text(app, "—")
+            } else {
+                text(app, &format!("{}{}{}", s.size.0, g.times, s.size.1))
+            };
             format!(
-                " {name}{}  {:<12}  {size:>7}  {:<7}  {:>6}",
+                " {name}{}  {:<12}  {:<5}  {size:>7} {:<7} {:>6}",
                 " ".repeat(pad),
                 s.state.label(),
+                s.via,
                 text(app, &s.marker),
                 duration(s.idle),
             )
         })
         .collect();
-    let w = 78.min(area.width);
+    let w = 80.min(area.width);
     let h = (rows.len() as u16 + 3).clamp(4, area.height);
     let per_page = usize::from(h - 3).max(1);
     let pages = rows.len().div_ceil(per_page).max(1);

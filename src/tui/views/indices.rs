@@ -34,25 +34,42 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         },
         ..t.psi_asy
     };
-    // Eq. 13 is a power law's: not listed on a measured surface.
-    let curves: Vec<&CurveStyle> = if app.state.is_measured() {
-        vec![&t.psi_gw, &t.psi_p, &t.psi_star, &t.psi_one]
-    } else {
-        vec![&t.psi_gw, &t.psi_p, &t.psi_star, &asy, &t.psi_one]
+    // While a poll's answer waits, the index that gives it is not drawn
+    // (the legend says it comes after the reveal).
+    let withheld = app.class.withheld(app.state.size_effect).indices;
+    let wait = |c: &CurveStyle| {
+        let short = c.name.split_whitespace().next().unwrap_or(c.name);
+        format!("{short} ?")
     };
-    chart::legend(t, &curves, area, buf);
+    // Eq. 13 is a power law's: not listed on a measured surface.
+    let styles = [&t.psi_gw, &t.psi_p, &t.psi_star, &asy];
+    let mut curves: Vec<(&CurveStyle, String)> = styles
+        .iter()
+        .zip(withheld)
+        .take(if app.state.is_measured() { 3 } else { 4 })
+        .map(|(c, w)| (*c, if w { wait(c) } else { c.name.to_string() }))
+        .collect();
+    curves.push((&t.psi_one, t.psi_one.name.to_string()));
+    chart::legend_named(t, &curves, area, buf);
     let (x, y) = (Scale::of_axis(axis, p.x_bounds), Scale::decades(p.y_bounds));
     chart::axes(t, (&x, &y), axis.symbol(), (area, g), buf);
 
     let marker = chart::marker_line(app, p.y_bounds);
     let one = [(p.x_bounds[0], 0.0), (p.x_bounds[1], 0.0)];
-    let sets = vec![
+    let mut sets = vec![
         chart::dataset(&t.psi_one, &one),
         chart::dataset(&t.marker_line, &marker),
-        chart::dataset(&t.psi_gw, &p.psi_gw),
-        chart::dataset(&t.psi_asy, &p.psi_star_asymptotic),
-        chart::dataset(&t.psi_p, &p.psi_p),
-        chart::dataset(&t.psi_star, &p.psi_star),
     ];
+    // Drawn in this order: eq. 13 under Ψ*.
+    for (i, c, data) in [
+        (0, &t.psi_gw, &p.psi_gw),
+        (3, &t.psi_asy, &p.psi_star_asymptotic),
+        (1, &t.psi_p, &p.psi_p),
+        (2, &t.psi_star, &p.psi_star),
+    ] {
+        if !withheld[i] {
+            sets.push(chart::dataset(c, data));
+        }
+    }
     chart::plot(sets, (p.x_bounds, p.y_bounds), g, buf);
 }

@@ -11,6 +11,7 @@ mod join;
 mod load;
 mod map;
 pub(crate) mod overlap;
+mod projector;
 mod side;
 pub use side::hurst_se;
 mod slopes;
@@ -37,6 +38,9 @@ impl Widget for &App {
     fn render(self, area: Rect, buf: &mut Buffer) {
         if self.class.join_shown {
             return join::render(self, area, buf);
+        }
+        if self.class.projector && self.mode == Mode::Main {
+            return projector::render(self, area, buf);
         }
         let rows = crate::tui::caption::rows(self);
         let Some(r) = Regions::with_caption(area, rows) else {

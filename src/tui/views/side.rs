@@ -247,9 +247,13 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
         Line::from(slopes1),
         Line::from(slopes2),
         if hide_slopes {
+            // (At most 34 columns: the readout's.)
             Line::raw(format!(
                 "plastic {HIDDEN}  (until {})",
-                app.class.marks_wait().unwrap_or("the reveal")
+                match app.class.marks_wait() {
+                    Some("the reveal") | None => "the reveal",
+                    Some(_) => "the next poll",
+                }
             ))
         } else {
             Line::from(vec![
@@ -300,10 +304,18 @@ pub fn render_readout(app: &App, area: Rect, buf: &mut Buffer) {
             )),
         );
     }
-    // What the reader assumed or repaired, under the readout.
+    // What the reader assumed or repaired, under the readout: each note
+    // wrapped to the panel's width, the rows left shared among the notes
+    // still to come (a note cut short ends in the glyph set's cut mark).
     if let Some(src) = &s.surface {
-        for n in src.notes() {
-            lines.push(Line::styled(tx(n), t.dim));
+        let width = usize::from(area.width);
+        let notes = src.notes();
+        for (k, n) in notes.iter().enumerate() {
+            let left = usize::from(area.height).saturating_sub(lines.len());
+            let rows = (left / (notes.len() - k)).max(1);
+            for l in crate::tui::wrap::wrap(&tx(n), width, rows, t.glyphs.cut()) {
+                lines.push(Line::styled(l, t.dim));
+            }
         }
     }
     Paragraph::new(lines).render(area, buf);

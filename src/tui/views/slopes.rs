@@ -26,7 +26,21 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         t.title,
     )];
     chart::title(app, title, area, buf);
-    let bounds = (p.x_bounds, p.y_bounds);
+    // While a poll's answer waits: the curves that would give it are not
+    // drawn, the y range fits those drawn, and the legend names curves
+    // without saying where they went.
+    let withheld = app.class.withheld(app.state.size_effect);
+    let all = [&p.elastic, &p.plastic, &p.total, &p.persson];
+    let y_bounds = if withheld.slopes.iter().any(|w| *w) {
+        let shown: Vec<&Vec<(f64, f64)>> = (0..4)
+            .filter(|i| !withheld.slopes[*i])
+            .map(|i| all[i])
+            .collect();
+        crate::tui::plots::slope_bounds(&shown, &[])
+    } else {
+        p.y_bounds
+    };
+    let bounds = (p.x_bounds, y_bounds);
     // Draw order, later over earlier: Persson's reference curve last, so
     // that it shows even where it equals the total (fig3) or the elastic
     // curve; a curve left with under a twentieth of its cells visible is
@@ -57,34 +71,48 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
         }
         i
     };
-    let mut names: Vec<(&CurveStyle, String)> = (0..curves.len())
-        .filter(|&i| under[i].is_none())
-        .map(|i| {
-            let c = curves[i].0;
-            let below: Vec<&str> = (0..curves.len())
-                .filter(|&k| k != i && top(k) == i)
-                .map(|k| short_name(curves[k].0))
-                .collect();
-            let (data, yb) = (curves[i].1, p.y_bounds);
-            if cover.empty[i] {
-                // Nothing on the chart: say where the curve went.
-                let name = if data.is_empty() {
-                    format!("{} = 0", c.name)
-                } else if data.iter().all(|q| q.1 < yb[0]) {
-                    format!("{} < {}", c.name, fmt_decade(yb[0] as i32))
-                } else if data.iter().all(|q| q.1 > yb[1]) {
-                    format!("{} > {}", c.name, fmt_decade(yb[1] as i32))
+    let mut names: Vec<(&CurveStyle, String)> = if withheld.marks {
+        (0..curves.len())
+            .map(|i| {
+                let c = curves[i].0;
+                let name = if withheld.slopes[i] {
+                    format!("{} ?", short_name(c))
                 } else {
                     c.name.to_string()
                 };
                 (c, name)
-            } else if below.is_empty() {
-                (c, c.name.to_string())
-            } else {
-                (c, format!("{} = {} here", short_name(c), below.join(" = ")))
-            }
-        })
-        .collect();
+            })
+            .collect()
+    } else {
+        (0..curves.len())
+            .filter(|&i| under[i].is_none())
+            .map(|i| {
+                let c = curves[i].0;
+                let below: Vec<&str> = (0..curves.len())
+                    .filter(|&k| k != i && top(k) == i)
+                    .map(|k| short_name(curves[k].0))
+                    .collect();
+                let (data, yb) = (curves[i].1, p.y_bounds);
+                if cover.empty[i] {
+                    // Nothing on the chart: say where the curve went.
+                    let name = if data.is_empty() {
+                        format!("{} = 0", c.name)
+                    } else if data.iter().all(|q| q.1 < yb[0]) {
+                        format!("{} < {}", c.name, fmt_decade(yb[0] as i32))
+                    } else if data.iter().all(|q| q.1 > yb[1]) {
+                        format!("{} > {}", c.name, fmt_decade(yb[1] as i32))
+                    } else {
+                        c.name.to_string()
+                    };
+                    (c, name)
+                } else if below.is_empty() {
+                    (c, c.name.to_string())
+                } else {
+                    (c, format!("{} = {} here", short_name(c), below.join(" = ")))
+                }
+            })
+            .collect()
+    };
     // " here" goes first when the legend is too long for the panel (each
     // entry takes at least a one-character sample and two spaces).
     let ghost_len = if app.ghost.is_some() {
@@ -110,13 +138,13 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     }
     chart::legend_named(t, &names, area, buf);
     reading_line(app, Rect::new(area.x, area.y + 2, area.width, 1), buf);
-    let (x, y) = (Scale::of_axis(axis, p.x_bounds), Scale::decades(p.y_bounds));
+    let (x, y) = (Scale::of_axis(axis, p.x_bounds), Scale::decades(y_bounds));
     chart::axes(t, (&x, &y), axis.symbol(), (area, g), buf);
     // Where the regime changes along the sweep, on the x axis line; a mark
     // whose cell is taken by another sits in the nearest free one beside it.
     // Not while a poll's answer is hidden: the marks bracket it.
     let mut taken: Vec<u16> = Vec::new();
-    let marks = if app.class.marks_hidden() {
+    let marks = if withheld.marks {
         &[][..]
     } else {
         &p.regime_marks[..]
@@ -140,7 +168,7 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
     }
 
     // The curves, over the marker line.
-    let marker = chart::marker_line(app, p.y_bounds);
+    let marker = chart::marker_line(app, y_bounds);
     let mut sets = vec![chart::dataset(&t.marker_line, &marker)];
     // The ghost under everything current.
     if let Some(ghost) = &app.ghost {
@@ -149,7 +177,13 @@ pub fn render(app: &App, (area, g): (Rect, Rect), buf: &mut Buffer) {
             sets.push(chart::dataset(&t.ghost, data));
         }
     }
-    sets.extend(curves.iter().map(|(c, data)| chart::dataset(c, data)));
+    sets.extend(
+        curves
+            .iter()
+            .zip(withheld.slopes)
+            .filter(|(_, w)| !w)
+            .map(|((c, data), _)| chart::dataset(c, data)),
+    );
     chart::plot(sets, bounds, g, buf);
 }
 

@@ -123,7 +123,7 @@ pub(crate) type Parse<'p> = &'p dyn Fn(&[u8], &Options, &str) -> Result<Measured
 /// Reads the container `bytes`; `parse` reads a member's bytes as a file.
 pub(crate) fn read(bytes: &[u8], opts: &Options, parse: Parse<'_>) -> Result<Measured, Failure> {
     let mut zip = ZipArchive::new(Cursor::new(bytes))
-        .map_err(|e| bad(format!("not a readable zip archive ({e})")))?;
+        .map_err(|e| bad(crate::formats::readers::x3p::unreadable(&e)))?;
     let member = |zip: &mut ZipArchive<Cursor<&[u8]>>, name: &str, limit: u64| {
         let f = zip
             .by_name(name)

@@ -2,7 +2,8 @@
 //! compressed), read as what it holds: unpacked up to
 //! [`crate::MAX_BYTES`] (a bomb is refused when it passes that, not
 //! unpacked further), then told apart like any file, by its content and
-//! the name inside the `.gz` (`scan.plu.gz` is a Sensofar file).
+//! the name stored inside the gzip file, else its own name (`scan.plu.gz`
+//! is a Sensofar file, and so is `plu_in.gz` holding `scan.plu`).
 
 use std::io::Read;
 use std::path::Path;
@@ -34,6 +35,36 @@ pub(crate) fn extension(path: &Path) -> String {
 pub(crate) fn inner(ext: &str) -> &str {
     ext.strip_suffix(".gz")
         .unwrap_or(if ext == "gz" { "" } else { ext })
+}
+
+/// The name gzip stored of the file it compressed (its header's FNAME,
+/// written unless `gzip -n`), if any.
+pub(crate) fn stored_name(bytes: &[u8]) -> Option<String> {
+    const FEXTRA: u8 = 4;
+    const FNAME: u8 = 8;
+    let flags = *bytes.get(3)?;
+    if !bytes.starts_with(MAGIC) || flags & FNAME == 0 {
+        return None;
+    }
+    let mut at = 10;
+    if flags & FEXTRA != 0 {
+        let n = u16::from_le_bytes([*bytes.get(10)?, *bytes.get(11)?]) as usize;
+        at += 2 + n;
+    }
+    let rest = bytes.get(at..)?;
+    let end = rest.iter().take(4096).position(|&c| c == 0)?;
+    // Latin-1, as RFC 1952 says.
+    Some(rest[..end].iter().map(|&c| c as char).collect())
+}
+
+/// The extension the readers go by for what the gzip file `bytes`, of
+/// extension `ext`, holds: that of the name stored inside it, else the
+/// one its own name gives (`scan.plu.gz`).
+pub(crate) fn inner_of(bytes: &[u8], ext: &str) -> String {
+    stored_name(bytes)
+        .map(|n| extension(Path::new(&n)))
+        .filter(|e| !e.is_empty())
+        .unwrap_or_else(|| inner(ext).to_string())
 }
 
 fn bad(s: impl AsRef<str>) -> Failure {
@@ -81,6 +112,16 @@ mod tests {
         assert_eq!(extension(Path::new("m.plu")), "plu");
         assert_eq!(inner("txt.gz"), "txt");
         assert_eq!(inner("gz"), "");
+        use std::io::Write;
+        let mut e = flate2::GzBuilder::new()
+            .filename("surfalize_test_1.PLU")
+            .write(Vec::new(), flate2::Compression::fast());
+        e.write_all(b"x").unwrap();
+        let named = e.finish().unwrap();
+        assert_eq!(stored_name(&named).unwrap(), "surfalize_test_1.PLU");
+        assert_eq!(inner_of(&named, "gz"), "plu");
+        assert_eq!(inner_of(b"\x1f\x8b\x08\0\0\0\0\0\0\x03", "txt.gz"), "txt");
+        assert_eq!(stored_name(b"\x1f\x8b\x08\x08\0"), None);
         assert!(unpack(b"\x1f\x8b\x08\0\0")
             .unwrap_err()
             .1

@@ -28,6 +28,9 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
     let starts = |m: &[u8]| bytes.starts_with(m);
     let other = |what: &str| Format::Other(hint(what));
     if starts(crate::formats::readers::x3p::MAGIC) || starts(b"PK\x05\x06") {
+        if let Some(n) = crate::formats::readers::sniff_zip(bytes, ext) {
+            return Format::Native(n);
+        }
         return Format::X3p;
     }
     if starts(crate::formats::readers::gwy::MAGIC) {
@@ -39,14 +42,11 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
     if utf16(bytes).is_some() {
         return Format::Text;
     }
-    if starts(b"GWYO") || starts(b"GWYQ") {
+    if starts(b"GWYQ") {
         return other("a Gwyddion file of another version");
     }
     if starts(b"\x89HDF\r\n\x1a\n") {
-        if ext == "datx" || find(bytes, b"Zygo") || find(bytes, b"MetaData") {
-            return other("a Zygo .datx file (HDF5)");
-        }
-        return other("a NetCDF-4 or HDF5 file");
+        return other("a NetCDF-4 or HDF5 file (not a Zygo .datx or a JPK .h5-jpk scan)");
     }
     if starts(b"CDF\x01") || starts(b"CDF\x02") || starts(b"CDF\x05") {
         return other("a NetCDF file");
@@ -59,22 +59,23 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
                 .to_string(),
         );
     }
+    if starts(b"II*\x00") || starts(b"MM\x00*") {
+        if let Some(why) = crate::formats::readers::damaged_tiff(bytes) {
+            return Format::Other(why);
+        }
+    }
     for (magic, what) in [
-        (&b"VK4_"[..], "a Keyence .vk4 file"),
-        (b"VK3_", "a Keyence .vk3 file"),
-        (b"KPK0", "a Keyence .zon file"),
-        (b"KPK1", "a Keyence .zon file"),
+        (&b"VK3_"[..], "a Keyence .vk3 file"),
         (b"Binary TrueMap", "a TrueMap .tmd file"),
         (b"OmniSurf3D", "an OmniSurf3D .os3d file"),
-        (b"WSxM file", "a WSxM file"),
         (b"MATLAB", "a MATLAB .mat file"),
         (
             b"II*\x00",
-            "a TIFF image (Olympus LEXT, Park, JPK … write TIFF)",
+            "a TIFF image that is not a JPK or Park Systems scan (Olympus LEXT … write TIFF)",
         ),
         (
             b"MM\x00*",
-            "a TIFF image (Olympus LEXT, Park, JPK … write TIFF)",
+            "a TIFF image that is not a JPK or Park Systems scan (Olympus LEXT … write TIFF)",
         ),
         (b"\x89PNG", "a PNG image, not height data"),
         (b"\xff\xd8\xff", "a JPEG image, not height data"),
@@ -87,13 +88,26 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
         return other("a BMP image, not height data");
     }
     match ext {
-        "plux" => return other("a Sensofar .plux file"),
         "spm" | "001" | "002" | "003" if binary(bytes) => {
             return other("a Bruker/Digital Instruments Nanoscope file")
         }
         "mnt" => return other("a Digital Surf MountainsMap .mnt file"),
         "mdt" => return other("an NT-MDT .mdt file"),
         _ => {}
+    }
+    if matches!(ext, "plu" | "apx") && binary(bytes) {
+        return Format::Other(format!(
+            "named .{ext} but not a Sensofar file ({}): its name does not say what it holds; \
+             open it in Gwyddion, which tells most formats apart, and save it as .gwy or .x3p",
+            crate::formats::readers::plu::why_not(bytes)
+        ));
+    }
+    if let Some((date, Some(ty))) = crate::formats::readers::plu::looks_like(bytes) {
+        return Format::Other(format!(
+            "looks like a Sensofar .plu file (its date '{}', measurement type {ty}), a format \
+             without magic bytes that is told by its name: name it .plu (or .apx) to read it",
+            crate::formats::readers::bin::printable(&date, 40)
+        ));
     }
     if starts(b"fileType      ") {
         return other("an Agilent (Molecular Imaging) PicoView .mi file");
@@ -117,13 +131,6 @@ pub(crate) fn format(bytes: &[u8], ext: &str) -> Format {
         );
     }
     Format::Text
-}
-
-/// Whether `needle` occurs in the first 64 KiB of `hay`.
-fn find(hay: &[u8], needle: &[u8]) -> bool {
-    hay[..hay.len().min(1 << 16)]
-        .windows(needle.len())
-        .any(|w| w == needle)
 }
 
 /// Whether the first 4 KiB hold a NUL or control bytes that text does not.
@@ -249,17 +256,32 @@ mod tests {
             f => panic!("{f:?}"),
         };
         assert!(other(b"CDF\x01\0\0", "nc").contains("NetCDF"));
-        assert!(other(b"\x89HDF\r\n\x1a\n\0", "datx").contains("Zygo .datx"));
         assert!(other(b"\x89HDF\r\n\x1a\n\0", "nc").contains("HDF5"));
         assert!(other(b"\x93NUMPY\x01\x00", "npy").contains("numpy.savetxt"));
         assert!(other(b"II*\x00\x08\0", "tif").contains("TIFF"));
-        assert!(other(b"VK4_\0\0", "vk4").contains("Keyence .vk4"));
+        assert!(other(b"VK3_\0\0", "vk3").contains("Keyence .vk3"));
         assert!(other(b"\0\x01\x02", "bin").contains("Gwyddion"));
         // Instruments' own files are read.
         let native = |b: &[u8], ext: &str| matches!(format(b, ext), Format::Native(_));
+        assert!(native(b"\x89HDF\r\n\x1a\n\0", "datx"));
+        assert!(native(b"VK6\0\0", "vk6"));
         assert!(native(b"\\*File list\r\n", ""));
         assert!(native(b"\x88\x1b\x03\x70\0", "dat"));
-        assert!(native(b"date 2020\0\0\0", "plu"));
+        let mut plu = b"Mon Apr 19 11:40:13 2021".to_vec();
+        plu.resize(600, 0);
+        plu[428] = 3;
+        assert!(native(&plu, "plu"));
+        assert!(other(&plu, "dat").contains("looks like a Sensofar .plu file"));
+        // Cut short before its measurement type: read (and refused as cut).
+        assert!(native(&plu[..300], "plu"));
+        let mut bad = plu.clone();
+        bad[428] = 99;
+        assert_eq!(
+            other(&bad, "plu"),
+            "named .plu but not a Sensofar file (a measurement type of 99 at byte 428, where \
+             Sensofar's are 0–6): its name does not say what it holds; open it in Gwyddion, \
+             which tells most formats apart, and save it as .gwy or .x3p"
+        );
         assert!(native(b"DIGITAL SURF\0", "sur"));
         let mut mi = b"fileType      Image\nversion PicoView\n".to_vec();
         mi.extend_from_slice(&[0; 16]);

@@ -116,7 +116,7 @@ impl<'a> Bytes<'a> {
         let points = nx.checked_mul(ny).filter(|p| (1..=MAX_POINTS).contains(p));
         let Some(points) = points else {
             return Err(self.bad(format!(
-                "{what} claims {nx} × {ny} points: {}",
+                "{what}: {nx} × {ny} points, {}",
                 if nx == 0 || ny == 0 {
                     "no data".to_string()
                 } else {
@@ -127,7 +127,7 @@ impl<'a> Bytes<'a> {
         let len = points as usize * item;
         if pos > self.b.len() || len > self.b.len() - pos {
             return Err(self.bad(format!(
-                "{what} of {nx} × {ny} points takes {len} bytes from byte {pos}, \
+                "{what}: {nx} × {ny} points take {len} bytes from byte {pos}, \
                  but the file holds {} bytes: it is truncated or its sizes are wrong",
                 self.b.len()
             )));
@@ -142,6 +142,11 @@ pub(crate) fn values<T: Num>(raw: &[u8], o: Order) -> impl Iterator<Item = T> + 
         Order::Little => T::le(c),
         Order::Big => T::be(c),
     })
+}
+
+/// Where `needle` first occurs in `hay`.
+pub(crate) fn find(hay: &[u8], needle: &[u8]) -> Option<usize> {
+    hay.windows(needle.len()).position(|w| w == needle)
 }
 
 /// Text from a file for a message: control characters as `?`, at most
@@ -207,7 +212,11 @@ mod tests {
             .unwrap_err()
             .1
             .to_string();
-        assert!(e.contains("takes 12 bytes from byte 1"), "{e}");
+        assert_eq!(
+            e,
+            "test: the heights: 2 × 3 points take 12 bytes from byte 1, but the file holds 5 \
+             bytes: it is truncated or its sizes are wrong"
+        );
         let e = b
             .raster(0, (1 << 40, 1 << 40), 2, "the heights")
             .unwrap_err();

@@ -115,21 +115,71 @@ pub(crate) fn pick(
 }
 
 /// "channel 0 'Height' (nm) read; also in the file: 1 'Phase' (deg)
-/// (--channel N or TITLE)", for a file of more than one channel.
-pub(crate) fn note(chans: &[Chan], n: usize) -> Option<String> {
-    (chans.len() > 1).then(|| {
+/// (--channel N or TITLE)", for a file of more than one channel; and the
+/// warning of [`not_topography`].
+pub(crate) fn note(chans: &[Chan], n: usize) -> Vec<String> {
+    let mut out = Vec::new();
+    if chans.len() > 1 {
         let others: Vec<String> = chans
             .iter()
             .enumerate()
             .filter(|(m, _)| *m != n)
             .map(|(m, c)| c.describe(m))
             .collect();
-        format!(
+        out.push(format!(
             "channel {} read; also in the file: {} (--channel N or TITLE)",
             chans[n].describe(n),
             others.join(", ")
-        )
-    })
+        ));
+    }
+    out.extend(not_topography(chans, n));
+    out
+}
+
+/// What a channel named so measures, when it is not the surface's
+/// heights though its unit may be a length (an AFM's amplitude, error or
+/// deformation channels are in m or nm).
+fn measures(title: &str) -> Option<&'static str> {
+    let t = title.to_lowercase();
+    [
+        ("amplitude", "the oscillation's amplitude"),
+        ("error", "the feedback's error signal"),
+        ("deflection", "the cantilever's deflection"),
+        ("deformation", "the sample's deformation under the tip"),
+        ("phase", "a phase"),
+        ("lateral", "a lateral (friction) signal"),
+        ("friction", "a friction signal"),
+        ("adhesion", "adhesion"),
+        ("dissipation", "dissipation"),
+        ("stiffness", "stiffness"),
+        ("modulus", "a modulus"),
+        ("current", "a current"),
+        ("frequency", "a frequency shift"),
+        ("potential", "a surface potential"),
+        ("intensity", "an intensity"),
+    ]
+    .into_iter()
+    .find(|(k, _)| t.contains(k))
+    .map(|(_, what)| what)
+}
+
+/// A warning where channel `n`, in a unit of length, is by its name not
+/// the surface's heights (Asylum's `AmplitudeRetrace` is in m): its Sq,
+/// slopes and indices are of that signal, not of a surface.
+pub(crate) fn not_topography(chans: &[Chan], n: usize) -> Option<String> {
+    let c = &chans[n];
+    let what = measures(&c.title).filter(|_| c.heights())?;
+    let height = chans
+        .iter()
+        .enumerate()
+        .find(|(_, o)| o.heights() && measures(&o.title).is_none())
+        .map(|(m, o)| format!("; the heights are channel {}", o.describe(m)))
+        .unwrap_or_default();
+    Some(format!(
+        "warning: channel {} is {what}, not the surface's heights, though its unit is a \
+         length: its Sq, slopes and indices describe no topography{height}",
+        c.describe(n)
+    ))
 }
 
 #[cfg(test)]
@@ -157,13 +207,21 @@ mod tests {
              are 0 'Phase' (deg), 1 'Height' (nm), 2 'Height' (µm)"
         );
         assert_eq!(
-            note(&chans, 1).unwrap(),
+            note(&chans, 1)[0],
             "channel 1 'Height' (nm) read; also in the file: 0 'Phase' (deg), \
              2 'Height' (µm) (--channel N or TITLE)"
         );
         let bare = [c("no name (1)", "")];
         assert_eq!(pick("F", &bare, None, true), Ok(0));
         assert!(pick("F", &bare, None, false).is_err());
-        assert!(note(&bare, 0).is_none());
+        assert!(note(&bare, 0).is_empty());
+        let afm = [c("HeightRetrace", "m"), c("AmplitudeRetrace", "m")];
+        assert!(note(&afm, 0).len() == 1);
+        assert_eq!(
+            not_topography(&afm, 1).unwrap(),
+            "warning: channel 1 'AmplitudeRetrace' (m) is the oscillation's amplitude, not \
+             the surface's heights, though its unit is a length: its Sq, slopes and indices \
+             describe no topography; the heights are channel 0 'HeightRetrace' (m)"
+        );
     }
 }

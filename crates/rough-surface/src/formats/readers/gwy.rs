@@ -1,237 +1,27 @@
-//! Gwyddion's native files (`.gwy`, magic `GWYP`), read to the published
-//! serialisation (Gwyddion user guide, "Gwyddion native file format"):
-//! after the magic, one serialised object — a NUL-terminated type name, a
-//! 32-bit little-endian byte count, then components, each a NUL-terminated
-//! name, a type character and a value: `b` boolean, `c` character, `i`
-//! int32, `q` int64, `d` double, `s` string, `o` object, and arrays `C`,
-//! `I`, `Q`, `D`, `S`, `O` (a 32-bit count, then the items).
-//!
-//! The top object is a `GwyContainer`; channel N is the `GwyDataField` at
-//! `/N/data` (`xres`, `yres`, `xreal`, `yreal`, `si_unit_xy`, `si_unit_z`
-//! as `GwySIUnit` objects with a `unitstr`, and `data`, xres × yres
-//! doubles row after row), its title the string `/N/data/title`, its mask
-//! the data field `/N/mask` (a point > 0.5 is masked). As SurfaceTopography
-//! reads them: sizes in the xy unit, heights in the z unit, a channel holds
-//! heights when both are lengths, masked points are undefined.
-//!
-//! The reader borrows from the file's bytes and checks every count against
-//! the bytes left before using it, so a damaged file allocates nothing
-//! beyond the heights of the channel taken (no more than the file's size)
-//! and nests no deeper than [`MAX_DEPTH`] objects.
+//! Gwyddion's native files (`.gwy`, magic `GWYP`), their container read by
+//! [`super::gwyser`], and the channels of a Gwyddion file's container
+//! (both the `GWYP` files of Gwyddion 2 and the `GWYO` files of Gwyddion
+//! 1, [`super::gwyo`]): channel
+//! N is the `GwyDataField` at `/N/data` (`xres`, `yres`, `xreal`, `yreal`,
+//! `si_unit_xy`, `si_unit_z` as `GwySIUnit` objects with a `unitstr`, and
+//! `data`, xres × yres doubles row after row), its title the string
+//! `/N/data/title`, its mask the data field `/N/mask` (a point > 0.5 is
+//! masked). As SurfaceTopography reads them: sizes in the xy unit, heights
+//! in the z unit, a channel holds heights when both are lengths, masked
+//! points are undefined. A channel whose values have no unit is read as
+//! heights in the sizes' unit, one without any unit in metres, each said
+//! in a note (`--height-unit` and `--lateral-unit` then say what they are).
 
 use std::collections::BTreeMap;
 
-use crate::error::{Failure, Problem};
+pub(crate) use super::gwyser::MAGIC;
+use super::gwyser::{bad, text, File, Obj, Value};
+use crate::error::Failure;
 use crate::formats::readers::grid::Grid;
 use crate::units::per_metre;
 
-/// The magic at the start of a .gwy file.
-pub(crate) const MAGIC: &[u8] = b"GWYP";
-/// Objects nested deeper than this are refused (Gwyddion's own files nest
-/// four or five).
-pub(crate) const MAX_DEPTH: usize = 64;
 /// More channels than this are refused.
 const MAX_CHANNELS: usize = 4096;
-
-fn bad(s: impl AsRef<str>) -> Failure {
-    (
-        None,
-        Problem::Format(format!("Gwyddion .gwy: {}", s.as_ref())),
-    )
-}
-
-fn text(b: &[u8]) -> String {
-    String::from_utf8_lossy(b).into_owned()
-}
-
-/// A serialised object: its type name and the bytes of its components.
-#[derive(Clone, Copy)]
-struct Obj<'a> {
-    name: &'a [u8],
-    /// Where the components start and end in the file.
-    start: usize,
-    end: usize,
-}
-
-/// One component's value; arrays stay bytes of the file.
-enum Value<'a> {
-    Int(i32),
-    Double(f64),
-    Str(&'a [u8]),
-    Object(Obj<'a>),
-    Doubles(&'a [u8]),
-    Other,
-}
-
-/// The file's bytes, read with bounds.
-struct File<'a>(&'a [u8]);
-
-impl<'a> File<'a> {
-    /// A NUL-terminated string at `pos` ending before `end`; the position
-    /// after its NUL.
-    fn cstr(&self, pos: usize, end: usize, what: &str) -> Result<(&'a [u8], usize), Failure> {
-        let b = &self.0[pos.min(end)..end];
-        match b.iter().position(|&c| c == 0) {
-            Some(n) => Ok((&b[..n], pos + n + 1)),
-            None => Err(bad(format!(
-                "{what} at byte {pos} runs past its end (the file is truncated or damaged)"
-            ))),
-        }
-    }
-
-    fn bytes<const N: usize>(
-        &self,
-        pos: usize,
-        end: usize,
-        what: &str,
-    ) -> Result<[u8; N], Failure> {
-        if pos.checked_add(N).is_none_or(|e| e > end) {
-            return Err(bad(format!(
-                "{what} at byte {pos} runs past its end (the file is truncated or damaged)"
-            )));
-        }
-        Ok(self.0[pos..pos + N].try_into().expect("N bytes"))
-    }
-
-    fn u32(&self, pos: usize, end: usize, what: &str) -> Result<usize, Failure> {
-        Ok(u32::from_le_bytes(self.bytes(pos, end, what)?) as usize)
-    }
-
-    /// The object at `pos` within `end`, its components checked (nested
-    /// objects too); the position after it.
-    fn object(&self, pos: usize, end: usize, depth: usize) -> Result<(Obj<'a>, usize), Failure> {
-        if depth > MAX_DEPTH {
-            return Err(bad(format!(
-                "objects nested deeper than {MAX_DEPTH} levels at byte {pos}"
-            )));
-        }
-        let (name, p) = self.cstr(pos, end, "an object's name")?;
-        let size = self.u32(p, end, "an object's size")?;
-        let start = p + 4;
-        if size > end - start {
-            return Err(bad(format!(
-                "object '{}' at byte {pos} claims {size} bytes where {} are left \
-                 (the file is truncated or damaged)",
-                text(name),
-                end - start
-            )));
-        }
-        let obj = Obj {
-            name,
-            start,
-            end: start + size,
-        };
-        self.each(obj, depth, |_, _| Ok(()))?;
-        Ok((obj, obj.end))
-    }
-
-    /// Calls `f` with each component of `obj`.
-    fn each(
-        &self,
-        obj: Obj<'a>,
-        depth: usize,
-        mut f: impl FnMut(&'a [u8], Value<'a>) -> Result<(), Failure>,
-    ) -> Result<(), Failure> {
-        let mut pos = obj.start;
-        while pos < obj.end {
-            let (name, p) = self.cstr(pos, obj.end, "a component's name")?;
-            let [ty] = self.bytes(p, obj.end, "a component's type")?;
-            let (value, next) = self.value(name, ty, p + 1, obj.end, depth)?;
-            f(name, value)?;
-            pos = next;
-        }
-        Ok(())
-    }
-
-    /// The value of component `name`, of type `ty`, at `pos`.
-    fn value(
-        &self,
-        name: &[u8],
-        ty: u8,
-        pos: usize,
-        end: usize,
-        depth: usize,
-    ) -> Result<(Value<'a>, usize), Failure> {
-        let what = format!("component '{}'", text(name));
-        let fixed = |n: usize| -> Result<(Value<'a>, usize), Failure> {
-            if n > end - pos {
-                return Err(bad(format!(
-                    "{what} at byte {pos} runs past its end (the file is truncated or damaged)"
-                )));
-            }
-            Ok((Value::Other, pos + n))
-        };
-        match ty {
-            b'b' | b'c' => fixed(1),
-            b'i' => Ok((
-                Value::Int(i32::from_le_bytes(self.bytes(pos, end, &what)?)),
-                pos + 4,
-            )),
-            b'q' => fixed(8),
-            b'd' => Ok((
-                Value::Double(f64::from_le_bytes(self.bytes(pos, end, &what)?)),
-                pos + 8,
-            )),
-            b's' => {
-                let (s, p) = self.cstr(pos, end, &what)?;
-                Ok((Value::Str(s), p))
-            }
-            b'o' => {
-                let (o, p) = self.object(pos, end, depth + 1)?;
-                Ok((Value::Object(o), p))
-            }
-            b'C' | b'I' | b'Q' | b'D' => {
-                let count = self.u32(pos, end, &what)?;
-                let item = match ty {
-                    b'C' => 1,
-                    b'I' => 4,
-                    _ => 8,
-                };
-                let start = pos + 4;
-                let left = end - start;
-                if count > left / item {
-                    return Err(bad(format!(
-                        "{what} at byte {pos} claims {count} values ({} bytes) where {left} \
-                         bytes are left (the file is truncated or damaged)",
-                        count as u64 * item as u64
-                    )));
-                }
-                let data = &self.0[start..start + count * item];
-                let v = if ty == b'D' {
-                    Value::Doubles(data)
-                } else {
-                    Value::Other
-                };
-                Ok((v, start + count * item))
-            }
-            b'S' | b'O' => {
-                let count = self.u32(pos, end, &what)?;
-                let mut p = pos + 4;
-                // Each item takes at least one byte.
-                if count > end - p {
-                    return Err(bad(format!(
-                        "{what} at byte {pos} claims {count} items where {} bytes are left \
-                         (the file is truncated or damaged)",
-                        end - p
-                    )));
-                }
-                for _ in 0..count {
-                    p = if ty == b'S' {
-                        self.cstr(p, end, &what)?.1
-                    } else {
-                        self.object(p, end, depth + 1)?.1
-                    };
-                }
-                Ok((Value::Other, p))
-            }
-            t => Err(bad(format!(
-                "{what} at byte {} has the unknown type '{}'",
-                pos - 1,
-                (t as char).escape_default()
-            ))),
-        }
-    }
-}
 
 /// A channel's data field, its arrays still in the file.
 struct Field<'a> {
@@ -251,9 +41,10 @@ impl Field<'_> {
     }
 
     /// Sizes of a length unit, values without a unit: heights whose unit
-    /// is taken as the sizes' (`--height-unit` says it).
+    /// is taken as the sizes' (`--height-unit` says it); or neither with
+    /// a unit: sizes taken in metres (`--lateral-unit` says them).
     fn unitless(&self) -> bool {
-        per_metre(&self.unit_xy).is_some() && self.unit_z.is_empty()
+        (per_metre(&self.unit_xy).is_some() || self.unit_xy.is_empty()) && self.unit_z.is_empty()
     }
 
     fn value(&self, i: usize) -> f64 {
@@ -364,60 +155,6 @@ impl Channel<'_> {
     }
 }
 
-/// The channels of a .gwy file, by number.
-fn channels<'a>(file: &File<'a>) -> Result<BTreeMap<u32, Channel<'a>>, Failure> {
-    let b = file.0;
-    if !b.starts_with(MAGIC) {
-        return Err(bad("no 'GWYP' magic"));
-    }
-    let (top, _) = file.object(MAGIC.len(), b.len(), 0)?;
-    if top.name != b"GwyContainer" {
-        return Err(bad(format!(
-            "the file holds a {}, not a GwyContainer",
-            text(top.name)
-        )));
-    }
-    let mut fields = BTreeMap::new();
-    let mut titles = BTreeMap::new();
-    let mut masks = BTreeMap::new();
-    file.each(top, 0, |name, v| {
-        let Some((n, what)) = key(name) else {
-            return Ok(());
-        };
-        let k = text(name);
-        match (what, v) {
-            (b"/data", Value::Object(o)) => {
-                if fields.len() == MAX_CHANNELS {
-                    return Err(bad(format!("more than {MAX_CHANNELS} channels")));
-                }
-                fields.insert(n, field(file, o, &k)?);
-            }
-            (b"/data/title", Value::Str(s)) => {
-                titles.insert(n, text(s));
-            }
-            (b"/mask", Value::Object(o)) => {
-                if masks.len() == MAX_CHANNELS {
-                    return Err(bad(format!("more than {MAX_CHANNELS} masks")));
-                }
-                masks.insert(n, field(file, o, &k)?);
-            }
-            _ => {}
-        }
-        Ok(())
-    })?;
-    Ok(fields
-        .into_iter()
-        .map(|(n, field)| {
-            let c = Channel {
-                field,
-                title: titles.remove(&n),
-                mask: masks.remove(&n),
-            };
-            (n, c)
-        })
-        .collect())
-}
-
 /// The channels of a .gwy file for people: "0 'Height' (m), 1 'Phase'
 /// (deg)".
 fn list(chans: &BTreeMap<u32, Channel<'_>>) -> String {
@@ -488,80 +225,162 @@ fn pick<'c, 'a>(
     Ok((*n, c))
 }
 
-/// Reads channel `choice` of a .gwy file (see [`pick`]).
-pub(crate) fn read(bytes: &[u8], choice: Option<&str>) -> Result<Grid, Failure> {
-    let file = File(bytes);
-    let chans = channels(&file)?;
-    if chans.is_empty() {
-        return Err(bad("no channel (no '/N/data' data field): nothing to read"));
-    }
-    let (n, c) = pick(&chans, choice)?;
-    let f = &c.field;
-    let xy = per_metre(&f.unit_xy).expect("a length");
-    // Values without a unit are read in the sizes' unit (said in a note).
-    let zs = per_metre(&f.unit_z).unwrap_or(xy);
-    let assumed = crate::formats::readers::assumed::Assumed {
-        height: f.unit_z.is_empty().then_some(xy),
-        lateral: None,
-    };
-    let points = f.xres * f.yres;
-    let mut z: Vec<f64> = (0..points)
-        .map(|i| {
-            let v = f.value(i);
-            if v.is_finite() {
-                v / zs
-            } else {
-                f64::NAN
+/// A container's channels as its entries are met.
+#[derive(Default)]
+pub(super) struct Channels<'a> {
+    fields: BTreeMap<u32, Field<'a>>,
+    titles: BTreeMap<u32, String>,
+    masks: BTreeMap<u32, Field<'a>>,
+}
+
+impl<'a> Channels<'a> {
+    /// The container's entry `name` of value `v`, kept when it is a
+    /// channel's data field, title or mask.
+    pub(super) fn add(
+        &mut self,
+        file: &File<'a>,
+        name: &[u8],
+        v: Value<'a>,
+    ) -> Result<(), Failure> {
+        let Some((n, what)) = key(name) else {
+            return Ok(());
+        };
+        let k = text(name);
+        match (what, v) {
+            (b"/data", Value::Object(o)) => {
+                if self.fields.len() == MAX_CHANNELS {
+                    return Err(bad(format!("more than {MAX_CHANNELS} channels")));
+                }
+                self.fields.insert(n, field(file, o, &k)?);
             }
-        })
-        .collect();
-    let mut notes = Vec::new();
-    if chans.len() > 1 {
-        let others: Vec<String> = chans
-            .iter()
-            .filter(|(m, _)| **m != n)
-            .map(|(m, o)| o.describe(*m))
+            (b"/data/title", Value::Str(s)) => {
+                self.titles.insert(n, text(s));
+            }
+            (b"/mask", Value::Object(o)) => {
+                if self.masks.len() == MAX_CHANNELS {
+                    return Err(bad(format!("more than {MAX_CHANNELS} masks")));
+                }
+                self.masks.insert(n, field(file, o, &k)?);
+            }
+            _ => {}
+        }
+        Ok(())
+    }
+
+    /// The channels, by number.
+    fn channels(self) -> BTreeMap<u32, Channel<'a>> {
+        let Channels {
+            fields,
+            mut titles,
+            mut masks,
+        } = self;
+        fields
+            .into_iter()
+            .map(|(n, field)| {
+                let c = Channel {
+                    field,
+                    title: titles.remove(&n),
+                    mask: masks.remove(&n),
+                };
+                (n, c)
+            })
+            .collect()
+    }
+
+    /// The heights of channel `choice` (see [`pick`]), a grid of
+    /// `format`.
+    pub(super) fn grid(self, choice: Option<&str>, format: &'static str) -> Result<Grid, Failure> {
+        let chans = self.channels();
+        if chans.is_empty() {
+            return Err(bad("no channel (no '/N/data' data field): nothing to read"));
+        }
+        let (n, c) = pick(&chans, choice)?;
+        let f = &c.field;
+        // Sizes without a unit are read in metres, values without a unit in
+        // the sizes' unit (each said in a note).
+        let xy = per_metre(&f.unit_xy).unwrap_or(1.0);
+        let zs = per_metre(&f.unit_z).unwrap_or(xy);
+        let assumed = crate::formats::readers::assumed::Assumed {
+            height: f.unit_z.is_empty().then_some(xy),
+            lateral: f.unit_xy.is_empty().then_some(1.0),
+        };
+        let points = f.xres * f.yres;
+        let mut z: Vec<f64> = (0..points)
+            .map(|i| {
+                let v = f.value(i);
+                if v.is_finite() {
+                    v / zs
+                } else {
+                    f64::NAN
+                }
+            })
             .collect();
-        notes.push(format!(
-            "channel {} read; also in the file: {} (--channel N or TITLE)",
-            c.describe(n),
-            others.join(", ")
-        ));
-    }
-    let nonfinite = z.iter().filter(|v| v.is_nan()).count();
-    if nonfinite > 0 {
-        notes.push(format!(
-            "{nonfinite} NaN or infinite values read as undefined points"
-        ));
-    }
-    if let Some(m) = &c.mask {
-        if (m.xres, m.yres) != (f.xres, f.yres) {
-            return Err(bad(format!(
-                "the mask '/{n}/mask' is {} × {} points where the channel is {} × {}",
-                m.xres, m.yres, f.xres, f.yres
-            )));
-        }
-        let mut masked = 0;
-        for (i, v) in z.iter_mut().enumerate() {
-            if m.value(i) > 0.5 {
-                masked += 1;
-                *v = f64::NAN;
-            }
-        }
-        if masked > 0 {
+        let mut notes = Vec::new();
+        if chans.len() > 1 {
+            let others: Vec<String> = chans
+                .iter()
+                .filter(|(m, _)| **m != n)
+                .map(|(m, o)| o.describe(*m))
+                .collect();
             notes.push(format!(
-                "{masked} points under the mask '/{n}/mask' read as undefined"
+                "channel {} read; also in the file: {} (--channel N or TITLE)",
+                c.describe(n),
+                others.join(", ")
             ));
         }
+        let nonfinite = z.iter().filter(|v| v.is_nan()).count();
+        if nonfinite > 0 {
+            notes.push(format!(
+                "{nonfinite} NaN or infinite values read as undefined points"
+            ));
+        }
+        if let Some(m) = &c.mask {
+            if (m.xres, m.yres) != (f.xres, f.yres) {
+                return Err(bad(format!(
+                    "the mask '/{n}/mask' is {} × {} points where the channel is {} × {}",
+                    m.xres, m.yres, f.xres, f.yres
+                )));
+            }
+            let mut masked = 0;
+            for (i, v) in z.iter_mut().enumerate() {
+                if m.value(i) > 0.5 {
+                    masked += 1;
+                    *v = f64::NAN;
+                }
+            }
+            if masked > 0 {
+                notes.push(format!(
+                    "{masked} points under the mask '/{n}/mask' read as undefined"
+                ));
+            }
+        }
+        Ok(Grid {
+            nx: f.xres,
+            ny: f.yres,
+            lx: f.xreal / xy,
+            ly: if f.yres == 1 { 0.0 } else { f.yreal / xy },
+            z,
+            notes,
+            format,
+            assumed,
+        })
     }
-    Ok(Grid {
-        nx: f.xres,
-        ny: f.yres,
-        lx: f.xreal / xy,
-        ly: if f.yres == 1 { 0.0 } else { f.yreal / xy },
-        z,
-        notes,
-        format: "Gwyddion .gwy",
-        assumed,
-    })
+}
+
+/// Reads channel `choice` of a .gwy file (see [`Channels::grid`]).
+pub(crate) fn read(bytes: &[u8], choice: Option<&str>) -> Result<Grid, Failure> {
+    let file = File(bytes);
+    if !bytes.starts_with(MAGIC) {
+        return Err(bad("no 'GWYP' magic"));
+    }
+    let (top, _) = file.object(MAGIC.len(), bytes.len(), 0)?;
+    if top.name != b"GwyContainer" {
+        return Err(bad(format!(
+            "the file holds a {}, not a GwyContainer",
+            text(top.name)
+        )));
+    }
+    let mut chans = Channels::default();
+    file.each(top, 0, |name, v| chans.add(&file, name, v))?;
+    chans.grid(choice, "Gwyddion .gwy")
 }

@@ -16,21 +16,38 @@
 
 mod al3d;
 pub(crate) mod assumed;
-mod bin;
+mod bcr;
+pub(crate) mod bin;
 mod chan;
+mod datx;
 mod di;
 mod frt;
 pub(crate) mod grid;
 pub(crate) mod gwy;
+mod gwyo;
+pub(crate) mod gwyser;
+mod h5;
+mod h5jpk;
 mod ibw;
+mod jpk;
+mod keyence;
 mod metropro;
 mod nid;
 mod opd;
 mod opdx;
-mod plu;
+mod park;
+pub(crate) mod plu;
+mod plux;
 mod sdf;
 mod sur;
+mod surz;
+mod sxm;
+pub(crate) mod tiffs;
+mod wsxm;
 pub(crate) mod x3p;
+mod xqd;
+mod zipped;
+mod zon;
 
 use crate::error::Failure;
 use crate::formats::readers::grid::Grid;
@@ -67,7 +84,7 @@ impl std::fmt::Debug for Native {
 
 /// The formats read natively, in the order they are told apart (the
 /// first whose bytes match is taken: the extension alone last).
-static NATIVE: [Native; 11] = [
+static NATIVE: &[Native] = &[
     Native {
         name: sur::NAME,
         channels: false,
@@ -129,12 +146,112 @@ static NATIVE: [Native; 11] = [
         read: ibw::read,
     },
     Native {
+        name: keyence::NAME,
+        channels: true,
+        is: |b, _| keyence::is_vk(b),
+        read: keyence::read,
+    },
+    Native {
+        name: zon::NAME,
+        channels: false,
+        is: |b, _| zon::MAGICS.iter().any(|m| b.starts_with(m)),
+        read: |b, _| zon::read(b),
+    },
+    Native {
+        name: plux::NAME,
+        channels: true,
+        is: |b, ext| b.starts_with(x3p::MAGIC) && (ext == "plux" || plux::is_plux(b)),
+        read: plux::read,
+    },
+    Native {
+        name: park::NAME,
+        channels: false,
+        is: |b, _| park::is_park(b),
+        read: |b, _| park::read(b),
+    },
+    Native {
+        name: jpk::NAME,
+        channels: true,
+        is: |b, _| jpk::is_jpk(b),
+        read: jpk::read,
+    },
+    Native {
+        name: h5jpk::NAME,
+        channels: true,
+        is: |b, ext| b.starts_with(h5::MAGIC) && (ext == "h5-jpk" || h5jpk::is_h5jpk(b)),
+        read: h5jpk::read,
+    },
+    Native {
+        name: datx::NAME,
+        channels: false,
+        is: |b, ext| b.starts_with(h5::MAGIC) && (ext == "datx" || datx::is_datx(b)),
+        read: |b, _| datx::read(b),
+    },
+    Native {
+        name: surz::NAME,
+        channels: false,
+        is: |b, _| b.starts_with(surz::MAGIC),
+        read: |b, _| surz::read(b),
+    },
+    Native {
+        name: wsxm::NAME,
+        channels: false,
+        is: |b, _| b.starts_with(wsxm::MAGIC),
+        read: |b, _| wsxm::read(b),
+    },
+    Native {
+        name: bcr::NAME,
+        channels: false,
+        is: |b, _| bcr::is_bcr(b),
+        read: |b, _| bcr::read(b),
+    },
+    Native {
+        name: sxm::NAME,
+        channels: true,
+        is: |b, _| b.starts_with(sxm::MAGIC),
+        read: sxm::read,
+    },
+    Native {
+        name: gwyo::NAME,
+        channels: true,
+        is: |b, _| b.starts_with(gwyo::MAGIC),
+        read: gwyo::read,
+    },
+    Native {
+        name: xqd::NAME,
+        channels: false,
+        is: |b, ext| xqd::is_xqd(b) && matches!(ext, "xqp" | "xqpx" | "xqi" | "xqix"),
+        read: |_, _| xqd::not_heights(),
+    },
+    Native {
+        name: xqd::NAME,
+        channels: false,
+        is: |b, _| xqd::is_xqd(b),
+        read: |b, _| xqd::read(b),
+    },
+    Native {
         name: plu::NAME,
         channels: true,
-        is: |_, ext| matches!(ext, "plu" | "apx"),
+        is: |b, ext| matches!(ext, "plu" | "apx") && plu::looks_like(b).is_some(),
         read: plu::read,
     },
 ];
+
+/// The native format of the zip `bytes` that is not an x3p (a Sensofar
+/// .plux), if it is one.
+pub(crate) fn sniff_zip(bytes: &[u8], ext: &str) -> Option<&'static Native> {
+    NATIVE
+        .iter()
+        .find(|n| n.name == plux::NAME && (n.is)(bytes, ext))
+}
+
+/// The line for a TIFF file whose directories cannot be read, if they
+/// cannot.
+pub(crate) fn damaged_tiff(bytes: &[u8]) -> Option<String> {
+    tiffs::Tiff::read(bytes, "TIFF")
+        .err()
+        .map(|(_, p)| p.to_string())
+}
 
 /// The native format of `bytes` (a file named with extension `ext`, lower
 /// case), if any.

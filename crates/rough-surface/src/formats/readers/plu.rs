@@ -16,6 +16,51 @@ use crate::formats::readers::grid::Grid;
 
 pub(crate) const NAME: &str = "Sensofar .plu";
 
+/// The date a Sensofar file starts with and its measurement type, where
+/// `b` looks like one: printable text up to a NUL in its first 128 bytes
+/// and a type of 0–6 (image, profile, profiles, topography, coordinates,
+/// thickness, custom) at byte 428 — or a file cut short before it (`None`:
+/// the reader then says so). The format has no magic: this tells a `.plu`
+/// renamed, or a file named `.plu` that is none.
+pub(crate) fn looks_like(b: &[u8]) -> Option<(String, Option<u32>)> {
+    let head = &b[..b.len().min(128)];
+    let end = head.iter().position(|&c| c == 0)?;
+    let date = &head[..end];
+    if date.len() < 8 || !date.iter().all(|&c| (0x20..0x7f).contains(&c)) {
+        return None;
+    }
+    let date = String::from_utf8_lossy(date).into_owned();
+    match b.get(428..432) {
+        None => Some((date, None)),
+        Some(t) => {
+            let ty = u32::from_le_bytes(t.try_into().expect("4 bytes"));
+            (ty <= 6).then_some((date, Some(ty)))
+        }
+    }
+}
+
+/// Why `b`, named `.plu`, is not a Sensofar file ([`looks_like`] says it
+/// is none).
+pub(crate) fn why_not(b: &[u8]) -> String {
+    let head = &b[..b.len().min(128)];
+    let date = head
+        .iter()
+        .position(|&c| c == 0)
+        .is_some_and(|n| n >= 8 && head[..n].iter().all(|&c| (0x20..0x7f).contains(&c)));
+    let ty = b
+        .get(428..432)
+        .map(|t| u32::from_le_bytes(t.try_into().expect("4 bytes")));
+    match (date, ty) {
+        (false, None) => "no date at its start, where Sensofar writes one".into(),
+        (false, Some(t)) if t <= 6 => "no date at its start, where Sensofar writes one".into(),
+        (false, Some(t)) => format!(
+            "no date at its start, and a measurement type of {t} at byte 428, where Sensofar's are 0–6"
+        ),
+        (true, None) => "a date, but no measurement type".into(),
+        (true, Some(t)) => format!("a measurement type of {t} at byte 428, where Sensofar's are 0–6"),
+    }
+}
+
 /// A point not measured.
 const UNDEFINED: f32 = 1_000_001.0;
 

@@ -15,7 +15,9 @@
 //! - `Record4`: the file holding the MD5 checksum of `main.xml`.
 //!
 //! Invalid points, NaN and infinities are undefined points (NaN). A
-//! checksum that does not match is refused; a missing one is not checked.
+//! binary file whose checksum does not match is refused; `main.xml`'s is a
+//! warning (an edited header, read as x3pio reads it); a missing checksum
+//! is not checked.
 //! Every size is checked before it is used: members unpack to no more than
 //! [`crate::limits::MAX_BYTES`] and to exactly what `main.xml` says.
 
@@ -41,6 +43,29 @@ fn bad(s: impl AsRef<str>) -> Failure {
 }
 
 type Zip<'a> = ZipArchive<Cursor<&'a [u8]>>;
+
+/// Why a zip archive cannot be opened, for people: what is wrong with the
+/// file, not the zip library's own names for its parts.
+pub(crate) fn unreadable(e: &zip::result::ZipError) -> String {
+    use zip::result::ZipError;
+    let why = match e {
+        ZipError::InvalidArchive(m) if m.contains("EOCD") || m.contains("end") => {
+            "it is cut short or damaged: its directory of members, at the end of the \
+             archive, is missing or incomplete"
+                .to_string()
+        }
+        ZipError::InvalidArchive(_) | ZipError::Io(_) => {
+            "it is cut short or damaged: its directory of members cannot be read".to_string()
+        }
+        ZipError::UnsupportedArchive(m) => format!("it uses a zip feature not read ({m})"),
+        ZipError::InvalidPassword => "it is encrypted".to_string(),
+        ZipError::CompressionMethodNotSupported(m) => {
+            format!("it is compressed with method {m}, which is not read")
+        }
+        _ => "its members' sizes cannot be read".to_string(),
+    };
+    format!("not a readable zip archive: {why}")
+}
 
 /// The folder of `main.xml` in the zip ("" at the root; x3pio also reads
 /// an x3p zipped by hand, whose members sit in one folder), `None` when
@@ -75,6 +100,12 @@ fn other_zip(zip: &Zip<'_>) -> String {
     let has = |f: &dyn Fn(&str) -> bool| names.iter().any(|n| f(n));
     if has(&|n| n == "Vk4File") {
         crate::formats::hints::hint("a Keyence .vk6/.vk7 file")
+    } else if has(&|n| n.ends_with("header.properties"))
+        && has(&|n| n.starts_with("segments/") || n.starts_with("index/"))
+    {
+        "a JPK force file (.jpk-force or .jpk-qi-data: force curves, a zip of segments): \
+         it holds no heights; a scan's heights are in its .jpk image"
+            .to_string()
     } else if has(&|n| n.ends_with(".npy")) {
         "looks like a NumPy .npz archive: save one height array as text with \
          numpy.savetxt (rows of heights) and add '# Width:' and '# Height:' lines"
@@ -228,22 +259,25 @@ fn check_md5(name: &str, data: &[u8], recorded: Option<&str>) -> Result<(), Fail
     }
 }
 
+/// The checksum `recorded` (lower case) where it is a well-formed MD5
+/// that is not `got`.
+fn differs(got: &str, recorded: &str) -> Option<String> {
+    let r = recorded.trim();
+    let r = r.get(..32).unwrap_or(r);
+    let formed = r.len() == 32 && r.bytes().all(|c| c.is_ascii_hexdigit());
+    (formed && !got.eq_ignore_ascii_case(r)).then(|| r.to_ascii_lowercase())
+}
+
 /// Refuses member `name` when its MD5 `got` is not `recorded` (a
 /// malformed checksum is not checked).
 fn check_sum(name: &str, got: &str, recorded: &str) -> Result<(), Failure> {
-    let r = recorded.trim();
-    let r = r.get(..32).unwrap_or(r);
-    if r.len() != 32 || !r.bytes().all(|c| c.is_ascii_hexdigit()) {
-        return Ok(());
+    match differs(got, recorded) {
+        Some(r) => Err(bad(format!(
+            "the MD5 checksum of {name} is {got} where the file records {r}: \
+             it was changed or damaged after it was written"
+        ))),
+        None => Ok(()),
     }
-    if !got.eq_ignore_ascii_case(r) {
-        return Err(bad(format!(
-            "the MD5 checksum of {name} is {got} where the file records {}: \
-             it was changed or damaged after it was written",
-            r.to_ascii_lowercase()
-        )));
-    }
-    Ok(())
 }
 
 /// The child element `name` of `n` (namespaces aside).
@@ -326,8 +360,7 @@ fn link(dir: &str, l: &str) -> Result<String, Failure> {
 
 /// Reads an x3p file's first layer.
 pub(crate) fn read(bytes: &[u8]) -> Result<Grid, Failure> {
-    let mut zip = ZipArchive::new(Cursor::new(bytes))
-        .map_err(|e| bad(format!("not a readable zip archive ({e})")))?;
+    let mut zip = ZipArchive::new(Cursor::new(bytes)).map_err(|e| bad(unreadable(&e)))?;
     let Some(dir) = folder(&zip) else {
         return Err((None, Problem::Format(other_zip(&zip))));
     };
@@ -350,7 +383,11 @@ pub(crate) fn read(bytes: &[u8]) -> Result<Grid, Failure> {
     let record3 = child(root, "Record3").ok_or_else(|| bad("main.xml has no Record3"))?;
     // The checksum of main.xml itself, in md5sum's format ("HEX *NAME");
     // a line naming another member (SurfaceTopography 1.27 writes
-    // bindata/data.bin's there) is left to main.xml's own checksums.
+    // bindata/data.bin's there) is left to main.xml's own checksums. One
+    // that does not match is a warning: main.xml was edited after it was
+    // written (x3pio reads such files too), and the heights' own checksums
+    // still guard them.
+    let mut xml_note = None;
     if let Some(name) = text_at(root, &["Record4", "ChecksumFile"]).filter(|n| !n.is_empty()) {
         let name = link(&dir, name)?;
         if zip.index_for_name(&name).is_some() {
@@ -359,8 +396,15 @@ pub(crate) fn read(bytes: &[u8]) -> Result<Grid, Failure> {
                 let mut w = line.split_whitespace();
                 let sum = w.next();
                 let of = w.next().map(|n| n.trim_start_matches('*'));
-                if of.is_none_or(|n| n == "main.xml") {
-                    check_md5("main.xml", &xml_bytes, sum)?;
+                let got = md5_hex(&xml_bytes);
+                if let (true, Some(r)) = (
+                    of.is_none_or(|n| n == "main.xml"),
+                    sum.and_then(|s| differs(&got, s)),
+                ) {
+                    xml_note = Some(format!(
+                        "warning: the MD5 checksum of main.xml is {got} where {name} records \
+                         {r}: main.xml was changed after it was written; read as it is"
+                    ));
                 }
             }
         }
@@ -410,7 +454,7 @@ pub(crate) fn read(bytes: &[u8]) -> Result<Grid, Failure> {
         })?;
     let layer = nx * ny;
     let mut z = Vec::new();
-    let mut notes = Vec::new();
+    let mut notes: Vec<String> = xml_note.into_iter().collect();
     let mut nonfinite = 0;
     if let Some(list) = child(record3, "DataList") {
         let datums = || {

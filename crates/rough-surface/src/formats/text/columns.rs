@@ -315,13 +315,15 @@ fn scales(
         (Some((u, line)), None) => unit(u, *line)?,
         (Some((u, line)), Some(g)) => {
             let per = unit(u, *line)?;
-            if per != g.per_metre {
-                notes.push(format!(
+            notes.push(if per != g.per_metre {
+                format!(
                     "x read in {} (--lateral-unit; the file says {})",
                     g.name,
                     canonical(per)
-                ));
-            }
+                )
+            } else {
+                format!("x read in {} (--lateral-unit, as the file says)", g.name)
+            });
             g.per_metre
         }
         (None, Some(g)) => {
@@ -348,7 +350,16 @@ fn scales(
         ),
         (None, None, _) => heights(Source::Nothing, opts.height_unit)?,
     };
-    notes.extend(note);
+    // --height-unit is confirmed where it does not overrule the file.
+    let confirm = opts.height_unit.map(|g| {
+        let why = if z.is_some() {
+            "--height-unit, as the file says"
+        } else {
+            "--height-unit; the file names no unit for them"
+        };
+        format!("heights read in {} ({why})", g.name)
+    });
+    notes.extend(note.or(confirm));
     Ok((sx, sz, notes))
 }
 
