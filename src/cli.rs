@@ -80,7 +80,9 @@ pub enum Command {
 #[derive(Debug, Args, Clone, Default)]
 #[group(multiple = false)]
 pub struct Source {
-    /// A built-in preset: fig1, fig2, fig3 or fig4.
+    /// A built-in preset: fig1, fig2, fig3, fig4 (the paper's figures) or
+    /// elastic-again (a scene whose Ψ* comes down through 1 within the
+    /// contact simulation's reach).
     #[arg(long, value_name = "NAME")]
     pub preset: Option<String>,
     /// A snapshot file (RON, schema version 1).
