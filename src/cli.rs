@@ -433,7 +433,7 @@ pub struct BenchArgs {
     #[arg(long, default_value_t = 15)]
     pub passes: u32,
     /// Leave out the longest part, fig2's 13-load contact curve on 1024²
-    /// (about 26 of the run's 34 s on two idle cores).
+    /// (about 23 of the run's 30 s on two idle cores).
     #[arg(long, conflicts_with = "surface")]
     pub quick: bool,
     /// Time a measured surface instead: the file to the first screen, ζ

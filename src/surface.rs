@@ -43,19 +43,6 @@ impl PartialEq for SurfaceSource {
     }
 }
 
-/// A refusal that names `--pixel-size` by its value in metres
-/// (rough_surface says "--pixel-size 0.00000005 m does not apply"), with
-/// the length as it was typed: "--pixel-size 50 nm does not apply".
-fn pixel_size_as_typed(mut e: SurfaceError, options: &Options) -> SurfaceError {
-    if let (rough_surface::Problem::Option(text), Some(p)) = (&mut e.problem, options.pixel_size) {
-        *text = text.replace(
-            &format!("--pixel-size {p} m"),
-            &format!("--pixel-size {}", crate::physical::typed_length(p)),
-        );
-    }
-    e
-}
-
 /// The file made absolute against the current directory (not resolving
 /// links, so that the path recorded is the one the user gave).
 pub fn absolute(path: &Path) -> PathBuf {
@@ -74,8 +61,7 @@ impl SurfaceSource {
     /// Reads the surface in `path` (one message naming file, line and
     /// problem when refused).
     pub fn read(path: &Path, options: Options) -> Result<SurfaceSource, SurfaceError> {
-        let measured =
-            rough_surface::read(path, &options).map_err(|e| pixel_size_as_typed(e, &options))?;
+        let measured = rough_surface::read(path, &options)?;
         Ok(SurfaceSource {
             // The file was just read: its canonical path exists, and the
             // same file reached two ways compares equal.

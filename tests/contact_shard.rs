@@ -156,6 +156,71 @@ fn merged_pictures_are_the_one_machines() {
     }
 }
 
+#[test]
+fn contact_slopes_parts_merge_to_the_one_machines_csv_and_picture() {
+    // The fit's error, |mean light slope − mean heavy slope| over the
+    // seeds, is no seed's own: each part carries the seeds' heavy-window
+    // slopes (`*_heavy`) and merge forms it as one machine does.
+    let dir = tempfile::tempdir().unwrap();
+    let all = [
+        "--view",
+        "contact-slopes",
+        "--preset",
+        "fig2",
+        "--cell",
+        "1",
+        "--per-wavelength",
+        "3",
+        "--seeds",
+        "3",
+    ];
+    let mut parts = vec![];
+    for k in [2, 1] {
+        let file = dir.path().join(format!("part-{k}-of-2.csv"));
+        let shard = format!("{k}/2");
+        let out = file.to_str().unwrap();
+        stdout(&[&["export"], &all[..], &["--shard", &shard, "--output", out]].concat());
+        parts.push(file.display().to_string());
+    }
+    let part = std::fs::read_to_string(&parts[0]).unwrap();
+    let header = part.lines().find(|l| !l.starts_with('#')).unwrap();
+    assert!(
+        header.contains(",sim_elastic_slope_heavy,sim_plastic_slope_heavy,sim_total_slope_heavy,")
+            && !header.contains("_fit_err"),
+        "{header}"
+    );
+    assert!(
+        part.lines().any(|l| l.starts_with("# part columns = ")
+            && l.contains("fit error: sim_elastic_slope_heavy, sim_plastic_slope_heavy, sim_total_slope_heavy;")),
+        "{part}"
+    );
+    let parts: Vec<&str> = parts.iter().map(String::as_str).collect();
+    let one = stdout(&[&["export"], &all[..]].concat());
+    let merged = stdout(&[&["merge"], &parts[..]].concat());
+    let d = difference(&one, &merged);
+    println!("contact-slopes: 3 seeds in 2 parts, merged against one machine: largest relative difference {d:e}");
+    assert!(d <= 1e-12, "{d}");
+    assert_eq!(one, merged);
+    let fit_err = merged
+        .lines()
+        .find(|l| !l.starts_with('#'))
+        .unwrap()
+        .split(',')
+        .position(|c| c == "sim_total_slope_fit_err")
+        .unwrap();
+    let first = merged
+        .lines()
+        .filter(|l| !l.starts_with('#'))
+        .nth(1)
+        .unwrap();
+    let e: f64 = first.split(',').nth(fit_err).unwrap().parse().unwrap();
+    assert!(e.is_finite() && e > 0.0, "{first}");
+    let one = stdout(&[&["export"], &all[..], &["--format", "svg"]].concat());
+    let merged = stdout(&[&["merge", "--format", "svg"], &parts[..]].concat());
+    assert!(merged.contains("<svg"), "{merged}");
+    assert_eq!(one, merged);
+}
+
 /// A failed run: status 2, one line on stderr holding `says`.
 fn refused(args: &[&str], says: &str) {
     let out = run(args);

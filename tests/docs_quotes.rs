@@ -243,6 +243,9 @@ const NOT_COLUMNS: &[&str] = &[
     "size_effect",
     // Former names (export.md's "Changed columns").
     "hardness_ratio",
+    // A part's own (`export --shard`), which merge turns into
+    // sim_total_slope_fit_err.
+    "sim_total_slope_heavy",
 ];
 
 #[test]

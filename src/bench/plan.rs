@@ -19,15 +19,16 @@ struct Part {
 }
 
 /// Seconds per timed pass of all the slope methods over the reference ψ
-/// (about 1 s for the default 15 passes).
-const SLOPES_PASS: f64 = 0.07;
+/// (0.07 s for the default 15 passes on 2026-11-28, two idle cores).
+const SLOPES_PASS: f64 = 0.005;
 /// The speed targets with `roughtui export` against its NumPy peer (three
 /// runs of each, python3's start-up most of it).
 const TARGETS: f64 = 5.0;
 /// One load at ζ = 32 and 64, three cold solves each.
 const SOLVER: f64 = 1.5;
-/// fig2's 13-load curve at ζ = 128 on 1024² (26.0 s measured).
-const CURVE: f64 = 26.0;
+/// fig2's 13-load curve at ζ = 128 on 1024² (23.1 s measured on
+/// 2026-11-28, two idle cores).
+const CURVE: f64 = 23.0;
 /// The synthetic 1024² map: tabulated, first frame, 41 + 41 steps.
 const SYNTHETIC: f64 = 0.2;
 
@@ -71,9 +72,11 @@ fn parts(args: &BenchArgs, methods: usize, reference: usize) -> Vec<Part> {
     ]
 }
 
-/// "about 26 s", "about 0.2 s".
+/// "about 23 s", "about 0.2 s", "under 0.1 s".
 fn about(seconds: f64) -> String {
-    if seconds < 1.0 {
+    if seconds < 0.1 {
+        "under 0.1 s".into()
+    } else if seconds < 1.0 {
         format!("about {seconds:.1} s")
     } else {
         format!("about {seconds:.0} s")
@@ -152,20 +155,20 @@ mod tests {
         assert_eq!(
             lines[1],
             "  1. the initial slopes by 13 methods over 1251 reference ψ, 15 timed passes \
-             each (about 1 s)"
+             each (under 0.1 s)"
         );
         assert!(
             lines[4]
-                .starts_with("  4. fig2's 13-load contact curve at ζ = 128 on 1024² (about 26 s)"),
+                .starts_with("  4. fig2's 13-load contact curve at ζ = 128 on 1024² (about 23 s)"),
             "{t}"
         );
-        assert!(lines[6].starts_with("about 34 s in all"), "{t}");
+        assert!(lines[6].starts_with("about 30 s in all"), "{t}");
         assert!(
-            lines[6].ends_with("--quick leaves out the contact curve (about 8 s)."),
+            lines[6].ends_with("--quick leaves out the contact curve (about 7 s)."),
             "{t}"
         );
         let q = text(&args(&["--quick", "--passes", "3"]), 13, 1251);
-        assert!(q.contains("3 timed passes each (about 0.3 s)"), "{q}");
+        assert!(q.contains("3 timed passes each (under 0.1 s)"), "{q}");
         assert!(q.contains("on 1024² (left out: --quick)"), "{q}");
         assert!(q.contains("about 7 s in all"), "{q}");
         let s = text(&args(&["--surface", "x.txt"]), 13, 1251);

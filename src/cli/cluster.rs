@@ -22,7 +22,7 @@ pub struct Shard {
 #[derive(Debug, Args, Clone, Default)]
 pub struct Cluster {
     /// Solve part K of M of the --seeds (contact, contact-sweep,
-    /// contact-convergence): each of its seeds' own rows (a `seed` column)
+    /// contact-slopes, contact-convergence): each of its seeds' own rows (a `seed` column)
     /// under the whole ensemble's `#` lines; `roughtui merge` puts the M
     /// parts together.
     #[arg(long, value_name = "K/M", value_parser = parse_shard)]
@@ -41,6 +41,12 @@ pub struct Cluster {
     /// CPUs (solver threads) of each array task (default 2).
     #[arg(long, value_name = "N", value_parser = parse_cpus, requires = "slurm_array")]
     pub slurm_cpus: Option<u32>,
+    /// Set by `--shard` on each seed's own export (not an option): a
+    /// statistic of the seeds' means is written as what each seed gives
+    /// towards it (contact-slopes writes the heavy window's slopes,
+    /// `*_heavy`, where the ensemble has `*_fit_err`).
+    #[arg(skip)]
+    pub part: bool,
 }
 
 /// `roughtui merge`.

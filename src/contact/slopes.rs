@@ -126,9 +126,14 @@ impl Row {
     /// The fit's error: |mean slope over the lightest loads − over the
     /// heaviest|.
     pub fn fit_error(&self) -> [f64; 3] {
-        let heavy: Vec<[f64; 3]> = self.runs.iter().map(Run::slopes_heavy).collect();
-        let light = self.stats();
-        [0, 1, 2].map(|k| (light[k].mean - Stat::of(heavy.iter().map(|v| v[k])).mean).abs())
+        let (light, heavy) = (self.stats(), self.heavy_stats());
+        [0, 1, 2].map(|k| (light[k].mean - heavy[k].mean).abs())
+    }
+
+    /// The seeds' slopes over the heaviest loads: mean and sd.
+    pub fn heavy_stats(&self) -> [Stat; 3] {
+        let s: Vec<[f64; 3]> = self.runs.iter().map(Run::slopes_heavy).collect();
+        [0, 1, 2].map(|k| Stat::of(s.iter().map(|v| v[k])))
     }
 }
 
@@ -195,18 +200,25 @@ pub fn rows(state: &State, spec: &Spec) -> anyhow::Result<(Simulation, Vec<Row>)
     Ok((first, out))
 }
 
-/// The slopes as CSV, `scene` its first `#` lines.
+/// The slopes as CSV, `scene` its first `#` lines. A `part` (one seed of
+/// a `--shard`) writes the heavy window's slopes, `*_heavy`, in place of
+/// `*_fit_err`, which `roughtui merge` forms from them over the seeds.
 pub fn write(
     out: &mut impl Write,
     state: &State,
     spec: &Spec,
     scene: &[String],
+    part: bool,
 ) -> anyhow::Result<()> {
     let (sim, rows) = rows(state, spec)?;
     let mut buf = String::new();
     for r in &rows {
         let [el, pl, tot] = r.stats();
-        let err = r.fit_error();
+        let err = if part {
+            r.heavy_stats().map(|s| s.mean)
+        } else {
+            r.fit_error()
+        };
         let x = &r.runs[0].x;
         push_row(
             &mut buf,
@@ -290,7 +302,11 @@ pub fn write(
         },
         super::csv::theory_split(state.model)
     )?;
-    writeln!(out, "{HEADER}")?;
+    if part {
+        writeln!(out, "{}", HEADER.replace("_fit_err", "_heavy"))?;
+    } else {
+        writeln!(out, "{HEADER}")?;
+    }
     out.write_all(buf.as_bytes())?;
     out.flush()?;
     Ok(())

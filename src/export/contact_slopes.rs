@@ -49,7 +49,7 @@ pub fn export(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
     match args.format {
         FormatArg::Csv => {
             let scene = full_lines_of(&state, "contact-slopes", span(&state));
-            write(out, &state, &spec, &scene)
+            write(out, &state, &spec, &scene, args.cluster.part)
         }
         FormatArg::Svg => {
             let svg = figure::render_contact_slopes(&state, &picture(&state, &spec)?)?;
@@ -65,22 +65,45 @@ pub fn export(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
 pub fn picture(state: &State, spec: &Spec) -> anyhow::Result<ContactSlopes> {
     let (sim, rows) = rows(state, spec)?;
     let n = sim.contact.n();
-    let surface = match &sim.measured {
-        Some(_) => format!("{n}×{n} nodes of the measured map"),
+    let stats: Vec<_> = rows.iter().map(|r| r.stats()).collect();
+    let zeta = rows.iter().map(|r| r.zeta).collect();
+    let slope = [0, 1, 2].map(|k| stats.iter().map(|s| s[k].mean).collect());
+    let sd = [0, 1, 2].map(|k| stats.iter().map(|s| s[k].sd).collect());
+    Ok(picture_of(
+        state,
+        spec,
+        sim.measured.is_some().then_some(n),
+        zeta,
+        slope,
+        sd,
+    ))
+}
+
+/// The picture's numbers from the simulation's slopes (elastic, plastic,
+/// total) and their sds at each ζ — solved here, or merged from parts —
+/// with the theory's curves; `measured`, the map's grid side.
+pub fn picture_of(
+    state: &State,
+    spec: &Spec,
+    measured: Option<usize>,
+    zeta: Vec<f64>,
+    slope: [Vec<f64>; 3],
+    sd: [Vec<f64>; 3],
+) -> ContactSlopes {
+    let surface = match measured {
+        Some(n) => format!("{n}×{n} nodes of the measured map"),
         None => format!(
             "a cell of {}, {}",
             spec.sampling.cell_words(),
             spec.seeds.words()
         ),
     };
-    let stats: Vec<_> = rows.iter().map(|r| r.stats()).collect();
     let mut d = ContactSlopes {
         surface,
         hardness: hardness_short(state, spec.sampling.hardness),
-        zeta: rows.iter().map(|r| r.zeta).collect(),
-        slope: [0, 1, 2].map(|k| stats.iter().map(|s| s[k].mean).collect()),
-        sd: (spec.seeds.count > 1)
-            .then(|| [0, 1, 2].map(|k| stats.iter().map(|s| s[k].sd).collect())),
+        zeta,
+        slope,
+        sd: (spec.seeds.count > 1).then_some(sd),
         ..ContactSlopes::default()
     };
     let (from, to) = match state.sweep.axis() {
@@ -88,8 +111,9 @@ pub fn picture(state: &State, spec: &Spec) -> anyhow::Result<ContactSlopes> {
         _ => (1.0, 1e4),
     };
     let to = to.min(state.roughness().zeta_max());
-    let sweep =
-        Sweep::new(Axis::Zeta, from, to.max(from * 1.0001)).map_err(|e| anyhow::anyhow!("{e}"))?;
+    let Ok(sweep) = Sweep::new(Axis::Zeta, from, to.max(from * 1.0001)) else {
+        return d;
+    };
     for z in sweep.points(THEORY_POINTS) {
         let Ok(p) = state.params.with(Axis::Zeta, z) else {
             continue;
@@ -107,5 +131,5 @@ pub fn picture(state: &State, spec: &Spec) -> anyhow::Result<ContactSlopes> {
         d.persson
             .push((2.0 / std::f64::consts::PI).sqrt() / psi.to_f64());
     }
-    Ok(d)
+    d
 }

@@ -12,7 +12,9 @@ use std::path::Path;
 use anyhow::{bail, Context};
 
 use super::lines::{items, pool, pool_not_solved, Item};
-use super::part::{not_pooled, parse_command, roles_from, Part, Role, ShardLine, Table};
+use super::part::{
+    merged_name, not_pooled, parse_command, roles_from, Part, Role, ShardLine, Table,
+};
 use crate::cli::MergeArgs;
 use crate::contact::Stat;
 use crate::physical::csv_number;
@@ -391,6 +393,11 @@ fn pooled(roles: &[Role], g: &[(u64, &Vec<String>)]) -> Vec<String> {
             Role::Sd(of) => csv_number::format(Stat::of(values(*of)).sd),
             Role::Max => csv_number::format(values(c).fold(0.0, f64::max)),
             Role::Count => g.len().to_string(),
+            // As one machine: |mean of the light window's − mean of the
+            // heavy window's| over the seeds.
+            Role::FitErr(of) => {
+                csv_number::format((Stat::of(values(*of)).mean - Stat::of(values(c)).mean).abs())
+            }
             Role::NotPooled => String::new(),
         })
         .collect()
@@ -409,7 +416,7 @@ pub fn merge(parts: &[Part]) -> anyhow::Result<Table> {
         .iter()
         .zip(&parts[0].roles)
         .filter(|(_, r)| **r != Role::Seed)
-        .map(|(c, _)| c.clone())
+        .map(|(c, r)| merged_name(c, *r))
         .collect();
     Ok(Table {
         comments,

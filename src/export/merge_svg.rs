@@ -53,10 +53,10 @@ fn column(t: &Table, name: &str) -> anyhow::Result<Vec<f64>> {
 pub fn picture(part: &Part, table: &Table) -> anyhow::Result<String> {
     let args = export_args(part)?;
     let view = super::shard::view_name(&args);
-    if !["contact", "contact-sweep"].contains(&view.as_str()) {
+    if !["contact", "contact-sweep", "contact-slopes"].contains(&view.as_str()) {
         bail!(
             "--view {view} is a table: merge writes it as CSV only (pictures: contact, \
-             contact-sweep)"
+             contact-sweep, contact-slopes)"
         );
     }
     let state = super::state_of(&args)?;
@@ -114,6 +114,29 @@ pub fn picture(part: &Part, table: &Table) -> anyhow::Result<String> {
                 ..ContactSweep::default()
             };
             super::contact::sweep_picture(&state, d)
+        }
+        "contact-slopes" => {
+            let names = ["elastic", "plastic", "total"];
+            let of = |end: &str| -> anyhow::Result<[Vec<f64>; 3]> {
+                let [a, b, c] = names.map(|n| column(table, &format!("sim_{n}_slope{end}")));
+                Ok([a?, b?, c?])
+            };
+            let measured = state.is_measured().then(|| {
+                column(table, "grid")
+                    .ok()
+                    .and_then(|g| g.first().copied())
+                    .map_or(0, |g| g as usize)
+            });
+            let d = super::contact_slopes::picture_of(
+                &state,
+                &spec,
+                measured,
+                column(table, "zeta")?,
+                of("")?,
+                of("_sd")?,
+            );
+            let svg = crate::figure::render_contact_slopes(&state, &d)?;
+            Ok(svg)
         }
         view => bail!("no picture of --view {view}"),
     }

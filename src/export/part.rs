@@ -93,14 +93,32 @@ pub enum Role {
     Max,
     /// How many seeds the row is over.
     Count,
+    /// A seed's value of the other window of a fit (contact-slopes'
+    /// `X_heavy`, the slope over the heaviest loads): merged as the
+    /// ensemble's `X_fit_err`, |mean of X − mean of X_heavy| over the
+    /// seeds, X the column of that index.
+    FitErr(usize),
     /// A statistic of the seeds' means that their own values cannot give
-    /// (contact-slopes' `*_fit_err`, |mean slope over one window − mean
-    /// over another|): a part of it is refused rather than merged wrong.
+    /// (a `*_fit_err` in a part, which a part of this version never
+    /// writes): a part of it is refused rather than merged wrong.
     NotPooled,
 }
 
 /// Ends of the names of [`Role::NotPooled`] columns.
 const NOT_POOLED: &[&str] = &["_fit_err"];
+/// The end of the name of a [`Role::FitErr`] column in a part, and of the
+/// merged column it becomes.
+const HEAVY: &str = "_heavy";
+const FIT_ERR: &str = "_fit_err";
+
+/// The merged CSV's name of a part's column: `X_heavy` becomes
+/// `X_fit_err`, every other name stays.
+pub fn merged_name(column: &str, role: Role) -> String {
+    match (role, column.strip_suffix(HEAVY)) {
+        (Role::FitErr(_), Some(base)) => format!("{base}{FIT_ERR}"),
+        _ => column.to_string(),
+    }
+}
 
 /// Columns the same for every seed, besides the theory's (`theory_*`): the
 /// load, ζ, the grid and the cell, and contact-slopes' load window.
@@ -127,13 +145,17 @@ pub fn roles_of(columns: &[String]) -> Vec<Role> {
             "residual" => Role::Max,
             c if c.starts_with("theory_") || KEYS.contains(&c) => Role::Key,
             c if NOT_POOLED.iter().any(|e| c.ends_with(e)) => Role::NotPooled,
-            c => match c
-                .strip_suffix("_sd")
-                .and_then(|base| columns.iter().position(|x| x == base))
-            {
-                Some(i) => Role::Sd(i),
-                None => Role::Mean,
-            },
+            c => {
+                let of = |end: &str| {
+                    c.strip_suffix(end)
+                        .and_then(|base| columns.iter().position(|x| x == base))
+                };
+                match (of("_sd"), of(HEAVY)) {
+                    (Some(i), _) => Role::Sd(i),
+                    (None, Some(i)) => Role::FitErr(i),
+                    (None, None) => Role::Mean,
+                }
+            }
         })
         .collect()
 }
@@ -157,14 +179,16 @@ pub fn roles_line(columns: &[String], roles: &[Role]) -> String {
     };
     format!(
         "{ROLES}seed: the realisation, one row per seed; key: {}; mean: {}; sd: {}; largest: {}; \
-         count: {}; not merged: {} (roughtui merge groups the seeds' rows by the key columns and writes each \
-         mean column's mean over the seeds, each sd column the sample standard deviation of \
-         its mean column, the largest, the count)",
+         count: {}; fit error: {}; not merged: {} (roughtui merge groups the seeds' rows by the key \
+         columns and writes each mean column's mean over the seeds, each sd column the sample \
+         standard deviation of its mean column, the largest, the count, and for each fit error \
+         column X_heavy the column X_fit_err = |mean of X − mean of X_heavy|)",
         of(|r| *r == Role::Key),
         of(|r| *r == Role::Mean),
         of(|r| matches!(r, Role::Sd(_))),
         of(|r| *r == Role::Max),
         of(|r| *r == Role::Count),
+        of(|r| matches!(r, Role::FitErr(_))),
         of(|r| *r == Role::NotPooled),
     )
 }
@@ -196,6 +220,10 @@ pub fn roles_from(line: &str, columns: &[String]) -> anyhow::Result<Vec<Role>> {
                 "largest" => Role::Max,
                 "count" => Role::Count,
                 "not merged" => Role::NotPooled,
+                "fit error" => {
+                    let base = name.strip_suffix(HEAVY).unwrap_or(name);
+                    Role::FitErr(position(columns, base)?)
+                }
                 "sd" => {
                     let base = name.strip_suffix("_sd").unwrap_or(name);
                     Role::Sd(position(columns, base)?)
@@ -433,7 +461,7 @@ mod tests {
 
     #[test]
     fn roles_follow_the_names_and_read_back() {
-        let c = names("seed,p_over_h,area,mean_gap,residual,theory_area,area_sd,seeds,area_corrected,area_corrected_sd,sim_total_slope_fit_err");
+        let c = names("seed,p_over_h,area,mean_gap,residual,theory_area,area_sd,seeds,area_corrected,area_corrected_sd,sim_total_slope_fit_err,area_heavy");
         let r = roles_of(&c);
         use Role::*;
         assert_eq!(
@@ -449,7 +477,8 @@ mod tests {
                 Count,
                 Mean,
                 Sd(8),
-                NotPooled
+                NotPooled,
+                FitErr(2)
             ]
         );
         let line = roles_line(&c, &r);

@@ -169,7 +169,10 @@ pub fn run(args: &ExportArgs, shard: Shard, out: &mut impl Write) -> anyhow::Res
         let one = ExportArgs {
             seed: Some(seed),
             seeds: Some(1),
-            cluster: Cluster::default(),
+            cluster: Cluster {
+                part: true,
+                ..Cluster::default()
+            },
             ..args.clone()
         };
         let mut buf = vec![];

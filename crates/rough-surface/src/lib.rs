@@ -10,6 +10,7 @@ mod describe;
 mod error;
 mod formats;
 mod heights;
+pub mod lengths;
 mod limits;
 mod measured;
 mod read;

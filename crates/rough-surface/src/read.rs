@@ -294,7 +294,10 @@ fn check_options(opts: &Options) -> Result<(), (Option<usize>, Problem)> {
     match opts.pixel_size {
         Some(p) if !(p.is_finite() && p > 0.0) => Err((
             None,
-            Problem::Option(format!("--pixel-size {p} m must be finite and > 0")),
+            Problem::Option(format!(
+                "--pixel-size {} must be finite and > 0",
+                crate::lengths::typed_length(p)
+            )),
         )),
         _ => Ok(()),
     }

@@ -105,7 +105,7 @@ fn a_size_is_needed() {
     // … and is refused where the file gives its size.
     assert_eq!(
         message(&map(SIZE, &GOOD), opts),
-        "bad surface FILE, line 1: --pixel-size 0.000001 m does not apply: the file gives its size"
+        "bad surface FILE, line 1: --pixel-size 1 µm does not apply: the file gives its size"
     );
     assert_eq!(
         refuse(&map("# Width: 4 µm\n", &GOOD)),

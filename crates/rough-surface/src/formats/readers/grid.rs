@@ -108,7 +108,8 @@ pub(crate) fn compute(
         return Err((
             None,
             Problem::Option(format!(
-                "--pixel-size {p} m does not apply: the file gives its size"
+                "--pixel-size {} does not apply: the file gives its size",
+                crate::lengths::typed_length(p)
             )),
         ));
     }

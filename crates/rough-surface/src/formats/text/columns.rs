@@ -267,7 +267,8 @@ pub(crate) fn read(
         return Err((
             None,
             Problem::Option(format!(
-                "--pixel-size {p} m does not apply: an x z line scan gives its spacing"
+                "--pixel-size {} does not apply: an x z line scan gives its spacing",
+                crate::lengths::typed_length(p)
             )),
         ));
     }

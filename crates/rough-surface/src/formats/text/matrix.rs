@@ -54,7 +54,8 @@ pub(crate) fn read(
         return Err((
             size_line,
             Problem::Option(format!(
-                "--pixel-size {p} m does not apply: the file gives its size"
+                "--pixel-size {} does not apply: the file gives its size",
+                crate::lengths::typed_length(p)
             )),
         ));
     }
