@@ -5,20 +5,18 @@
 //! counting allocator watches every test here). Then every reader's real
 //! file mutated at random (`FUZZ_CASES` cases a reader, 48 by default).
 
-use std::io::Read;
 use std::path::{Path, PathBuf};
 
 mod fuzz;
 #[path = "fuzz/harness.rs"]
 mod harness;
 
-use proptest::prelude::*;
 use rough_surface::{parse_named, Options};
 
 #[global_allocator]
 static ALLOC: fuzz::Counting = fuzz::Counting;
 
-use harness::{cases, put, refuse, CEILING};
+use harness::{put, refuse};
 
 fn dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/instruments")
@@ -26,12 +24,7 @@ fn dir() -> PathBuf {
 
 /// An example file's bytes (stored gzip-compressed).
 fn bytes(name: &str) -> Vec<u8> {
-    let gz = std::fs::read(dir().join(format!("{name}.gz"))).unwrap();
-    let mut out = Vec::new();
-    flate2::read::GzDecoder::new(&gz[..])
-        .read_to_end(&mut out)
-        .unwrap();
-    out
+    harness::file_bytes(&dir().join(format!("{name}.gz")))
 }
 
 /// The file cut short at several places: each refused, naming `format`.
@@ -340,32 +333,4 @@ const FILES: [&str; 14] = [
     "frt-2.frt",
 ];
 
-proptest! {
-    #![proptest_config(ProptestConfig {
-        cases: cases() * FILES.len() as u32,
-        rng_seed: fuzz::seed(),
-        ..ProptestConfig::default()
-    })]
-
-    #[test]
-    fn mutated_files_never_panic(
-        which in 0..FILES.len(),
-        ops in prop::collection::vec((any::<u8>(), any::<usize>(), any::<u8>()), 1..6),
-        cut in any::<usize>(),
-    ) {
-        thread_local!(static CACHE: std::cell::RefCell<Vec<Option<Vec<u8>>>> =
-            std::cell::RefCell::new(vec![None; FILES.len()]));
-        let name = FILES[which];
-        let original = CACHE.with(|c| {
-            c.borrow_mut()[which].get_or_insert_with(|| bytes(name)).clone()
-        });
-        harness::read_mutated(&original, name, &ops, cut).map_err(TestCaseError::fail)?;
-        prop_assert!(harness::largest() < CEILING);
-    }
-}
-
-#[test]
-fn zz_fuzz_counts() {
-    // Printed for the record (run after the fuzz when single-threaded).
-    eprintln!("{}", harness::counts());
-}
+crate::mutation_fuzz!(FILES, bytes);

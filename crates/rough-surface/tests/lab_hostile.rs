@@ -7,19 +7,17 @@
 //! of tests/data/lab mutated at random (`FUZZ_CASES` cases a file, 48 by
 //! default; `FUZZ_SEED` as tests/fuzz/mod.rs says).
 
-use std::io::{Read, Write};
+use std::io::Write;
 use std::path::{Path, PathBuf};
 
 mod fuzz;
 #[path = "fuzz/harness.rs"]
 mod harness;
 
-use proptest::prelude::*;
-
 #[global_allocator]
 static ALLOC: fuzz::Counting = fuzz::Counting;
 
-use harness::{cases, put, refuse, CEILING};
+use harness::{put, refuse};
 
 fn dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/lab")
@@ -27,15 +25,7 @@ fn dir() -> PathBuf {
 
 /// A file's bytes (a `.gz` unpacked).
 fn bytes(name: &str) -> Vec<u8> {
-    let b = std::fs::read(dir().join(name)).unwrap();
-    if !name.ends_with(".gz") {
-        return b;
-    }
-    let mut out = Vec::new();
-    flate2::read::GzDecoder::new(&b[..])
-        .read_to_end(&mut out)
-        .unwrap();
-    out
+    harness::file_bytes(&dir().join(name))
 }
 
 /// The file cut short at several places, by its last byte too: each
@@ -331,33 +321,4 @@ const FILES: [&str; 13] = [
     "xqd-2.xqd",
 ];
 
-proptest! {
-    #![proptest_config(ProptestConfig {
-        cases: cases() * FILES.len() as u32,
-        rng_seed: fuzz::seed(),
-        ..ProptestConfig::default()
-    })]
-
-    #[test]
-    fn mutated_files_never_panic(
-        which in 0..FILES.len(),
-        ops in prop::collection::vec((any::<u8>(), any::<usize>(), any::<u8>()), 1..6),
-        cut in any::<usize>(),
-    ) {
-        thread_local!(static CACHE: std::cell::RefCell<Vec<Option<Vec<u8>>>> =
-            std::cell::RefCell::new(vec![None; FILES.len()]));
-        let name = FILES[which];
-        let original = CACHE.with(|c| {
-            c.borrow_mut()[which].get_or_insert_with(|| bytes(name)).clone()
-        });
-        harness::read_mutated(&original, name.trim_end_matches(".gz"), &ops, cut)
-            .map_err(TestCaseError::fail)?;
-        prop_assert!(harness::largest() < CEILING);
-    }
-}
-
-#[test]
-fn zz_fuzz_counts() {
-    // Printed for the record (run after the fuzz when single-threaded).
-    eprintln!("{}", harness::counts());
-}
+crate::mutation_fuzz!(FILES, bytes);

@@ -8,20 +8,17 @@
 
 use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 mod fuzz;
+#[path = "fuzz/harness.rs"]
+mod harness;
 
-use proptest::prelude::*;
-use rough_surface::{parse_named, read_grid_named, Options};
+use rough_surface::{read_grid_named, Options};
 
 #[global_allocator]
 static ALLOC: fuzz::Counting = fuzz::Counting;
-use fuzz::LARGEST;
 
-/// Every allocation stays below this (the largest file unpacks to 2.6 MB;
-/// the HDF5 reader's chunk cache holds 16 MB at most).
-const CEILING: usize = 64 << 20;
+use harness::{put, refuse, CEILING};
 
 fn dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/makers")
@@ -29,38 +26,19 @@ fn dir() -> PathBuf {
 
 /// A file's bytes (a .gz unpacked).
 fn bytes(name: &str) -> Vec<u8> {
-    let b = std::fs::read(dir().join(name)).unwrap();
-    if !name.ends_with(".gz") {
-        return b;
-    }
-    let mut out = Vec::new();
-    flate2::read::GzDecoder::new(&b[..])
-        .read_to_end(&mut out)
-        .unwrap();
-    out
+    harness::file_bytes(&dir().join(name))
 }
 
-/// The refusal of `b` (a file named `name`) as a line.
-fn refuse(name: &str, b: &[u8]) -> String {
-    let e = read_grid_named(b, name, &Options::default()).expect_err("refused");
-    assert!(LARGEST.load(Ordering::Relaxed) < CEILING);
-    let line = e.1.to_string();
-    assert!(!line.contains('\n'), "{line}");
-    line
-}
-
-/// The file cut short at several places: each refused, naming `format`.
+/// The file cut short at several places, by its last byte too: each
+/// refused, naming `format`.
 fn truncated(name: &str, format: &str) {
-    let full = bytes(name);
-    let named = name.trim_end_matches(".gz");
-    for cut in [600, full.len() / 4, full.len() / 2, full.len() - 1] {
-        let e = refuse(named, &full[..cut.min(full.len() - 1)]);
-        assert!(e.starts_with(format), "{name} cut at {cut}: {e}");
-    }
-}
-
-fn put(b: &mut [u8], at: usize, v: &[u8]) {
-    b[at..at + v.len()].copy_from_slice(v);
+    harness::truncated(
+        &bytes(name),
+        name.trim_end_matches(".gz"),
+        format,
+        true,
+        &[],
+    );
 }
 
 fn zip_of(members: &[(&str, &[u8])]) -> Vec<u8> {
@@ -158,7 +136,7 @@ fn zip_bombs_are_refused_unpacked_no_further() {
     assert!(b.len() < 1 << 20, "{}", b.len());
     let e = refuse("bomb.vk6", &b);
     assert!(e.contains("more than the 512 MB read"), "{e}");
-    assert!(LARGEST.load(Ordering::Relaxed) < CEILING);
+    assert!(harness::largest() < CEILING);
 }
 
 #[test]
@@ -303,6 +281,7 @@ fn hdf5_files() {
     assert!(e.contains("HDF5"), "{e}");
 }
 
+/// The makers' files mutated, as they are named (the `.gz` ones unpacked).
 const FILES: [&str; 8] = [
     "synthetic.vk4",
     "synthetic.vk7",
@@ -314,63 +293,4 @@ const FILES: [&str; 8] = [
     "sample_0.h5-jpk.gz",
 ];
 
-fn cases() -> u32 {
-    std::env::var("FUZZ_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(48)
-}
-
-static RUNS: AtomicUsize = AtomicUsize::new(0);
-static REFUSED: AtomicUsize = AtomicUsize::new(0);
-
-proptest! {
-    #![proptest_config(ProptestConfig {
-        cases: cases() * FILES.len() as u32,
-        rng_seed: fuzz::seed(),
-        ..ProptestConfig::default()
-    })]
-
-    #[test]
-    fn mutated_files_never_panic(
-        which in 0..FILES.len(),
-        ops in prop::collection::vec((any::<u8>(), any::<usize>(), any::<u8>()), 1..6),
-        cut in any::<usize>(),
-    ) {
-        thread_local!(static CACHE: std::cell::RefCell<Vec<Option<Vec<u8>>>> =
-            std::cell::RefCell::new(vec![None; FILES.len()]));
-        let name = FILES[which];
-        let original = CACHE.with(|c| {
-            c.borrow_mut()[which].get_or_insert_with(|| bytes(name)).clone()
-        });
-        let mut b = fuzz::mutate(&original, &ops);
-        if cut % 5 == 0 && !b.is_empty() {
-            b.truncate(cut % b.len());
-        }
-        let named = name.trim_end_matches(".gz");
-        RUNS.fetch_add(1, Ordering::Relaxed);
-        match read_grid_named(&b, named, &Options::default()) {
-            Err((_, p)) => {
-                REFUSED.fetch_add(1, Ordering::Relaxed);
-                let line = p.to_string();
-                prop_assert!(!line.is_empty() && !line.contains('\n'), "{}", line);
-            }
-            Ok(g) => prop_assert_eq!(g.z.len(), g.nx * g.ny),
-        }
-        if original.len() < 100_000 {
-            let _ = parse_named(&b, named, &Options::default());
-        }
-        prop_assert!(LARGEST.load(Ordering::Relaxed) < CEILING);
-    }
-}
-
-#[test]
-fn zz_fuzz_counts() {
-    // Printed for the record (run after the fuzz when single-threaded).
-    eprintln!(
-        "fuzz: {} mutated files read, {} refused; largest allocation {} bytes",
-        RUNS.load(Ordering::Relaxed),
-        REFUSED.load(Ordering::Relaxed),
-        LARGEST.load(Ordering::Relaxed)
-    );
-}
+crate::mutation_fuzz!(FILES, bytes);

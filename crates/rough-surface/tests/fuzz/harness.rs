@@ -10,7 +10,7 @@ use rough_surface::{parse_named, read_grid_named, Options};
 
 /// Every allocation of a hostile-file test stays below this (the largest
 /// file is 4 MB, its heights 2.5 MB; a mutated header can claim at most
-/// what the file holds).
+/// what the file holds; the HDF5 reader's chunk cache holds 16 MB at most).
 pub const CEILING: usize = 64 << 20;
 
 /// The refusal of `b` (a file named `name`) as a line; that no
@@ -42,6 +42,17 @@ pub fn truncated(full: &[u8], name: &str, format: &str, last: bool, early: &[usi
         let told = e.starts_with(format) || e.starts_with("a binary file");
         assert!(told || e.starts_with("text: "), "{name} cut at {cut}: {e}");
     }
+}
+
+/// The bytes of the file at `path` (unpacked when its name ends in `.gz`).
+pub fn file_bytes(path: &std::path::Path) -> Vec<u8> {
+    let b = std::fs::read(path).unwrap();
+    if path.extension().is_none_or(|e| e != "gz") {
+        return b;
+    }
+    let mut out = Vec::new();
+    std::io::Read::read_to_end(&mut flate2::read::GzDecoder::new(&b[..]), &mut out).unwrap();
+    out
 }
 
 /// `v` written into `b` at `at`.
@@ -109,4 +120,53 @@ pub fn counts() -> String {
         REFUSED.load(Ordering::Relaxed),
         largest()
     )
+}
+
+/// The mutation fuzz of a test binary's example files: `$files` (an
+/// array of names) each mutated `FUZZ_CASES` times (48 by default), from
+/// `FUZZ_SEED`'s seed, each file's bytes (`$bytes(name)`) read once; each
+/// mutated file checked by [`read_mutated`] (named without a `.gz`) and
+/// no allocation past [`CEILING`]. Then `zz_fuzz_counts`, which prints
+/// [`counts`] (after the fuzz when the tests run single-threaded).
+#[macro_export]
+macro_rules! mutation_fuzz {
+    ($files:expr, $bytes:expr) => {
+        proptest::proptest! {
+            #![proptest_config(proptest::test_runner::Config {
+                cases: $crate::harness::cases() * $files.len() as u32,
+                rng_seed: $crate::fuzz::seed(),
+                ..proptest::test_runner::Config::default()
+            })]
+
+            #[test]
+            fn mutated_files_never_panic(
+                which in 0..$files.len(),
+                ops in proptest::collection::vec(
+                    (
+                        proptest::prelude::any::<u8>(),
+                        proptest::prelude::any::<usize>(),
+                        proptest::prelude::any::<u8>(),
+                    ),
+                    1..6,
+                ),
+                cut in proptest::prelude::any::<usize>(),
+            ) {
+                thread_local!(static CACHE: std::cell::RefCell<Vec<Option<Vec<u8>>>> =
+                    std::cell::RefCell::new(vec![None; $files.len()]));
+                let name = $files[which];
+                let original = CACHE.with(|c| {
+                    c.borrow_mut()[which].get_or_insert_with(|| $bytes(name)).clone()
+                });
+                $crate::harness::read_mutated(&original, name.trim_end_matches(".gz"), &ops, cut)
+                    .map_err(proptest::test_runner::TestCaseError::fail)?;
+                proptest::prop_assert!($crate::harness::largest() < $crate::harness::CEILING);
+            }
+        }
+
+        #[test]
+        fn zz_fuzz_counts() {
+            // Printed for the record (run after the fuzz when single-threaded).
+            eprintln!("{}", $crate::harness::counts());
+        }
+    };
 }
