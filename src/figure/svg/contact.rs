@@ -95,6 +95,9 @@ pub fn sweep_span(state: &State, load: f64, in_h0: bool) -> String {
     )
 }
 
+/// The simulation's points: x, the three parts' means and their sds.
+type Points<'a> = (&'a [f64], &'a [Vec<f64>; 3], Option<&'a [Vec<f64>; 3]>);
+
 /// The three parts of a contact picture (total, elastic, plastic in some
 /// order): their names and colours.
 struct Parts {
@@ -122,7 +125,7 @@ impl Parts {
     /// ends part k's label.
     fn points<'a>(
         &self,
-        (x, y, sd): (&'a [f64], &'a [Vec<f64>; 3], Option<&'a [Vec<f64>; 3]>),
+        (x, y, sd): Points<'a>,
         dots: [(usize, u32); 3],
         note: impl Fn(usize) -> &'static str,
     ) -> Vec<Series<'a>> {
