@@ -174,6 +174,18 @@ pub(super) fn load_chart(app: &App, area: Rect, buf: &mut Buffer) {
     chart::plot(sets, (xb, yb), g, buf);
 }
 
+/// The graph of a chart over ζ and the largest ζ's log10, or none where
+/// the region is too small or there is nothing to draw (then said in the
+/// graph).
+fn zeta_graph(app: &App, area: Rect, buf: &mut Buffer) -> Option<(Rect, f64)> {
+    let g = graph_of(area)?;
+    if why_not(app, g, buf) {
+        return None;
+    }
+    let hi = app.contact.zetas.last().copied().unwrap_or(2.0).log10();
+    Some((g, hi))
+}
+
 /// Why a chart over ζ has nothing to draw, in its graph.
 fn why_not(app: &App, g: Rect, buf: &mut Buffer) -> bool {
     let t = &app.theme;
@@ -205,14 +217,10 @@ pub(super) fn set_name(set: &crate::tui::contact::Set) -> &'static str {
 pub(super) fn share_chart(app: &App, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
     let pane = &app.contact;
-    let Some(g) = graph_of(area) else {
+    let Some((g, hi)) = zeta_graph(app, area, buf) else {
         return;
     };
-    if why_not(app, g, buf) {
-        return;
-    }
     let zs = &pane.zetas;
-    let hi = zs.last().copied().unwrap_or(2.0).log10();
     let styles = [&t.psi_p, &t.psi_star, &t.psi_asy];
     let chars = ['o', 'x', '+'];
     // The means over the seeds solved so far, ± one sd, the sets' bars a
@@ -292,14 +300,10 @@ pub(super) fn share_chart(app: &App, area: Rect, buf: &mut Buffer) {
 pub(super) fn slopes_chart(app: &App, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
     let pane = &app.contact;
-    let Some(g) = graph_of(area) else {
+    let Some((g, hi)) = zeta_graph(app, area, buf) else {
         return;
     };
-    if why_not(app, g, buf) {
-        return;
-    }
     let zs = &pane.zetas;
-    let hi = zs.last().copied().unwrap_or(2.0).log10();
     // total, elastic, plastic as the theory's curves are.
     let mut stats: [Vec<(f64, Stat)>; 3] = Default::default();
     for (k, z) in zs.iter().enumerate() {
