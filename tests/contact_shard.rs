@@ -20,17 +20,24 @@ fn one_and_merged(dir: &Path, args: &[&str], n: u32, m: u32) -> (String, String)
     let n = n.to_string();
     let all = [args, &["--seeds", &n]].concat();
     let one = stdout(&[&["export"], &all[..]].concat());
+    let parts = solve_parts(dir, &all, m);
+    let parts: Vec<&str> = parts.iter().map(String::as_str).collect();
+    let merged = stdout(&[&["merge"], &parts[..]].concat());
+    (one, merged)
+}
+
+/// The `m` parts of the export `all` (its arguments, `--seeds` among
+/// them) written in `dir`, the last first: their paths.
+fn solve_parts(dir: &Path, all: &[&str], m: u32) -> Vec<String> {
     let mut parts = vec![];
     for k in (1..=m).rev() {
         let file = dir.join(format!("part-{k}-of-{m}.csv"));
         let shard = format!("{k}/{m}");
         let out = file.to_str().unwrap();
-        stdout(&[&["export"], &all[..], &["--shard", &shard, "--output", out]].concat());
+        stdout(&[&["export"], all, &["--shard", &shard, "--output", out]].concat());
         parts.push(file.display().to_string());
     }
-    let parts: Vec<&str> = parts.iter().map(String::as_str).collect();
-    let merged = stdout(&[&["merge"], &parts[..]].concat());
-    (one, merged)
+    parts
 }
 
 #[test]
@@ -174,14 +181,7 @@ fn contact_slopes_parts_merge_to_the_one_machines_csv_and_picture() {
         "--seeds",
         "3",
     ];
-    let mut parts = vec![];
-    for k in [2, 1] {
-        let file = dir.path().join(format!("part-{k}-of-2.csv"));
-        let shard = format!("{k}/2");
-        let out = file.to_str().unwrap();
-        stdout(&[&["export"], &all[..], &["--shard", &shard, "--output", out]].concat());
-        parts.push(file.display().to_string());
-    }
+    let parts = solve_parts(dir.path(), &all, 2);
     let part = std::fs::read_to_string(&parts[0]).unwrap();
     let header = part.lines().find(|l| !l.starts_with('#')).unwrap();
     assert!(

@@ -49,24 +49,21 @@ pub fn export(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
     }
     let sweep = args.view == crate::cli::ViewArg::ContactSweep;
     let name = if sweep { "contact-sweep" } else { "contact" };
-    for (given, opt) in [
-        (args.grid.is_some(), "--grid"),
-        (args.map_y.is_some(), "--map-y"),
-        (args.sweep.is_some(), "--sweep"),
-        (sweep && args.points.is_some(), "--points"),
-    ] {
-        if given {
-            bail!(
-                "{opt} does not apply to --view {name}: it solves the scene's surface at \
-                 {} (--seed picks the surface)",
-                if sweep {
-                    "ζ = 1, 2, …, 128 and p̄/H = 0.01"
-                } else {
-                    "--points loads from 1e-3 H to H"
-                }
-            );
-        }
-    }
+    let at = if sweep {
+        "ζ = 1, 2, …, 128 and p̄/H = 0.01"
+    } else {
+        "--points loads from 1e-3 H to H"
+    };
+    super::refuse_given(
+        name,
+        &format!("it solves the scene's surface at {at} (--seed picks the surface)"),
+        &[
+            (args.grid.is_some(), "--grid"),
+            (args.map_y.is_some(), "--map-y"),
+            (args.sweep.is_some(), "--sweep"),
+            (sweep && args.points.is_some(), "--points"),
+        ],
+    )?;
     let points = args.points.unwrap_or(DEFAULT_LOADS);
     if points > MAX_LOADS {
         bail!("--points {points} is too many for --view contact: at most {MAX_LOADS} loads (each is a solution)");
@@ -282,19 +279,16 @@ fn map_span(state: &State, n: usize, side: f64, load: f64, seed: Option<u64>) ->
 /// `roughtui export --view contact-map`: the scene's surface at
 /// p̄ = 0.01 H_use, as SVG or as CSV digits.
 fn export_map(args: &ExportArgs, out: &mut impl std::io::Write) -> anyhow::Result<()> {
-    for (given, opt) in [
-        (args.grid.is_some(), "--grid"),
-        (args.map_y.is_some(), "--map-y"),
-        (args.sweep.is_some(), "--sweep"),
-        (args.points.is_some(), "--points"),
-    ] {
-        if given {
-            bail!(
-                "{opt} does not apply to --view contact-map: it solves the scene's surface at \
-                 p̄ = {SWEEP_LOAD} H (--seed picks the surface)"
-            );
-        }
-    }
+    super::refuse_given(
+        "contact-map",
+        &format!("it solves the scene's surface at p̄ = {SWEEP_LOAD} H (--seed picks the surface)"),
+        &[
+            (args.grid.is_some(), "--grid"),
+            (args.map_y.is_some(), "--map-y"),
+            (args.sweep.is_some(), "--sweep"),
+            (args.points.is_some(), "--points"),
+        ],
+    )?;
     if args.seeds.is_some() {
         bail!("--seeds does not apply to --view contact-map: it draws one realisation's map (--seed picks it)");
     }
@@ -354,23 +348,22 @@ fn export_map(args: &ExportArgs, out: &mut impl std::io::Write) -> anyhow::Resul
 /// `roughtui export --view contact-convergence`: the scene at p̄ = 0.01 H on
 /// 4, 8, 16 nodes per shortest wavelength × cells of 1, 2, 4.
 fn export_convergence(args: &ExportArgs, out: &mut impl std::io::Write) -> anyhow::Result<()> {
-    for (given, opt) in [
-        (args.grid.is_some(), "--grid"),
-        (args.map_y.is_some(), "--map-y"),
-        (args.sweep.is_some(), "--sweep"),
-        (args.points.is_some(), "--points"),
-        (args.simulate.cell.is_some(), "--cell"),
-        (args.simulate.contact_grid.is_some(), "--contact-grid"),
-        (args.simulate.per_wavelength.is_some(), "--per-wavelength"),
-    ] {
-        if given {
-            bail!(
-                "{opt} does not apply to --view contact-convergence: it solves the scene's \
-                 surface at p̄ = {SWEEP_LOAD} H on 4, 8 and 16 nodes per shortest wavelength and \
-                 cells of 1, 2 and 4 (--seed and --seeds pick the surfaces)"
-            );
-        }
-    }
+    super::refuse_given(
+        "contact-convergence",
+        &format!(
+            "it solves the scene's surface at p̄ = {SWEEP_LOAD} H on 4, 8 and 16 nodes per \
+             shortest wavelength and cells of 1, 2 and 4 (--seed and --seeds pick the surfaces)"
+        ),
+        &[
+            (args.grid.is_some(), "--grid"),
+            (args.map_y.is_some(), "--map-y"),
+            (args.sweep.is_some(), "--sweep"),
+            (args.points.is_some(), "--points"),
+            (args.simulate.cell.is_some(), "--cell"),
+            (args.simulate.contact_grid.is_some(), "--contact-grid"),
+            (args.simulate.per_wavelength.is_some(), "--per-wavelength"),
+        ],
+    )?;
     if args.format == FormatArg::Svg {
         bail!("--view contact-convergence is a table: CSV only");
     }

@@ -4,7 +4,6 @@
 
 use std::io::Write;
 
-use anyhow::bail;
 use rough_model::{slopes, Axis, Sweep};
 
 use super::contact::{hardness_short, spec_of};
@@ -29,21 +28,18 @@ fn span(state: &State) -> String {
 
 /// `roughtui export --view contact-slopes`.
 pub fn export(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
-    for (given, opt) in [
-        (args.grid.is_some(), "--grid"),
-        (args.map_y.is_some(), "--map-y"),
-        (args.sweep.is_some(), "--sweep"),
-        (args.points.is_some(), "--points"),
-        (args.simulate.load_scale.is_some(), "--load-scale"),
-    ] {
-        if given {
-            bail!(
-                "{opt} does not apply to --view contact-slopes: it fits the scene's areas at five \
-                 light loads p̄/(E* h′) = 0.5 … 8·10⁻³ at ζ = 1, 2, …, 128 (--seed and --seeds \
-                 pick the surfaces)"
-            );
-        }
-    }
+    super::refuse_given(
+        "contact-slopes",
+        "it fits the scene's areas at five light loads p̄/(E* h′) = 0.5 … 8·10⁻³ at ζ = 1, 2, \
+         …, 128 (--seed and --seeds pick the surfaces)",
+        &[
+            (args.grid.is_some(), "--grid"),
+            (args.map_y.is_some(), "--map-y"),
+            (args.sweep.is_some(), "--sweep"),
+            (args.points.is_some(), "--points"),
+            (args.simulate.load_scale.is_some(), "--load-scale"),
+        ],
+    )?;
     let state = super::state_of(args)?;
     let spec = spec_of(args, &state)?;
     match args.format {

@@ -47,6 +47,15 @@ pub const DEFAULT_POINTS: usize = 200;
 /// fewer; more would only make the file large).
 pub const MAX_SVG_POINTS: usize = 20_000;
 
+/// Refuses the first option `given` (whether it was, its name) that does
+/// not apply to `--view VIEW`: "--grid does not apply to --view VIEW: WHY".
+pub(crate) fn refuse_given(view: &str, why: &str, given: &[(bool, &str)]) -> anyhow::Result<()> {
+    match given.iter().find(|(g, _)| *g) {
+        Some((_, opt)) => bail!("{opt} does not apply to --view {view}: {why}"),
+        None => Ok(()),
+    }
+}
+
 /// The state `args` describe: the source with every override applied
 /// (model, moments, size effect and sweep first, so that `--set hurst=1
 /// --moments truncated` works), checked.
@@ -115,17 +124,14 @@ pub fn options_of(args: &ExportArgs) -> anyhow::Result<(View, FigureOptions)> {
         );
     }
     if view == View::Spectrum {
-        for (given, opt) in [
-            (args.sweep.is_some(), "--sweep"),
-            (args.points.is_some(), "--points"),
-        ] {
-            if given {
-                bail!(
-                    "{opt} does not apply to --view spectrum: it shows the data's spectrum \
-                     (the fit over q0…q1, q1 set with --set zeta=VALUE)"
-                );
-            }
-        }
+        refuse_given(
+            "spectrum",
+            "it shows the data's spectrum (the fit over q0…q1, q1 set with --set zeta=VALUE)",
+            &[
+                (args.sweep.is_some(), "--sweep"),
+                (args.points.is_some(), "--points"),
+            ],
+        )?;
     }
     if view == View::Map {
         if args.points.is_some() {

@@ -33,22 +33,20 @@ fn span(key: &SceneKey, sampling: &Sampling, length: f64) -> String {
 
 /// `roughtui export --view surface`.
 pub fn export(args: &ExportArgs, out: &mut impl Write) -> anyhow::Result<()> {
-    for (given, opt) in [
-        (args.grid.is_some(), "--grid"),
-        (args.map_y.is_some(), "--map-y"),
-        (args.sweep.is_some(), "--sweep"),
-        (args.points.is_some(), "--points"),
-        (args.seeds.is_some(), "--seeds"),
-        (args.simulate.hardness.is_some(), "--hardness"),
-        (args.simulate.load_scale.is_some(), "--load-scale"),
-    ] {
-        if given {
-            bail!(
-                "{opt} does not apply to --view surface: it writes one seed's heights (--seed, \
-                 --cell, --contact-grid or --per-wavelength pick them)"
-            );
-        }
-    }
+    super::refuse_given(
+        "surface",
+        "it writes one seed's heights (--seed, --cell, --contact-grid or --per-wavelength pick \
+         them)",
+        &[
+            (args.grid.is_some(), "--grid"),
+            (args.map_y.is_some(), "--map-y"),
+            (args.sweep.is_some(), "--sweep"),
+            (args.points.is_some(), "--points"),
+            (args.seeds.is_some(), "--seeds"),
+            (args.simulate.hardness.is_some(), "--hardness"),
+            (args.simulate.load_scale.is_some(), "--load-scale"),
+        ],
+    )?;
     if args.format == FormatArg::Svg {
         bail!("--view surface is a height matrix: text only (no --format svg)");
     }

@@ -184,10 +184,10 @@ impl ContactPane {
         self.results.get(self.load).and_then(Option::as_ref)
     }
 
-    /// The areas at load `k` over the seeds solved so far (total, elastic,
-    /// plastic; the coarse grid's answer alone while the first seed's is
-    /// not in).
-    pub fn at_load(&self, k: usize) -> Option<[Stat; 3]> {
+    /// The results at load `k` of the seeds solved so far, the first
+    /// seed's first (the coarse grid's answer alone while the first seed's
+    /// is not in); none before the first seed's.
+    fn runs_at_load(&self, k: usize) -> Option<Vec<rough_contact::LoadResult>> {
         let first = match self.results.get(k)? {
             Some(Ok(s)) => s,
             _ => return None,
@@ -199,6 +199,14 @@ impl ContactPane {
                 _ => None,
             }));
         }
+        Some(runs)
+    }
+
+    /// The areas at load `k` over the seeds solved so far (total, elastic,
+    /// plastic; the coarse grid's answer alone while the first seed's is
+    /// not in).
+    pub fn at_load(&self, k: usize) -> Option<[Stat; 3]> {
+        let runs = self.runs_at_load(k)?;
         Some([
             Stat::of(runs.iter().map(|r| r.area)),
             Stat::of(runs.iter().map(|r| r.elastic_area)),
@@ -209,17 +217,7 @@ impl ContactPane {
     /// The plastic share A_pl/A at load `k` over the seeds solved so far
     /// (each seed's own share; a seed without contact left out).
     pub fn share_at_load(&self, k: usize) -> Option<Stat> {
-        let first = match self.results.get(k)? {
-            Some(Ok(s)) => s,
-            _ => return None,
-        };
-        let mut runs = vec![first.result];
-        if !self.coarse.get(k).copied().unwrap_or(false) {
-            runs.extend(self.seed_results.iter().filter_map(|r| match r.get(k) {
-                Some(Some(Ok(s))) => Some(s.result),
-                _ => None,
-            }));
-        }
+        let runs = self.runs_at_load(k)?;
         let st = Stat::of(runs.iter().map(|r| {
             if r.area > 0.0 {
                 r.plastic_area / r.area

@@ -6,20 +6,15 @@
 //! not. A periodic surface refuses a tilt or curvature, a PSD table any
 //! mode.
 
+mod agree;
+use agree::rel;
+
 use std::path::{Path, PathBuf};
 
 use rough_surface::{parse, read, Detrend, Options};
 
 fn data() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data")
-}
-
-fn rel(a: f64, b: f64) -> f64 {
-    if a == b {
-        0.0
-    } else {
-        ((a - b) / b).abs()
-    }
 }
 
 #[test]

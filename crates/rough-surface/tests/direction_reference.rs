@@ -4,20 +4,15 @@
 //! one direction — whose moments and spectrum are its
 //! `integrate_psd_from_profile` and `power_spectrum_from_profile`.
 
+mod agree;
+use agree::rel;
+
 use std::path::{Path, PathBuf};
 
 use rough_surface::{read, Direction, Kind, Options};
 
 fn data() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data")
-}
-
-fn rel(a: f64, b: f64) -> f64 {
-    if a == b {
-        0.0
-    } else {
-        ((a - b) / b).abs()
-    }
 }
 
 #[derive(Default)]

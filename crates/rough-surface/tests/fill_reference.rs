@@ -6,6 +6,9 @@
 //! fill_reference.txt): the moments and spectra of our filled surface
 //! match its, and the note counts the points.
 
+mod agree;
+use agree::rel;
+
 use std::path::{Path, PathBuf};
 
 use rough_surface::{read, Options, Problem};
@@ -62,14 +65,6 @@ fn cases() -> Vec<Case> {
         }
     }
     out
-}
-
-fn rel(a: f64, b: f64) -> f64 {
-    if a == b {
-        0.0
-    } else {
-        ((a - b) / b).abs()
-    }
 }
 
 #[test]

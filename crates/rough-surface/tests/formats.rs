@@ -5,6 +5,9 @@
 //! heights in a text matrix, Gwyddion's ASCII export with decimal commas
 //! and Latin-1, and the choice of a .gwy channel.
 
+mod agree;
+use agree::rel;
+
 use std::path::{Path, PathBuf};
 
 use rough_surface::{parse, read, read_grid, Kind, Measured, Options};
@@ -51,14 +54,6 @@ fn heights(name: &str) -> Vec<f64> {
         .filter(|l| !l.starts_with('#'))
         .flat_map(|l| l.split_whitespace().map(|v| v.parse::<f64>().unwrap()))
         .collect()
-}
-
-fn rel(a: f64, b: f64) -> f64 {
-    if a == b {
-        0.0
-    } else {
-        ((a - b) / b).abs()
-    }
 }
 
 /// The file and channel a reference is about.

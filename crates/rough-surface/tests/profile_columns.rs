@@ -8,6 +8,9 @@
 //! filled as undefined points: Rq, RΔq, the moments (h_rms, slopes) and
 //! the spectrum match.
 
+mod agree;
+use agree::rel;
+
 use std::path::{Path, PathBuf};
 
 use rough_surface::{read, Kind, Options, Problem};
@@ -64,14 +67,6 @@ fn cases() -> Vec<Case> {
         }
     }
     out
-}
-
-fn rel(a: f64, b: f64) -> f64 {
-    if a == b {
-        0.0
-    } else {
-        ((a - b) / b).abs()
-    }
 }
 
 #[test]

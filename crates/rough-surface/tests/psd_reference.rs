@@ -3,6 +3,9 @@
 //! as contact.engineering downloads; and fig2's spectrum, whose moments are
 //! docs/model.md's truncated ones.
 
+mod agree;
+use agree::rel;
+
 use std::path::{Path, PathBuf};
 
 use rough_model::Dim;
@@ -10,14 +13,6 @@ use rough_surface::{read, Kind, Options};
 
 fn data() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data")
-}
-
-fn rel(a: f64, b: f64) -> f64 {
-    if a == b {
-        0.0
-    } else {
-        ((a - b) / b).abs()
-    }
 }
 
 #[test]

@@ -4,6 +4,9 @@
 //! in tests/data/reference.txt). The indices are computed from the
 //! moments with docs/model.md's formulas (H0/E = 0.01, R* = 1 mm).
 
+mod agree;
+use agree::rel;
+
 use std::path::{Path, PathBuf};
 
 use rough_surface::{read, Kind, Options};
@@ -67,14 +70,6 @@ fn cases() -> Vec<Case> {
         out.push(case);
     }
     out
-}
-
-fn rel(a: f64, b: f64) -> f64 {
-    if a == b {
-        0.0
-    } else {
-        ((a - b) / b).abs()
-    }
 }
 
 /// Ψ_P, Ψ*, Ψ_GW from profile moments (docs/model.md, "Hardness, indices").

@@ -95,6 +95,54 @@ pub fn sweep_span(state: &State, load: f64, in_h0: bool) -> String {
     )
 }
 
+/// The simulation's points: x, the three parts' means and their sds.
+type Points<'a> = (&'a [f64], &'a [Vec<f64>; 3], Option<&'a [Vec<f64>; 3]>);
+
+/// The three parts of a contact picture (total, elastic, plastic in some
+/// order): their names and colours.
+struct Parts {
+    names: [&'static str; 3],
+    colours: [RGBColor; 3],
+}
+
+impl Parts {
+    /// The theory's curves of the parts, `y[k]` at `x`, as lines.
+    fn theory<'a>(&self, x: &'a [f64], y: &'a [Vec<f64>; 3]) -> Vec<Series<'a>> {
+        (0..3)
+            .map(|k| Series {
+                label: format!("{}: theory", self.names[k]),
+                colour: self.colours[k],
+                mark: Mark::Line(Stroke::Solid),
+                x,
+                y: &y[k],
+                sd: None,
+            })
+            .collect()
+    }
+
+    /// The simulation's points of the parts (`y[k]` at `x`, ± `sd[k]`
+    /// where given) as dots, in `dots`' order of (part, radius); `note(k)`
+    /// ends part k's label.
+    fn points<'a>(
+        &self,
+        (x, y, sd): Points<'a>,
+        dots: [(usize, u32); 3],
+        note: impl Fn(usize) -> &'static str,
+    ) -> Vec<Series<'a>> {
+        let sd_words = if sd.is_some() { " (mean ± sd)" } else { "" };
+        dots.into_iter()
+            .map(|(k, r)| Series {
+                label: format!("{}: simulation{sd_words}{}", self.names[k], note(k)),
+                colour: self.colours[k],
+                mark: Mark::Dots(r),
+                x,
+                y: &y[k],
+                sd: sd.map(|s| &s[k][..]),
+            })
+            .collect()
+    }
+}
+
 /// A/A0 against p̄/H_use, both log: the simulation's points beside the
 /// theory's curves.
 pub fn render_contact(state: &State, d: &ContactLoads) -> anyhow::Result<String> {
@@ -106,32 +154,15 @@ pub fn render_contact(state: &State, d: &ContactLoads) -> anyhow::Result<String>
     let (plo, phi) = super::positive_span(d.p_over_h.iter().chain(&d.theory_p));
     let x = Scale::padded(true, plo, phi, 0.03, format!("load p̄/{h}"));
     let y = Scale::padded(true, lo, hi, 0.03, "contact area A/A0".into());
-    let names = ["total", "elastic", "plastic"];
-    let colours = [TOTAL, ELASTIC, PLASTIC];
-    let sd_words = if d.sd.is_some() { " (mean ± sd)" } else { "" };
-    let mut series = vec![];
-    for k in 0..3 {
-        series.push(Series {
-            label: format!("{}: theory", names[k]),
-            colour: colours[k],
-            mark: Mark::Line(Stroke::Solid),
-            x: &d.theory_p,
-            y: &d.theory[k],
-            sd: None,
-        });
-    }
+    let parts = Parts {
+        names: ["total", "elastic", "plastic"],
+        colours: [TOTAL, ELASTIC, PLASTIC],
+    };
+    let mut series = parts.theory(&d.theory_p, &d.theory);
     // The total's dots larger, under the elastic ones: where the two
     // coincide (light loads) both show.
-    for (k, r) in [(0, 5), (1, 3), (2, 3)] {
-        series.push(Series {
-            label: format!("{}: simulation{sd_words}", names[k]),
-            colour: colours[k],
-            mark: Mark::Dots(r),
-            x: &d.p_over_h,
-            y: &d.area[k],
-            sd: d.sd.as_ref().map(|s| &s[k][..]),
-        });
-    }
+    let dots = [(0, 5), (1, 3), (2, 3)];
+    series.extend(parts.points((&d.p_over_h, &d.area, d.sd.as_ref()), dots, |_| ""));
     let what = "contact area against the load";
     let title = super::title(state, what);
     let draw = |area: &super::Area, room| plot::draw(area, &title, (&x, &y), &series, room);
@@ -261,20 +292,11 @@ pub fn render_contact_slopes(state: &State, d: &ContactSlopes) -> anyhow::Result
             .filter(|v| **v >= hi * 1e-4),
     );
     let y = Scale::padded(true, lo, hi, 0.04, format!("initial slope {h}·dA/(A0·dp̄)"));
-    let names = ["elastic", "plastic", "total"];
-    let colours = [ELASTIC, PLASTIC, TOTAL];
-    let sd_words = if d.sd.is_some() { " (mean ± sd)" } else { "" };
-    let mut series = vec![];
-    for k in 0..3 {
-        series.push(Series {
-            label: format!("{}: theory", names[k]),
-            colour: colours[k],
-            mark: Mark::Line(Stroke::Solid),
-            x: &d.theory_zeta,
-            y: &d.theory[k],
-            sd: None,
-        });
-    }
+    let parts = Parts {
+        names: ["elastic", "plastic", "total"],
+        colours: [ELASTIC, PLASTIC, TOTAL],
+    };
+    let mut series = parts.theory(&d.theory_zeta, &d.theory);
     let psi = state.index_name();
     series.push(Series {
         label: format!("Persson elastic √(2/π)/{psi}"),
@@ -291,16 +313,8 @@ pub fn render_contact_slopes(state: &State, d: &ContactSlopes) -> anyhow::Result
             ", 0 everywhere: not on a log axis"
         }
     };
-    for (k, r) in [(2, 5), (0, 3), (1, 3)] {
-        series.push(Series {
-            label: format!("{}: simulation{sd_words}{}", names[k], none(k)),
-            colour: colours[k],
-            mark: Mark::Dots(r),
-            x: &d.zeta,
-            y: &d.slope[k],
-            sd: d.sd.as_ref().map(|s| &s[k][..]),
-        });
-    }
+    let dots = [(2, 5), (0, 3), (1, 3)];
+    series.extend(parts.points((&d.zeta, &d.slope, d.sd.as_ref()), dots, none));
     let what = "initial slopes against ζ, theory and simulation";
     let title = super::title(state, what);
     let draw = |area: &super::Area, room| plot::draw(area, &title, (&x, &y), &series, room);

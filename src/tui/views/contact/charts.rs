@@ -44,6 +44,45 @@ fn scatter<'a>(style: (Style, Marker), data: &'a [(f64, f64)]) -> Dataset<'a> {
         .data(data)
 }
 
+/// The legend row over a chart of the theory's curves and the
+/// simulation's points: the first of `forms` that fits, the total's line
+/// sample before it and the point's mark (`p_total`) in its colour.
+fn legend_row(t: &Theme, forms: &[String], p_total: (Style, Marker), area: Rect, buf: &mut Buffer) {
+    let text = fitting(t, forms, area.width.saturating_sub(2));
+    let (theory, rest) = text.split_once(&mark(p_total.1)).unwrap_or((&text, ""));
+    Line::from(vec![
+        Span::styled(t.total.sample, t.total.style),
+        Span::raw(theory.to_string()),
+        Span::styled(mark(p_total.1), p_total.0),
+        Span::raw(rest.to_string()),
+    ])
+    .render(Rect { height: 1, ..area }, buf);
+}
+
+/// The theory's curves (total, elastic, plastic, as `theory` holds them),
+/// then each part's ± sd `bars` and mean points `sims` (same order), the
+/// total's last: on top where it equals the elastic part.
+fn theory_and_points<'a>(
+    t: &Theme,
+    theory: &'a [Vec<(f64, f64)>],
+    bars: &'a [Vec<Vec<(f64, f64)>>],
+    sims: &'a [Vec<(f64, f64)>],
+) -> Vec<Dataset<'a>> {
+    let mut sets = vec![];
+    for (c, data) in [&t.total, &t.elastic, &t.plastic].into_iter().zip(theory) {
+        sets.push(chart::dataset(c, data));
+    }
+    for (k, (c, ch)) in [(&t.total, 'T'), (&t.elastic, 'E'), (&t.plastic, 'P')]
+        .into_iter()
+        .enumerate()
+        .rev()
+    {
+        sets.extend(bars[k].iter().map(|b| chart::dataset(c, b)));
+        sets.push(scatter(point(t, c, ch), &sims[k]));
+    }
+    sets
+}
+
 /// The graph inside a chart region: a legend row on top, y labels left,
 /// x axis and labels below.
 fn graph_of(area: Rect) -> Option<Rect> {
@@ -118,15 +157,7 @@ pub(super) fn load_chart(app: &App, area: Rect, buf: &mut Buffer) {
         format!(" theory  {} simulation", mark(p_total.1)),
         format!(" theory  {} sim", mark(p_total.1)),
     ];
-    let text = fitting(t, &forms, area.width.saturating_sub(2));
-    let (theory, rest) = text.split_once(&mark(p_total.1)).unwrap_or((&text, ""));
-    Line::from(vec![
-        Span::styled(t.total.sample, t.total.style),
-        Span::raw(theory.to_string()),
-        Span::styled(mark(p_total.1), p_total.0),
-        Span::raw(rest.to_string()),
-    ])
-    .render(Rect { height: 1, ..area }, buf);
+    legend_row(t, &forms, p_total, area, buf);
     let h = format!("p̄/{}", super::load_unit(app));
     chart::axes(
         t,
@@ -139,19 +170,20 @@ pub(super) fn load_chart(app: &App, area: Rect, buf: &mut Buffer) {
     let at = load_value(pane.load).log10();
     let marker = [(at, yb[0]), (at, yb[1])];
     let mut sets = vec![chart::dataset(&t.marker_line, &marker)];
-    for (c, data) in [&t.total, &t.elastic, &t.plastic].into_iter().zip(theory) {
-        sets.push(chart::dataset(c, data));
-    }
-    // The total last: on top where it equals the elastic part.
-    for (k, (c, ch)) in [(&t.total, 'T'), (&t.elastic, 'E'), (&t.plastic, 'P')]
-        .into_iter()
-        .enumerate()
-        .rev()
-    {
-        sets.extend(bars[k].iter().map(|b| chart::dataset(c, b)));
-        sets.push(scatter(point(t, c, ch), &sims[k]));
-    }
+    sets.extend(theory_and_points(t, theory, &bars, &sims));
     chart::plot(sets, (xb, yb), g, buf);
+}
+
+/// The graph of a chart over ζ and the largest ζ's log10, or none where
+/// the region is too small or there is nothing to draw (then said in the
+/// graph).
+fn zeta_graph(app: &App, area: Rect, buf: &mut Buffer) -> Option<(Rect, f64)> {
+    let g = graph_of(area)?;
+    if why_not(app, g, buf) {
+        return None;
+    }
+    let hi = app.contact.zetas.last().copied().unwrap_or(2.0).log10();
+    Some((g, hi))
 }
 
 /// Why a chart over ζ has nothing to draw, in its graph.
@@ -185,14 +217,10 @@ pub(super) fn set_name(set: &crate::tui::contact::Set) -> &'static str {
 pub(super) fn share_chart(app: &App, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
     let pane = &app.contact;
-    let Some(g) = graph_of(area) else {
+    let Some((g, hi)) = zeta_graph(app, area, buf) else {
         return;
     };
-    if why_not(app, g, buf) {
-        return;
-    }
     let zs = &pane.zetas;
-    let hi = zs.last().copied().unwrap_or(2.0).log10();
     let styles = [&t.psi_p, &t.psi_star, &t.psi_asy];
     let chars = ['o', 'x', '+'];
     // The means over the seeds solved so far, ± one sd, the sets' bars a
@@ -272,14 +300,10 @@ pub(super) fn share_chart(app: &App, area: Rect, buf: &mut Buffer) {
 pub(super) fn slopes_chart(app: &App, area: Rect, buf: &mut Buffer) {
     let t = &app.theme;
     let pane = &app.contact;
-    let Some(g) = graph_of(area) else {
+    let Some((g, hi)) = zeta_graph(app, area, buf) else {
         return;
     };
-    if why_not(app, g, buf) {
-        return;
-    }
     let zs = &pane.zetas;
-    let hi = zs.last().copied().unwrap_or(2.0).log10();
     // total, elastic, plastic as the theory's curves are.
     let mut stats: [Vec<(f64, Stat)>; 3] = Default::default();
     for (k, z) in zs.iter().enumerate() {
@@ -344,32 +368,10 @@ pub(super) fn slopes_chart(app: &App, area: Rect, buf: &mut Buffer) {
         ),
         format!(" theory  {} sim (T E P)", mark(p_total.1)),
     ];
-    let text = fitting(t, &forms, area.width.saturating_sub(2));
-    let (theory, rest) = text.split_once(&mark(p_total.1)).unwrap_or((&text, ""));
-    Line::from(vec![
-        Span::styled(t.total.sample, t.total.style),
-        Span::raw(theory.to_string()),
-        Span::styled(mark(p_total.1), p_total.0),
-        Span::raw(rest.to_string()),
-    ])
-    .render(Rect { height: 1, ..area }, buf);
+    legend_row(t, &forms, p_total, area, buf);
     let x = Scale::of_axis(rough_model::Axis::Zeta, xb);
     chart::axes(t, (&x, &Scale::decades(yb)), "ζ", (area, g), buf);
-    let mut sets = vec![];
-    for (c, data) in [&t.total, &t.elastic, &t.plastic]
-        .into_iter()
-        .zip(&pane.theory.curves)
-    {
-        sets.push(chart::dataset(c, data));
-    }
-    for (k, (c, ch)) in [(&t.total, 'T'), (&t.elastic, 'E'), (&t.plastic, 'P')]
-        .into_iter()
-        .enumerate()
-        .rev()
-    {
-        sets.extend(bars[k].iter().map(|b| chart::dataset(c, b)));
-        sets.push(scatter(point(t, c, ch), &sims[k]));
-    }
+    let sets = theory_and_points(t, &pane.theory.curves, &bars, &sims);
     chart::plot(sets, (xb, yb), g, buf);
 }
 
